@@ -1,0 +1,320 @@
+/*
+ * api.c - version, errors, the replaceable allocator, option defaults and
+ * validation, and the small helpers every stage uses.
+ */
+#include "config.h"
+
+#include "internal.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+/* ----------------------------------------------------------------- version */
+unsigned atrbvh_version(void)
+{
+    return ATRBVH_VERSION_HEX;
+}
+
+const char *atrbvh_version_string(void)
+{
+    return ATRBVH_VERSION_STRING;
+}
+
+/* ------------------------------------------------------------------ errors */
+const char *atrbvh_strerror(atrbvh_status status)
+{
+    switch (status) {
+    case ATRBVH_OK:
+        return "success";
+    case ATRBVH_ERR_INVALID_ARGUMENT:
+        return "invalid argument";
+    case ATRBVH_ERR_NO_PRIMITIVES:
+        return "no primitives";
+    case ATRBVH_ERR_NONFINITE:
+        return "NaN or infinite coordinate";
+    case ATRBVH_ERR_INDEX_RANGE:
+        return "vertex index out of range";
+    case ATRBVH_ERR_TOO_LARGE:
+        return "too large";
+    case ATRBVH_ERR_NOMEM:
+        return "out of memory";
+    case ATRBVH_ERR_IO:
+        return "input/output error";
+    case ATRBVH_ERR_FORMAT:
+        return "invalid file format";
+    case ATRBVH_ERR_UNSUPPORTED:
+        return "not supported by this build";
+    case ATRBVH_ERR_BACKEND:
+        return "compute backend failure";
+    }
+    return "unknown status";
+}
+
+atrbvh_status __atrbvh_fail(atrbvh_error *error, atrbvh_status status,
+                            uint64_t index, const char *fmt, ...)
+{
+    if (error) {
+        va_list ap;
+        error->status = status;
+        error->index = index;
+        va_start(ap, fmt);
+        vsnprintf(error->text, sizeof error->text, fmt, ap);
+        va_end(ap);
+    }
+    return status;
+}
+
+void __atrbvh_clear_error(atrbvh_error *error)
+{
+    if (error) {
+        error->status = ATRBVH_OK;
+        error->index = (uint64_t)-1;
+        error->text[0] = '\0';
+    }
+}
+
+/* --------------------------------------------------------------- allocator */
+static atrbvh_malloc_fn user_malloc = NULL;
+static atrbvh_free_fn user_free = NULL;
+
+void atrbvh_set_allocator(atrbvh_malloc_fn malloc_fn, atrbvh_free_fn free_fn)
+{
+    if (malloc_fn && free_fn) {
+        user_malloc = malloc_fn;
+        user_free = free_fn;
+    } else {
+        user_malloc = NULL;
+        user_free = NULL;
+    }
+}
+
+void atrbvh_get_allocator(atrbvh_malloc_fn *malloc_fn, atrbvh_free_fn *free_fn)
+{
+    if (malloc_fn)
+        *malloc_fn = user_malloc ? user_malloc : malloc;
+    if (free_fn)
+        *free_fn = user_free ? user_free : free;
+}
+
+void *__atrbvh_malloc(size_t size)
+{
+    if (size == 0)
+        size = 1;
+    return user_malloc ? user_malloc(size) : malloc(size);
+}
+
+void __atrbvh_free(void *ptr)
+{
+    if (!ptr)
+        return;
+    if (user_free)
+        user_free(ptr);
+    else
+        free(ptr);
+}
+
+void atrbvh_free(void *ptr)
+{
+    __atrbvh_free(ptr);
+}
+
+int __atrbvh_mul_size(size_t count, size_t size, size_t *out)
+{
+    if (size != 0 && count > SIZE_MAX / size) {
+        *out = 0;
+        return 0;
+    }
+    *out = count * size;
+    return 1;
+}
+
+void *__atrbvh_alloc_array(size_t count, size_t size)
+{
+    size_t bytes;
+    if (!__atrbvh_mul_size(count, size, &bytes))
+        return NULL;
+    return __atrbvh_malloc(bytes);
+}
+
+/* ----------------------------------------------------------------- threads */
+int __atrbvh_resolve_threads(int requested)
+{
+#ifdef _OPENMP
+    if (requested > 0)
+        return requested;
+    return omp_get_max_threads();
+#else
+    (void)requested;
+    return 1;
+#endif
+}
+
+double __atrbvh_now_ms(void)
+{
+#if defined(CLOCK_MONOTONIC) && _POSIX_C_SOURCE >= 199309L
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+#elif defined(_OPENMP)
+    return omp_get_wtime() * 1e3;
+#else
+    return (double)clock() * 1e3 / CLOCKS_PER_SEC;
+#endif
+}
+
+/* ------------------------------------------------------------------ stages */
+const char *atrbvh_stage_name(atrbvh_stage stage)
+{
+    static const char *const names[ATRBVH_STAGE_COUNT] = {
+        "bounds", "morton", "sort", "hierarchy",
+        "refit", "optimise", "collapse", "layout"};
+    if ((int)stage < 0 || stage >= ATRBVH_STAGE_COUNT)
+        return NULL;
+    return names[stage];
+}
+
+/* ---------------------------------------------------------------- geometry */
+atrbvh_geometry atrbvh_geometry_triangles(const float *vertices,
+                                          size_t vertex_count,
+                                          const uint32_t *indices,
+                                          size_t triangle_count)
+{
+    atrbvh_geometry g;
+    memset(&g, 0, sizeof g);
+    g.type = ATRBVH_GEOMETRY_TRIANGLES;
+    g.vertices = vertices;
+    g.vertex_count = vertex_count;
+    g.indices = indices;
+    g.primitive_count = triangle_count;
+    return g;
+}
+
+atrbvh_geometry atrbvh_geometry_boxes(const float *boxes, size_t box_count)
+{
+    atrbvh_geometry g;
+    memset(&g, 0, sizeof g);
+    g.type = ATRBVH_GEOMETRY_BOXES;
+    g.boxes = boxes;
+    g.primitive_count = box_count;
+    return g;
+}
+
+/* ----------------------------------------------------------------- options */
+void atrbvh_build_options_init(atrbvh_build_options *o)
+{
+    if (!o)
+        return;
+    memset(o, 0, sizeof *o);
+    o->size = sizeof *o;
+    o->method = ATRBVH_METHOD_ATRBVH;
+    o->treelet_size = 0;
+    o->rounds = 0;
+    o->gamma = 0;
+    o->ci = 1.2;
+    o->ct = 1.0;
+    o->collapse = 1;
+    o->max_leaf_size = 0;
+    o->threads = 0;
+    o->skip_invalid = 0;
+    o->backend = ATRBVH_BACKEND_CPU;
+    o->opencl_device = NULL;
+    o->progress = NULL;
+    o->progress_user = NULL;
+}
+
+/* Treelet sizes each optimiser supports (issue 3). */
+#define TRBVH_MIN_N 3u
+#define TRBVH_MAX_N 10u
+#define ATRBVH_MIN_N 3u
+#define ATRBVH_MAX_N 32u
+#define MAX_ROUNDS 64u
+
+atrbvh_status __atrbvh_resolve_options(const atrbvh_build_options *user,
+                                       __atrbvh_config *c,
+                                       atrbvh_error *error)
+{
+    atrbvh_build_options o;
+    atrbvh_build_options_init(&o);
+    if (user) {
+        if (user->size < offsetof(atrbvh_build_options, method) +
+                             sizeof(atrbvh_method) ||
+            user->size > sizeof o)
+            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+                                 (uint64_t)-1,
+                                 "options.size is %lu; set it with "
+                                 "atrbvh_build_options_init()",
+                                 (unsigned long)user->size);
+        memcpy(&o, user, user->size);
+        o.size = sizeof o;
+    }
+    memset(c, 0, sizeof *c);
+    if ((int)o.method < ATRBVH_METHOD_LBVH || o.method > ATRBVH_METHOD_ATRBVH)
+        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "options.method %d is not lbvh, trbvh or atrbvh",
+                             (int)o.method);
+    c->method = o.method;
+    if (o.method == ATRBVH_METHOD_LBVH) {
+        c->treelet_size = 0;
+        c->rounds = 0;
+        c->gamma = 0;
+    } else {
+        unsigned lo = o.method == ATRBVH_METHOD_TRBVH ? TRBVH_MIN_N : ATRBVH_MIN_N;
+        unsigned hi = o.method == ATRBVH_METHOD_TRBVH ? TRBVH_MAX_N : ATRBVH_MAX_N;
+        const char *name = o.method == ATRBVH_METHOD_TRBVH ? "trbvh" : "atrbvh";
+        c->treelet_size = o.treelet_size ? o.treelet_size
+                          : o.method == ATRBVH_METHOD_TRBVH ? 7u : 9u;
+        c->rounds = o.rounds ? o.rounds
+                    : o.method == ATRBVH_METHOD_TRBVH ? 3u : 2u;
+        if (c->treelet_size < lo || c->treelet_size > hi)
+            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+                                 (uint64_t)-1,
+                                 "treelet size %u is out of range for %s "
+                                 "(%u to %u)",
+                                 c->treelet_size, name, lo, hi);
+        if (c->rounds > MAX_ROUNDS)
+            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+                                 (uint64_t)-1,
+                                 "rounds %u is out of range (1 to %u)",
+                                 c->rounds, MAX_ROUNDS);
+        c->gamma = o.gamma ? o.gamma : c->treelet_size;
+        if (c->gamma < c->treelet_size)
+            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+                                 (uint64_t)-1,
+                                 "gamma %u is smaller than the treelet size "
+                                 "%u (a treelet root needs that many "
+                                 "primitives)",
+                                 c->gamma, c->treelet_size);
+    }
+    /* NaN fails both comparisons, so it is rejected here too. */
+    if (!(o.ci > 0.0 && o.ci < 1e30))
+        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "ci %g must be positive and finite", o.ci);
+    if (!(o.ct > 0.0 && o.ct < 1e30))
+        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "ct %g must be positive and finite", o.ct);
+    if (o.threads < 0)
+        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "threads %d is negative", o.threads);
+    if (o.max_leaf_size > 0 && !o.collapse)
+        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "max_leaf_size needs collapse (leaves hold one "
+                             "primitive without it)");
+    if ((int)o.backend < ATRBVH_BACKEND_CPU || o.backend > ATRBVH_BACKEND_OPENCL)
+        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "options.backend %d is not cpu or opencl",
+                             (int)o.backend);
+    c->cost.ci = o.ci;
+    c->cost.ct = o.ct;
+    c->cost.collapse = o.collapse != 0;
+    c->cost.max_leaf = o.max_leaf_size;
+    c->threads = __atrbvh_resolve_threads(o.threads);
+    c->skip_invalid = o.skip_invalid != 0;
+    c->backend = o.backend;
+    c->opencl_device = o.opencl_device;
+    c->progress = o.progress;
+    c->progress_user = o.progress_user;
+    return ATRBVH_OK;
+}

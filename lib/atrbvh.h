@@ -1,0 +1,299 @@
+/*
+ * atrbvh.h - the public API of libatrbvh.
+ *
+ * libatrbvh builds bounding volume hierarchies for ray tracing: LBVH (Karras
+ * 2012), optionally optimised by treelet restructuring (TRBVH, Karras & Aila
+ * 2013; ATRBVH, Domingues & Pedrini 2015), with leaves collapsed by SAH cost.
+ * The output is the same, bit for bit, for any thread count.
+ *
+ * Conventions (jansson/libuv style):
+ *  - every public name starts with atrbvh_ or ATRBVH_;
+ *  - functions that can fail return an atrbvh_status and take an optional
+ *    atrbvh_error* that receives a message naming what is wrong and where;
+ *  - the library never aborts, exits or prints.
+ */
+#ifndef ATRBVH_H
+#define ATRBVH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ------------------------------------------------------------------ export */
+#if defined(_WIN32) && defined(ATRBVH_BUILDING_DLL)
+#define ATRBVH_API __declspec(dllexport)
+#elif defined(__GNUC__) && __GNUC__ >= 4
+#define ATRBVH_API __attribute__((visibility("default")))
+#else
+#define ATRBVH_API
+#endif
+
+/* ----------------------------------------------------------------- version */
+#define ATRBVH_VERSION_MAJOR 0
+#define ATRBVH_VERSION_MINOR 1
+#define ATRBVH_VERSION_PATCH 0
+#define ATRBVH_VERSION_STRING "0.1.0"
+/* (major << 16) | (minor << 8) | patch, comparable as a number. */
+#define ATRBVH_VERSION_HEX                                                     \
+    ((ATRBVH_VERSION_MAJOR << 16) | (ATRBVH_VERSION_MINOR << 8) |              \
+     ATRBVH_VERSION_PATCH)
+
+/* The version of the library actually linked, as ATRBVH_VERSION_HEX. */
+ATRBVH_API unsigned atrbvh_version(void);
+/* The version of the library actually linked, as "MAJOR.MINOR.PATCH". */
+ATRBVH_API const char *atrbvh_version_string(void);
+
+/* ------------------------------------------------------------------ errors */
+typedef enum atrbvh_status {
+    ATRBVH_OK = 0,
+    ATRBVH_ERR_INVALID_ARGUMENT = 1, /* null pointer, bad option value      */
+    ATRBVH_ERR_NO_PRIMITIVES = 2,    /* zero primitives (or none valid)     */
+    ATRBVH_ERR_NONFINITE = 3,        /* NaN or Inf coordinate in the input  */
+    ATRBVH_ERR_INDEX_RANGE = 4,      /* a vertex index out of range         */
+    ATRBVH_ERR_TOO_LARGE = 5,        /* count beyond the documented limit,
+                                        or a size computation overflows     */
+    ATRBVH_ERR_NOMEM = 6,            /* the allocator returned NULL         */
+    ATRBVH_ERR_IO = 7,               /* reading or writing a file failed    */
+    ATRBVH_ERR_FORMAT = 8,           /* a file is not a valid BVH file      */
+    ATRBVH_ERR_UNSUPPORTED = 9,      /* feature not built in (e.g. OpenCL)  */
+    ATRBVH_ERR_BACKEND = 10          /* the compute backend failed          */
+} atrbvh_status;
+
+/* A short, static description of a status code ("out of memory", ...). */
+ATRBVH_API const char *atrbvh_strerror(atrbvh_status status);
+
+#define ATRBVH_ERROR_TEXT_LENGTH 256
+/* Filled by a failing call when the caller passes a non-NULL pointer.
+ * `index` is the offending primitive (or byte offset, for files), or
+ * (uint64_t)-1 when not applicable. */
+typedef struct atrbvh_error {
+    atrbvh_status status;
+    uint64_t index;
+    char text[ATRBVH_ERROR_TEXT_LENGTH];
+} atrbvh_error;
+
+/* --------------------------------------------------------------- allocator */
+typedef void *(*atrbvh_malloc_fn)(size_t size);
+typedef void (*atrbvh_free_fn)(void *ptr);
+/* Replace the allocator used for every allocation the library makes (pass
+ * NULL, NULL to restore malloc/free). Not thread-safe: call it before any
+ * other function, or while no other call is running. */
+ATRBVH_API void atrbvh_set_allocator(atrbvh_malloc_fn malloc_fn,
+                                     atrbvh_free_fn free_fn);
+ATRBVH_API void atrbvh_get_allocator(atrbvh_malloc_fn *malloc_fn,
+                                     atrbvh_free_fn *free_fn);
+
+/* ---------------------------------------------------------------- geometry */
+typedef enum atrbvh_geometry_type {
+    ATRBVH_GEOMETRY_TRIANGLES = 0,
+    ATRBVH_GEOMETRY_BOXES = 1
+} atrbvh_geometry_type;
+
+/* Describes the caller's memory; nothing is copied.
+ *
+ * Triangles: `vertices` points at the x of vertex 0; vertex v's x, y, z are
+ * the three floats at byte offset v * vertex_stride (0 means 12, packed).
+ * If `indices` is non-NULL, triangle i uses vertices indices[0..2] found at
+ * byte offset i * index_stride (0 means 12, packed); otherwise triangle i is
+ * vertices 3i, 3i+1, 3i+2 and vertex_count must be at least 3 *
+ * primitive_count.
+ *
+ * Boxes: box i is six floats (min x, y, z, max x, y, z) at byte offset
+ * i * box_stride (0 means 24, packed); min must not exceed max.
+ */
+typedef struct atrbvh_geometry {
+    atrbvh_geometry_type type;
+    size_t primitive_count;
+    const float *vertices;
+    size_t vertex_count;
+    size_t vertex_stride;
+    const uint32_t *indices;
+    size_t index_stride;
+    const float *boxes;
+    size_t box_stride;
+} atrbvh_geometry;
+
+/* Convenience initialisers (strides 0 = packed). */
+ATRBVH_API atrbvh_geometry atrbvh_geometry_triangles(const float *vertices,
+                                                     size_t vertex_count,
+                                                     const uint32_t *indices,
+                                                     size_t triangle_count);
+ATRBVH_API atrbvh_geometry atrbvh_geometry_boxes(const float *boxes,
+                                                 size_t box_count);
+
+/* The most primitives one build accepts. */
+#define ATRBVH_MAX_PRIMITIVES ((size_t)1 << 30)
+
+/* ----------------------------------------------------------------- options */
+typedef enum atrbvh_method {
+    ATRBVH_METHOD_LBVH = 0,   /* Karras 2012 only                        */
+    ATRBVH_METHOD_TRBVH = 1,  /* + Karras & Aila 2013 treelet DP         */
+    ATRBVH_METHOD_ATRBVH = 2  /* + Domingues & Pedrini 2015 agglomerative */
+} atrbvh_method;
+
+typedef enum atrbvh_backend {
+    ATRBVH_BACKEND_CPU = 0,
+    ATRBVH_BACKEND_OPENCL = 1
+} atrbvh_backend;
+
+/* Called from the thread that called atrbvh_build, between stages. */
+typedef void (*atrbvh_progress_fn)(const char *stage, double fraction,
+                                   void *user);
+
+/* Set `size` to sizeof(atrbvh_build_options) (atrbvh_build_options_init
+ * does); fields beyond the size the caller was compiled with take their
+ * defaults, so the struct can grow without breaking old callers. */
+typedef struct atrbvh_build_options {
+    size_t size;
+    atrbvh_method method;        /* default ATRBVH_METHOD_ATRBVH          */
+    unsigned treelet_size;       /* 0 = method default (TRBVH 7, ATRBVH 9) */
+    unsigned rounds;             /* 0 = method default (TRBVH 3, ATRBVH 2) */
+    unsigned gamma;              /* first round's minimum subtree size,
+                                    0 = treelet_size; doubles each round  */
+    double ci;                   /* internal node cost, default 1.2       */
+    double ct;                   /* primitive cost, default 1.0           */
+    int collapse;                /* nonzero: multi-primitive leaves by SAH */
+    unsigned max_leaf_size;      /* 0 = no limit                          */
+    int threads;                 /* 0 = OpenMP default                    */
+    int skip_invalid;            /* nonzero: leave out NaN/Inf primitives
+                                    (counted) instead of failing          */
+    atrbvh_backend backend;      /* default ATRBVH_BACKEND_CPU            */
+    const char *opencl_device;   /* NULL: $ATRBVH_OPENCL_DEVICE or first  */
+    atrbvh_progress_fn progress; /* may be NULL                           */
+    void *progress_user;
+} atrbvh_build_options;
+
+ATRBVH_API void atrbvh_build_options_init(atrbvh_build_options *options);
+
+/* ------------------------------------------------------------------ stages */
+typedef enum atrbvh_stage {
+    ATRBVH_STAGE_BOUNDS = 0,
+    ATRBVH_STAGE_MORTON,
+    ATRBVH_STAGE_SORT,
+    ATRBVH_STAGE_HIERARCHY,
+    ATRBVH_STAGE_REFIT,
+    ATRBVH_STAGE_OPTIMISE,
+    ATRBVH_STAGE_COLLAPSE,
+    ATRBVH_STAGE_LAYOUT,
+    ATRBVH_STAGE_COUNT
+} atrbvh_stage;
+
+/* "bounds", "morton", ...; NULL when out of range. */
+ATRBVH_API const char *atrbvh_stage_name(atrbvh_stage stage);
+
+/* -------------------------------------------------------------------- BVH */
+/* A node of the output, in depth-first order; the root is node 0.
+ * Internal node (count == 0): the left child is the next node, the right
+ * child is node `index`.  Leaf (count > 0): its primitives are
+ * primitive_indices[index .. index + count - 1]. */
+typedef struct atrbvh_node {
+    float min[3];
+    float max[3];
+    uint32_t index;
+    uint32_t count;
+} atrbvh_node;
+
+typedef struct atrbvh_bvh atrbvh_bvh;
+
+typedef struct atrbvh_stats {
+    size_t primitives;       /* primitives in the tree                   */
+    size_t invalid_skipped;  /* primitives left out (skip_invalid)       */
+    size_t nodes;
+    size_t leaves;
+    unsigned max_depth;      /* root = depth 0                          */
+    unsigned max_leaf_primitives;
+    double sah;              /* SAH cost of the tree as built           */
+    double ci, ct;           /* the constants the SAH uses              */
+    atrbvh_method method;
+    unsigned treelet_size;   /* 0 for LBVH                              */
+    unsigned rounds;         /* 0 for LBVH                              */
+    atrbvh_backend backend;
+    int threads;             /* threads the build ran with              */
+    double build_ms;         /* whole build, wall clock                 */
+    double stage_ms[ATRBVH_STAGE_COUNT];
+} atrbvh_stats;
+
+/* Build a BVH over `geometry`. `options` may be NULL (defaults). On
+ * success *out owns a new BVH (free it with atrbvh_bvh_free); on failure
+ * *out is NULL and `error`, if non-NULL, says what and where. */
+ATRBVH_API atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
+                                      const atrbvh_build_options *options,
+                                      atrbvh_bvh **out, atrbvh_error *error);
+
+ATRBVH_API void atrbvh_bvh_free(atrbvh_bvh *bvh);
+
+ATRBVH_API const atrbvh_node *atrbvh_bvh_nodes(const atrbvh_bvh *bvh,
+                                               size_t *count);
+ATRBVH_API const uint32_t *atrbvh_bvh_primitive_indices(const atrbvh_bvh *bvh,
+                                                        size_t *count);
+ATRBVH_API void atrbvh_bvh_stats(const atrbvh_bvh *bvh, atrbvh_stats *stats);
+
+/* SAH cost of a node array: (ci * sum of internal areas + ct * sum over
+ * leaves of area * count) / root area, areas in double precision.  0 when
+ * the root's area is 0 (every box degenerate). */
+ATRBVH_API double atrbvh_sah(const atrbvh_node *nodes, size_t node_count,
+                             double ci, double ct);
+
+/* ------------------------------------------------------------- ray queries */
+typedef struct atrbvh_ray {
+    float origin[3];
+    float dir[3];
+    float tmin, tmax;
+} atrbvh_ray;
+
+#define ATRBVH_NO_HIT UINT32_MAX
+typedef struct atrbvh_hit {
+    float t;            /* distance along dir (dir need not be unit)     */
+    float u, v;         /* barycentrics of vertices 1 and 2 (triangles) */
+    uint32_t primitive; /* ATRBVH_NO_HIT when nothing was hit            */
+} atrbvh_hit;
+
+/* Closest hit in (tmin, tmax]... see atrbvh_intersect(3).  `geometry`
+ * must be the one the BVH was built from. Returns nonzero on a hit. */
+ATRBVH_API int atrbvh_intersect(const atrbvh_bvh *bvh,
+                                const atrbvh_geometry *geometry,
+                                const atrbvh_ray *ray, atrbvh_hit *hit);
+/* Any hit in [tmin, tmax]: nonzero if anything is hit. */
+ATRBVH_API int atrbvh_occluded(const atrbvh_bvh *bvh,
+                               const atrbvh_geometry *geometry,
+                               const atrbvh_ray *ray);
+/* Batched versions, OpenMP-parallel over rays (threads 0 = default).
+ * occluded[i] is set to 0 or 1. */
+ATRBVH_API atrbvh_status atrbvh_intersect_batch(
+    const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
+    const atrbvh_ray *rays, size_t count, atrbvh_hit *hits, int threads,
+    atrbvh_error *error);
+ATRBVH_API atrbvh_status atrbvh_occluded_batch(
+    const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
+    const atrbvh_ray *rays, size_t count, uint8_t *occluded, int threads,
+    atrbvh_error *error);
+
+/* ----------------------------------------------------------- save and load */
+/* The file format is documented in atrbvh(5). */
+ATRBVH_API atrbvh_status atrbvh_save(const atrbvh_bvh *bvh, const char *path,
+                                     atrbvh_error *error);
+ATRBVH_API atrbvh_status atrbvh_load(const char *path, atrbvh_bvh **out,
+                                     atrbvh_error *error);
+/* Same, to and from memory (atrbvh_save_memory's buffer is allocated with
+ * the library's allocator: release it with atrbvh_free). */
+ATRBVH_API atrbvh_status atrbvh_save_memory(const atrbvh_bvh *bvh,
+                                            void **data, size_t *size,
+                                            atrbvh_error *error);
+ATRBVH_API atrbvh_status atrbvh_load_memory(const void *data, size_t size,
+                                            atrbvh_bvh **out,
+                                            atrbvh_error *error);
+ATRBVH_API void atrbvh_free(void *ptr);
+
+/* Compare two BVHs: 0 when identical (constants, nodes bit for bit,
+ * primitive indices); otherwise nonzero, with `error` text naming the first
+ * difference ("node 12 differs: ..."). */
+ATRBVH_API int atrbvh_compare(const atrbvh_bvh *a, const atrbvh_bvh *b,
+                              atrbvh_error *error);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* ATRBVH_H */

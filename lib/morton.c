@@ -1,0 +1,2 @@
+/* placeholder: core stage, being written */
+typedef int atrbvh_placeholder_morton;

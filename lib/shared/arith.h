@@ -1,0 +1,248 @@
+/*
+ * shared/arith.h - the per-item arithmetic of every stage, written once.
+ *
+ * This header compiles both as C99 (the CPU backend) and as OpenCL C 1.2
+ * (the OpenCL backend embeds it), so the two backends cannot drift.  Keep it
+ * to the common subset: no libc, no VLAs, fixed-width types through the
+ * aliases below, address spaces through ATRBVH_GLOBAL.
+ *
+ * Numerics (see atrbvh(3), "Numerical behaviour"):
+ *  - boxes are float; centres are 0.5*min + 0.5*max (cannot overflow);
+ *  - surface areas, SAH costs and the Morton normalisation are computed in
+ *    double: a float box of any finite extent has a finite, nonzero double
+ *    area unless it is degenerate (FLT_MAX^2 ~ 1e77, FLT_TRUE_MIN^2 ~ 2e-90),
+ *    so nothing overflows to Inf or underflows to 0.  The OpenCL backend
+ *    therefore needs cl_khr_fp64.
+ *  - no contraction: C is compiled with -ffp-contract=off, OpenCL with the
+ *    FP_CONTRACT pragma below, so a*b+c rounds twice on both sides.
+ */
+#ifndef ATRBVH_SHARED_ARITH_H
+#define ATRBVH_SHARED_ARITH_H
+
+#ifdef __OPENCL_VERSION__
+#pragma OPENCL FP_CONTRACT OFF
+#pragma OPENCL EXTENSION cl_khr_fp64 : enable
+typedef uint atrbvh_u32;
+typedef ulong atrbvh_u64;
+typedef int atrbvh_i32;
+typedef long atrbvh_i64;
+#define ATRBVH_FN static inline
+#define ATRBVH_GLOBAL __global
+#define ATRBVH_CONST_GLOBAL __global const
+#define ATRBVH_CLZ64(x) ((int)clz((ulong)(x)))
+#define ATRBVH_U32_MAX 0xffffffffu
+#else
+#include <stdint.h>
+typedef uint32_t atrbvh_u32;
+typedef uint64_t atrbvh_u64;
+typedef int32_t atrbvh_i32;
+typedef int64_t atrbvh_i64;
+#define ATRBVH_FN static inline
+#define ATRBVH_GLOBAL
+#define ATRBVH_CONST_GLOBAL const
+#define ATRBVH_U32_MAX 0xffffffffu
+#if defined(__GNUC__) || defined(__clang__)
+#define ATRBVH_CLZ64(x) ((x) ? __builtin_clzll((unsigned long long)(x)) : 64)
+#else
+static inline int atrbvh_clz64_portable(uint64_t x)
+{
+    int n = 0;
+    if (!x)
+        return 64;
+    while (!(x & 0x8000000000000000ull)) {
+        x <<= 1;
+        n++;
+    }
+    return n;
+}
+#define ATRBVH_CLZ64(x) atrbvh_clz64_portable(x)
+#endif
+#endif
+
+/* ------------------------------------------------------------------ boxes */
+typedef struct atrbvh_box {
+    float min[3];
+    float max[3];
+} atrbvh_box;
+
+ATRBVH_FN atrbvh_box atrbvh_box_union(atrbvh_box a, atrbvh_box b)
+{
+    atrbvh_box r;
+    int k;
+    for (k = 0; k < 3; k++) {
+        r.min[k] = a.min[k] < b.min[k] ? a.min[k] : b.min[k];
+        r.max[k] = a.max[k] > b.max[k] ? a.max[k] : b.max[k];
+    }
+    return r;
+}
+
+/* An "empty" box: union with it is the identity. */
+ATRBVH_FN atrbvh_box atrbvh_box_empty(void)
+{
+    atrbvh_box r;
+    int k;
+    for (k = 0; k < 3; k++) {
+        r.min[k] = 3.402823466e+38f;
+        r.max[k] = -3.402823466e+38f;
+    }
+    return r;
+}
+
+/* Surface area in double; see the header comment for why. */
+ATRBVH_FN double atrbvh_box_area(atrbvh_box b)
+{
+    double dx = (double)b.max[0] - (double)b.min[0];
+    double dy = (double)b.max[1] - (double)b.min[1];
+    double dz = (double)b.max[2] - (double)b.min[2];
+    double s = dx * dy;
+    s = s + dy * dz;
+    s = s + dz * dx;
+    return 2.0 * s;
+}
+
+ATRBVH_FN float atrbvh_box_centre(atrbvh_box b, int axis)
+{
+    return 0.5f * b.min[axis] + 0.5f * b.max[axis];
+}
+
+/* ------------------------------------------------------------------ costs */
+/* The SAH cost model. Costs are unnormalised (not divided by the root area). */
+typedef struct atrbvh_cost_params {
+    double ci;          /* cost of an internal node (traversal step)       */
+    double ct;          /* cost of one primitive test                      */
+    int collapse;       /* nonzero: a subtree may become one leaf           */
+    atrbvh_u32 max_leaf; /* most primitives in a collapsed leaf, 0 = any   */
+} atrbvh_cost_params;
+
+/* Cost of a single-primitive leaf. */
+ATRBVH_FN double atrbvh_leaf_cost(const atrbvh_cost_params *p, double area)
+{
+    return p->ct * area;
+}
+
+/* Whether a subtree of `count` primitives may become one leaf. */
+ATRBVH_FN int atrbvh_may_collapse(const atrbvh_cost_params *p, atrbvh_u32 count)
+{
+    return p->collapse && (p->max_leaf == 0 || count <= p->max_leaf);
+}
+
+/* Cost of an internal node with the given area and primitive count over
+ * children of costs cl and cr (left first, always, so the sum rounds the
+ * same way everywhere): ci*A + cl + cr, or ct*A*N when collapsing is
+ * allowed and strictly cheaper.  *collapsed says which was taken. */
+ATRBVH_FN double atrbvh_node_cost(const atrbvh_cost_params *p, double area,
+                                  atrbvh_u32 count, double cl, double cr,
+                                  int *collapsed)
+{
+    double binary = p->ci * area;
+    binary = binary + cl;
+    binary = binary + cr;
+    if (atrbvh_may_collapse(p, count)) {
+        double flat = p->ct * area;
+        flat = flat * (double)count;
+        if (flat < binary) {
+            *collapsed = 1;
+            return flat;
+        }
+    }
+    *collapsed = 0;
+    return binary;
+}
+
+/* ----------------------------------------------------------------- morton */
+#define ATRBVH_MORTON_BITS 21
+#define ATRBVH_MORTON_MAX 2097151u /* 2^21 - 1 */
+
+/* Spreads the low 21 bits of x so that there are two zero bits after
+ * each: bit k moves to bit 3k. */
+ATRBVH_FN atrbvh_u64 atrbvh_morton_spread(atrbvh_u64 x)
+{
+    x &= 0x1fffffull;
+    x = (x | (x << 32)) & 0x1f00000000ffffull;
+    x = (x | (x << 16)) & 0x1f0000ff0000ffull;
+    x = (x | (x << 8)) & 0x100f00f00f00f00full;
+    x = (x | (x << 4)) & 0x10c30c30c30c30c3ull;
+    x = (x | (x << 2)) & 0x1249249249249249ull;
+    return x;
+}
+
+/* Quantises coordinate c of an axis whose centroid range starts at `lo`
+ * with `scale` = 2^21 / extent (0 for a zero-extent axis, computed once
+ * by the host) to 0 .. 2^21-1. */
+ATRBVH_FN atrbvh_u32 atrbvh_morton_quantise(float c, double lo, double scale)
+{
+    double t = ((double)c - lo) * scale;
+    if (!(t > 0.0))
+        return 0u;
+    if (t >= (double)ATRBVH_MORTON_MAX)
+        return ATRBVH_MORTON_MAX;
+    return (atrbvh_u32)t;
+}
+
+/* 63-bit key, x the most significant bit of every triplet. */
+ATRBVH_FN atrbvh_u64 atrbvh_morton_key(atrbvh_u32 qx, atrbvh_u32 qy,
+                                       atrbvh_u32 qz)
+{
+    return (atrbvh_morton_spread(qx) << 2) | (atrbvh_morton_spread(qy) << 1) |
+           atrbvh_morton_spread(qz);
+}
+
+/* -------------------------------------------------------------- hierarchy */
+/* Karras 2012, delta(i, j): the length of the longest common prefix of the
+ * keys at sorted positions i and j, -1 when j is outside [0, n).  Equal
+ * keys are told apart by their positions (64 + the common prefix of i and
+ * j), so every pair has a distinct prefix length ordering. */
+ATRBVH_FN int atrbvh_karras_delta(ATRBVH_CONST_GLOBAL atrbvh_u64 *keys,
+                                  atrbvh_i64 n, atrbvh_i64 i, atrbvh_i64 j)
+{
+    atrbvh_u64 a, b;
+    if (j < 0 || j >= n)
+        return -1;
+    a = keys[i];
+    b = keys[j];
+    if (a == b)
+        return 64 + ATRBVH_CLZ64((atrbvh_u64)(i ^ j)) - 32;
+    return ATRBVH_CLZ64(a ^ b);
+}
+
+/* The children of internal node i of a Karras tree over n sorted keys:
+ * writes child indices in the tree numbering (internal 0..n-2, leaves
+ * n-1..2n-2) and the number of primitives under i. */
+ATRBVH_FN void atrbvh_karras_node(ATRBVH_CONST_GLOBAL atrbvh_u64 *keys,
+                                  atrbvh_i64 n, atrbvh_i64 i,
+                                  atrbvh_u32 *left, atrbvh_u32 *right,
+                                  atrbvh_u32 *count)
+{
+    int d, dmin, dnode;
+    atrbvh_i64 lmax, l, t, j, s, gamma, lo, hi;
+    d = atrbvh_karras_delta(keys, n, i, i + 1) -
+                    atrbvh_karras_delta(keys, n, i, i - 1) >
+                0
+            ? 1
+            : -1;
+    dmin = atrbvh_karras_delta(keys, n, i, i - d);
+    lmax = 2;
+    while (atrbvh_karras_delta(keys, n, i, i + lmax * d) > dmin)
+        lmax *= 2;
+    l = 0;
+    for (t = lmax / 2; t >= 1; t /= 2)
+        if (atrbvh_karras_delta(keys, n, i, i + (l + t) * d) > dmin)
+            l += t;
+    j = i + l * d;
+    dnode = atrbvh_karras_delta(keys, n, i, j);
+    s = 0;
+    t = l;
+    do {
+        t = (t + 1) / 2;
+        if (atrbvh_karras_delta(keys, n, i, i + (s + t) * d) > dnode)
+            s += t;
+    } while (t > 1);
+    gamma = i + s * d + (d < 0 ? d : 0);
+    lo = i < j ? i : j;
+    hi = i < j ? j : i;
+    *left = (atrbvh_u32)(lo == gamma ? gamma + n - 1 : gamma);
+    *right = (atrbvh_u32)(hi == gamma + 1 ? gamma + 1 + n - 1 : gamma + 1);
+    *count = (atrbvh_u32)(hi - lo + 1);
+}
+
+#endif

@@ -1,0 +1,1 @@
+/* placeholder: treelet arithmetic shared by CPU and OpenCL */

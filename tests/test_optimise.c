@@ -1,0 +1,2 @@
+/* placeholder test program */
+int main(void) { return 77; }

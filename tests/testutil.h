@@ -1,0 +1,50 @@
+/*
+ * testutil.h - what the Check suites share: an independent checker of the
+ * structural invariants, the scene folder, and small generators.
+ */
+#ifndef ATRBVH_TESTUTIL_H
+#define ATRBVH_TESTUTIL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "atrbvh.h"
+#include "scene.h"
+
+/* Checks, independently of the library: every input primitive (minus
+ * `skipped`, given as a sorted list of skipped ids or NULL) referenced
+ * exactly once; child boxes inside parent boxes; each leaf box contains
+ * its primitives' boxes; node/leaf/depth counts equal the reported stats;
+ * the SAH recomputed here (long double) equals stats.sah to 1e-9
+ * relative.  Returns 1 when all hold; else 0 with the reason in msg. */
+int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
+                 size_t msg_len);
+
+/* Bit-for-bit equality of two builds (nodes, indices, SAH); 1 if equal,
+ * else 0 with the first difference in msg. */
+int tu_same_bvh(const atrbvh_bvh *a, const atrbvh_bvh *b, char *msg,
+                size_t msg_len);
+
+/* $ATRBVH_SCENES when it names a readable folder holding *.ply, else NULL. */
+const char *tu_scenes_dir(void);
+/* Fills `paths` (up to max) with the .ply files of tu_scenes_dir(), sorted;
+ * returns how many.  Strings are malloc'd: free with tu_free_paths. */
+size_t tu_scene_paths(char **paths, size_t max);
+void tu_free_paths(char **paths, size_t n);
+
+/* xorshift64* random numbers, deterministic per seed. */
+typedef struct tu_rng {
+    uint64_t s;
+} tu_rng;
+void tu_rng_seed(tu_rng *r, uint64_t seed);
+uint64_t tu_rng_next(tu_rng *r);
+float tu_rng_float(tu_rng *r); /* [0, 1) */
+
+/* n random triangles in the unit cube scaled by `scale` and translated by
+ * `offset` (packed vertices, 9 floats per triangle, caller frees). */
+float *tu_random_triangles(size_t n, uint64_t seed, float scale, float offset);
+
+/* Builds with options (threads set), failing the current test on error. */
+atrbvh_bvh *tu_build(const atrbvh_geometry *g, const atrbvh_build_options *o);
+
+#endif

@@ -1,0 +1,2 @@
+/* placeholder: to be written (see the issue) */
+typedef int atrbvh_placeholder_json_;
