@@ -1,12 +1,227 @@
-/* placeholder: treelet restructuring (issue 3) */
-#include "internal.h"
+/*
+ * optimise.c - stage "optimise": treelet restructuring of the whole tree,
+ * TRBVH (Karras & Aila 2013) or ATRBVH (Domingues & Pedrini 2015).
+ *
+ * Rounds r = 0 .. rounds-1 with gamma_r = gamma * 2^r (saturating): in a
+ * round, every internal node whose subtree holds at least gamma_r
+ * primitives (the "crown": counts only grow upwards, so it is a connected
+ * top part of the tree) is a treelet root, processed in post-order - a
+ * node only after its whole subtree is final.  Each treelet is then a
+ * pure function of that subtree, so the result is the same, bit for bit,
+ * for any thread count and any schedule.
+ *
+ * Consistency: a treelet write-back leaves boxes, counts and costs of the
+ * treelet's nodes exact (atrbvh_node_cost, as refit computes them); the
+ * root of every crown node is refreshed (its cost recomputed from its
+ * children, left first) before its treelet is formed, because the
+ * subtrees below may have become cheaper.  Nodes outside the crown are not
+ * touched, so after each round the tree is as refit would leave it.
+ *
+ * Scheduling on the CPU: post-order OpenMP tasks for subtrees of at least
+ * TASK_CUTOFF primitives, and below that (or deeper than MAX_TASK_DEPTH)
+ * a stackless serial post-order walk that uses the parent pointers - the
+ * treelet root keeps its id and parent, so the walk's way up stays valid.
+ * Scratch is per thread, allocated once per build.
+ */
+#include "optimise.h"
+
+#include <string.h>
+
+#if ATRBVH_TREELET_MAX < 32 || ATRBVH_TRBVH_MAX < 10
+#error "treelet maxima below the ranges api.c accepts"
+#endif
+
+/* Subtrees smaller than this are walked serially inside one task. */
+#define TASK_CUTOFF 16384u
+/* Deeper task recursion falls back to the serial walk (bounds the stack
+ * on degenerate trees). */
+#define MAX_TASK_DEPTH 48
+
+typedef struct walk_ctx {
+    atrbvh_treelet_tree t;
+    const atrbvh_cost_params *cost;
+    atrbvh_method method;
+    unsigned n;
+    uint32_t gamma;
+    __atrbvh_opt_worker *workers;
+} walk_ctx;
+
+static int in_crown(const walk_ctx *c, uint32_t node)
+{
+    return node < c->t.n_internal && c->t.count[node] >= c->gamma;
+}
+
+static void process(const walk_ctx *c, uint32_t node)
+{
+    __atrbvh_opt_worker *w = c->workers;
+#ifdef _OPENMP
+    w += omp_get_thread_num();
+#endif
+    atrbvh_treelet_refresh(&c->t, c->cost, node);
+    if (c->method == ATRBVH_METHOD_TRBVH)
+        __atrbvh_trbvh_treelet(&c->t, c->cost, node, c->n, w);
+    else
+        __atrbvh_atrbvh_treelet(&c->t, c->cost, node, c->n, w);
+}
+
+/* Post-order over the crown below (and including) crown node s, without a
+ * stack: descend to the first crown node with no crown child, process,
+ * then go to the right sibling's subtree or up to the parent. */
+static void walk_serial(const walk_ctx *c, uint32_t s)
+{
+    const atrbvh_treelet_tree *t = &c->t;
+    uint32_t x = s;
+    for (;;) {
+        for (;;) {
+            if (in_crown(c, t->left[x]))
+                x = t->left[x];
+            else if (in_crown(c, t->right[x]))
+                x = t->right[x];
+            else
+                break;
+        }
+        for (;;) {
+            uint32_t parent;
+            process(c, x);
+            if (x == s)
+                return;
+            parent = t->parent[x];
+            if (t->left[parent] == x && in_crown(c, t->right[parent])) {
+                x = t->right[parent];
+                break; /* descend into the right subtree */
+            }
+            x = parent;
+        }
+    }
+}
+
+static void walk_tasks(const walk_ctx *c, uint32_t node, int depth)
+{
+    const atrbvh_treelet_tree *t = &c->t;
+    uint32_t l, r;
+    int spawn_l, spawn_r;
+    if (c->t.count[node] < TASK_CUTOFF || depth >= MAX_TASK_DEPTH) {
+        walk_serial(c, node);
+        return;
+    }
+    l = t->left[node];
+    r = t->right[node];
+    spawn_l = in_crown(c, l);
+    spawn_r = in_crown(c, r);
+    (void)spawn_l;
+    (void)spawn_r;
+#ifdef _OPENMP
+#pragma omp task default(shared) if (spawn_l && t->count[l] >= TASK_CUTOFF)
+#endif
+    {
+        if (spawn_l)
+            walk_tasks(c, l, depth + 1);
+    }
+    if (spawn_r)
+        walk_tasks(c, r, depth + 1);
+#ifdef _OPENMP
+#pragma omp taskwait
+#endif
+    process(c, node);
+}
+
+/* Per-thread scratch layout, each part aligned to 64 bytes. */
+#define ALIGN64(x) (((x) + 63u) & ~(size_t)63u)
 
 atrbvh_status __atrbvh_optimise(__atrbvh_tree *t, const __atrbvh_config *cfg,
                                 atrbvh_error *error)
 {
-    (void)t;
-    if (cfg->method == ATRBVH_METHOD_LBVH)
+    walk_ctx c;
+    __atrbvh_opt_worker *workers = NULL;
+    unsigned char *block = NULL;
+    size_t subsets = 0, pairs = 0, stride = 0, off_cost, off_count,
+           off_split, off_dist, total;
+    unsigned round, n = cfg->treelet_size;
+    int threads = cfg->threads > 0 ? cfg->threads : 1, k;
+
+    if (cfg->method == ATRBVH_METHOD_LBVH || cfg->rounds == 0)
         return ATRBVH_OK;
-    return __atrbvh_fail(error, ATRBVH_ERR_UNSUPPORTED, (uint64_t)-1,
-                         "treelet restructuring is not implemented yet");
+    if (cfg->method != ATRBVH_METHOD_TRBVH &&
+        cfg->method != ATRBVH_METHOD_ATRBVH)
+        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "optimise: method %d has no treelet optimiser",
+                             (int)cfg->method);
+    if (n < 3u ||
+        n > (cfg->method == ATRBVH_METHOD_TRBVH ? (unsigned)ATRBVH_TRBVH_MAX
+                                                : (unsigned)ATRBVH_TREELET_MAX))
+        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "optimise: treelet size %u out of range", n);
+    if (cfg->gamma < n)
+        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "optimise: gamma %u below the treelet size %u",
+                             cfg->gamma, n);
+    /* A tree of fewer than n primitives has no treelet root. */
+    if (t->n < 2u || t->count[0] < n)
+        return ATRBVH_OK;
+
+    /* Scratch: TRBVH 2^n boxes, costs, counts, splits; ATRBVH the
+     * n(n-1)/2 distances.  Sizes are tiny (n <= 32) but checked anyway. */
+    if (cfg->method == ATRBVH_METHOD_TRBVH)
+        subsets = (size_t)1 << n;
+    else
+        pairs = (size_t)n * (n - 1u) / 2u;
+    off_cost = ALIGN64(subsets * sizeof(atrbvh_box));
+    off_count = off_cost + ALIGN64(subsets * sizeof(double));
+    off_split = off_count + ALIGN64(subsets * sizeof(uint32_t));
+    off_dist = off_split + ALIGN64(subsets * sizeof(uint32_t));
+    stride = off_dist + ALIGN64(pairs * sizeof(double));
+    if (!__atrbvh_mul_size((size_t)threads, stride, &total))
+        return __atrbvh_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
+                             "optimise: scratch size overflows");
+    workers = __atrbvh_alloc_array((size_t)threads, sizeof *workers);
+    block = __atrbvh_alloc_array(total, 1);
+    if (!workers || !block) {
+        __atrbvh_free(workers);
+        __atrbvh_free(block);
+        return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                             "optimise: out of memory for %d x %lu bytes of "
+                             "treelet scratch",
+                             threads, (unsigned long)stride);
+    }
+    for (k = 0; k < threads; k++) {
+        unsigned char *base = block + (size_t)k * stride;
+        memset(&workers[k], 0, sizeof workers[k]);
+        workers[k].trbvh.box = (atrbvh_box *)(void *)base;
+        workers[k].trbvh.cost = (double *)(void *)(base + off_cost);
+        workers[k].trbvh.count = (uint32_t *)(void *)(base + off_count);
+        workers[k].trbvh.split = (uint32_t *)(void *)(base + off_split);
+        workers[k].dist = (double *)(void *)(base + off_dist);
+    }
+
+    c.t.left = t->left;
+    c.t.right = t->right;
+    c.t.parent = t->parent;
+    c.t.count = t->count;
+    c.t.box = t->box;
+    c.t.cost = t->cost;
+    c.t.n_internal = t->n - 1u;
+    c.cost = &cfg->cost;
+    c.method = cfg->method;
+    c.n = n;
+    c.workers = workers;
+
+    for (round = 0; round < cfg->rounds; round++) {
+        uint64_t g = (uint64_t)cfg->gamma << (round < 40u ? round : 40u);
+        if (g > t->count[0])
+            break; /* no crown left: later rounds would do nothing */
+        c.gamma = (uint32_t)g;
+        if (threads > 1 && t->count[0] >= TASK_CUTOFF) {
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads)
+#pragma omp single
+#endif
+            walk_tasks(&c, 0, 0);
+        } else {
+            walk_serial(&c, 0);
+        }
+    }
+
+    __atrbvh_free(block);
+    __atrbvh_free(workers);
+    return ATRBVH_OK;
 }

@@ -1,1 +1,467 @@
-/* placeholder: treelet arithmetic shared by CPU and OpenCL */
+/*
+ * shared/treelet.h - the per-treelet arithmetic of the optimise stage,
+ * written once for the CPU (C99) and the OpenCL backend (OpenCL C 1.2).
+ *
+ * Same rules as shared/arith.h: no libc, no VLAs, no recursion, fixed-size
+ * private arrays sized by the compile-time maxima below, everything larger
+ * (the 2^n subset tables of TRBVH, the distance matrix of ATRBVH) passed in
+ * as scratch by pointer.
+ *
+ * A treelet (Karras & Aila 2013, section 4) is a root R plus n-1 internal
+ * nodes below it whose n children outside the set are the "treelet leaves"
+ * (any BVH node: a real leaf or the root of an untouched subtree).  Both
+ * optimisers rebuild the topology above the n treelet leaves and keep it
+ * only when its cost is strictly lower than the cost of R.
+ *
+ * The pieces, in the order the driver uses them:
+ *   atrbvh_treelet_form      - pick the n leaves (largest area first)
+ *   atrbvh_treelet_gather    - copy their box, count, cost
+ *   atrbvh_trbvh_dp          - TRBVH: optimal topology by subset DP
+ *   atrbvh_agglomerate       - ATRBVH: greedy agglomerative topology
+ *   atrbvh_treelet_evaluate  - exact boxes, counts, costs of a topology
+ *   atrbvh_treelet_write     - write it back, reusing the internal ids
+ *
+ * A topology is n-1 local internal nodes; local node k has children
+ * left[k], right[k] given as codes: c < n is treelet leaf c, c >= n is
+ * local internal node c - n.  `root` is the local root.
+ *
+ * Every cost is computed with atrbvh_node_cost (ci*A + left + right, left
+ * first, or the collapse term ct*A*N when allowed and strictly cheaper),
+ * the same function the refit stage uses, so a written-back treelet is
+ * bit-for-bit what a refit of the new tree would compute.
+ */
+#ifndef ATRBVH_SHARED_TREELET_H
+#define ATRBVH_SHARED_TREELET_H
+
+#include "arith.h"
+
+/* Largest treelet of each optimiser.  TRBVH needs 2^n subset entries of
+ * scratch and O(3^n) work per treelet; ATRBVH keeps one cluster per leaf
+ * and n(n-1)/2 distances. */
+#define ATRBVH_TREELET_MAX 32
+#define ATRBVH_TRBVH_MAX 10
+
+/* ------------------------------------------------------------- the tree */
+/* The tree arrays the optimiser reads and writes (see __atrbvh_tree):
+ * nodes < n_internal are internal (left/right valid), the rest leaves. */
+typedef struct atrbvh_treelet_tree {
+    ATRBVH_GLOBAL atrbvh_u32 *left;
+    ATRBVH_GLOBAL atrbvh_u32 *right;
+    ATRBVH_GLOBAL atrbvh_u32 *parent;
+    ATRBVH_GLOBAL atrbvh_u32 *count;
+    ATRBVH_GLOBAL atrbvh_box *box;
+    ATRBVH_GLOBAL double *cost;
+    atrbvh_u32 n_internal;
+} atrbvh_treelet_tree;
+
+/* A formed treelet. */
+typedef struct atrbvh_treelet {
+    atrbvh_u32 n;                                /* leaves formed          */
+    atrbvh_u32 leaf[ATRBVH_TREELET_MAX];         /* node ids, slot order   */
+    atrbvh_u32 internal[ATRBVH_TREELET_MAX - 1]; /* [0] = root, then in
+                                                    expansion order        */
+} atrbvh_treelet;
+
+/* The treelet leaves' data, in slot order. */
+typedef struct atrbvh_treelet_leaves {
+    atrbvh_box box[ATRBVH_TREELET_MAX];
+    atrbvh_u32 count[ATRBVH_TREELET_MAX];
+    double cost[ATRBVH_TREELET_MAX];
+} atrbvh_treelet_leaves;
+
+/* A topology over the leaves (codes as in the header comment) and, after
+ * atrbvh_treelet_evaluate, the box, primitive count and cost of each local
+ * internal node, plus `order`: the local nodes in pre-order (root first,
+ * left subtree before right), the order internal ids are assigned in. */
+typedef struct atrbvh_treelet_topo {
+    atrbvh_u32 root;
+    atrbvh_u32 left[ATRBVH_TREELET_MAX - 1];
+    atrbvh_u32 right[ATRBVH_TREELET_MAX - 1];
+    atrbvh_u32 order[ATRBVH_TREELET_MAX - 1];
+    atrbvh_box box[ATRBVH_TREELET_MAX - 1];
+    atrbvh_u32 count[ATRBVH_TREELET_MAX - 1];
+    double cost[ATRBVH_TREELET_MAX - 1];
+} atrbvh_treelet_topo;
+
+/* -------------------------------------------------------------- forming */
+/* Treelet formation (Karras & Aila 2013, section 4.1; reference
+ * Treelet.cuh formTreelet): start from the root's two children and
+ * expand, n-2 times, the treelet leaf with the largest surface area among
+ * those that are internal BVH nodes (strict >, so ties go to the lowest
+ * slot).  The expanded node's left child takes its slot, its right child
+ * is appended.  Returns the number of leaves formed: n whenever the root's
+ * subtree holds at least n primitives (it then has at least n-1 internal
+ * nodes), fewer only otherwise. */
+ATRBVH_FN atrbvh_u32 atrbvh_treelet_form(const atrbvh_treelet_tree *t,
+                                         atrbvh_u32 root, atrbvh_u32 n,
+                                         atrbvh_treelet *tl)
+{
+    double area[ATRBVH_TREELET_MAX];
+    atrbvh_u32 m = 2, k;
+    tl->internal[0] = root;
+    tl->leaf[0] = t->left[root];
+    tl->leaf[1] = t->right[root];
+    area[0] = atrbvh_box_area(t->box[tl->leaf[0]]);
+    area[1] = atrbvh_box_area(t->box[tl->leaf[1]]);
+    while (m < n) {
+        atrbvh_u32 best = ATRBVH_U32_MAX, node;
+        double best_area = 0.0;
+        for (k = 0; k < m; k++) {
+            if (tl->leaf[k] >= t->n_internal)
+                continue;
+            if (best == ATRBVH_U32_MAX || area[k] > best_area) {
+                best = k;
+                best_area = area[k];
+            }
+        }
+        if (best == ATRBVH_U32_MAX)
+            break;
+        node = tl->leaf[best];
+        tl->internal[m - 1] = node;
+        tl->leaf[best] = t->left[node];
+        area[best] = atrbvh_box_area(t->box[t->left[node]]);
+        tl->leaf[m] = t->right[node];
+        area[m] = atrbvh_box_area(t->box[t->right[node]]);
+        m++;
+    }
+    tl->n = m;
+    return m;
+}
+
+ATRBVH_FN void atrbvh_treelet_gather(const atrbvh_treelet_tree *t,
+                                     const atrbvh_treelet *tl,
+                                     atrbvh_treelet_leaves *lv)
+{
+    atrbvh_u32 k;
+    for (k = 0; k < tl->n; k++) {
+        atrbvh_u32 node = tl->leaf[k];
+        lv->box[k] = t->box[node];
+        lv->count[k] = t->count[node];
+        lv->cost[k] = t->cost[node];
+    }
+}
+
+/* --------------------------------------------------------------- TRBVH */
+/* Scratch for atrbvh_trbvh_dp: 2^n entries each. */
+typedef struct atrbvh_trbvh_scratch {
+    ATRBVH_GLOBAL atrbvh_box *box;   /* union box of subset S     */
+    ATRBVH_GLOBAL double *cost;      /* optimal cost C(S)         */
+    ATRBVH_GLOBAL atrbvh_u32 *count; /* primitives N(S)           */
+    ATRBVH_GLOBAL atrbvh_u32 *split; /* best left part P of S     */
+} atrbvh_trbvh_scratch;
+
+/* TRBVH (Karras & Aila 2013, "Fast Parallel Construction of High-Quality
+ * Bounding Volume Hierarchies", HPG 2013, section 4.2 and Algorithm 2):
+ * dynamic programming over every subset S of the n treelet leaves,
+ *
+ *   C({k}) = the stored cost of leaf k,
+ *   C(S)   = atrbvh_node_cost(A(S), N(S), C(P), C(S\P)) minimised over P,
+ *          = min(ci*A(S) + C(P) + C(S\P), ct*A(S)*N(S)) where collapsing
+ *            is allowed (cfg collapse and N(S) <= max_leaf),
+ *
+ * N(S) the primitives under S's leaves (not the treelet's: a bug of the
+ * reference).  The partitions of S are enumerated with the paper's trick:
+ * delta = (S-1) & S, P = (-delta) & S, P = (P - delta) & S until 0, which
+ * visits each unordered split {P, S\P} once, with P never holding S's
+ * lowest leaf; P becomes the left child.  Subsets are visited in
+ * increasing numeric order, so every proper subset is final before S.
+ *
+ * Exactness: the partition cost is computed as (ci*A + C(P)) + C(S\P),
+ * literally atrbvh_node_cost's sum, and rounding is monotone, so the
+ * returned cost is exactly (bit for bit) the minimum of that formula over
+ * every binary tree on the leaves whose left children avoid their lowest
+ * leaf, and equals the cost atrbvh_treelet_evaluate computes for the
+ * extracted topology.  Ties keep the first partition in enumeration order
+ * (strict <).  Masks are u32 (n <= ATRBVH_TRBVH_MAX). */
+ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
+                                 const atrbvh_treelet_leaves *lv,
+                                 atrbvh_trbvh_scratch s,
+                                 atrbvh_treelet_topo *topo)
+{
+    atrbvh_u32 k, full = (1u << n) - 1u;
+    atrbvh_u32 stack_mask[ATRBVH_TRBVH_MAX];
+    atrbvh_u32 stack_node[ATRBVH_TRBVH_MAX];
+    atrbvh_u32 sp, next;
+    int collapse = p->collapse;
+    double ci = p->ci, ct = p->ct;
+
+    for (k = 0; k < n; k++) {
+        atrbvh_u32 bit = 1u << k, rest;
+        s.box[bit] = lv->box[k];
+        s.count[bit] = lv->count[k];
+        s.cost[bit] = lv->cost[k];
+        s.split[bit] = 0;
+        /* Every S whose highest leaf is k: S = bit | rest, rest < bit. */
+        for (rest = 1; rest < bit; rest++) {
+            atrbvh_u32 S = bit | rest;
+            atrbvh_u32 delta = (S - 1u) & S;
+            atrbvh_u32 P = (0u - delta) & S;
+            atrbvh_u32 bestp;
+            atrbvh_box b = atrbvh_box_union(s.box[rest], lv->box[k]);
+            atrbvh_u32 cnt = s.count[rest] + lv->count[k];
+            double area = atrbvh_box_area(b);
+            double base = ci * area;
+            double best, c;
+            s.box[S] = b;
+            s.count[S] = cnt;
+            best = base + s.cost[P];
+            best = best + s.cost[S ^ P];
+            bestp = P;
+            P = (P - delta) & S;
+            while (P) {
+                c = base + s.cost[P];
+                c = c + s.cost[S ^ P];
+                if (c < best) {
+                    best = c;
+                    bestp = P;
+                }
+                P = (P - delta) & S;
+            }
+            if (collapse && (p->max_leaf == 0u || cnt <= p->max_leaf)) {
+                double flat = ct * area;
+                flat = flat * (double)cnt;
+                if (flat < best)
+                    best = flat;
+            }
+            s.cost[S] = best;
+            s.split[S] = bestp;
+        }
+    }
+
+    /* Extract the topology top-down (explicit stack, no recursion):
+     * local node 0 is the root; children get local ids as discovered. */
+    topo->root = 0;
+    stack_mask[0] = full;
+    stack_node[0] = 0;
+    sp = 1;
+    next = 1;
+    while (sp > 0) {
+        atrbvh_u32 S, node, parts[2], side;
+        sp--;
+        S = stack_mask[sp];
+        node = stack_node[sp];
+        parts[0] = s.split[S];
+        parts[1] = S ^ parts[0];
+        for (side = 0; side < 2; side++) {
+            atrbvh_u32 part = parts[side], code;
+            if ((part & (part - 1u)) == 0u) {
+                code = 0;
+                while ((1u << code) != part)
+                    code++;
+            } else {
+                code = n + next;
+                stack_mask[sp] = part;
+                stack_node[sp] = next;
+                sp++;
+                next++;
+            }
+            if (side == 0)
+                topo->left[node] = code;
+            else
+                topo->right[node] = code;
+        }
+    }
+    return s.cost[full];
+}
+
+/* -------------------------------------------------------------- ATRBVH */
+/* Index of the distance between clusters in slots a != b in the strictly
+ * lower-triangular, row-major matrix: row r > column c at r(r-1)/2 + c.
+ * The pairs of slots 0..m-1 are exactly the first m(m-1)/2 entries. */
+ATRBVH_FN atrbvh_u32 atrbvh_tri_index(atrbvh_u32 a, atrbvh_u32 b)
+{
+    return a > b ? a * (a - 1u) / 2u + b : b * (b - 1u) / 2u + a;
+}
+
+/* ATRBVH (Domingues & Pedrini 2015, "Bounding Volume Hierarchy
+ * Optimization through Agglomerative Treelet Restructuring", HPG 2015,
+ * Algorithm 1): greedy agglomerative clustering of the n treelet leaves.
+ * The distance of two clusters is the surface area (double) of their union
+ * box; distances are cached in a triangular matrix `dist` (n(n-1)/2
+ * entries of scratch) and updated after each merge, the cache of Gu et
+ * al. 2013 ("Efficient BVH Construction via Approximate Agglomerative
+ * Clustering", HPG 2013).
+ *
+ * Slots and ties, precisely: the m live clusters sit in slots 0..m-1,
+ * initially slot k = treelet leaf k.  Each step merges the pair (i, j),
+ * i > j, whose distance is smallest, the lowest linear index i(i-1)/2 + j
+ * among equal minima (strict < in a linear scan).  The merged cluster
+ * takes slot j with left child = the cluster of slot j, right child = that
+ * of slot i; the cluster of the last slot m-1 moves into slot i (nothing
+ * moves when i = m-1).  Merge q (0-based) is local internal node q; its
+ * cost is atrbvh_node_cost over the two clusters (left first).  The last
+ * merge is the root.  Returns the root's cost. */
+ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
+                                    atrbvh_u32 n,
+                                    const atrbvh_treelet_leaves *lv,
+                                    ATRBVH_GLOBAL double *dist,
+                                    atrbvh_treelet_topo *topo)
+{
+    atrbvh_box box[ATRBVH_TREELET_MAX];
+    double cost[ATRBVH_TREELET_MAX];
+    atrbvh_u32 count[ATRBVH_TREELET_MAX];
+    atrbvh_u32 code[ATRBVH_TREELET_MAX];
+    atrbvh_u32 m, a, b, q = 0;
+    double root_cost = 0.0;
+
+    for (a = 0; a < n; a++) {
+        box[a] = lv->box[a];
+        cost[a] = lv->cost[a];
+        count[a] = lv->count[a];
+        code[a] = a;
+    }
+    for (a = 1; a < n; a++) {
+        atrbvh_u32 row = a * (a - 1u) / 2u;
+        for (b = 0; b < a; b++)
+            dist[row + b] = atrbvh_box_area(atrbvh_box_union(box[a], box[b]));
+    }
+    for (m = n; m > 1; m--) {
+        atrbvh_u32 pairs = m * (m - 1u) / 2u, idx, best_idx = 0;
+        atrbvh_u32 i, j, last = m - 1u, row;
+        double best = dist[0], area;
+        atrbvh_box merged;
+        int collapsed;
+        for (idx = 1; idx < pairs; idx++) {
+            if (dist[idx] < best) {
+                best = dist[idx];
+                best_idx = idx;
+            }
+        }
+        /* Row i: the largest i with i(i-1)/2 <= best_idx (no sqrt, so no
+         * rounding can steer the decode). */
+        i = 1;
+        row = 0;
+        while (row + i <= best_idx) {
+            row += i;
+            i++;
+        }
+        j = best_idx - row;
+        merged = atrbvh_box_union(box[j], box[i]);
+        area = atrbvh_box_area(merged);
+        topo->left[q] = code[j];
+        topo->right[q] = code[i];
+        root_cost = atrbvh_node_cost(p, area, count[j] + count[i], cost[j],
+                                     cost[i], &collapsed);
+        box[j] = merged;
+        cost[j] = root_cost;
+        count[j] += count[i];
+        code[j] = n + q;
+        q++;
+        if (last == 1u)
+            break;
+        /* (a) the last cluster moves into slot i. */
+        if (i != last) {
+            box[i] = box[last];
+            cost[i] = cost[last];
+            count[i] = count[last];
+            code[i] = code[last];
+            for (a = 0; a < last; a++)
+                if (a != i)
+                    dist[atrbvh_tri_index(i, a)] =
+                        dist[atrbvh_tri_index(last, a)];
+        }
+        /* (b) distances to the merged cluster in slot j (after (a), so
+         * the (i, j) entry gets the new value). */
+        for (a = 0; a < last; a++)
+            if (a != j)
+                dist[atrbvh_tri_index(j, a)] =
+                    atrbvh_box_area(atrbvh_box_union(box[j], box[a]));
+    }
+    topo->root = n - 2u;
+    return root_cost;
+}
+
+/* ------------------------------------------------------ evaluate, write */
+/* Fills topo->order (pre-order from the root, explicit stack) and, bottom
+ * up, the box, count and cost of every local node.  Returns the root's
+ * cost: exactly what a refit of the written-back treelet computes. */
+ATRBVH_FN double atrbvh_treelet_evaluate(const atrbvh_cost_params *p,
+                                         atrbvh_u32 n,
+                                         const atrbvh_treelet_leaves *lv,
+                                         atrbvh_treelet_topo *topo)
+{
+    atrbvh_u32 stack[ATRBVH_TREELET_MAX];
+    atrbvh_u32 sp = 0, q = 0, k;
+    stack[sp++] = topo->root;
+    while (sp > 0) {
+        atrbvh_u32 node = stack[--sp];
+        topo->order[q++] = node;
+        /* Right pushed first so the left subtree comes first. */
+        if (topo->right[node] >= n)
+            stack[sp++] = topo->right[node] - n;
+        if (topo->left[node] >= n)
+            stack[sp++] = topo->left[node] - n;
+    }
+    for (k = n - 1u; k-- > 0u;) {
+        atrbvh_u32 node = topo->order[k];
+        atrbvh_u32 l = topo->left[node], r = topo->right[node];
+        atrbvh_box bl = l < n ? lv->box[l] : topo->box[l - n];
+        atrbvh_box br = r < n ? lv->box[r] : topo->box[r - n];
+        atrbvh_u32 nl = l < n ? lv->count[l] : topo->count[l - n];
+        atrbvh_u32 nr = r < n ? lv->count[r] : topo->count[r - n];
+        double cl = l < n ? lv->cost[l] : topo->cost[l - n];
+        double cr = r < n ? lv->cost[r] : topo->cost[r - n];
+        int collapsed;
+        atrbvh_box b = atrbvh_box_union(bl, br);
+        topo->box[node] = b;
+        topo->count[node] = nl + nr;
+        topo->cost[node] = atrbvh_node_cost(p, atrbvh_box_area(b), nl + nr,
+                                             cl, cr, &collapsed);
+    }
+    return topo->cost[topo->root];
+}
+
+/* Writes an evaluated topology back into the tree.  Internal ids are
+ * reused: the treelet root keeps its id (so nothing above it changes);
+ * the other n-2 ids, sorted ascending, go to the other local nodes in
+ * pre-order.  The numbering is therefore a pure function of the treelet.
+ * Children, parents of the children, boxes, counts and costs are written;
+ * the root's parent is left alone. */
+ATRBVH_FN void atrbvh_treelet_write(const atrbvh_treelet_tree *t,
+                                    const atrbvh_treelet *tl,
+                                    const atrbvh_treelet_topo *topo)
+{
+    atrbvh_u32 ids[ATRBVH_TREELET_MAX - 1];
+    atrbvh_u32 id_of[ATRBVH_TREELET_MAX - 1];
+    atrbvh_u32 n = tl->n, k, q;
+    /* Insertion sort of internal[1..n-2] (n <= 32). */
+    for (k = 1; k + 1u < n; k++) {
+        atrbvh_u32 v = tl->internal[k];
+        q = k - 1u;
+        while (q > 0u && ids[q - 1u] > v) {
+            ids[q] = ids[q - 1u];
+            q--;
+        }
+        ids[q] = v;
+    }
+    id_of[topo->order[0]] = tl->internal[0];
+    for (k = 1; k + 1u < n; k++)
+        id_of[topo->order[k]] = ids[k - 1u];
+    for (k = 0; k + 1u < n; k++) {
+        atrbvh_u32 id = id_of[k];
+        atrbvh_u32 l = topo->left[k], r = topo->right[k];
+        atrbvh_u32 lid = l < n ? tl->leaf[l] : id_of[l - n];
+        atrbvh_u32 rid = r < n ? tl->leaf[r] : id_of[r - n];
+        t->left[id] = lid;
+        t->right[id] = rid;
+        t->parent[lid] = id;
+        t->parent[rid] = id;
+        t->box[id] = topo->box[k];
+        t->count[id] = topo->count[k];
+        t->cost[id] = topo->cost[k];
+    }
+}
+
+/* Refreshes an internal node's cost from its children (box and count do
+ * not change when only the subtrees below were restructured). */
+ATRBVH_FN void atrbvh_treelet_refresh(const atrbvh_treelet_tree *t,
+                                      const atrbvh_cost_params *p,
+                                      atrbvh_u32 node)
+{
+    int collapsed;
+    t->cost[node] = atrbvh_node_cost(p, atrbvh_box_area(t->box[node]),
+                                     t->count[node], t->cost[t->left[node]],
+                                     t->cost[t->right[node]], &collapsed);
+}
+
+#endif
