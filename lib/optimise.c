@@ -32,7 +32,7 @@
 #endif
 
 /* Subtrees smaller than this are walked serially inside one task. */
-#define TASK_CUTOFF 16384u
+#define TASK_CUTOFF 2048u
 /* Deeper task recursion falls back to the serial walk (bounds the stack
  * on degenerate trees). */
 #define MAX_TASK_DEPTH 48
