@@ -679,7 +679,14 @@ atrbvh_status atrbvh_load_memory(const void *data, size_t size,
     bvh->stats.rounds = fh.rounds;
     bvh->stats.backend = (atrbvh_backend)fh.backend;
     bvh->stats.threads = 0;
-    __atrbvh_bvh_measure(bvh);
+    st = __atrbvh_bvh_measure(bvh);
+    if (st != ATRBVH_OK) { /* only out of memory, after the checks above */
+        atrbvh_bvh_free(bvh);
+        return __atrbvh_fail(error, st, (uint64_t)-1,
+                             "%s measuring the loaded BVH",
+                             st == ATRBVH_ERR_NOMEM ? "out of memory"
+                                                    : "invalid tree");
+    }
     *out = bvh;
     __atrbvh_clear_error(error);
     return ATRBVH_OK;

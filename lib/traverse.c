@@ -375,8 +375,11 @@ static int traverse(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
                     far_node = l;
                     far_t = nl;
                 }
-                if (sp == TRAVERSE_STACK)
-                    return linear_pass(bvh, g, r, any, best, tlo);
+                if (sp == TRAVERSE_STACK) {
+                    if (linear_pass(bvh, g, r, any, best, tlo))
+                        return 1;
+                    return any ? 0 : best->prim != ATRBVH_NO_HIT;
+                }
                 stack[sp].node = far_node;
                 stack[sp].tnear = far_t;
                 sp++;
