@@ -113,7 +113,7 @@ static atrbvh_cost_params cost_model(int which)
 
 /* Leaf data of a random treelet.  mode 0: random boxes; 1: all identical;
  * 2: unit boxes on a 3x3x3 grid (many equal distances); 3: flat boxes
- * (zero area) mixed with random ones. */
+ * (zero area) mixed with random ones; 4: each leaf one of three boxes. */
 static void random_leaves(rng *r, unsigned n, int mode,
                           const atrbvh_cost_params *p,
                           atrbvh_treelet_leaves *lv)
@@ -133,6 +133,16 @@ static void random_leaves(rng *r, unsigned n, int mode,
                 lo = (float)rng_below(r, 3);
                 ext = 1.0f;
                 break;
+            case 4: {
+                /* one of three boxes, picked per leaf: very many exactly
+                 * equal distances in every row and column */
+                static const float los[3] = {0.0f, 0.5f, 0.25f};
+                static const float exts[3] = {1.0f, 0.5f, 1.0f};
+                unsigned pick = (unsigned)(rng_next(r) >> 33) % 3u;
+                lo = los[pick];
+                ext = exts[pick];
+                break;
+            }
             case 3:
                 lo = rng_float(r);
                 ext = (k % 3u == 0u && a == 1) ? 0.0f : rng_float(r) * 0.4f;
@@ -435,13 +445,13 @@ START_TEST(atrbvh_is_naive_greedy)
     for (model = 0; model < 3; model++) {
         atrbvh_cost_params p = cost_model(model);
         for (n = 3; n <= ATRBVH_TREELET_MAX; n++) {
-            for (trial = 0; trial < 8; trial++) {
+            for (trial = 0; trial < 20; trial++) {
                 atrbvh_treelet_leaves lv;
                 atrbvh_treelet_topo topo;
                 unsigned left[ATRBVH_TREELET_MAX], right[ATRBVH_TREELET_MAX];
                 double cost[ATRBVH_TREELET_MAX], root;
                 unsigned q;
-                int mode = (int)(trial % 4u);
+                int mode = (int)(trial % 5u);
                 random_leaves(&r, n, mode, &p, &lv);
                 root = atrbvh_agglomerate(&p, n, &lv, dist, &topo);
                 check_topology(n, &topo);
@@ -461,7 +471,7 @@ START_TEST(atrbvh_is_naive_greedy)
                                   topo.cost[q], cost[q]);
                 }
                 ck_assert(root == cost[n - 2]);
-                if (mode == 1 || mode == 2)
+                if (mode == 1 || mode == 2 || mode == 4)
                     ties++;
             }
         }

@@ -273,6 +273,24 @@ ATRBVH_FN atrbvh_u32 atrbvh_tri_index(atrbvh_u32 a, atrbvh_u32 b)
     return a > b ? a * (a - 1u) / 2u + b : b * (b - 1u) / 2u + a;
 }
 
+/* Minimum of row r (columns 0..r-1) and its column, the lowest among
+ * equal values (strict <). */
+ATRBVH_FN void atrbvh_row_min(ATRBVH_GLOBAL const double *dist, atrbvh_u32 r,
+                              double *v, atrbvh_u32 *c)
+{
+    ATRBVH_GLOBAL const double *row = dist + r * (r - 1u) / 2u;
+    atrbvh_u32 k, bc = 0;
+    double bv = row[0];
+    for (k = 1; k < r; k++) {
+        if (row[k] < bv) {
+            bv = row[k];
+            bc = k;
+        }
+    }
+    *v = bv;
+    *c = bc;
+}
+
 /* ATRBVH (Domingues & Pedrini 2015, "Bounding Volume Hierarchy
  * Optimization through Agglomerative Treelet Restructuring", HPG 2015,
  * Algorithm 1): greedy agglomerative clustering of the n treelet leaves.
@@ -290,7 +308,13 @@ ATRBVH_FN atrbvh_u32 atrbvh_tri_index(atrbvh_u32 a, atrbvh_u32 b)
  * of slot i; the cluster of the last slot m-1 moves into slot i (nothing
  * moves when i = m-1).  Merge q (0-based) is local internal node q; its
  * cost is atrbvh_node_cost over the two clusters (left first).  The last
- * merge is the root.  Returns the root's cost. */
+ * merge is the root.  Returns the root's cost.
+ *
+ * The minimum search keeps each row's minimum (and its lowest column) and
+ * updates them incrementally after a merge, so a step costs O(m) plus a
+ * rescan of the few rows whose minimum was in a changed column, instead of
+ * an O(m^2) scan; the pair chosen is exactly the lowest-linear-index
+ * minimum of the full scan (the test compares with a naive scan). */
 ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
                                     atrbvh_u32 n,
                                     const atrbvh_treelet_leaves *lv,
@@ -301,6 +325,8 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
     double cost[ATRBVH_TREELET_MAX];
     atrbvh_u32 count[ATRBVH_TREELET_MAX];
     atrbvh_u32 code[ATRBVH_TREELET_MAX];
+    double rmin[ATRBVH_TREELET_MAX];     /* row minimum, rows 1..m-1   */
+    atrbvh_u32 rcol[ATRBVH_TREELET_MAX]; /* its column (lowest if tied) */
     atrbvh_u32 m, a, b, q = 0;
     double root_cost = 0.0;
 
@@ -315,27 +341,23 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
         for (b = 0; b < a; b++)
             dist[row + b] = atrbvh_box_area(atrbvh_box_union(box[a], box[b]));
     }
+    for (a = 1; a < n; a++)
+        atrbvh_row_min(dist, a, &rmin[a], &rcol[a]);
     for (m = n; m > 1; m--) {
-        atrbvh_u32 pairs = m * (m - 1u) / 2u, idx, best_idx = 0;
-        atrbvh_u32 i, j, last = m - 1u, row;
-        double best = dist[0], area;
+        atrbvh_u32 i = 1, j, last = m - 1u, r;
+        double best = rmin[1], area;
         atrbvh_box merged;
         int collapsed;
-        for (idx = 1; idx < pairs; idx++) {
-            if (dist[idx] < best) {
-                best = dist[idx];
-                best_idx = idx;
+        /* Rows in order, strict <: the lowest row among equal minima, and
+         * within it (atrbvh_row_min) the lowest column: the lowest linear
+         * index. */
+        for (r = 2; r < m; r++) {
+            if (rmin[r] < best) {
+                best = rmin[r];
+                i = r;
             }
         }
-        /* Row i: the largest i with i(i-1)/2 <= best_idx (no sqrt, so no
-         * rounding can steer the decode). */
-        i = 1;
-        row = 0;
-        while (row + i <= best_idx) {
-            row += i;
-            i++;
-        }
-        j = best_idx - row;
+        j = rcol[i];
         merged = atrbvh_box_union(box[j], box[i]);
         area = atrbvh_box_area(merged);
         topo->left[q] = code[j];
@@ -366,6 +388,32 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
             if (a != j)
                 dist[atrbvh_tri_index(j, a)] =
                     atrbvh_box_area(atrbvh_box_union(box[j], box[a]));
+        /* Row minima of the rows 1..last-1 that remain.  Rows i and j
+         * changed entirely; a row r > j changed in column j, and a row
+         * r > i in column i: rescan it if its minimum sat in a changed
+         * column (the value may have grown), else a changed entry can only
+         * take over the minimum (lower column first among equals).  Rows
+         * below j hold neither column. */
+        for (r = j + 1u; r < last; r++) {
+            if (r == i || rcol[r] == j || (r > i && rcol[r] == i)) {
+                atrbvh_row_min(dist, r, &rmin[r], &rcol[r]);
+            } else {
+                double v = dist[r * (r - 1u) / 2u + j];
+                if (v < rmin[r] || (v == rmin[r] && j < rcol[r])) {
+                    rmin[r] = v;
+                    rcol[r] = j;
+                }
+                if (r > i) {
+                    v = dist[r * (r - 1u) / 2u + i];
+                    if (v < rmin[r] || (v == rmin[r] && i < rcol[r])) {
+                        rmin[r] = v;
+                        rcol[r] = i;
+                    }
+                }
+            }
+        }
+        if (j > 0u)
+            atrbvh_row_min(dist, j, &rmin[j], &rcol[j]);
     }
     topo->root = n - 2u;
     return root_cost;
