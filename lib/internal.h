@@ -86,9 +86,11 @@ atrbvh_status __atrbvh_bounds(const atrbvh_geometry *g,
 void __atrbvh_morton(const __atrbvh_prims *p, uint64_t *keys, int threads);
 /* Stage "sort": stable LSD radix sort of (keys, values) pairs; `tmp_keys`
  * and `tmp_values` are scratch of the same length. The sorted result ends in
- * keys/values. Passes whose digit is the same for every key are skipped. */
-void __atrbvh_radix_sort(uint64_t *keys, uint32_t *values, uint64_t *tmp_keys,
-                         uint32_t *tmp_values, uint32_t n, int threads);
+ * keys/values. Passes whose digit is the same for every key are skipped.
+ * Returns ATRBVH_ERR_NOMEM (nothing else) when scratch cannot be had. */
+atrbvh_status __atrbvh_radix_sort(uint64_t *keys, uint32_t *values, uint64_t *tmp_keys,
+                                  uint32_t *tmp_values, uint32_t n,
+                                  int threads);
 
 /* ------------------------------------------------------------- the tree */
 /* The binary tree the stages work on (structure of arrays).
@@ -119,11 +121,12 @@ void __atrbvh_tree_free(__atrbvh_tree *t);
  * right, parent, and count of internal nodes. */
 void __atrbvh_hierarchy(const uint64_t *sorted_keys, __atrbvh_tree *t,
                         int threads);
-/* Stage "refit": leaf boxes from the primitive boxes (sorted order given
- * by leaf_prim and the prims' ids), then boxes, counts and costs bottom-up
- * (post-order OpenMP tasks). */
-void __atrbvh_refit(__atrbvh_tree *t, const atrbvh_box *leaf_boxes_sorted,
-                    const atrbvh_cost_params *cost, int threads);
+/* Stage "refit": leaf n-1+p gets prim_boxes[order[p]] (order: the sorted
+ * build indices), then boxes, counts and costs bottom-up (post-order OpenMP
+ * tasks).  Sets every field but left/right/parent/leaf_prim. */
+void __atrbvh_refit(__atrbvh_tree *t, const atrbvh_box *prim_boxes,
+                    const uint32_t *order, const atrbvh_cost_params *cost,
+                    int threads);
 
 /* Stage "optimise": TRBVH or ATRBVH treelet restructuring in place.  On
  * return boxes, counts, costs and parents are consistent. */
@@ -149,11 +152,14 @@ struct atrbvh_bvh {
 
 /* Allocates an empty BVH object with room for the arrays. */
 atrbvh_bvh *__atrbvh_bvh_alloc(size_t node_count, size_t prim_count);
-/* Depth, leaf count, largest leaf and SAH from the node array. */
-void __atrbvh_bvh_measure(atrbvh_bvh *bvh);
+/* Fills stats.nodes, leaves, primitives, max_depth, max_leaf_primitives and
+ * sah (with stats.ci/ct) from the node array; fails on an invalid array or
+ * when scratch cannot be allocated. */
+atrbvh_status __atrbvh_bvh_measure(atrbvh_bvh *bvh);
 /* Structural check of a node array (used on load and, in debug builds,
  * after every build): every child index in range and after its parent,
- * every primitive referenced once, child boxes inside parents. */
+ * leaf ranges tiling the index array in order, child boxes inside parents
+ * when check_boxes.  (Index values are the caller's to check.) */
 atrbvh_status __atrbvh_bvh_check(const atrbvh_bvh *bvh, int check_boxes,
                                  atrbvh_error *error);
 

@@ -1,2 +1,269 @@
-/* placeholder: core stage, being written */
-typedef int atrbvh_placeholder_measure;
+/*
+ * measure.c - the BVH object: accessors, statistics measured on the node
+ * array actually built (never an estimate), and the structural check used on
+ * load and, with --enable-debug-checks, after every build.
+ */
+#include "config.h"
+
+#include "internal.h"
+
+#include <math.h>
+#include <string.h>
+
+atrbvh_bvh *__atrbvh_bvh_alloc(size_t node_count, size_t prim_count)
+{
+    atrbvh_bvh *b = __atrbvh_malloc(sizeof *b);
+    if (!b)
+        return NULL;
+    memset(b, 0, sizeof *b);
+    if (node_count) {
+        b->nodes = __atrbvh_alloc_array(node_count, sizeof *b->nodes);
+        b->prim_indices = __atrbvh_alloc_array(prim_count, sizeof *b->prim_indices);
+        if (!b->nodes || !b->prim_indices) {
+            atrbvh_bvh_free(b);
+            return NULL;
+        }
+        b->node_count = node_count;
+        b->prim_count = prim_count;
+    }
+    return b;
+}
+
+void atrbvh_bvh_free(atrbvh_bvh *bvh)
+{
+    if (!bvh)
+        return;
+    __atrbvh_free(bvh->nodes);
+    __atrbvh_free(bvh->prim_indices);
+    __atrbvh_free(bvh);
+}
+
+const atrbvh_node *atrbvh_bvh_nodes(const atrbvh_bvh *bvh, size_t *count)
+{
+    if (count)
+        *count = bvh ? bvh->node_count : 0;
+    return bvh ? bvh->nodes : NULL;
+}
+
+const uint32_t *atrbvh_bvh_primitive_indices(const atrbvh_bvh *bvh,
+                                             size_t *count)
+{
+    if (count)
+        *count = bvh ? bvh->prim_count : 0;
+    return bvh ? bvh->prim_indices : NULL;
+}
+
+void atrbvh_bvh_stats(const atrbvh_bvh *bvh, atrbvh_stats *stats)
+{
+    if (!stats)
+        return;
+    if (!bvh) {
+        memset(stats, 0, sizeof *stats);
+        return;
+    }
+    *stats = bvh->stats;
+}
+
+static atrbvh_box node_box(const atrbvh_node *n)
+{
+    atrbvh_box b;
+    int k;
+    for (k = 0; k < 3; k++) {
+        b.min[k] = n->min[k];
+        b.max[k] = n->max[k];
+    }
+    return b;
+}
+
+double atrbvh_sah(const atrbvh_node *nodes, size_t node_count, double ci,
+                  double ct)
+{
+    /* Summed in node order, serially: the same bits on every run. */
+    double inner = 0.0, leaves = 0.0, root;
+    size_t i;
+    if (!nodes || node_count == 0)
+        return 0.0;
+    root = atrbvh_box_area(node_box(&nodes[0]));
+    if (!(root > 0.0))
+        return 0.0;
+    for (i = 0; i < node_count; i++) {
+        double a = atrbvh_box_area(node_box(&nodes[i]));
+        if (nodes[i].count)
+            leaves += a * (double)nodes[i].count;
+        else
+            inner += a;
+    }
+    return (ci * inner + ct * leaves) / root;
+}
+
+/* Walks the depth-first array with an explicit stack of pending right
+ * children; in a valid array the walk visits 0, 1, 2, ... in order.
+ * `depth_out` receives the maximum depth. Returns ATRBVH_OK or a
+ * description of the first violation. */
+static atrbvh_status walk(const atrbvh_bvh *b, int check_boxes,
+                          unsigned *depth_out, atrbvh_error *error)
+{
+    uint32_t *stack_node, *stack_depth, *parent_of;
+    size_t sp = 0, next = 0;
+    uint32_t cur = 0, depth = 0, max_depth = 0;
+    atrbvh_status st = ATRBVH_OK;
+    const size_t n = b->node_count;
+
+    if (n == 0)
+        return __atrbvh_fail(error, ATRBVH_ERR_FORMAT, (uint64_t)-1,
+                             "the BVH has no nodes");
+    stack_node = __atrbvh_alloc_array(n, sizeof *stack_node);
+    stack_depth = __atrbvh_alloc_array(n, sizeof *stack_depth);
+    parent_of = __atrbvh_alloc_array(n, sizeof *parent_of);
+    if (!stack_node || !stack_depth || !parent_of) {
+        st = __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                           "cannot allocate %lu nodes of scratch",
+                           (unsigned long)n);
+        goto done;
+    }
+    parent_of[0] = ATRBVH_NONE;
+    for (;;) {
+        const atrbvh_node *nd;
+        int k;
+        if (cur != next) {
+            st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, cur,
+                               "node %lu is reached where node %lu was "
+                               "expected (not a depth-first layout)",
+                               (unsigned long)cur, (unsigned long)next);
+            goto done;
+        }
+        next++;
+        nd = &b->nodes[cur];
+        for (k = 0; k < 3; k++) {
+            if (!isfinite(nd->min[k]) || !isfinite(nd->max[k]) ||
+                nd->min[k] > nd->max[k]) {
+                st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, cur,
+                                   "node %lu has an invalid box on axis %d",
+                                   (unsigned long)cur, k);
+                goto done;
+            }
+            if (check_boxes && parent_of[cur] != ATRBVH_NONE) {
+                const atrbvh_node *pa = &b->nodes[parent_of[cur]];
+                if (nd->min[k] < pa->min[k] || nd->max[k] > pa->max[k]) {
+                    st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, cur,
+                                       "node %lu sticks out of its parent "
+                                       "%lu on axis %d",
+                                       (unsigned long)cur,
+                                       (unsigned long)parent_of[cur], k);
+                    goto done;
+                }
+            }
+        }
+        if (depth > max_depth)
+            max_depth = depth;
+        if (nd->count == 0) {
+            if ((size_t)cur + 1 >= n || nd->index <= cur + 1 ||
+                nd->index >= n) {
+                st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, cur,
+                                   "internal node %lu has right child %lu "
+                                   "out of range",
+                                   (unsigned long)cur,
+                                   (unsigned long)nd->index);
+                goto done;
+            }
+            if (sp >= n) { /* cannot happen in a valid walk */
+                st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, cur,
+                                   "node %lu: the tree is deeper than its "
+                                   "node count",
+                                   (unsigned long)cur);
+                goto done;
+            }
+            parent_of[cur + 1] = cur;
+            parent_of[nd->index] = cur;
+            stack_node[sp] = nd->index;
+            stack_depth[sp++] = depth + 1;
+            cur = cur + 1;
+            depth++;
+        } else {
+            if (nd->index > b->prim_count ||
+                nd->count > b->prim_count - nd->index) {
+                st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, cur,
+                                   "leaf %lu references primitives %lu..%lu "
+                                   "of %lu",
+                                   (unsigned long)cur,
+                                   (unsigned long)nd->index,
+                                   (unsigned long)nd->index + nd->count - 1,
+                                   (unsigned long)b->prim_count);
+                goto done;
+            }
+            if (sp == 0)
+                break;
+            cur = stack_node[--sp];
+            depth = stack_depth[sp];
+        }
+    }
+    if (next != n)
+        st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, next,
+                           "only %lu of %lu nodes are reachable from the "
+                           "root",
+                           (unsigned long)next, (unsigned long)n);
+    *depth_out = max_depth;
+done:
+    __atrbvh_free(stack_node);
+    __atrbvh_free(stack_depth);
+    __atrbvh_free(parent_of);
+    return st;
+}
+
+atrbvh_status __atrbvh_bvh_check(const atrbvh_bvh *b, int check_boxes,
+                                 atrbvh_error *error)
+{
+    unsigned depth;
+    atrbvh_status st = walk(b, check_boxes, &depth, error);
+    size_t i, covered = 0;
+    if (st != ATRBVH_OK)
+        return st;
+    for (i = 0; i < b->node_count; i++)
+        covered += b->nodes[i].count;
+    if (covered != b->prim_count)
+        return __atrbvh_fail(error, ATRBVH_ERR_FORMAT, (uint64_t)-1,
+                             "leaves hold %lu primitive slots, the index "
+                             "array has %lu",
+                             (unsigned long)covered,
+                             (unsigned long)b->prim_count);
+    /* In a depth-first layout the leaves' ranges tile the index array in
+     * order; anything else means overlapping or missing slots. */
+    covered = 0;
+    for (i = 0; i < b->node_count; i++) {
+        if (!b->nodes[i].count)
+            continue;
+        if (b->nodes[i].index != covered)
+            return __atrbvh_fail(error, ATRBVH_ERR_FORMAT, i,
+                                 "leaf %lu starts at primitive slot %lu, "
+                                 "expected %lu",
+                                 (unsigned long)i,
+                                 (unsigned long)b->nodes[i].index,
+                                 (unsigned long)covered);
+        covered += b->nodes[i].count;
+    }
+    return ATRBVH_OK;
+}
+
+atrbvh_status __atrbvh_bvh_measure(atrbvh_bvh *b)
+{
+    unsigned depth = 0;
+    size_t i, leaves = 0;
+    unsigned largest = 0;
+    atrbvh_status st = walk(b, 0, &depth, NULL);
+    if (st != ATRBVH_OK)
+        return st;
+    for (i = 0; i < b->node_count; i++)
+        if (b->nodes[i].count) {
+            leaves++;
+            if (b->nodes[i].count > largest)
+                largest = b->nodes[i].count;
+        }
+    b->stats.nodes = b->node_count;
+    b->stats.leaves = leaves;
+    b->stats.primitives = b->prim_count;
+    b->stats.max_depth = depth;
+    b->stats.max_leaf_primitives = largest;
+    b->stats.sah = atrbvh_sah(b->nodes, b->node_count, b->stats.ci,
+                              b->stats.ct);
+    return ATRBVH_OK;
+}

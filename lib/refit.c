@@ -1,2 +1,72 @@
-/* placeholder: core stage, being written */
-typedef int atrbvh_placeholder_refit;
+/*
+ * refit.c - stage "refit": leaf boxes from the primitive boxes, then boxes,
+ * primitive counts and SAH costs bottom-up.
+ *
+ * The CPU reference walks the tree in post-order with OpenMP tasks: a node
+ * is computed after both children, left cost first, so the result is the
+ * same whichever thread computes what.  (The OpenCL backend uses the
+ * atomic-counter walk; the arithmetic is atrbvh_node_cost in both.)
+ */
+#include "config.h"
+
+#include "internal.h"
+
+/* Subtrees smaller than this are refitted by one task, serially. */
+#define TASK_CUTOFF 4096u
+
+static void refit_node(__atrbvh_tree *t, uint32_t node,
+                       const atrbvh_cost_params *p)
+{
+    uint32_t l, r;
+    int collapsed;
+    if (__atrbvh_is_leaf(t, node))
+        return;
+    l = t->left[node];
+    r = t->right[node];
+    if (t->count[node] > TASK_CUTOFF) {
+#ifdef _OPENMP
+#pragma omp task default(shared) firstprivate(l)
+#endif
+        refit_node(t, l, p);
+        refit_node(t, r, p);
+#ifdef _OPENMP
+#pragma omp taskwait
+#endif
+    } else {
+        refit_node(t, l, p);
+        refit_node(t, r, p);
+    }
+    t->box[node] = atrbvh_box_union(t->box[l], t->box[r]);
+    t->count[node] = t->count[l] + t->count[r];
+    t->cost[node] = atrbvh_node_cost(p, atrbvh_box_area(t->box[node]),
+                                     t->count[node], t->cost[l], t->cost[r],
+                                     &collapsed);
+}
+
+void __atrbvh_refit(__atrbvh_tree *t, const atrbvh_box *prim_boxes,
+                    const uint32_t *order, const atrbvh_cost_params *p,
+                    int threads)
+{
+    const int64_t n = t->n;
+    int64_t i;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads)
+#else
+    (void)threads;
+#endif
+    {
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+        for (i = 0; i < n; i++) {
+            const uint32_t leaf = (uint32_t)(n - 1 + i);
+            t->box[leaf] = prim_boxes[order[i]];
+            t->count[leaf] = 1;
+            t->cost[leaf] = atrbvh_leaf_cost(p, atrbvh_box_area(t->box[leaf]));
+        }
+#ifdef _OPENMP
+#pragma omp single
+#endif
+        refit_node(t, 0, p);
+    }
+}

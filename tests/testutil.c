@@ -1,1 +1,348 @@
-typedef int tu_placeholder_;
+/*
+ * testutil.c - helpers the suites share.  The checker here is written
+ * independently of the library: it walks the node array itself, recomputes
+ * primitive boxes from the geometry and recomputes the SAH in long double.
+ */
+#include "testutil.h"
+
+#include <check.h>
+#include <dirent.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+static int failf(char *msg, size_t len, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, len, fmt, ap);
+    va_end(ap);
+    return 0;
+}
+
+/* Box of primitive i, straight from the geometry. */
+static void prim_box(const atrbvh_geometry *g, size_t i, float lo[3],
+                     float hi[3])
+{
+    int k, c;
+    if (g->type == ATRBVH_GEOMETRY_BOXES) {
+        size_t stride = g->box_stride ? g->box_stride : 24;
+        const float *b = (const float *)((const char *)g->boxes + i * stride);
+        for (k = 0; k < 3; k++) {
+            lo[k] = b[k];
+            hi[k] = b[k + 3];
+        }
+        return;
+    }
+    for (k = 0; k < 3; k++) {
+        lo[k] = INFINITY;
+        hi[k] = -INFINITY;
+    }
+    for (c = 0; c < 3; c++) {
+        size_t vs = g->vertex_stride ? g->vertex_stride : 12;
+        size_t is = g->index_stride ? g->index_stride : 12;
+        size_t v = g->indices
+                       ? ((const uint32_t *)((const char *)g->indices + i * is))[c]
+                       : 3 * i + (size_t)c;
+        const float *p = (const float *)((const char *)g->vertices + v * vs);
+        for (k = 0; k < 3; k++) {
+            if (p[k] < lo[k])
+                lo[k] = p[k];
+            if (p[k] > hi[k])
+                hi[k] = p[k];
+        }
+    }
+}
+
+static long double area_ld(const float lo[3], const float hi[3])
+{
+    long double dx = (long double)hi[0] - lo[0], dy = (long double)hi[1] - lo[1],
+                dz = (long double)hi[2] - lo[2];
+    return 2.0L * (dx * dy + dy * dz + dz * dx);
+}
+
+static int prim_valid(const atrbvh_geometry *g, size_t i)
+{
+    float lo[3], hi[3];
+    int k;
+    prim_box(g, i, lo, hi);
+    for (k = 0; k < 3; k++)
+        if (!isfinite(lo[k]) || !isfinite(hi[k]))
+            return 0;
+    return 1;
+}
+
+int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
+                 size_t len)
+{
+    size_t nn, np, i, valid = 0, leaves = 0, sp = 0;
+    const atrbvh_node *nodes = atrbvh_bvh_nodes(bvh, &nn);
+    const uint32_t *idx = atrbvh_bvh_primitive_indices(bvh, &np);
+    atrbvh_stats st;
+    unsigned char *seen;
+    size_t *stack, *depth;
+    unsigned max_depth = 0, largest = 0;
+    long double inner = 0, leafsum = 0, sah;
+    int ok = 1;
+
+    atrbvh_bvh_stats(bvh, &st);
+    if (!nodes || nn == 0 || !idx)
+        return failf(msg, len, "empty BVH");
+    for (i = 0; i < g->primitive_count; i++)
+        valid += (size_t)prim_valid(g, i);
+    if (np != valid)
+        return failf(msg, len, "%zu primitive slots for %zu valid primitives",
+                     np, valid);
+    if (st.invalid_skipped != g->primitive_count - valid)
+        return failf(msg, len, "stats say %zu skipped, %zu are invalid",
+                     st.invalid_skipped, g->primitive_count - valid);
+    seen = calloc(g->primitive_count, 1);
+    stack = malloc(sizeof *stack * (nn + 1));
+    depth = malloc(sizeof *depth * (nn + 1));
+    if (!seen || !stack || !depth) {
+        free(seen);
+        free(stack);
+        free(depth);
+        return failf(msg, len, "test out of memory");
+    }
+    /* Walk from the root; every node must be reached exactly once. */
+    {
+        unsigned char *reached = calloc(nn, 1);
+        stack[sp] = 0;
+        depth[sp++] = 0;
+        while (ok && sp) {
+            size_t cur = stack[--sp], d = depth[sp];
+            const atrbvh_node *n = &nodes[cur];
+            if (reached[cur]) {
+                ok = failf(msg, len, "node %zu reached twice", cur);
+                break;
+            }
+            reached[cur] = 1;
+            if (d > max_depth)
+                max_depth = (unsigned)d;
+            if (n->count == 0) {
+                size_t kids[2] = {cur + 1, n->index};
+                int c, k;
+                inner += area_ld(n->min, n->max);
+                for (c = 0; c < 2; c++) {
+                    const atrbvh_node *ch;
+                    if (kids[c] >= nn) {
+                        ok = failf(msg, len, "node %zu: child %zu out of range",
+                                   cur, kids[c]);
+                        break;
+                    }
+                    ch = &nodes[kids[c]];
+                    for (k = 0; k < 3; k++)
+                        if (ch->min[k] < n->min[k] || ch->max[k] > n->max[k]) {
+                            ok = failf(msg, len,
+                                       "node %zu not inside parent %zu (axis %d)",
+                                       kids[c], cur, k);
+                            break;
+                        }
+                    stack[sp] = kids[c];
+                    depth[sp++] = d + 1;
+                }
+            } else {
+                size_t j;
+                leaves++;
+                if (n->count > largest)
+                    largest = n->count;
+                leafsum += area_ld(n->min, n->max) * n->count;
+                if (n->index + (size_t)n->count > np) {
+                    ok = failf(msg, len, "leaf %zu range out of bounds", cur);
+                    break;
+                }
+                for (j = n->index; ok && j < n->index + n->count; j++) {
+                    float lo[3], hi[3];
+                    int k;
+                    uint32_t p = idx[j];
+                    if (p >= g->primitive_count || !prim_valid(g, p)) {
+                        ok = failf(msg, len, "leaf %zu holds bad primitive %u",
+                                   cur, p);
+                        break;
+                    }
+                    if (seen[p]++) {
+                        ok = failf(msg, len, "primitive %u referenced twice", p);
+                        break;
+                    }
+                    prim_box(g, p, lo, hi);
+                    for (k = 0; k < 3; k++)
+                        if (lo[k] < n->min[k] || hi[k] > n->max[k]) {
+                            ok = failf(msg, len,
+                                       "primitive %u outside its leaf %zu", p,
+                                       cur);
+                            break;
+                        }
+                }
+            }
+        }
+        for (i = 0; ok && i < nn; i++)
+            if (!reached[i])
+                ok = failf(msg, len, "node %zu unreachable", i);
+        free(reached);
+    }
+    for (i = 0; ok && i < g->primitive_count; i++)
+        if (prim_valid(g, i) && !seen[i])
+            ok = failf(msg, len, "primitive %zu missing", i);
+    free(seen);
+    free(stack);
+    free(depth);
+    if (!ok)
+        return 0;
+    if (nn != 2 * leaves - 1)
+        return failf(msg, len, "%zu nodes for %zu leaves", nn, leaves);
+    if (st.nodes != nn || st.leaves != leaves || st.max_depth != max_depth ||
+        st.max_leaf_primitives != largest || st.primitives != np)
+        return failf(msg, len,
+                     "stats (nodes %zu leaves %zu depth %u largest %u) vs "
+                     "measured (%zu %zu %u %u)",
+                     st.nodes, st.leaves, st.max_depth, st.max_leaf_primitives,
+                     nn, leaves, max_depth, largest);
+    {
+        long double root = area_ld(nodes[0].min, nodes[0].max);
+        sah = root > 0 ? (st.ci * inner + st.ct * leafsum) / root : 0;
+        if (!isfinite(st.sah) ||
+            fabsl(sah - st.sah) > 1e-9L * (fabsl(sah) > 1 ? fabsl(sah) : 1))
+            return failf(msg, len, "SAH %.17g reported, %.17Lg recomputed",
+                         st.sah, sah);
+    }
+    return 1;
+}
+
+int tu_same_bvh(const atrbvh_bvh *a, const atrbvh_bvh *b, char *msg,
+                size_t len)
+{
+    size_t na, nb, pa, pb, i;
+    const atrbvh_node *x = atrbvh_bvh_nodes(a, &na), *y = atrbvh_bvh_nodes(b, &nb);
+    const uint32_t *ia = atrbvh_bvh_primitive_indices(a, &pa),
+                   *ib = atrbvh_bvh_primitive_indices(b, &pb);
+    atrbvh_stats sa, sb;
+    if (na != nb)
+        return failf(msg, len, "node counts %zu vs %zu", na, nb);
+    if (pa != pb)
+        return failf(msg, len, "index counts %zu vs %zu", pa, pb);
+    for (i = 0; i < na; i++)
+        if (memcmp(&x[i], &y[i], sizeof x[i]))
+            return failf(msg, len, "node %zu differs", i);
+    for (i = 0; i < pa; i++)
+        if (ia[i] != ib[i])
+            return failf(msg, len, "primitive index %zu differs: %u vs %u", i,
+                         ia[i], ib[i]);
+    atrbvh_bvh_stats(a, &sa);
+    atrbvh_bvh_stats(b, &sb);
+    if (memcmp(&sa.sah, &sb.sah, sizeof sa.sah))
+        return failf(msg, len, "SAH %.17g vs %.17g", sa.sah, sb.sah);
+    return 1;
+}
+
+const char *tu_scenes_dir(void)
+{
+    const char *d = getenv("ATRBVH_SCENES");
+    char **p;
+    size_t n;
+    DIR *dir;
+    struct dirent *e;
+    if (!d || !*d)
+        return NULL;
+    dir = opendir(d);
+    if (!dir)
+        return NULL;
+    n = 0;
+    while ((e = readdir(dir)) != NULL) {
+        size_t l = strlen(e->d_name);
+        if (l > 4 && strcmp(e->d_name + l - 4, ".ply") == 0)
+            n++;
+    }
+    closedir(dir);
+    (void)p;
+    return n ? d : NULL;
+}
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+size_t tu_scene_paths(char **paths, size_t max)
+{
+    const char *d = tu_scenes_dir();
+    DIR *dir;
+    struct dirent *e;
+    size_t n = 0;
+    if (!d || !(dir = opendir(d)))
+        return 0;
+    while (n < max && (e = readdir(dir)) != NULL) {
+        size_t l = strlen(e->d_name);
+        if (l > 4 && strcmp(e->d_name + l - 4, ".ply") == 0) {
+            paths[n] = malloc(strlen(d) + l + 2);
+            if (!paths[n])
+                break;
+            sprintf(paths[n], "%s/%s", d, e->d_name);
+            n++;
+        }
+    }
+    closedir(dir);
+    qsort(paths, n, sizeof *paths, cmp_str);
+    return n;
+}
+
+void tu_free_paths(char **paths, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        free(paths[i]);
+}
+
+void tu_rng_seed(tu_rng *r, uint64_t seed)
+{
+    r->s = seed * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull;
+    if (!r->s)
+        r->s = 1;
+}
+
+uint64_t tu_rng_next(tu_rng *r)
+{
+    r->s ^= r->s >> 12;
+    r->s ^= r->s << 25;
+    r->s ^= r->s >> 27;
+    return r->s * 0x2545F4914F6CDD1Dull;
+}
+
+float tu_rng_float(tu_rng *r)
+{
+    return (float)(tu_rng_next(r) >> 40) * (1.0f / 16777216.0f);
+}
+
+float *tu_random_triangles(size_t n, uint64_t seed, float scale, float offset)
+{
+    tu_rng r;
+    size_t i;
+    float *v = malloc(n * 9 * sizeof *v);
+    if (!v)
+        return NULL;
+    tu_rng_seed(&r, seed);
+    for (i = 0; i < n; i++) {
+        float c[3];
+        int k, j;
+        for (k = 0; k < 3; k++)
+            c[k] = tu_rng_float(&r);
+        for (j = 0; j < 3; j++)
+            for (k = 0; k < 3; k++)
+                v[9 * i + 3 * j + k] =
+                    (c[k] + 0.05f * (tu_rng_float(&r) - 0.5f)) * scale + offset;
+    }
+    return v;
+}
+
+atrbvh_bvh *tu_build(const atrbvh_geometry *g, const atrbvh_build_options *o)
+{
+    atrbvh_bvh *b = NULL;
+    atrbvh_error e;
+    atrbvh_status s = atrbvh_build(g, o, &b, &e);
+    ck_assert_msg(s == ATRBVH_OK, "build failed: %s (%s)", atrbvh_strerror(s),
+                  e.text);
+    return b;
+}
