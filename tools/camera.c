@@ -7,10 +7,11 @@
  *               eight steps go once around);
  *     elevation 25, 10, 40 degrees above the horizontal for k mod 3 = 0,
  *               1, 2 (never below, so terrains are seen from above);
- * at the distance where the bounding sphere of the box (radius r, half the
- * diagonal) just fits the narrower of the two fields of view (vertical
- * field of view 50 degrees, horizontal from the aspect ratio).  The eye is
- * therefore always outside the box and the whole box is in the picture.
+ * at 1.05 times the nearest distance from which all eight corners of the
+ * box are in the picture (vertical field of view 50 degrees, horizontal
+ * from the aspect ratio), and never nearer than 1.05 times the radius r of
+ * the box's bounding sphere (half its diagonal).  So the eye is always
+ * outside the box and the whole box is in the picture.
  * This is what atrbvh(1) documents under CAMERAS; keep the two in step.
  */
 #include "config.h"
@@ -29,7 +30,7 @@ static const double elevations[3] = {25.0, 10.0, 40.0};
 void camera_frame(const float lo[3], const float hi[3], unsigned which,
                   float aspect, camera *cam)
 {
-    double c[3], r = 0.0, az, el, tan_v, tan_h, half, dist, f[3], rt[3], up[3],
+    double c[3], r = 0.0, az, el, tan_v, tan_h, dist, f[3], rt[3], up[3],
            len, span = 0.0;
     int k;
     memset(cam, 0, sizeof *cam);
@@ -53,8 +54,6 @@ void camera_frame(const float lo[3], const float hi[3], unsigned which,
     el = elevations[which % 3u] * PI / 180.0;
     tan_v = tan(0.5 * VFOV_DEGREES * PI / 180.0);
     tan_h = tan_v * (double)aspect;
-    half = atan(tan_v < tan_h ? tan_v : tan_h);
-    dist = r / sin(half);
     f[0] = -sin(az) * cos(el);
     f[1] = -sin(el);
     f[2] = -cos(az) * cos(el);
@@ -68,6 +67,33 @@ void camera_frame(const float lo[3], const float hi[3], unsigned which,
     up[0] = rt[1] * f[2] - rt[2] * f[1];
     up[1] = rt[2] * f[0] - rt[0] * f[2];
     up[2] = rt[0] * f[1] - rt[1] * f[0];
+    /* The nearest distance at which all eight corners are in the picture:
+     * a corner at (x, y, z) in the camera frame, relative to the centre,
+     * needs |x| <= tan_h (dist + z) and |y| <= tan_v (dist + z). */
+    dist = 0.0;
+    for (k = 0; k < 8; k++) {
+        double q[3], x = 0.0, y = 0.0, z = 0.0, need;
+        int a;
+        for (a = 0; a < 3; a++) {
+            double l = lo[a], h = hi[a];
+            if (!(l <= h) || !isfinite(l) || !isfinite(h))
+                l = h = 0.0;
+            q[a] = ((k >> a) & 1 ? h : l) - c[a];
+            x += q[a] * rt[a];
+            y += q[a] * up[a];
+            z += q[a] * f[a];
+        }
+        need = fabs(x) / tan_h - z;
+        if (fabs(y) / tan_v - z > need)
+            need = fabs(y) / tan_v - z;
+        if (need > dist)
+            dist = need;
+    }
+    /* A margin of 5%; and never closer than the bounding sphere, so the eye
+     * is outside the box whatever the rounding. */
+    dist *= 1.05;
+    if (dist < 1.05 * r)
+        dist = 1.05 * r;
     for (k = 0; k < 3; k++) {
         cam->eye[k] = (float)(c[k] - dist * f[k]);
         cam->forward[k] = (float)f[k];
