@@ -288,11 +288,8 @@ void cli_build_text(FILE *f, const cli_build_args *a, const cli_built *b)
     const atrbvh_stats *s = &b->stats;
     int k;
     fprintf(f, "scene            %s\n", a->scene);
-    fprintf(f, "triangles        %zu", b->sc.triangle_count);
-    if (s->invalid_skipped)
-        fprintf(f, " (%zu invalid skipped, %zu in the tree)",
-                s->invalid_skipped, s->primitives);
-    fputc('\n', f);
+    fprintf(f, "triangles        %zu\n", b->sc.triangle_count);
+    fprintf(f, "invalid skipped  %zu\n", s->invalid_skipped);
     fprintf(f, "method           %s", cli_method_name(s->method));
     if (s->method != ATRBVH_METHOD_LBVH)
         fprintf(f, " (treelet %u, %u rounds)", s->treelet_size, s->rounds);
