@@ -180,6 +180,12 @@ for scene in "$DATA/cube.obj" "$DATA/tetra.ply" "$DATA/quad_be.ply" \
         [ "$v" = '"cpu"' ] || fail "backend is $v"
     fi
 done
+# Strings are escaped, and bytes that are not UTF-8 replaced: the output
+# stays valid JSON whatever the file is called.
+odd="$T/$(printf 'q"b\\s\tt\377')x.obj"
+if cp "$DATA/cube.obj" "$odd" 2>/dev/null; then
+    run 0 build "$odd" --method lbvh --json && json_check scene triangles
+fi
 if run 0 build "$DATA/cube.obj" --method lbvh --no-collapse --json; then
     v=$(json_value leaves)
     [ "$v" = 12 ] || fail "--no-collapse: $v leaves, expected 12"

@@ -14,29 +14,44 @@
 #include <string.h>
 #include <time.h>
 
+/* The message must stay one line even when a file name holds a newline:
+ * control characters are shown as '?'. */
+static void put_line(const char *text)
+{
+    const unsigned char *p = (const unsigned char *)text;
+    for (; *p; p++)
+        fputc(*p < 0x20 || *p == 0x7f ? '?' : (int)*p, stderr);
+    fputc('\n', stderr);
+}
+
 void cli_error(const char *fmt, ...)
 {
+    char text[1024];
     va_list ap;
     fflush(stdout);
-    fputs("atrbvh: ", stderr);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
-    fputc('\n', stderr);
+    fputs("atrbvh: ", stderr);
+    put_line(text);
 }
 
 int cli_usage(const char *cmd, const char *fmt, ...)
 {
+    char text[1024];
+    size_t n;
     va_list ap;
     fflush(stdout);
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    n = strlen(text);
+    snprintf(text + n, sizeof text - n, " (try 'atrbvh%s%s --help')",
+             cmd ? " " : "", cmd ? cmd : "");
     fputs("atrbvh: ", stderr);
     if (cmd)
         fprintf(stderr, "%s: ", cmd);
-    va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
-    va_end(ap);
-    fprintf(stderr, " (try 'atrbvh%s%s --help')\n", cmd ? " " : "",
-            cmd ? cmd : "");
+    put_line(text);
     return CLI_USAGE;
 }
 
