@@ -368,7 +368,7 @@ START_TEST(ply_hostile_header)
 {
     static const char vxyz[] = "element vertex 1\nproperty float x\n"
                                "property float y\nproperty float z\n";
-    char text[1024];
+    char text[2048];
     EXPECT_ERROR(write_text("empty.ply", ""), "empty.ply", "line 1", "empty");
     EXPECT_ERROR(write_text("magic.ply", "plx\nformat ascii 1.0\n"),
                  "line 1", "not a PLY file");
@@ -398,6 +398,22 @@ START_TEST(ply_hostile_header)
              "element face 1\nproperty int other\nend_header\n0 0 0\n1\n",
              vxyz);
     EXPECT_ERROR(write_text("nolist.ply", text), "line 7", "vertex_indices");
+    {
+        /* A long comment is fine; a long property line is not. */
+        char big[2048];
+        scene s;
+        memset(big, 'c', sizeof big);
+        big[sizeof big - 1] = '\0';
+        snprintf(text, sizeof text, "ply\nformat ascii 1.0\ncomment %.900s\n"
+                 "%send_header\n0 0 0\n", big, vxyz);
+        load_ok(write_text("longc.ply", text), &s);
+        ck_assert_uint_eq(s.vertex_count, 1);
+        scene_free(&s);
+        snprintf(text, sizeof text, "ply\nformat ascii 1.0\n"
+                 "element vertex 1\nproperty float %.900s\nend_header\n",
+                 big);
+        EXPECT_ERROR(write_text("longp.ply", text), "line 4", "too long");
+    }
     EXPECT_ERROR(write_text("kw.ply", "ply\nformat ascii 1.0\nbogus 1\n"
                                       "end_header\n"),
                  "line 3", "bogus");

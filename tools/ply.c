@@ -227,8 +227,13 @@ static int parse_header(ply *p)
         end = (size_t)(nl - p->data);
         p->pos = end + 1;
         len = end - start;
-        if (len >= sizeof line)
+        if (len >= sizeof line) {
+            /* Comments may be long; nothing else in a header need be. */
+            if ((len > 8 && memcmp(p->data + start, "comment ", 8) == 0) ||
+                (len > 9 && memcmp(p->data + start, "obj_info ", 9) == 0))
+                continue;
             return fail_line(p, p->line, "header line too long");
+        }
         memcpy(line, p->data + start, len);
         line[len] = '\0';
         if (memchr(line, '\0', len))
