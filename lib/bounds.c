@@ -220,7 +220,7 @@ atrbvh_status __atrbvh_bounds(const atrbvh_geometry *g,
             }
         }
 #ifdef _OPENMP
-#pragma omp critical(atrbvh_bounds_errors)
+#pragma omp critical
 #endif
         {
             invalid += my_invalid;

@@ -1,0 +1,26 @@
+#!/bin/sh
+# The exported symbols of the built shared library must be exactly those in
+# tests/symbols.txt: an accidental export or a removal fails `make check`.
+# When the API changes on purpose, update the list (and -version-info).
+lib="$ATRBVH_BUILDDIR/lib/.libs/libatrbvh.so"
+if [ ! -f "$lib" ]; then
+    echo "symbols: $lib not built (static-only build?); skipped"
+    exit 77
+fi
+if ! command -v nm >/dev/null 2>&1; then
+    echo "symbols: nm not found; skipped"
+    exit 77
+fi
+actual=$(nm -D --defined-only "$lib" | awk '{print $3}' | grep -v '^_init$\|^_fini$' | sort)
+expected=$(grep -v '^#' "$ATRBVH_SRCDIR/tests/symbols.txt" | sort)
+if [ "$actual" != "$expected" ]; then
+    echo "symbols: exported symbols differ from tests/symbols.txt:"
+    printf '%s\n' "$expected" >expected.$$
+    printf '%s\n' "$actual" >actual.$$
+    diff -u expected.$$ actual.$$
+    rm -f expected.$$ actual.$$
+    exit 1
+fi
+n=$(printf '%s\n' "$actual" | wc -l)
+echo "symbols: $n exported, as listed"
+echo "1 passed, 0 failed"
