@@ -235,6 +235,16 @@ if run 0 trace builtin:sphere:2000 --method lbvh --width 32 --height 24 --spp 2 
     v=$(json_value rays.ao.hits)
     [ "$v" = 0 ] || fail "sphere: $v occluded AO rays"
 fi
+# Rays are a function of pixel and sample only: the same hits on any
+# number of threads.
+hits1= hits2=
+if run 0 trace builtin:city:3000 --method lbvh --width 24 --height 16 --threads 1 --json; then
+    hits1="$(json_value rays.primary.hits) $(json_value rays.ao.hits) $(json_value rays.diffuse.hits)"
+fi
+if run 0 trace builtin:city:3000 --method lbvh --width 24 --height 16 --threads 3 --json; then
+    hits2="$(json_value rays.primary.hits) $(json_value rays.ao.hits) $(json_value rays.diffuse.hits)"
+fi
+[ "$hits1" = "$hits2" ] || fail "hit counts differ with 1 and 3 threads: $hits1 / $hits2"
 run 0 trace builtin:city:3000 --method lbvh --width 40 --height 30 &&
     out_has '^ +primary +1200 ' && out_has '^ +ao ' && out_has '^ +diffuse '
 
