@@ -1,3 +1,252 @@
 #!/bin/sh
-# placeholder
-exit 77
+# cli.sh - the atrbvh command-line tool: exit status, messages, --help and
+# --version everywhere, JSON output, NaN handling, save/info/compare.
+# Run by `make check` with ATRBVH_BUILDDIR and ATRBVH_SRCDIR set.
+
+BUILDDIR=${ATRBVH_BUILDDIR:-.}
+SRCDIR=${ATRBVH_SRCDIR:-.}
+TOOL=$BUILDDIR/tools/atrbvh
+DATA=$SRCDIR/data
+
+if [ ! -x "$TOOL" ]; then
+    echo "cli.sh: $TOOL not built" >&2
+    exit 99
+fi
+
+T=$(mktemp -d "${TMPDIR:-/tmp}/atrbvh_cli.XXXXXX") || exit 99
+trap 'rm -rf "$T"' EXIT INT TERM
+
+failures=0
+checks=0
+
+fail() {
+    echo "FAIL: $*" >&2
+    failures=$((failures + 1))
+}
+
+# run RC ARGS... : runs the tool, output in $T/out and $T/err, and checks
+# the exit status.  A failing status (1, 2) must come with exactly one line
+# on stderr starting "atrbvh: ".
+run() {
+    want=$1
+    shift
+    checks=$((checks + 1))
+    "$TOOL" "$@" >"$T/out" 2>"$T/err"
+    rc=$?
+    if [ "$rc" -ne "$want" ]; then
+        fail "atrbvh $* exited $rc, expected $want; stderr: $(cat "$T/err")"
+        return 1
+    fi
+    if [ "$want" -ne 0 ]; then
+        lines=$(wc -l <"$T/err")
+        if [ "$lines" -ne 1 ] || ! grep -q '^atrbvh: ' "$T/err"; then
+            fail "atrbvh $*: stderr is not one 'atrbvh: ' line: $(cat "$T/err")"
+            return 1
+        fi
+    fi
+    return 0
+}
+
+# out_has / err_has PATTERN (grep -E)
+out_has() {
+    grep -Eq -- "$1" "$T/out" || fail "stdout lacks /$1/: $(head -c 400 "$T/out")"
+}
+err_has() {
+    grep -Eq -- "$1" "$T/err" || fail "stderr lacks /$1/: $(cat "$T/err")"
+}
+
+HAVE_PY=no
+if command -v python3 >/dev/null 2>&1 && python3 -c 'import json' 2>/dev/null; then
+    HAVE_PY=yes
+fi
+
+# json_check KEY... : stdout is one JSON object with every KEY (a.b for
+# nested keys).
+json_check() {
+    if [ "$HAVE_PY" = yes ]; then
+        python3 - "$T/out" "$@" <<'PY' || fail "JSON check failed: $(head -c 600 "$T/out")"
+import json, math, sys
+with open(sys.argv[1]) as f:
+    text = f.read()
+def bad_constant(name):
+    raise ValueError("non-JSON constant " + name)
+obj = json.loads(text, parse_constant=bad_constant)
+assert isinstance(obj, dict), "not an object"
+for key in sys.argv[2:]:
+    o = obj
+    for part in key.split("."):
+        assert isinstance(o, dict) and part in o, "missing key " + key
+        o = o[part]
+PY
+    else
+        for key in "$@"; do
+            last=${key##*.}
+            grep -q "\"$last\":" "$T/out" || fail "JSON lacks key $key"
+        done
+    fi
+}
+
+# json_value KEY : prints the value of a top-level or dotted key.
+json_value() {
+    if [ "$HAVE_PY" = yes ]; then
+        python3 -c 'import json,sys
+o = json.load(open(sys.argv[1]))
+for p in sys.argv[2].split("."): o = o[p]
+print(json.dumps(o))' "$T/out" "$1"
+    else
+        last=${1##*.}
+        sed -n "s/^ *\"$last\": *\([^,]*\),*$/\1/p" "$T/out" | head -n 1
+    fi
+}
+
+BUILD_KEYS="triangles method treelet_size rounds backend threads sah nodes
+leaves max_depth build_ms stages_ms scene invalid_skipped max_leaf_size ci ct
+collapse"
+STAGES="bounds morton sort hierarchy refit optimise collapse layout"
+
+# ------------------------------------------------------ help and version
+run 2 || true
+run 0 --help && out_has '^Usage: atrbvh'
+run 0 -h && out_has 'build SCENE'
+run 0 --version && out_has '^atrbvh [0-9]+\.[0-9]+\.[0-9]+'
+for cmd in build trace info compare; do
+    run 0 $cmd --help && out_has "^Usage: atrbvh $cmd"
+    run 0 $cmd --version && out_has '^atrbvh [0-9]'
+    # --help wins over anything else on the line.
+    run 0 $cmd --bogus --help && out_has "^Usage: atrbvh $cmd"
+done
+
+# ------------------------------------------------------------ usage: 2
+run 2 frobnicate && err_has 'unknown command'
+run 2 --frobnicate && err_has 'unknown option'
+run 2 build && err_has 'no SCENE'
+run 2 build "$DATA/cube.obj" --bogus && err_has "unknown option '--bogus'"
+run 2 build "$DATA/cube.obj" --treelet abc && err_has "--treelet: 'abc'"
+run 2 build "$DATA/cube.obj" --treelet -3
+run 2 build "$DATA/cube.obj" --treelet 99999999999999999999
+run 2 build "$DATA/cube.obj" --rounds 2x
+run 2 build "$DATA/cube.obj" --threads 1.5
+run 2 build "$DATA/cube.obj" --ci abc
+run 2 build "$DATA/cube.obj" --ct ''
+run 2 build "$DATA/cube.obj" --max-leaf
+run 2 build "$DATA/cube.obj" --method bogus && err_has 'lbvh, trbvh or atrbvh'
+run 2 build "$DATA/cube.obj" "$DATA/tetra.ply" && err_has 'more than one'
+run 2 trace "$DATA/cube.obj" --width 0
+run 2 trace "$DATA/cube.obj" --height abc
+run 2 trace "$DATA/cube.obj" --spp 100000
+run 2 info && err_has 'no FILE'
+run 2 info a b
+run 2 compare onlyone
+run 2 compare a b --json
+
+# ----------------------------------------------------- bad input: 1
+run 1 build "$T/missing.ply" && err_has 'missing\.ply'
+run 1 build "$T/scene.stl" && err_has 'unknown scene type'
+run 1 build builtin:teapot && err_has 'teapot'
+run 1 build builtin:sphere:0 && err_has 'builtin:sphere:0'
+run 1 build builtin:sphere:50000001
+run 1 build "$DATA/empty.obj" --method lbvh && err_has 'empty\.obj: .*no triangles'
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 oops 0\n0 1 0\n' >"$T/bad.ply"
+run 1 build "$T/bad.ply" && err_has 'bad\.ply: line 9: .*oops'
+# Values the library rejects: its message, exit 1.
+run 1 build "$DATA/cube.obj" --method trbvh --treelet 100 && err_has 'cube\.obj: .*treelet'
+run 1 build "$DATA/cube.obj" --method lbvh --ci -1 && err_has 'ci'
+run 1 build "$DATA/cube.obj" --method lbvh --ct nan
+run 1 build "$DATA/cube.obj" --method lbvh --threads -2 && err_has 'threads'
+
+# NaN: an error naming the primitive (triangle 1), unless skipped.
+run 1 build "$DATA/nan.obj" --method lbvh && err_has '^atrbvh: .*nan\.obj: .*[^0-9]1([^0-9]|$)'
+if run 0 build "$DATA/nan.obj" --method lbvh --skip-invalid --json; then
+    json_check $BUILD_KEYS
+    v=$(json_value invalid_skipped)
+    [ "$v" = 1 ] || fail "invalid_skipped is '$v', expected 1"
+    v=$(json_value triangles)
+    [ "$v" = 3 ] || fail "triangles is '$v', expected 3"
+fi
+
+# ------------------------------------------------------------- build
+run 0 build "$DATA/cube.obj" --method lbvh && {
+    out_has '^triangles +12'
+    out_has '^SAH'
+    out_has '^max depth'
+    out_has '^build +[0-9.]+ ms'
+}
+for scene in "$DATA/cube.obj" "$DATA/tetra.ply" "$DATA/quad_be.ply" \
+    builtin:sphere:500 builtin:terrain:500 builtin:city:500; do
+    if run 0 build "$scene" --method lbvh --json; then
+        json_check $BUILD_KEYS
+        for st in $STAGES; do json_check "stages_ms.$st"; done
+        v=$(json_value backend)
+        [ "$v" = '"cpu"' ] || fail "backend is $v"
+    fi
+done
+# Strings are escaped, and bytes that are not UTF-8 replaced: the output
+# stays valid JSON whatever the file is called.
+odd="$T/$(printf 'q"b\\s\tt\377')x.obj"
+if cp "$DATA/cube.obj" "$odd" 2>/dev/null; then
+    run 0 build "$odd" --method lbvh --json && json_check scene triangles
+fi
+if run 0 build "$DATA/cube.obj" --method lbvh --no-collapse --json; then
+    v=$(json_value leaves)
+    [ "$v" = 12 ] || fail "--no-collapse: $v leaves, expected 12"
+    v=$(json_value collapse)
+    [ "$v" = false ] || fail "--no-collapse: collapse is $v"
+fi
+if run 0 build builtin:city:2000 --method lbvh --max-leaf 2 --ci 2.5 --ct=0.5 --threads 1 --json; then
+    v=$(json_value max_leaf_primitives)
+    [ "$v" -le 2 ] 2>/dev/null || fail "--max-leaf 2: largest leaf $v"
+    v=$(json_value ci)
+    [ "$v" = 2.5 ] || fail "ci is $v"
+    v=$(json_value threads)
+    [ "$v" = 1 ] || fail "threads is $v"
+fi
+# The default method, as the README's main job runs it.
+run 0 build builtin:sphere:2000 && out_has '^method +atrbvh'
+
+# ------------------------------------------ save, info, compare
+if run 0 build "$DATA/tetra.ply" --method lbvh --output "$T/a.bvh" &&
+    run 0 build "$DATA/tetra.ply" --method lbvh --threads 1 -o "$T/b.bvh" &&
+    run 0 build builtin:sphere:300 --method lbvh --output="$T/c.bvh"; then
+    run 0 compare "$T/a.bvh" "$T/b.bvh" && out_has 'identical'
+    run 1 compare "$T/a.bvh" "$T/c.bvh" && err_has 'differ'
+    run 0 info "$T/a.bvh" && out_has '^nodes'
+    run 0 info --json "$T/c.bvh" &&
+        json_check file primitives method nodes leaves max_depth sah
+    run 1 info "$DATA/cube.obj" && err_has 'cube\.obj'
+    run 1 compare "$T/a.bvh" "$T/nothere.bvh" && err_has 'nothere\.bvh'
+fi
+run 1 build "$DATA/cube.obj" --method lbvh --output "$T/no/such/dir/x.bvh" &&
+    err_has 'x\.bvh'
+
+# ------------------------------------------------------------- trace
+if run 0 trace builtin:sphere:2000 --method lbvh --width 32 --height 24 --spp 2 --json; then
+    json_check $BUILD_KEYS rays.primary.count rays.primary.hits \
+        rays.primary.mrays rays.ao.count rays.ao.hits rays.ao.mrays \
+        rays.diffuse.count rays.diffuse.hits rays.diffuse.mrays
+    v=$(json_value rays.primary.count)
+    [ "$v" = 768 ] || fail "primary count $v, expected 768"
+    hits=$(json_value rays.primary.hits)
+    [ "$hits" -gt 0 ] 2>/dev/null || fail "no primary hits ($hits)"
+    v=$(json_value rays.ao.count)
+    [ "$v" = $((hits * 2)) ] || fail "ao count $v, expected $((hits * 2))"
+    v=$(json_value rays.diffuse.count)
+    [ "$v" = $((hits * 2)) ] || fail "diffuse count $v, expected $((hits * 2))"
+    # A convex sphere cannot occlude itself.
+    v=$(json_value rays.ao.hits)
+    [ "$v" = 0 ] || fail "sphere: $v occluded AO rays"
+fi
+# Rays are a function of pixel and sample only: the same hits on any
+# number of threads.
+hits1= hits2=
+if run 0 trace builtin:city:3000 --method lbvh --width 24 --height 16 --threads 1 --json; then
+    hits1="$(json_value rays.primary.hits) $(json_value rays.ao.hits) $(json_value rays.diffuse.hits)"
+fi
+if run 0 trace builtin:city:3000 --method lbvh --width 24 --height 16 --threads 3 --json; then
+    hits2="$(json_value rays.primary.hits) $(json_value rays.ao.hits) $(json_value rays.diffuse.hits)"
+fi
+[ "$hits1" = "$hits2" ] || fail "hit counts differ with 1 and 3 threads: $hits1 / $hits2"
+run 0 trace builtin:city:3000 --method lbvh --width 40 --height 30 &&
+    out_has '^ +primary +1200 ' && out_has '^ +ao ' && out_has '^ +diffuse '
+
+echo "cli.sh: $checks runs, $failures failures"
+[ "$failures" -eq 0 ]
