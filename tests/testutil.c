@@ -64,14 +64,30 @@ static long double area_ld(const float lo[3], const float hi[3])
     return 2.0L * (dx * dy + dy * dz + dz * dx);
 }
 
+/* Valid means every coordinate the primitive reads is finite (the
+ * min/max in prim_box would silently drop a NaN). */
 static int prim_valid(const atrbvh_geometry *g, size_t i)
 {
-    float lo[3], hi[3];
-    int k;
-    prim_box(g, i, lo, hi);
-    for (k = 0; k < 3; k++)
-        if (!isfinite(lo[k]) || !isfinite(hi[k]))
-            return 0;
+    int k, c;
+    if (g->type == ATRBVH_GEOMETRY_BOXES) {
+        size_t stride = g->box_stride ? g->box_stride : 24;
+        const float *b = (const float *)((const char *)g->boxes + i * stride);
+        for (k = 0; k < 6; k++)
+            if (!isfinite(b[k]))
+                return 0;
+        return 1;
+    }
+    for (c = 0; c < 3; c++) {
+        size_t vs = g->vertex_stride ? g->vertex_stride : 12;
+        size_t is = g->index_stride ? g->index_stride : 12;
+        size_t v = g->indices
+                       ? ((const uint32_t *)((const char *)g->indices + i * is))[c]
+                       : 3 * i + (size_t)c;
+        const float *p = (const float *)((const char *)g->vertices + v * vs);
+        for (k = 0; k < 3; k++)
+            if (!isfinite(p[k]))
+                return 0;
+    }
     return 1;
 }
 
