@@ -1,12 +1,12 @@
 #!/bin/sh
-# setup.sh - install what atrbvh needs on Debian, then configure and build
-# it in _build/.  Safe to run again.  Used by the README and by .ci/run.
+# setup.sh - install what atrbvh needs on Debian (the lists in
+# .ci/packages.d/*.txt, one package per line), then configure and build it
+# in _build/.  Safe to run again.  Used by the README and by .ci/run.
 set -eu
 cd "$(dirname "$0")"
 
-pkgs="build-essential autoconf automake libtool pkg-config check python3 groff-base"
 missing=""
-for p in $pkgs; do
+for p in $(cat .ci/packages.d/*.txt | sed 's/#.*//'); do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" ||
         missing="$missing $p"
 done
