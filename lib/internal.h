@@ -209,11 +209,29 @@ atrbvh_status __atrbvh_build_finish(atrbvh_bvh *bvh, const __atrbvh_config *cfg,
 void __atrbvh_bvh_add_kernel_time(atrbvh_bvh *bvh, const char *name,
                                   double ms);
 
+/* The argument checks of the batch ray queries (lib/traverse.c); `fn`
+ * names the caller in the message. */
+atrbvh_status __atrbvh_trav_check(const atrbvh_bvh *bvh,
+                                  const atrbvh_geometry *g,
+                                  const atrbvh_ray *rays, size_t count,
+                                  const void *out, int threads,
+                                  const char *fn, atrbvh_error *error);
+
 #ifdef ATRBVH_HAVE_OPENCL
 /* The OpenCL backend (cl/backend.c): the whole pipeline on a device. */
 atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *geometry,
                                 const __atrbvh_config *cfg, atrbvh_bvh **out,
                                 __atrbvh_capture *capture,
+                                atrbvh_error *error);
+/* The ray queries on a device (kernels intersect_closest / intersect_any):
+ * closest hits into `hits`, or, when `occluded` is non-NULL, any hits into
+ * it.  Arguments already checked.  *kernel_ms (may be NULL): the kernel's
+ * device time from its profiling event. */
+atrbvh_status __atrbvh_cl_trace(const atrbvh_bvh *bvh,
+                                const atrbvh_geometry *geometry,
+                                const atrbvh_ray *rays, size_t count,
+                                atrbvh_hit *hits, uint8_t *occluded,
+                                const char *device, double *kernel_ms,
                                 atrbvh_error *error);
 #endif
 

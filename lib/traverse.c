@@ -43,6 +43,11 @@
  *  - Rays with a NaN or infinite origin or direction, an all-zero direction,
  *    or a NaN tmin/tmax hit nothing.
  *
+ * The per-ray arithmetic (ray setup, slab test, triangle and box tests,
+ * the traversal loop) is in shared/traverse.h, which the OpenCL kernels
+ * intersect_closest and intersect_any compile too: a ray gets the same
+ * result, bit for bit, on both.
+ *
  * Traversal: depth-first with a fixed stack of TRAVERSE_STACK entries on the
  * C stack (no allocation).  At an internal node both children are tested,
  * the nearer (by entry distance; the left on a tie) is visited first and the
@@ -58,354 +63,48 @@
 #include "config.h"
 
 #include "internal.h"
+#include "shared/traverse.h"
 
-#include <float.h>
-#include <math.h>
 #include <string.h>
 
-#define TRAVERSE_STACK 256
-
-/* 1 + 2*gamma(3) and 1 - 2*gamma(3), gamma(n) = n*u / (1 - n*u), u = 2^-24,
- * rounded outwards. */
-#define WIDEN_UP 1.00000036f
-#define WIDEN_DOWN 0.99999964f
-/* Relative slack on the closest-hit distance when pruning (2^-12). */
-#define PRUNE_SLACK (1.0f / 4096.0f)
-
-typedef struct ray_pre {
-    float org[3];
-    float idir[3];
-    int sign[3]; /* 1 when idir[k] < 0 (direction -0 included) */
-    float tmin, tmax;
-    /* watertight triangle test, in double */
-    double o[3];
-    int kx, ky, kz;
-    double sx, sy, sz;
-} ray_pre;
-
-typedef struct best_hit {
-    float t, u, v;
-    uint32_t prim;
-    float tlim; /* node pruning bound: t widened by PRUNE_SLACK */
-} best_hit;
-
-static float widen_limit(float t)
+/* The shared header's view of a BVH and its geometry; 0 when the geometry
+ * cannot be read (no data pointer, or a byte stride that is not a multiple
+ * of 4: the build rejects those, so no BVH is built over such a
+ * geometry). */
+static int trav_scene(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
+                      atrbvh_trav_scene *s)
 {
-    /* t + |t| * slack; inf stays inf, -inf stays -inf. */
-    float r = t + fabsf(t) * PRUNE_SLACK;
-    return r == r ? r : t;
-}
-
-static int ray_setup(const atrbvh_ray *ray, ray_pre *r)
-{
-    int k;
-    double ad[3];
-    if (!(ray->tmin == ray->tmin) || !(ray->tmax == ray->tmax))
-        return 0;
-    for (k = 0; k < 3; k++) {
-        if (!isfinite(ray->origin[k]) || !isfinite(ray->dir[k]))
-            return 0;
-    }
-    if (ray->dir[0] == 0.0f && ray->dir[1] == 0.0f && ray->dir[2] == 0.0f)
-        return 0;
-    if (!(ray->tmin <= ray->tmax))
-        return 0;
-    for (k = 0; k < 3; k++) {
-        r->org[k] = ray->origin[k];
-        r->idir[k] = 1.0f / ray->dir[k]; /* +-inf for +-0 */
-        r->sign[k] = r->idir[k] < 0.0f;
-        r->o[k] = (double)ray->origin[k];
-        ad[k] = fabs((double)ray->dir[k]);
-    }
-    r->tmin = ray->tmin;
-    r->tmax = ray->tmax;
-    /* The largest component becomes z (the first on a tie). */
-    r->kz = 0;
-    if (ad[1] > ad[r->kz])
-        r->kz = 1;
-    if (ad[2] > ad[r->kz])
-        r->kz = 2;
-    r->kx = (r->kz + 1) % 3;
-    r->ky = (r->kx + 1) % 3;
-    if (ray->dir[r->kz] < 0.0f) { /* keep the winding */
-        int s = r->kx;
-        r->kx = r->ky;
-        r->ky = s;
-    }
-    r->sx = (double)ray->dir[r->kx] / (double)ray->dir[r->kz];
-    r->sy = (double)ray->dir[r->ky] / (double)ray->dir[r->kz];
-    r->sz = 1.0 / (double)ray->dir[r->kz];
-    return 1;
-}
-
-/* Conservative ray/node test.  Hit when the slab interval, far end widened,
- * meets [tlo, thi]; *tnear is where it starts. */
-static inline int node_hit(const atrbvh_node *n, const ray_pre *r, float tlo,
-                           float thi, float *tnear)
-{
-    float lo = -INFINITY, hi = INFINITY;
-    int k;
-    for (k = 0; k < 3; k++) {
-        float bn = r->sign[k] ? n->max[k] : n->min[k];
-        float bf = r->sign[k] ? n->min[k] : n->max[k];
-        float tn = (bn - r->org[k]) * r->idir[k];
-        float tf = (bf - r->org[k]) * r->idir[k];
-        /* NaN (0 * inf) fails the comparison and is dropped. */
-        lo = tn > lo ? tn : lo;
-        hi = tf < hi ? tf : hi;
-    }
-    hi = hi * (hi > 0.0f ? WIDEN_UP : WIDEN_DOWN);
-    if (tlo > lo)
-        lo = tlo;
-    if (thi < hi)
-        hi = thi;
-    *tnear = lo;
-    return lo <= hi;
-}
-
-/* Exact ray/box primitive test: entry and exit distances. */
-static inline int box_interval(const float *b, const ray_pre *r, float *t0,
-                               float *t1)
-{
-    float lo = -INFINITY, hi = INFINITY;
-    int k;
-    for (k = 0; k < 3; k++) {
-        float bn = r->sign[k] ? b[3 + k] : b[k];
-        float bf = r->sign[k] ? b[k] : b[3 + k];
-        float tn = (bn - r->org[k]) * r->idir[k];
-        float tf = (bf - r->org[k]) * r->idir[k];
-        lo = tn > lo ? tn : lo;
-        hi = tf < hi ? tf : hi;
-    }
-    *t0 = lo;
-    *t1 = hi;
-    return lo <= hi;
-}
-
-static inline void load3(const void *p, float out[3])
-{
-    memcpy(out, p, 3 * sizeof(float));
-}
-
-/* The three vertices of triangle `prim`; 0 if an index is out of range. */
-static inline int triangle_vertices(const atrbvh_geometry *g, uint32_t prim,
-                                    float v[3][3])
-{
-    size_t vs = g->vertex_stride ? g->vertex_stride : 3 * sizeof(float);
-    const char *base = (const char *)g->vertices;
-    size_t id[3];
-    int k;
-    if (g->indices) {
+    memset(s, 0, sizeof *s);
+    s->nodes = bvh->nodes;
+    s->node_count = bvh->node_count;
+    s->prim_indices = bvh->prim_indices;
+    s->prim_count = bvh->prim_count;
+    s->primitive_count = g->primitive_count;
+    if (g->type == ATRBVH_GEOMETRY_TRIANGLES) {
+        size_t vs = g->vertex_stride ? g->vertex_stride : 3 * sizeof(float);
         size_t is = g->index_stride ? g->index_stride : 3 * sizeof(uint32_t);
-        uint32_t tri[3];
-        memcpy(tri, (const char *)g->indices + (size_t)prim * is, sizeof tri);
-        for (k = 0; k < 3; k++)
-            id[k] = tri[k];
-    } else {
-        for (k = 0; k < 3; k++)
-            id[k] = 3 * (size_t)prim + (size_t)k;
-    }
-    for (k = 0; k < 3; k++) {
-        if (id[k] >= g->vertex_count)
+        if (!g->vertices || vs % sizeof(float) ||
+            (g->indices && is % sizeof(uint32_t)))
             return 0;
-        load3(base + id[k] * vs, v[k]);
+        s->boxes = 0;
+        s->vertices = g->vertices;
+        s->vertex_count = g->vertex_count;
+        s->vertex_stride = vs / sizeof(float);
+        s->indices = g->indices;
+        s->indexed = g->indices != NULL;
+        s->index_stride = is / sizeof(uint32_t);
+        return 1;
     }
-    return 1;
-}
-
-/* Watertight ray/triangle test (Woop, Benthin, Wald 2013), in double.
- * On a hit with a finite t returns 1 with t and the barycentrics of
- * vertices 1 and 2. */
-static inline int triangle_hit(float v[3][3], const ray_pre *r,
-                               float *t, float *u, float *w)
-{
-    double a[3], b[3], c[3];
-    double ax, ay, bx, by, cx, cy, e0, e1, e2, det, tt;
-    int k;
-    for (k = 0; k < 3; k++) {
-        a[k] = (double)v[0][k] - r->o[k];
-        b[k] = (double)v[1][k] - r->o[k];
-        c[k] = (double)v[2][k] - r->o[k];
-    }
-    ax = a[r->kx] - r->sx * a[r->kz];
-    ay = a[r->ky] - r->sy * a[r->kz];
-    bx = b[r->kx] - r->sx * b[r->kz];
-    by = b[r->ky] - r->sy * b[r->kz];
-    cx = c[r->kx] - r->sx * c[r->kz];
-    cy = c[r->ky] - r->sy * c[r->kz];
-    /* e0 weighs vertex 0 (edge 1-2), e1 vertex 1, e2 vertex 2. */
-    e0 = cx * by - cy * bx;
-    e1 = ax * cy - ay * cx;
-    e2 = bx * ay - by * ax;
-    if ((e0 < 0.0 || e1 < 0.0 || e2 < 0.0) &&
-        (e0 > 0.0 || e1 > 0.0 || e2 > 0.0))
-        return 0;
-    det = e0 + e1 + e2;
-    if (det == 0.0 || !(det == det))
-        return 0;
-    tt = e0 * (r->sz * a[r->kz]);
-    tt = tt + e1 * (r->sz * b[r->kz]);
-    tt = tt + e2 * (r->sz * c[r->kz]);
-    tt = tt / det;
-    if (!(fabs(tt) <= (double)FLT_MAX))
-        return 0;
-    *t = (float)tt;
-    if (!(fabsf(*t) <= FLT_MAX))
-        return 0;
-    *u = (float)(e1 / det);
-    *w = (float)(e2 / det);
-    return 1;
-}
-
-/* Tests the primitives of a leaf.  Returns 1 when `any` and something was
- * hit (the query is over). */
-static int leaf_test(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
-                     const atrbvh_node *n, const ray_pre *r, int any,
-                     best_hit *best)
-{
-    uint32_t j;
-    size_t first = n->index;
-    if (first > bvh->prim_count || n->count > bvh->prim_count - first)
-        return 0; /* never for a valid tree */
-    for (j = 0; j < n->count; j++) {
-        uint32_t prim = bvh->prim_indices[first + j];
-        float t, u = 0.0f, v = 0.0f;
-        if (prim >= g->primitive_count)
-            continue;
-        if (g->type == ATRBVH_GEOMETRY_TRIANGLES) {
-            float vtx[3][3];
-            if (!triangle_vertices(g, prim, vtx) ||
-                !triangle_hit(vtx, r, &t, &u, &v))
-                continue;
-            if (any) {
-                if (t >= r->tmin && t <= r->tmax)
-                    return 1;
-                continue;
-            }
-        } else {
-            size_t bs = g->box_stride ? g->box_stride : 6 * sizeof(float);
-            float box[6], t0, t1;
-            memcpy(box, (const char *)g->boxes + (size_t)prim * bs, sizeof box);
-            if (!box_interval(box, r, &t0, &t1))
-                continue;
-            if (any) {
-                if ((t0 >= r->tmin && t0 <= r->tmax) ||
-                    (t1 >= r->tmin && t1 <= r->tmax))
-                    return 1;
-                continue;
-            }
-            t = t0 > r->tmin ? t0 : t1;
-            if (!(fabsf(t) <= FLT_MAX))
-                continue;
-        }
-        if (t > r->tmin &&
-            (t < best->t || (t == best->t && prim < best->prim))) {
-            best->t = t;
-            best->u = u;
-            best->v = v;
-            best->prim = prim;
-            best->tlim = widen_limit(t);
-        }
+    if (g->type == ATRBVH_GEOMETRY_BOXES) {
+        size_t bs = g->box_stride ? g->box_stride : 6 * sizeof(float);
+        if (!g->boxes || bs % sizeof(float))
+            return 0;
+        s->boxes = 1;
+        s->box_data = g->boxes;
+        s->box_stride = bs / sizeof(float);
+        return 1;
     }
     return 0;
-}
-
-/* The fallback for trees deeper than the stack: every leaf, in order. */
-static int linear_pass(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
-                       const ray_pre *r, int any, best_hit *best,
-                       float tlo)
-{
-    size_t i;
-    for (i = 0; i < bvh->node_count; i++) {
-        const atrbvh_node *n = &bvh->nodes[i];
-        float tn;
-        if (n->count == 0 || !node_hit(n, r, tlo, best->tlim, &tn))
-            continue;
-        if (leaf_test(bvh, g, n, r, any, best))
-            return 1;
-    }
-    return 0;
-}
-
-typedef struct stack_entry {
-    uint32_t node;
-    float tnear;
-} stack_entry;
-
-/* Returns, for `any`, whether anything was hit; otherwise fills best. */
-static int traverse(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
-                    const ray_pre *r, int any, best_hit *best)
-{
-    stack_entry stack[TRAVERSE_STACK];
-    unsigned sp = 0;
-    const atrbvh_node *nodes = bvh->nodes;
-    size_t count = bvh->node_count;
-    /* the lower end of the node interval, widened like the upper one */
-    float tlo = r->tmin - fabsf(r->tmin) * PRUNE_SLACK;
-    uint32_t cur = 0;
-    float tn;
-
-    if (!(tlo == tlo))
-        tlo = r->tmin;
-    best->t = r->tmax;
-    best->u = best->v = 0.0f;
-    best->prim = ATRBVH_NO_HIT;
-    best->tlim = widen_limit(r->tmax);
-    if (count == 0 || !node_hit(&nodes[0], r, tlo, best->tlim, &tn))
-        return 0;
-    for (;;) {
-        const atrbvh_node *n = &nodes[cur];
-        int descended = 0;
-        if (n->count > 0) {
-            if (leaf_test(bvh, g, n, r, any, best))
-                return 1;
-        } else {
-            uint32_t l = cur + 1, rr = n->index;
-            float nl, nr;
-            int hl, hr;
-            if (rr <= l || (size_t)rr >= count) /* never for a valid tree */
-                goto pop;
-            hl = node_hit(&nodes[l], r, tlo, best->tlim, &nl);
-            hr = node_hit(&nodes[rr], r, tlo, best->tlim, &nr);
-            if (hl && hr) {
-                uint32_t near_node = l, far_node = rr;
-                float far_t = nr;
-                if (nr < nl) {
-                    near_node = rr;
-                    far_node = l;
-                    far_t = nl;
-                }
-                if (sp == TRAVERSE_STACK) {
-                    if (linear_pass(bvh, g, r, any, best, tlo))
-                        return 1;
-                    return any ? 0 : best->prim != ATRBVH_NO_HIT;
-                }
-                stack[sp].node = far_node;
-                stack[sp].tnear = far_t;
-                sp++;
-                cur = near_node;
-                descended = 1;
-            } else if (hl) {
-                cur = l;
-                descended = 1;
-            } else if (hr) {
-                cur = rr;
-                descended = 1;
-            }
-        }
-        if (descended)
-            continue;
-    pop:
-        for (;;) {
-            if (sp == 0)
-                return any ? 0 : best->prim != ATRBVH_NO_HIT;
-            sp--;
-            if (stack[sp].tnear <= best->tlim) {
-                cur = stack[sp].node;
-                break;
-            }
-        }
-    }
 }
 
 static int geometry_usable(const atrbvh_geometry *g)
@@ -417,42 +116,42 @@ static int geometry_usable(const atrbvh_geometry *g)
     return 0;
 }
 
+static void closest(const atrbvh_trav_scene *s, const atrbvh_ray *ray,
+                    atrbvh_hit *hit)
+{
+    atrbvh_trav_closest(s, ray->origin, ray->dir, ray->tmin, ray->tmax,
+                        &hit->t, &hit->u, &hit->v, &hit->primitive);
+}
+
 int atrbvh_intersect(const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
                      const atrbvh_ray *ray, atrbvh_hit *hit)
 {
-    ray_pre r;
-    best_hit best;
+    atrbvh_trav_scene s;
     if (hit) {
         hit->t = ray ? ray->tmax : 0.0f;
         hit->u = hit->v = 0.0f;
         hit->primitive = ATRBVH_NO_HIT;
     }
-    if (!bvh || !geometry || !ray || !hit || !geometry_usable(geometry) ||
-        !ray_setup(ray, &r))
+    if (!bvh || !geometry || !ray || !hit ||
+        !trav_scene(bvh, geometry, &s))
         return 0;
-    if (!traverse(bvh, geometry, &r, 0, &best))
-        return 0;
-    hit->t = best.t;
-    hit->u = best.u;
-    hit->v = best.v;
-    hit->primitive = best.prim;
-    return 1;
+    closest(&s, ray, hit);
+    return hit->primitive != ATRBVH_NO_HIT;
 }
 
 int atrbvh_occluded(const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
                     const atrbvh_ray *ray)
 {
-    ray_pre r;
-    best_hit best;
-    if (!bvh || !geometry || !ray || !geometry_usable(geometry) ||
-        !ray_setup(ray, &r))
+    atrbvh_trav_scene s;
+    if (!bvh || !geometry || !ray ||
+        !trav_scene(bvh, geometry, &s))
         return 0;
-    return traverse(bvh, geometry, &r, 1, &best);
+    return atrbvh_trav_any(&s, ray->origin, ray->dir, ray->tmin, ray->tmax);
 }
 
 /* The checks both batch functions make. */
-static atrbvh_status batch_check(const atrbvh_bvh *bvh,
-                                 const atrbvh_geometry *g,
+atrbvh_status __atrbvh_trav_check(const atrbvh_bvh *bvh,
+                                  const atrbvh_geometry *g,
                                  const atrbvh_ray *rays, size_t count,
                                  const void *out, int threads,
                                  const char *fn, atrbvh_error *error)
@@ -483,6 +182,14 @@ static atrbvh_status batch_check(const atrbvh_bvh *bvh,
                              "%s: geometry.%s is NULL", fn,
                              g->type == ATRBVH_GEOMETRY_TRIANGLES ? "vertices"
                                                                   : "boxes");
+    {
+        atrbvh_trav_scene s;
+        if (!trav_scene(bvh, g, &s))
+            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+                                 (uint64_t)-1,
+                                 "%s: a geometry byte stride is not a "
+                                 "multiple of 4", fn);
+    }
     needed = bvh->stats.primitives + bvh->stats.invalid_skipped;
     if (needed < bvh->prim_count)
         needed = bvh->prim_count;
@@ -503,22 +210,24 @@ atrbvh_status atrbvh_intersect_batch(const atrbvh_bvh *bvh,
                                      atrbvh_error *error)
 {
     long long i, n = (long long)count;
+    atrbvh_trav_scene s;
     atrbvh_status st;
-    st = batch_check(bvh, geometry, rays, count, hits, threads,
+    st = __atrbvh_trav_check(bvh, geometry, rays, count, hits, threads,
                      "atrbvh_intersect_batch", error);
     if (st != ATRBVH_OK)
         return st;
     __atrbvh_clear_error(error);
+trav_scene(bvh, geometry, &s); /* checked */
 #ifdef _OPENMP
     {
         int nt = __atrbvh_resolve_threads(threads);
 #pragma omp parallel for schedule(dynamic, 64) num_threads(nt)
         for (i = 0; i < n; i++)
-            atrbvh_intersect(bvh, geometry, &rays[i], &hits[i]);
+            closest(&s, &rays[i], &hits[i]);
     }
 #else
     for (i = 0; i < n; i++)
-        atrbvh_intersect(bvh, geometry, &rays[i], &hits[i]);
+        closest(&s, &rays[i], &hits[i]);
 #endif
     return ATRBVH_OK;
 }
@@ -530,23 +239,28 @@ atrbvh_status atrbvh_occluded_batch(const atrbvh_bvh *bvh,
                                     atrbvh_error *error)
 {
     long long i, n = (long long)count;
+    atrbvh_trav_scene s;
     atrbvh_status st;
-    st = batch_check(bvh, geometry, rays, count, occluded, threads,
+    st = __atrbvh_trav_check(bvh, geometry, rays, count, occluded, threads,
                      "atrbvh_occluded_batch", error);
     if (st != ATRBVH_OK)
         return st;
     __atrbvh_clear_error(error);
+trav_scene(bvh, geometry, &s); /* checked */
 #ifdef _OPENMP
     {
         int nt = __atrbvh_resolve_threads(threads);
 #pragma omp parallel for schedule(dynamic, 64) num_threads(nt)
         for (i = 0; i < n; i++)
-            occluded[i] =
-                (uint8_t)(atrbvh_occluded(bvh, geometry, &rays[i]) != 0);
+            occluded[i] = (uint8_t)(atrbvh_trav_any(&s, rays[i].origin,
+                                                    rays[i].dir, rays[i].tmin,
+                                                    rays[i].tmax) != 0);
     }
 #else
     for (i = 0; i < n; i++)
-        occluded[i] = (uint8_t)(atrbvh_occluded(bvh, geometry, &rays[i]) != 0);
+        occluded[i] = (uint8_t)(atrbvh_trav_any(&s, rays[i].origin,
+                                                rays[i].dir, rays[i].tmin,
+                                                rays[i].tmax) != 0);
 #endif
     return ATRBVH_OK;
 }

@@ -1,0 +1,480 @@
+/*
+ * shared/traverse.h - the per-ray arithmetic of the ray queries (closest
+ * hit and any hit), written once for the CPU (lib/traverse.c, C99) and the
+ * OpenCL kernels (cl/kernels.cl: intersect_closest, intersect_any), so a
+ * ray gets the same hit, the same t/u/v bits and the same primitive on
+ * both.
+ *
+ * Same rules as shared/arith.h: no libc, no VLAs, no recursion, a
+ * fixed-size private stack.  Geometry and tree arrays come in through
+ * ATRBVH_CONST_GLOBAL pointers with strides in elements (the build
+ * requires byte strides that are multiples of 4).
+ *
+ * The robustness rules (see lib/traverse.c and atrbvh(3), "Ray queries"):
+ * conservative slab test with Ize's 1 + 2*gamma(3) widening of the far
+ * distance, watertight Woop/Benthin/Wald triangle test in double, box
+ * primitives as surfaces, closest-hit ties to the lower primitive index,
+ * near-first traversal with a TRAVERSE_STACK-entry stack and a linear pass
+ * over the leaves when a (hand-made) tree is deeper than that.
+ *
+ * Portability notes: the reciprocal direction is computed as
+ * (float)(1.0 / (double)d).  Double rounding of a quotient of two floats
+ * through double is innocuous (53 >= 2*24 + 2; Figueroa 1995), so this is
+ * bit for bit the correctly rounded 1.0f / d, also on an OpenCL device
+ * whose single-precision division is not correctly rounded (the default:
+ * 2.5 ulp is allowed without -cl-fp32-correctly-rounded-divide-sqrt).
+ * Every other float operation is +, -, * or a comparison, which OpenCL
+ * rounds correctly; the double ones (including the division) are IEEE
+ * under cl_khr_fp64.
+ */
+#ifndef ATRBVH_SHARED_TRAVERSE_H
+#define ATRBVH_SHARED_TRAVERSE_H
+
+#include "arith.h"
+
+#ifdef __OPENCL_VERSION__
+#define ATRBVH_TRAV_INF INFINITY
+/* The public types of atrbvh.h, same layout. */
+typedef struct atrbvh_node {
+    float min[3];
+    float max[3];
+    atrbvh_u32 index;
+    atrbvh_u32 count;
+} atrbvh_node;
+typedef struct atrbvh_ray {
+    float origin[3];
+    float dir[3];
+    float tmin, tmax;
+} atrbvh_ray;
+typedef struct atrbvh_hit {
+    float t, u, v;
+    atrbvh_u32 primitive;
+} atrbvh_hit;
+#define ATRBVH_NO_HIT 0xffffffffu
+#else
+#include <math.h> /* INFINITY only */
+#include "atrbvh.h"
+#define ATRBVH_TRAV_INF INFINITY
+#endif
+
+#define ATRBVH_TRAVERSE_STACK 256
+#define ATRBVH_TRAV_FLT_MAX 3.402823466e+38f
+/* 1 + 2*gamma(3) and 1 - 2*gamma(3), gamma(n) = n*u / (1 - n*u), u = 2^-24,
+ * rounded outwards. */
+#define ATRBVH_TRAV_WIDEN_UP 1.00000036f
+#define ATRBVH_TRAV_WIDEN_DOWN 0.99999964f
+/* Relative slack on the closest-hit distance when pruning (2^-12). */
+#define ATRBVH_TRAV_PRUNE_SLACK (1.0f / 4096.0f)
+
+/* What a query reads: the tree (depth-first atrbvh_node array, root 0) and
+ * the geometry.  Strides are in floats (vertices, boxes) or in u32
+ * (indices). */
+typedef struct atrbvh_trav_scene {
+    ATRBVH_CONST_GLOBAL atrbvh_node *nodes;
+    atrbvh_u64 node_count;
+    ATRBVH_CONST_GLOBAL atrbvh_u32 *prim_indices;
+    atrbvh_u64 prim_count;
+    int boxes;                    /* 0 triangles, 1 boxes                */
+    atrbvh_u64 primitive_count;   /* of the geometry                     */
+    ATRBVH_CONST_GLOBAL float *vertices;
+    atrbvh_u64 vertex_count, vertex_stride;
+    ATRBVH_CONST_GLOBAL atrbvh_u32 *indices; /* used when indexed        */
+    int indexed;
+    atrbvh_u64 index_stride;
+    ATRBVH_CONST_GLOBAL float *box_data;
+    atrbvh_u64 box_stride;
+} atrbvh_trav_scene;
+
+/* A ray, prepared. */
+typedef struct atrbvh_trav_ray {
+    float org[3];
+    float idir[3];
+    int sign[3]; /* 1 when idir[k] < 0 (direction -0 included) */
+    float tmin, tmax;
+    /* watertight triangle test, in double */
+    double o[3];
+    int kx, ky, kz;
+    double sx, sy, sz;
+} atrbvh_trav_ray;
+
+typedef struct atrbvh_trav_best {
+    float t, u, v;
+    atrbvh_u32 prim;
+    float tlim; /* node pruning bound: t widened by the slack */
+} atrbvh_trav_best;
+
+/* |x| for float and double without libc: -0 gives +0, NaN stays NaN. */
+ATRBVH_FN float atrbvh_trav_absf(float x)
+{
+    return x < 0.0f ? -x : (x == 0.0f ? 0.0f : x);
+}
+
+ATRBVH_FN double atrbvh_trav_abs(double x)
+{
+    return x < 0.0 ? -x : (x == 0.0 ? 0.0 : x);
+}
+
+/* Neither NaN nor infinite (x - x is 0 exactly for every finite x). */
+ATRBVH_FN int atrbvh_trav_finite(float x)
+{
+    float d = x - x;
+    return d == 0.0f;
+}
+
+ATRBVH_FN float atrbvh_trav_widen_limit(float t)
+{
+    /* t + |t| * slack; inf stays inf, -inf stays -inf. */
+    float r = t + atrbvh_trav_absf(t) * ATRBVH_TRAV_PRUNE_SLACK;
+    return r == r ? r : t;
+}
+
+/* Prepares a ray; 0 when it can hit nothing (NaN or infinite origin or
+ * direction, all-zero direction, NaN tmin/tmax, tmin > tmax). */
+ATRBVH_FN int atrbvh_trav_setup(const float *origin, const float *dir,
+                                float tmin, float tmax, atrbvh_trav_ray *r)
+{
+    int k;
+    double ad[3];
+    if (!(tmin == tmin) || !(tmax == tmax))
+        return 0;
+    for (k = 0; k < 3; k++) {
+        if (!atrbvh_trav_finite(origin[k]) || !atrbvh_trav_finite(dir[k]))
+            return 0;
+    }
+    if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f)
+        return 0;
+    if (!(tmin <= tmax))
+        return 0;
+    for (k = 0; k < 3; k++) {
+        r->org[k] = origin[k];
+        /* = 1.0f / dir[k], correctly rounded (+-inf for +-0); see the
+         * header comment. */
+        r->idir[k] = (float)(1.0 / (double)dir[k]);
+        r->sign[k] = r->idir[k] < 0.0f;
+        r->o[k] = (double)origin[k];
+        ad[k] = atrbvh_trav_abs((double)dir[k]);
+    }
+    r->tmin = tmin;
+    r->tmax = tmax;
+    /* The largest component becomes z (the first on a tie). */
+    r->kz = 0;
+    if (ad[1] > ad[r->kz])
+        r->kz = 1;
+    if (ad[2] > ad[r->kz])
+        r->kz = 2;
+    r->kx = (r->kz + 1) % 3;
+    r->ky = (r->kx + 1) % 3;
+    if (dir[r->kz] < 0.0f) { /* keep the winding */
+        int s = r->kx;
+        r->kx = r->ky;
+        r->ky = s;
+    }
+    r->sx = (double)dir[r->kx] / (double)dir[r->kz];
+    r->sy = (double)dir[r->ky] / (double)dir[r->kz];
+    r->sz = 1.0 / (double)dir[r->kz];
+    return 1;
+}
+
+/* Conservative ray/node test.  Hit when the slab interval, far end widened,
+ * meets [tlo, thi]; *tnear is where it starts. */
+ATRBVH_FN int atrbvh_trav_node_hit(ATRBVH_CONST_GLOBAL atrbvh_node *n,
+                                   const atrbvh_trav_ray *r, float tlo,
+                                   float thi, float *tnear)
+{
+    float lo = -ATRBVH_TRAV_INF, hi = ATRBVH_TRAV_INF;
+    int k;
+    for (k = 0; k < 3; k++) {
+        float bn = r->sign[k] ? n->max[k] : n->min[k];
+        float bf = r->sign[k] ? n->min[k] : n->max[k];
+        float tn = (bn - r->org[k]) * r->idir[k];
+        float tf = (bf - r->org[k]) * r->idir[k];
+        /* NaN (0 * inf) fails the comparison and is dropped. */
+        lo = tn > lo ? tn : lo;
+        hi = tf < hi ? tf : hi;
+    }
+    hi = hi * (hi > 0.0f ? ATRBVH_TRAV_WIDEN_UP : ATRBVH_TRAV_WIDEN_DOWN);
+    if (tlo > lo)
+        lo = tlo;
+    if (thi < hi)
+        hi = thi;
+    *tnear = lo;
+    return lo <= hi;
+}
+
+/* Exact ray/box primitive test: entry and exit distances. */
+ATRBVH_FN int atrbvh_trav_box_interval(const float *b,
+                                       const atrbvh_trav_ray *r, float *t0,
+                                       float *t1)
+{
+    float lo = -ATRBVH_TRAV_INF, hi = ATRBVH_TRAV_INF;
+    int k;
+    for (k = 0; k < 3; k++) {
+        float bn = r->sign[k] ? b[3 + k] : b[k];
+        float bf = r->sign[k] ? b[k] : b[3 + k];
+        float tn = (bn - r->org[k]) * r->idir[k];
+        float tf = (bf - r->org[k]) * r->idir[k];
+        lo = tn > lo ? tn : lo;
+        hi = tf < hi ? tf : hi;
+    }
+    *t0 = lo;
+    *t1 = hi;
+    return lo <= hi;
+}
+
+/* The three vertices of triangle `prim`; 0 if an index is out of range. */
+ATRBVH_FN int atrbvh_trav_triangle_vertices(const atrbvh_trav_scene *s,
+                                            atrbvh_u32 prim, float v[3][3])
+{
+    atrbvh_u64 id[3];
+    int k, c;
+    for (k = 0; k < 3; k++) {
+        if (s->indexed)
+            id[k] = s->indices[(atrbvh_u64)prim * s->index_stride +
+                               (atrbvh_u64)k];
+        else
+            id[k] = 3u * (atrbvh_u64)prim + (atrbvh_u64)k;
+    }
+    for (k = 0; k < 3; k++) {
+        if (id[k] >= s->vertex_count)
+            return 0;
+        for (c = 0; c < 3; c++)
+            v[k][c] = s->vertices[id[k] * s->vertex_stride + (atrbvh_u64)c];
+    }
+    return 1;
+}
+
+/* Watertight ray/triangle test (Woop, Benthin, Wald 2013), in double.
+ * On a hit with a finite t returns 1 with t and the barycentrics of
+ * vertices 1 and 2. */
+ATRBVH_FN int atrbvh_trav_triangle_hit(float v[3][3],
+                                       const atrbvh_trav_ray *r, float *t,
+                                       float *u, float *w)
+{
+    double a[3], b[3], c[3];
+    double ax, ay, bx, by, cx, cy, e0, e1, e2, det, tt;
+    int k;
+    for (k = 0; k < 3; k++) {
+        a[k] = (double)v[0][k] - r->o[k];
+        b[k] = (double)v[1][k] - r->o[k];
+        c[k] = (double)v[2][k] - r->o[k];
+    }
+    ax = a[r->kx] - r->sx * a[r->kz];
+    ay = a[r->ky] - r->sy * a[r->kz];
+    bx = b[r->kx] - r->sx * b[r->kz];
+    by = b[r->ky] - r->sy * b[r->kz];
+    cx = c[r->kx] - r->sx * c[r->kz];
+    cy = c[r->ky] - r->sy * c[r->kz];
+    /* e0 weighs vertex 0 (edge 1-2), e1 vertex 1, e2 vertex 2. */
+    e0 = cx * by - cy * bx;
+    e1 = ax * cy - ay * cx;
+    e2 = bx * ay - by * ax;
+    if ((e0 < 0.0 || e1 < 0.0 || e2 < 0.0) &&
+        (e0 > 0.0 || e1 > 0.0 || e2 > 0.0))
+        return 0;
+    det = e0 + e1 + e2;
+    if (det == 0.0 || !(det == det))
+        return 0;
+    tt = e0 * (r->sz * a[r->kz]);
+    tt = tt + e1 * (r->sz * b[r->kz]);
+    tt = tt + e2 * (r->sz * c[r->kz]);
+    tt = tt / det;
+    if (!(atrbvh_trav_abs(tt) <= (double)ATRBVH_TRAV_FLT_MAX))
+        return 0;
+    *t = (float)tt;
+    if (!(atrbvh_trav_absf(*t) <= ATRBVH_TRAV_FLT_MAX))
+        return 0;
+    *u = (float)(e1 / det);
+    *w = (float)(e2 / det);
+    return 1;
+}
+
+/* Tests the primitives of a leaf.  Returns 1 when `any` and something was
+ * hit (the query is over). */
+ATRBVH_FN int atrbvh_trav_leaf(const atrbvh_trav_scene *s,
+                               ATRBVH_CONST_GLOBAL atrbvh_node *n,
+                               const atrbvh_trav_ray *r, int any,
+                               atrbvh_trav_best *best)
+{
+    atrbvh_u32 j;
+    atrbvh_u64 first = n->index;
+    if (first > s->prim_count || (atrbvh_u64)n->count > s->prim_count - first)
+        return 0; /* never for a valid tree */
+    for (j = 0; j < n->count; j++) {
+        atrbvh_u32 prim = s->prim_indices[first + j];
+        float t, u = 0.0f, v = 0.0f;
+        if ((atrbvh_u64)prim >= s->primitive_count)
+            continue;
+        if (!s->boxes) {
+            float vtx[3][3];
+            if (!atrbvh_trav_triangle_vertices(s, prim, vtx) ||
+                !atrbvh_trav_triangle_hit(vtx, r, &t, &u, &v))
+                continue;
+            if (any) {
+                if (t >= r->tmin && t <= r->tmax)
+                    return 1;
+                continue;
+            }
+        } else {
+            float box[6], t0, t1;
+            int k;
+            for (k = 0; k < 6; k++)
+                box[k] = s->box_data[(atrbvh_u64)prim * s->box_stride +
+                                     (atrbvh_u64)k];
+            if (!atrbvh_trav_box_interval(box, r, &t0, &t1))
+                continue;
+            if (any) {
+                if ((t0 >= r->tmin && t0 <= r->tmax) ||
+                    (t1 >= r->tmin && t1 <= r->tmax))
+                    return 1;
+                continue;
+            }
+            t = t0 > r->tmin ? t0 : t1;
+            if (!(atrbvh_trav_absf(t) <= ATRBVH_TRAV_FLT_MAX))
+                continue;
+        }
+        if (t > r->tmin &&
+            (t < best->t || (t == best->t && prim < best->prim))) {
+            best->t = t;
+            best->u = u;
+            best->v = v;
+            best->prim = prim;
+            best->tlim = atrbvh_trav_widen_limit(t);
+        }
+    }
+    return 0;
+}
+
+/* The fallback for trees deeper than the stack: every leaf, in order. */
+ATRBVH_FN int atrbvh_trav_linear(const atrbvh_trav_scene *s,
+                                 const atrbvh_trav_ray *r, int any,
+                                 atrbvh_trav_best *best, float tlo)
+{
+    atrbvh_u64 i;
+    for (i = 0; i < s->node_count; i++) {
+        ATRBVH_CONST_GLOBAL atrbvh_node *n = &s->nodes[i];
+        float tn;
+        if (n->count == 0u ||
+            !atrbvh_trav_node_hit(n, r, tlo, best->tlim, &tn))
+            continue;
+        if (atrbvh_trav_leaf(s, n, r, any, best))
+            return 1;
+    }
+    return 0;
+}
+
+/* The traversal: depth-first, near child first, the far one pushed with
+ * its entry distance and skipped on pop when it starts beyond the closest
+ * hit.  Returns, for `any`, whether anything was hit; otherwise whether
+ * best holds a hit. */
+ATRBVH_FN int atrbvh_trav_run(const atrbvh_trav_scene *s,
+                              const atrbvh_trav_ray *r, int any,
+                              atrbvh_trav_best *best)
+{
+    atrbvh_u32 stack_node[ATRBVH_TRAVERSE_STACK];
+    float stack_t[ATRBVH_TRAVERSE_STACK];
+    atrbvh_u32 sp = 0, cur = 0;
+    ATRBVH_CONST_GLOBAL atrbvh_node *nodes = s->nodes;
+    atrbvh_u64 count = s->node_count;
+    /* the lower end of the node interval, widened like the upper one */
+    float tlo = r->tmin - atrbvh_trav_absf(r->tmin) * ATRBVH_TRAV_PRUNE_SLACK;
+    float tn;
+
+    if (!(tlo == tlo))
+        tlo = r->tmin;
+    best->t = r->tmax;
+    best->u = best->v = 0.0f;
+    best->prim = ATRBVH_NO_HIT;
+    best->tlim = atrbvh_trav_widen_limit(r->tmax);
+    if (count == 0u || !atrbvh_trav_node_hit(&nodes[0], r, tlo, best->tlim, &tn))
+        return 0;
+    for (;;) {
+        ATRBVH_CONST_GLOBAL atrbvh_node *n = &nodes[cur];
+        int descended = 0;
+        if (n->count > 0u) {
+            if (atrbvh_trav_leaf(s, n, r, any, best))
+                return 1;
+        } else {
+            atrbvh_u32 l = cur + 1u, rr = n->index;
+            /* rr <= l or out of range: never for a valid tree (pop) */
+            if (rr > l && (atrbvh_u64)rr < count) {
+                float nl, nr;
+                int hl = atrbvh_trav_node_hit(&nodes[l], r, tlo, best->tlim,
+                                              &nl);
+                int hr = atrbvh_trav_node_hit(&nodes[rr], r, tlo, best->tlim,
+                                              &nr);
+                if (hl && hr) {
+                    atrbvh_u32 near_node = l, far_node = rr;
+                    float far_t = nr;
+                    if (nr < nl) {
+                        near_node = rr;
+                        far_node = l;
+                        far_t = nl;
+                    }
+                    if (sp == ATRBVH_TRAVERSE_STACK) {
+                        if (atrbvh_trav_linear(s, r, any, best, tlo))
+                            return 1;
+                        return any ? 0 : best->prim != ATRBVH_NO_HIT;
+                    }
+                    stack_node[sp] = far_node;
+                    stack_t[sp] = far_t;
+                    sp++;
+                    cur = near_node;
+                    descended = 1;
+                } else if (hl) {
+                    cur = l;
+                    descended = 1;
+                } else if (hr) {
+                    cur = rr;
+                    descended = 1;
+                }
+            }
+        }
+        if (descended)
+            continue;
+        for (;;) { /* pop */
+            if (sp == 0u)
+                return any ? 0 : best->prim != ATRBVH_NO_HIT;
+            sp--;
+            if (stack_t[sp] <= best->tlim) {
+                cur = stack_node[sp];
+                break;
+            }
+        }
+    }
+}
+
+/* Closest hit of one ray: hit->primitive ATRBVH_NO_HIT (t = tmax, u = v =
+ * 0) when nothing is hit.  Returns 1 on a hit. */
+ATRBVH_FN int atrbvh_trav_closest(const atrbvh_trav_scene *s,
+                                  const float *origin, const float *dir,
+                                  float tmin, float tmax, float *t, float *u,
+                                  float *v, atrbvh_u32 *prim)
+{
+    atrbvh_trav_ray r;
+    atrbvh_trav_best best;
+    *t = tmax;
+    *u = 0.0f;
+    *v = 0.0f;
+    *prim = ATRBVH_NO_HIT;
+    if (!atrbvh_trav_setup(origin, dir, tmin, tmax, &r) ||
+        !atrbvh_trav_run(s, &r, 0, &best))
+        return 0;
+    *t = best.t;
+    *u = best.u;
+    *v = best.v;
+    *prim = best.prim;
+    return 1;
+}
+
+/* Any hit of one ray in [tmin, tmax]. */
+ATRBVH_FN int atrbvh_trav_any(const atrbvh_trav_scene *s, const float *origin,
+                              const float *dir, float tmin, float tmax)
+{
+    atrbvh_trav_ray r;
+    atrbvh_trav_best best;
+    if (!atrbvh_trav_setup(origin, dir, tmin, tmax, &r))
+        return 0;
+    return atrbvh_trav_run(s, &r, 1, &best);
+}
+
+#endif
