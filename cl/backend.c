@@ -36,6 +36,8 @@ enum {
     K_OPT_ROUND,
     K_COLLAPSE,
     K_LAYOUT,
+    K_INTERSECT_CLOSEST,
+    K_INTERSECT_ANY,
     K_COUNT
 };
 
@@ -43,7 +45,7 @@ static const char *const kernel_names[K_COUNT] = {
     "bounds_triangles", "bounds_boxes", "bounds_reduce", "morton",
     "sort_count",       "sort_scan",    "sort_scatter",  "hierarchy",
     "refit",            "opt_prepare",  "opt_round",     "collapse",
-    "layout"};
+    "layout",           "intersect_closest", "intersect_any"};
 
 #define MAX_EVENTS 256
 #define MAX_BUFFERS 40
@@ -1057,5 +1059,109 @@ done:
         bvh = NULL;
     }
     *out = bvh;
+    return st;
+}
+
+/* ---------------------------------------------------------- ray queries */
+/* The BVH and the geometry are uploaded once; the rays go in chunks that
+ * fit the device's largest allocation.  One launch of intersect_closest or
+ * intersect_any (shared/traverse.h per ray) per chunk. */
+atrbvh_status __atrbvh_cl_trace(const atrbvh_bvh *bvh,
+                                const atrbvh_geometry *g,
+                                const atrbvh_ray *rays, size_t count,
+                                atrbvh_hit *hits, uint8_t *occluded,
+                                const char *device, double *kernel_ms,
+                                atrbvh_error *error)
+{
+    cl_env env;
+    atrbvh_status st;
+    cl_mem nodes = NULL, prims = NULL, verts = NULL, idx = NULL,
+           bxs = NULL, ray_buf = NULL, out = NULL;
+    cl_ulong node_count = bvh->node_count, prim_count = bvh->prim_count;
+    cl_ulong primitive_count = g->primitive_count, vertex_count = 0,
+             vstride = 3, istride = 3, bstride = 6, chunk, done_rays;
+    cl_int boxes = g->type == ATRBVH_GEOMETRY_BOXES, indexed = 0;
+    int k = occluded ? K_INTERSECT_ANY : K_INTERSECT_CLOSEST;
+    size_t out_item = occluded ? 1 : sizeof(atrbvh_hit);
+    unsigned i;
+
+    memset(&env, 0, sizeof env);
+    if (kernel_ms)
+        *kernel_ms = 0.0;
+    CHECK(env_open(&env, device, error));
+    CHECK(buffer(&env, bvh->node_count, sizeof(atrbvh_node), "BVH nodes",
+                 &nodes, error));
+    CHECK(upload(&env, nodes, bvh->nodes,
+                 bvh->node_count * sizeof(atrbvh_node), "BVH nodes", error));
+    CHECK(buffer(&env, bvh->prim_count, sizeof(uint32_t),
+                 "BVH primitive indices", &prims, error));
+    CHECK(upload(&env, prims, bvh->prim_indices,
+                 bvh->prim_count * sizeof(uint32_t), "BVH primitive indices",
+                 error));
+    /* Geometry: the bytes the CPU query may read (as the build uploads
+     * them); the unused buffers are one-word dummies. */
+    if (!boxes) {
+        size_t vs = g->vertex_stride ? g->vertex_stride : 3 * sizeof(float);
+        size_t is = g->index_stride ? g->index_stride : 3 * sizeof(uint32_t);
+        size_t vbytes = g->vertex_count
+                            ? (g->vertex_count - 1) * vs + 3 * sizeof(float)
+                            : 0;
+        size_t ibytes = g->indices && g->primitive_count
+                            ? (g->primitive_count - 1) * is + 12
+                            : 0;
+        vertex_count = g->vertex_count;
+        vstride = vs / sizeof(float);
+        istride = is / sizeof(uint32_t);
+        indexed = g->indices != NULL;
+        CHECK(buffer(&env, vbytes, 1, "vertices", &verts, error));
+        CHECK(upload(&env, verts, g->vertices, vbytes, "vertices", error));
+        CHECK(buffer(&env, ibytes, 1, "indices", &idx, error));
+        CHECK(upload(&env, idx, g->indices, ibytes, "indices", error));
+        CHECK(buffer(&env, 1, 4, "boxes (unused)", &bxs, error));
+    } else {
+        size_t bs = g->box_stride ? g->box_stride : 6 * sizeof(float);
+        size_t bbytes = g->primitive_count
+                            ? (g->primitive_count - 1) * bs + 6 * sizeof(float)
+                            : 0;
+        bstride = bs / sizeof(float);
+        CHECK(buffer(&env, bbytes, 1, "boxes", &bxs, error));
+        CHECK(upload(&env, bxs, g->boxes, bbytes, "boxes", error));
+        CHECK(buffer(&env, 1, 4, "vertices (unused)", &verts, error));
+        CHECK(buffer(&env, 1, 4, "indices (unused)", &idx, error));
+    }
+    chunk = env.max_alloc / sizeof(atrbvh_ray);
+    if (chunk > ((cl_ulong)1 << 24))
+        chunk = (cl_ulong)1 << 24;
+    if (chunk > count)
+        chunk = count;
+    if (chunk == 0)
+        chunk = 1;
+    CHECK(buffer(&env, (size_t)chunk, sizeof(atrbvh_ray), "rays", &ray_buf,
+                 error));
+    CHECK(buffer(&env, (size_t)chunk, out_item,
+                 occluded ? "occlusion results" : "hits", &out, error));
+    for (done_rays = 0; done_rays < count; done_rays += chunk) {
+        cl_ulong n = count - done_rays < chunk ? count - done_rays : chunk;
+        CHECK(upload(&env, ray_buf, rays + done_rays,
+                     (size_t)n * sizeof(atrbvh_ray), "rays", error));
+        RUN(k, (size_t)n, A(nodes), A(node_count), A(prims), A(prim_count),
+            A(boxes), A(primitive_count), A(verts), A(vertex_count),
+            A(vstride), A(idx), A(indexed), A(istride), A(bxs), A(bstride),
+            A(ray_buf), A(n), A(out));
+        if (occluded)
+            CHECK(download(&env, out, occluded + done_rays, (size_t)n,
+                           "occlusion results", error));
+        else
+            CHECK(download(&env, out, hits + done_rays,
+                           (size_t)n * sizeof(atrbvh_hit), "hits", error));
+        CHECK(harvest(&env, error));
+    }
+    if (kernel_ms)
+        for (i = 0; i < env.time_count; i++)
+            if (strcmp(env.time_name[i], kernel_names[k]) == 0)
+                *kernel_ms += env.time_ms[i];
+    st = ATRBVH_OK;
+done:
+    env_release(&env);
     return st;
 }

@@ -431,3 +431,75 @@ __kernel void layout(__global const atrbvh_box *box, __global const uint *count,
     }
     nodes[pos] = out;
 }
+
+/* ------------------------------------------------------------- ray queries */
+/* One work-item per ray; the per-ray work is atrbvh_trav_closest /
+ * atrbvh_trav_any (shared/traverse.h), the functions lib/traverse.c calls,
+ * so every hit (primitive, t, u, v) is bit for bit the CPU's.  Geometry:
+ * `boxes` 0 reads triangles from vertices (stride in floats) and, when
+ * `indexed`, indices (stride in u32); 1 reads boxes (stride in floats).
+ * Unused buffers are dummies. */
+static atrbvh_trav_scene trav_scene(
+    __global const atrbvh_node *nodes, ulong node_count,
+    __global const uint *prim_indices, ulong prim_count, int boxes,
+    ulong primitive_count, __global const float *vertices, ulong vertex_count,
+    ulong vstride, __global const uint *indices, int indexed, ulong istride,
+    __global const float *box_data, ulong bstride)
+{
+    atrbvh_trav_scene s;
+    s.nodes = nodes;
+    s.node_count = node_count;
+    s.prim_indices = prim_indices;
+    s.prim_count = prim_count;
+    s.boxes = boxes;
+    s.primitive_count = primitive_count;
+    s.vertices = vertices;
+    s.vertex_count = vertex_count;
+    s.vertex_stride = vstride;
+    s.indices = indices;
+    s.indexed = indexed;
+    s.index_stride = istride;
+    s.box_data = box_data;
+    s.box_stride = bstride;
+    return s;
+}
+
+#define TRAV_PARAMS                                                            \
+    __global const atrbvh_node *nodes, ulong node_count,                       \
+        __global const uint *prim_indices, ulong prim_count, int boxes,        \
+        ulong primitive_count, __global const float *vertices,                 \
+        ulong vertex_count, ulong vstride, __global const uint *indices,       \
+        int indexed, ulong istride, __global const float *box_data,            \
+        ulong bstride, __global const atrbvh_ray *rays, ulong ray_count
+#define TRAV_ARGS                                                              \
+    nodes, node_count, prim_indices, prim_count, boxes, primitive_count,       \
+        vertices, vertex_count, vstride, indices, indexed, istride, box_data,  \
+        bstride
+
+__kernel void intersect_closest(TRAV_PARAMS, __global atrbvh_hit *hits)
+{
+    ulong i = get_global_id(0);
+    atrbvh_trav_scene s;
+    atrbvh_ray ray;
+    atrbvh_hit h;
+    if (i >= ray_count)
+        return;
+    s = trav_scene(TRAV_ARGS);
+    ray = rays[i];
+    atrbvh_trav_closest(&s, ray.origin, ray.dir, ray.tmin, ray.tmax, &h.t,
+                        &h.u, &h.v, &h.primitive);
+    hits[i] = h;
+}
+
+__kernel void intersect_any(TRAV_PARAMS, __global uchar *occluded)
+{
+    ulong i = get_global_id(0);
+    atrbvh_trav_scene s;
+    atrbvh_ray ray;
+    if (i >= ray_count)
+        return;
+    s = trav_scene(TRAV_ARGS);
+    ray = rays[i];
+    occluded[i] = (uchar)(atrbvh_trav_any(&s, ray.origin, ray.dir, ray.tmin,
+                                          ray.tmax) != 0);
+}

@@ -293,6 +293,29 @@ ATRBVH_API atrbvh_status atrbvh_occluded_batch(
     const atrbvh_ray *rays, size_t count, uint8_t *occluded, int threads,
     atrbvh_error *error);
 
+/* The same queries on an OpenCL device, one work-item per ray, for
+ * measuring rays per second on a device and checking a device against the
+ * CPU.  The kernels run the very functions the CPU queries run (one source
+ * compiled as C99 and OpenCL C), so every result is bit for bit the one
+ * atrbvh_intersect/atrbvh_occluded give (primitive, t, u, v).  The BVH may
+ * have been built on either backend or loaded.  `device` as
+ * options.opencl_device (NULL: $ATRBVH_OPENCL_DEVICE, else the first
+ * device).  Each call sets up the device (context, program), uploads the
+ * tree and the geometry, then the rays in chunks; *kernel_ms (may be NULL)
+ * receives the kernels' device time from profiling events, without the
+ * setup and transfers.  count 0 returns ATRBVH_OK at once.  Errors: as the
+ * CPU batch functions for the arguments; ATRBVH_ERR_UNSUPPORTED when the
+ * library has no OpenCL backend or no device exists; ATRBVH_ERR_BACKEND or
+ * ATRBVH_ERR_NOMEM when the device fails. */
+ATRBVH_API atrbvh_status atrbvh_intersect_batch_device(
+    const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
+    const atrbvh_ray *rays, size_t count, atrbvh_hit *hits,
+    const char *device, double *kernel_ms, atrbvh_error *error);
+ATRBVH_API atrbvh_status atrbvh_occluded_batch_device(
+    const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
+    const atrbvh_ray *rays, size_t count, uint8_t *occluded,
+    const char *device, double *kernel_ms, atrbvh_error *error);
+
 /* ----------------------------------------------------------- save and load */
 /* The file format is documented in atrbvh(5). */
 ATRBVH_API atrbvh_status atrbvh_save(const atrbvh_bvh *bvh, const char *path,

@@ -264,3 +264,60 @@ trav_scene(bvh, geometry, &s); /* checked */
 #endif
     return ATRBVH_OK;
 }
+
+/* The device versions: the same checks, then cl/backend.c. */
+static atrbvh_status device_batch(const atrbvh_bvh *bvh,
+                                  const atrbvh_geometry *geometry,
+                                  const atrbvh_ray *rays, size_t count,
+                                  atrbvh_hit *hits, uint8_t *occluded,
+                                  int any, const char *device,
+                                  double *kernel_ms, const char *fn,
+                                  atrbvh_error *error)
+{
+    atrbvh_status st;
+    if (kernel_ms)
+        *kernel_ms = 0.0;
+    st = __atrbvh_trav_check(bvh, geometry, rays, count,
+                             any ? (const void *)occluded
+                                 : (const void *)hits,
+                             0, fn, error);
+    if (st != ATRBVH_OK)
+        return st;
+#ifdef ATRBVH_HAVE_OPENCL
+    __atrbvh_clear_error(error);
+    if (count == 0)
+        return ATRBVH_OK;
+    return __atrbvh_cl_trace(bvh, geometry, rays, count, hits, occluded,
+                             device, kernel_ms, error);
+#else
+    (void)device;
+    return __atrbvh_fail(error, ATRBVH_ERR_UNSUPPORTED, (uint64_t)-1,
+                         "%s: this build has no OpenCL backend "
+                         "(configure --enable-opencl)",
+                         fn);
+#endif
+}
+
+atrbvh_status atrbvh_intersect_batch_device(const atrbvh_bvh *bvh,
+                                            const atrbvh_geometry *geometry,
+                                            const atrbvh_ray *rays,
+                                            size_t count, atrbvh_hit *hits,
+                                            const char *device,
+                                            double *kernel_ms,
+                                            atrbvh_error *error)
+{
+    return device_batch(bvh, geometry, rays, count, hits, NULL, 0, device,
+                        kernel_ms, "atrbvh_intersect_batch_device", error);
+}
+
+atrbvh_status atrbvh_occluded_batch_device(const atrbvh_bvh *bvh,
+                                           const atrbvh_geometry *geometry,
+                                           const atrbvh_ray *rays,
+                                           size_t count, uint8_t *occluded,
+                                           const char *device,
+                                           double *kernel_ms,
+                                           atrbvh_error *error)
+{
+    return device_batch(bvh, geometry, rays, count, NULL, occluded, 1, device,
+                        kernel_ms, "atrbvh_occluded_batch_device", error);
+}

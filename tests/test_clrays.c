@@ -1,0 +1,481 @@
+/*
+ * test_clrays.c - the OpenCL ray queries (atrbvh_intersect_batch_device,
+ * atrbvh_occluded_batch_device) against the CPU ones, bit for bit
+ * (primitive, t, u, v; occluded flags), on random rays, rays with zero
+ * direction components, axis-aligned rays through vertices, rays aimed at
+ * shared vertices and edge midpoints, clipped and degenerate rays, over
+ * triangle soups, the builtin sphere and city, strided indexed geometry
+ * and boxes, with collapsed and binary trees.  The error paths.  Every
+ * test skips, saying so, when no OpenCL device (or no OpenCL support) is
+ * there.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <check.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "atrbvh.h"
+#include "testutil.h"
+
+static int have_device = -1;
+static char why_not[ATRBVH_ERROR_TEXT_LENGTH];
+
+/* 1 when a device query over one box works; else 0, reason in why_not. */
+static int device_available(void)
+{
+    if (have_device < 0) {
+        static const float box[6] = {0, 0, 0, 1, 1, 1};
+        atrbvh_geometry g = atrbvh_geometry_boxes(box, 1);
+        atrbvh_bvh *b = NULL;
+        atrbvh_error e;
+        atrbvh_ray r = {{0.5f, 0.5f, -1.0f}, {0, 0, 1}, 0.0f, 10.0f};
+        atrbvh_hit h;
+        have_device = 0;
+        if (atrbvh_build(&g, NULL, &b, &e) != ATRBVH_OK) {
+            snprintf(why_not, sizeof why_not, "CPU build: %.200s", e.text);
+        } else if (atrbvh_intersect_batch_device(b, &g, &r, 1, &h, NULL, NULL,
+                                                 &e) != ATRBVH_OK) {
+            snprintf(why_not, sizeof why_not, "%s", e.text);
+        } else {
+            have_device = 1;
+        }
+        atrbvh_bvh_free(b);
+    }
+    return have_device;
+}
+
+#define REQUIRE_DEVICE()                                                       \
+    do {                                                                       \
+        if (!device_available()) {                                             \
+            fprintf(stderr, "SKIP %s: no OpenCL device (%s)\n", __func__,      \
+                    why_not);                                                  \
+            return;                                                            \
+        }                                                                      \
+    } while (0)
+
+static uint32_t fbits(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+/* CPU and device, closest and any hit, every ray compared bit for bit. */
+static void expect_same(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
+                        const atrbvh_ray *rays, size_t n, const char *what)
+{
+    atrbvh_hit *hc = malloc(n * sizeof *hc), *hd = malloc(n * sizeof *hd);
+    uint8_t *oc = malloc(n), *od = malloc(n);
+    atrbvh_error e;
+    atrbvh_status st;
+    double ms = -1.0;
+    size_t i, hits = 0, occ = 0;
+    ck_assert(hc && hd && oc && od);
+    memset(hd, 0xab, n * sizeof *hd);
+    memset(od, 0xab, n);
+    ck_assert_int_eq(atrbvh_intersect_batch(bvh, g, rays, n, hc, 2, &e),
+                     ATRBVH_OK);
+    ck_assert_int_eq(atrbvh_occluded_batch(bvh, g, rays, n, oc, 2, &e),
+                     ATRBVH_OK);
+    st = atrbvh_intersect_batch_device(bvh, g, rays, n, hd, NULL, &ms, &e);
+    ck_assert_msg(st == ATRBVH_OK, "%s: device closest hit: %s", what, e.text);
+    ck_assert_msg(ms >= 0.0, "%s: kernel_ms %g", what, ms);
+    st = atrbvh_occluded_batch_device(bvh, g, rays, n, od, NULL, NULL, &e);
+    ck_assert_msg(st == ATRBVH_OK, "%s: device any hit: %s", what, e.text);
+    for (i = 0; i < n; i++) {
+        ck_assert_msg(hc[i].primitive == hd[i].primitive &&
+                          fbits(hc[i].t) == fbits(hd[i].t) &&
+                          fbits(hc[i].u) == fbits(hd[i].u) &&
+                          fbits(hc[i].v) == fbits(hd[i].v),
+                      "%s: ray %zu (o %a %a %a, d %a %a %a, [%a, %a]): cpu "
+                      "prim %lu t %a u %a v %a, opencl prim %lu t %a u %a v "
+                      "%a",
+                      what, i, rays[i].origin[0], rays[i].origin[1],
+                      rays[i].origin[2], rays[i].dir[0], rays[i].dir[1],
+                      rays[i].dir[2], rays[i].tmin, rays[i].tmax,
+                      (unsigned long)hc[i].primitive, hc[i].t, hc[i].u,
+                      hc[i].v, (unsigned long)hd[i].primitive, hd[i].t,
+                      hd[i].u, hd[i].v);
+        ck_assert_msg(oc[i] == od[i], "%s: ray %zu: occluded cpu %d opencl %d",
+                      what, i, oc[i], od[i]);
+        hits += hc[i].primitive != ATRBVH_NO_HIT;
+        occ += oc[i];
+    }
+    /* The rays must exercise something. */
+    ck_assert_msg(hits > n / 10 && hits < n, "%s: %zu hits of %zu rays", what,
+                  hits, n);
+    ck_assert_msg(occ >= hits, "%s: occluded %zu < hits %zu", what, occ, hits);
+    free(hc);
+    free(hd);
+    free(oc);
+    free(od);
+}
+
+/* Corner c of primitive i: a triangle vertex, or a box corner (bits of c
+ * pick min/max per axis). */
+static void corner(const atrbvh_geometry *g, size_t i, unsigned c, float p[3])
+{
+    int k;
+    if (g->type == ATRBVH_GEOMETRY_BOXES) {
+        size_t bs = g->box_stride ? g->box_stride : 24;
+        const float *b = (const float *)((const char *)g->boxes + i * bs);
+        for (k = 0; k < 3; k++)
+            p[k] = (c >> k) & 1u ? b[3 + k] : b[k];
+    } else {
+        size_t vs = g->vertex_stride ? g->vertex_stride : 12;
+        size_t is = g->index_stride ? g->index_stride : 12;
+        size_t v = g->indices
+                       ? ((const uint32_t *)((const char *)g->indices +
+                                             i * is))[c % 3u]
+                       : 3 * i + c % 3u;
+        const float *q = (const float *)((const char *)g->vertices + v * vs);
+        for (k = 0; k < 3; k++)
+            p[k] = q[k];
+    }
+}
+
+static void bounds(const atrbvh_geometry *g, float lo[3], float hi[3])
+{
+    size_t i;
+    unsigned c;
+    int k;
+    for (k = 0; k < 3; k++) {
+        lo[k] = INFINITY;
+        hi[k] = -INFINITY;
+    }
+    for (i = 0; i < g->primitive_count; i++)
+        for (c = 0; c < 8; c++) {
+            float p[3];
+            corner(g, i, c, p);
+            for (k = 0; k < 3; k++) {
+                lo[k] = p[k] < lo[k] ? p[k] : lo[k];
+                hi[k] = p[k] > hi[k] ? p[k] : hi[k];
+            }
+        }
+}
+
+/* n rays of several kinds (see the file comment) plus the degenerate
+ * ones; returns the count (n + 8). */
+static size_t make_rays(const atrbvh_geometry *g, size_t n, uint64_t seed,
+                        atrbvh_ray *rays)
+{
+    tu_rng rng;
+    float lo[3], hi[3], ext[3];
+    size_t i, m = 0;
+    int k;
+    tu_rng_seed(&rng, seed);
+    bounds(g, lo, hi);
+    for (k = 0; k < 3; k++)
+        ext[k] = hi[k] - lo[k] > 0.0f ? hi[k] - lo[k] : 1.0f;
+    for (i = 0; i < n; i++) {
+        atrbvh_ray *r = &rays[m++];
+        size_t prim = (size_t)(tu_rng_next(&rng) % g->primitive_count);
+        float a[3], b[3], target[3];
+        unsigned kind = (unsigned)(i % 6u);
+        for (k = 0; k < 3; k++)
+            r->origin[k] = lo[k] + ext[k] * (1.5f * tu_rng_float(&rng) - 0.25f);
+        r->tmin = 0.0f;
+        r->tmax = INFINITY;
+        corner(g, prim, (unsigned)(tu_rng_next(&rng) & 7u), a);
+        corner(g, prim, (unsigned)(tu_rng_next(&rng) & 7u) + 1u, b);
+        switch (kind) {
+        case 0: /* random direction */
+        case 1: /* ... with zero components (+0 and -0) */
+            for (k = 0; k < 3; k++)
+                r->dir[k] = 2.0f * tu_rng_float(&rng) - 1.0f;
+            if (kind == 1) {
+                int z = (int)(tu_rng_next(&rng) % 3u);
+                r->dir[z] = (tu_rng_next(&rng) & 1u) ? 0.0f : -0.0f;
+                if (tu_rng_next(&rng) & 1u)
+                    r->dir[(z + 1) % 3] = 0.0f;
+                /* aim the remaining axis at the primitive */
+                for (k = 0; k < 3; k++)
+                    if (r->dir[k] == 0.0f)
+                        r->origin[k] = a[k];
+                    else
+                        r->dir[k] = a[k] - r->origin[k];
+            }
+            break;
+        case 2: /* at a shared vertex */
+            for (k = 0; k < 3; k++)
+                r->dir[k] = a[k] - r->origin[k];
+            break;
+        case 3: /* at an edge midpoint */
+            for (k = 0; k < 3; k++)
+                target[k] = 0.5f * a[k] + 0.5f * b[k];
+            for (k = 0; k < 3; k++)
+                r->dir[k] = target[k] - r->origin[k];
+            break;
+        case 4: /* clipped: tmin > 0, tmax short of or past the target */
+            for (k = 0; k < 3; k++)
+                r->dir[k] = a[k] - r->origin[k];
+            r->tmin = 0.25f * tu_rng_float(&rng);
+            r->tmax = 0.5f + tu_rng_float(&rng);
+            break;
+        default: { /* axis-aligned through a vertex */
+            int ax = (int)(tu_rng_next(&rng) % 3u);
+            for (k = 0; k < 3; k++) {
+                r->dir[k] = 0.0f;
+                if (k != ax)
+                    r->origin[k] = a[k];
+            }
+            r->origin[ax] = lo[ax] - ext[ax];
+            r->dir[ax] = 1.0f;
+            if (tu_rng_next(&rng) & 1u) {
+                r->origin[ax] = hi[ax] + ext[ax];
+                r->dir[ax] = -1.0f;
+            }
+            break;
+        }
+        }
+    }
+    /* Degenerate and extreme rays (NaN origin, zero direction, empty
+     * interval, huge values, tiny components). */
+    {
+        static const atrbvh_ray bad[8] = {
+            {{0, 0, 0}, {0, 0, 0}, 0.0f, 1e30f},
+            {{0, 0, 0}, {1, 0, 0}, 1.0f, 0.5f},
+            {{0, 0, 0}, {1, 1, 1}, 0.0f, 0.0f},
+            {{0, 0, 0}, {-1, -1, -1}, -1e30f, 1e30f},
+            {{1e30f, 1e30f, 1e30f}, {-1, -1, -1}, 0.0f, INFINITY},
+            {{0, 0, 0}, {1e-30f, 1e-30f, 1.0f}, 0.0f, INFINITY},
+            {{0, 0, 0}, {0, 1, 0}, 0.0f, INFINITY},
+            {{0, 0, 0}, {0, 0, -1}, 0.0f, INFINITY}};
+        for (i = 0; i < 8; i++)
+            rays[m++] = bad[i];
+        rays[m - 8].origin[0] = NAN;
+    }
+    return m;
+}
+
+static atrbvh_bvh *build(const atrbvh_geometry *g, atrbvh_method method,
+                         int collapse, atrbvh_backend backend)
+{
+    atrbvh_build_options o;
+    atrbvh_build_options_init(&o);
+    o.method = method;
+    o.collapse = collapse;
+    o.backend = backend;
+    return tu_build(g, &o);
+}
+
+#define NRAYS 6000
+
+static void check_geometry(const atrbvh_geometry *g, const char *what,
+                           uint64_t seed)
+{
+    static const struct {
+        atrbvh_method m;
+        int collapse;
+    } cfg[2] = {{ATRBVH_METHOD_ATRBVH, 1}, {ATRBVH_METHOD_LBVH, 0}};
+    atrbvh_ray *rays = malloc((NRAYS + 8) * sizeof *rays);
+    size_t n, c;
+    ck_assert(rays);
+    n = make_rays(g, NRAYS, seed, rays);
+    for (c = 0; c < 2; c++) {
+        char name[96];
+        atrbvh_bvh *b = build(g, cfg[c].m, cfg[c].collapse, ATRBVH_BACKEND_CPU);
+        snprintf(name, sizeof name, "%s, %s", what,
+                 cfg[c].collapse ? "atrbvh collapsed" : "lbvh binary");
+        expect_same(b, g, rays, n, name);
+        atrbvh_bvh_free(b);
+    }
+    free(rays);
+}
+
+/* ------------------------------------------------------------------ tests */
+START_TEST(soup)
+{
+    float *v;
+    atrbvh_geometry g;
+    REQUIRE_DEVICE();
+    v = tu_random_triangles(3000, 7, 10.0f, -5.0f);
+    g = atrbvh_geometry_triangles(v, 9000, NULL, 3000);
+    check_geometry(&g, "soup", 11);
+    free(v);
+}
+END_TEST
+
+START_TEST(builtin_scenes)
+{
+    static const char *const names[] = {"sphere", "city"};
+    size_t i;
+    REQUIRE_DEVICE();
+    for (i = 0; i < 2; i++) {
+        scene s;
+        char err[128];
+        atrbvh_geometry g;
+        ck_assert_msg(scene_builtin(names[i], 20000, &s, err, sizeof err) == 0,
+                      "%s", err);
+        g = scene_geometry(&s);
+        check_geometry(&g, names[i], 100 + i);
+        scene_free(&s);
+    }
+}
+END_TEST
+
+/* Indexed triangles with padded vertices (stride 16) and indices (stride
+ * 16), and a tree built on the device. */
+START_TEST(strided_and_device_built)
+{
+    scene s;
+    char err[128];
+    float *pv;
+    uint32_t *pi;
+    size_t i;
+    int k;
+    atrbvh_geometry g;
+    atrbvh_ray *rays;
+    atrbvh_bvh *b;
+    size_t n;
+    REQUIRE_DEVICE();
+    ck_assert(scene_builtin("sphere", 5000, &s, err, sizeof err) == 0);
+    pv = malloc(s.vertex_count * 4 * sizeof *pv);
+    pi = malloc(s.triangle_count * 4 * sizeof *pi);
+    ck_assert(pv && pi);
+    for (i = 0; i < s.vertex_count; i++) {
+        for (k = 0; k < 3; k++)
+            pv[4 * i + k] = s.vertices[3 * i + k];
+        pv[4 * i + 3] = NAN; /* never read */
+    }
+    for (i = 0; i < s.triangle_count; i++) {
+        for (k = 0; k < 3; k++)
+            pi[4 * i + k] = s.indices[3 * i + k];
+        pi[4 * i + 3] = 0xffffffffu;
+    }
+    g = atrbvh_geometry_triangles(pv, s.vertex_count, pi, s.triangle_count);
+    g.vertex_stride = 16;
+    g.index_stride = 16;
+    rays = malloc((NRAYS + 8) * sizeof *rays);
+    ck_assert(rays);
+    n = make_rays(&g, NRAYS, 5, rays);
+    b = build(&g, ATRBVH_METHOD_TRBVH, 1, ATRBVH_BACKEND_OPENCL);
+    expect_same(b, &g, rays, n, "strided sphere, trbvh built on OpenCL");
+    atrbvh_bvh_free(b);
+    free(rays);
+    free(pv);
+    free(pi);
+    scene_free(&s);
+}
+END_TEST
+
+START_TEST(boxes)
+{
+    tu_rng rng;
+    float *bx = malloc(2000 * 7 * sizeof *bx);
+    atrbvh_geometry g;
+    size_t i;
+    int k;
+    REQUIRE_DEVICE();
+    ck_assert(bx);
+    tu_rng_seed(&rng, 3);
+    /* stride 28 (7 floats); boxes snapped to a grid so faces coincide */
+    for (i = 0; i < 2000; i++) {
+        for (k = 0; k < 3; k++) {
+            float a = floorf(16.0f * tu_rng_float(&rng)) * 0.5f;
+            float d = floorf(1.0f + 4.0f * tu_rng_float(&rng)) * 0.25f;
+            bx[7 * i + k] = a;
+            bx[7 * i + 3 + k] = a + (i % 50 == 0 ? 0.0f : d);
+        }
+        bx[7 * i + 6] = NAN;
+    }
+    g = atrbvh_geometry_boxes(bx, 2000);
+    g.box_stride = 28;
+    check_geometry(&g, "boxes", 21);
+    free(bx);
+}
+END_TEST
+
+START_TEST(errors)
+{
+    static const float box[6] = {0, 0, 0, 1, 1, 1};
+    atrbvh_geometry g = atrbvh_geometry_boxes(box, 1), bad;
+    atrbvh_bvh *b = build(&g, ATRBVH_METHOD_LBVH, 0, ATRBVH_BACKEND_CPU);
+    atrbvh_ray r = {{0.5f, 0.5f, -1.0f}, {0, 0, 1}, 0.0f, 10.0f};
+    atrbvh_hit h;
+    uint8_t o;
+    atrbvh_error e;
+    atrbvh_status st;
+    double ms = 5.0;
+    /* Argument errors, with or without OpenCL. */
+    ck_assert_int_eq(atrbvh_intersect_batch_device(NULL, &g, &r, 1, &h, NULL,
+                                                   NULL, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert(strstr(e.text, "atrbvh_intersect_batch_device: bvh is NULL"));
+    ck_assert_int_eq(atrbvh_occluded_batch_device(b, &g, &r, 1, NULL, NULL,
+                                                  &ms, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert(strstr(e.text, "output array is NULL"));
+    ck_assert(ms == 0.0);
+    ck_assert_int_eq(atrbvh_occluded_batch_device(b, &g, NULL, 1, &o, NULL,
+                                                  NULL, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    bad = g;
+    bad.box_stride = 26;
+    ck_assert_int_eq(atrbvh_intersect_batch_device(b, &bad, &r, 1, &h, NULL,
+                                                   NULL, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert(strstr(e.text, "multiple of 4"));
+    bad = g;
+    bad.primitive_count = 0;
+    ck_assert_int_eq(atrbvh_intersect_batch_device(b, &bad, &r, 1, &h, NULL,
+                                                   NULL, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    st = atrbvh_intersect_batch_device(b, &g, &r, 1, &h, NULL, NULL, &e);
+    if (!device_available()) {
+        ck_assert_msg(st == ATRBVH_ERR_UNSUPPORTED, "status %d: %s", (int)st,
+                      e.text);
+        fprintf(stderr, "SKIP errors (device part): no OpenCL device (%s)\n",
+                why_not);
+        atrbvh_bvh_free(b);
+        return;
+    }
+    ck_assert_int_eq(st, ATRBVH_OK);
+    ck_assert_uint_eq(h.primitive, 0);
+    ck_assert(h.t == 1.0f);
+    /* count 0: nothing to do */
+    ck_assert_int_eq(atrbvh_occluded_batch_device(b, &g, NULL, 0, NULL, NULL,
+                                                  NULL, &e),
+                     ATRBVH_OK);
+    /* a device string that names nothing */
+    st = atrbvh_occluded_batch_device(b, &g, &r, 1, &o, "no such device",
+                                      NULL, &e);
+    ck_assert_int_eq(st, ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_msg(strstr(e.text, "no device matches"), "%s", e.text);
+    st = atrbvh_occluded_batch_device(b, &g, &r, 1, &o, "7:7", NULL, &e);
+    ck_assert_int_eq(st, ATRBVH_ERR_INVALID_ARGUMENT);
+    st = atrbvh_occluded_batch_device(b, &g, &r, 1, &o, "0:0", &ms, &e);
+    ck_assert_msg(st == ATRBVH_OK, "%s", e.text);
+    ck_assert_uint_eq(o, 1);
+    atrbvh_bvh_free(b);
+}
+END_TEST
+
+static Suite *clrays_suite(void)
+{
+    Suite *s = suite_create("clrays");
+    TCase *tc = tcase_create("agree");
+    tcase_add_test(tc, soup);
+    tcase_add_test(tc, builtin_scenes);
+    tcase_add_test(tc, strided_and_device_built);
+    tcase_add_test(tc, boxes);
+    tcase_set_timeout(tc, 240);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("errors");
+    tcase_add_test(tc, errors);
+    tcase_set_timeout(tc, 120);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    int failed;
+    SRunner *sr = srunner_create(clrays_suite());
+    srunner_run_all(sr, CK_ENV);
+    failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? 0 : 1;
+}
