@@ -296,7 +296,9 @@ __kernel void opt_prepare(__global const uint *left, __global const uint *right,
  * walk up; a crown node is processed (atrbvh_treelet_process, the CPU's
  * function) by the item whose arrival completes its crown children, i.e.
  * only after its whole subtree is final.  The treelet root keeps its id and
- * parent, so the walk's way up stays valid.  Scratch: `stride` bytes per
+ * parent, so the walk's way up stays valid.  The tree arrays are read and
+ * written through t's volatile pointers (ATRBVH_SHARED_GLOBAL, treelet.h):
+ * they hold nodes other items wrote in this launch.  Scratch: `stride` bytes per
  * worker, sized once per build. */
 __kernel void opt_round(__global uint *left, __global uint *right,
                         __global uint *parent, __global uint *count,
@@ -338,10 +340,13 @@ __kernel void opt_round(__global uint *left, __global uint *right,
                                    dist);
             if (x == 0u)
                 break;
-            up = parent[x];
+            up = t.parent[x]; /* volatile, as every tree read here */
+            /* our treelet's writes before the count ... */
             mem_fence(CLK_GLOBAL_MEM_FENCE);
             if (atomic_inc(&counter[up]) + 1u < needed[up])
                 break;
+            /* ... the other arrivals' writes after it (the reads go
+             * through t's volatile pointers, never a stale cache line) */
             mem_fence(CLK_GLOBAL_MEM_FENCE);
             x = up;
         }

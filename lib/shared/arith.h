@@ -29,6 +29,11 @@ typedef long atrbvh_i64;
 #define ATRBVH_FN static inline
 #define ATRBVH_GLOBAL __global
 #define ATRBVH_CONST_GLOBAL __global const
+/* Global memory that other work-items of the same launch write (the tree
+ * arrays of the optimise round): volatile, so every read goes to memory
+ * and not to a non-coherent cache (a GPU's L1); the kernels fence around
+ * the atomic counters that hand the nodes over. */
+#define ATRBVH_SHARED_GLOBAL volatile __global
 #define ATRBVH_CLZ64(x) ((int)clz((ulong)(x)))
 #define ATRBVH_U32_MAX 0xffffffffu
 #else
@@ -40,6 +45,7 @@ typedef int64_t atrbvh_i64;
 #define ATRBVH_FN static inline
 #define ATRBVH_GLOBAL
 #define ATRBVH_CONST_GLOBAL const
+#define ATRBVH_SHARED_GLOBAL
 #define ATRBVH_U32_MAX 0xffffffffu
 #if defined(__GNUC__) || defined(__clang__)
 #define ATRBVH_CLZ64(x) ((x) ? __builtin_clzll((unsigned long long)(x)) : 64)

@@ -43,14 +43,18 @@
 
 /* ------------------------------------------------------------- the tree */
 /* The tree arrays the optimiser reads and writes (see __atrbvh_tree):
- * nodes < n_internal are internal (left/right valid), the rest leaves. */
+ * nodes < n_internal are internal (left/right valid), the rest leaves.
+ * On OpenCL they are volatile (ATRBVH_SHARED_GLOBAL): a treelet reads
+ * nodes that other work-items of the same opt_round launch wrote, handed
+ * over by a fence and an atomic counter; a plain load could be served by
+ * a GPU's non-coherent L1 and be stale.  Plain pointers in C. */
 typedef struct atrbvh_treelet_tree {
-    ATRBVH_GLOBAL atrbvh_u32 *left;
-    ATRBVH_GLOBAL atrbvh_u32 *right;
-    ATRBVH_GLOBAL atrbvh_u32 *parent;
-    ATRBVH_GLOBAL atrbvh_u32 *count;
-    ATRBVH_GLOBAL atrbvh_box *box;
-    ATRBVH_GLOBAL double *cost;
+    ATRBVH_SHARED_GLOBAL atrbvh_u32 *left;
+    ATRBVH_SHARED_GLOBAL atrbvh_u32 *right;
+    ATRBVH_SHARED_GLOBAL atrbvh_u32 *parent;
+    ATRBVH_SHARED_GLOBAL atrbvh_u32 *count;
+    ATRBVH_SHARED_GLOBAL atrbvh_box *box;
+    ATRBVH_SHARED_GLOBAL double *cost;
     atrbvh_u32 n_internal;
 } atrbvh_treelet_tree;
 
