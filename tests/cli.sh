@@ -245,6 +245,18 @@ if run 0 trace builtin:city:3000 --method lbvh --width 24 --height 16 --threads 
     hits2="$(json_value rays.primary.hits) $(json_value rays.ao.hits) $(json_value rays.diffuse.hits)"
 fi
 [ "$hits1" = "$hits2" ] || fail "hit counts differ with 1 and 3 threads: $hits1 / $hits2"
+# On the OpenCL device: the same hits (the kernels run the CPU's per-ray
+# code), and the kernel times.  Skipped without an OpenCL device.
+if "$TOOL" trace builtin:city:3000 --method lbvh --width 24 --height 16 \
+    --backend opencl --json >"$T/out" 2>"$T/err"; then
+    checks=$((checks + 1))
+    json_check rays.primary.kernel_ms rays.ao.kernel_mrays \
+        rays.diffuse.kernel_mrays trace_device
+    hits3="$(json_value rays.primary.hits) $(json_value rays.ao.hits) $(json_value rays.diffuse.hits)"
+    [ "$hits1" = "$hits3" ] || fail "hit counts differ on cpu and opencl: $hits1 / $hits3"
+else
+    echo "cli.sh: trace --backend opencl skipped: $(cat "$T/err")"
+fi
 run 0 trace builtin:city:3000 --method lbvh --width 40 --height 30 &&
     out_has '^ +primary +1200 ' && out_has '^ +ao ' && out_has '^ +diffuse '
 

@@ -8,6 +8,12 @@
  * Sample directions come from a hash of (pixel, sample), so the rays, and
  * the hit counts, do not depend on threads or timing.  Only the batch
  * calls are timed: ray generation is not what is being measured.
+ *
+ * --backend opencl traces on the device too (atrbvh_intersect_batch_device,
+ * atrbvh_occluded_batch_device: the same results, bit for bit): the rate
+ * is then also reported from the kernels' profiling events ("kernel"),
+ * beside the wall time of the calls (which includes the device setup and
+ * the transfers of each call).
  */
 #define _POSIX_C_SOURCE 200809L
 #include "config.h"
@@ -31,7 +37,8 @@
 
 typedef struct ray_stats {
     size_t count, hits;
-    double ms;
+    double ms;        /* wall time of the batch calls */
+    double kernel_ms; /* OpenCL: the kernels' device time */
 } ray_stats;
 
 static uint64_t mix64(uint64_t x)
@@ -133,6 +140,8 @@ static void cosine_ray(const surface *s, double u1, double u2, float length,
 typedef struct tracer {
     const cli_built *b;
     int threads;
+    int device;              /* trace with the OpenCL kernels */
+    const char *device_spec; /* --device */
     atrbvh_ray *rays;
     atrbvh_hit *hits;
     uint8_t *occluded;
@@ -146,15 +155,28 @@ static int run_batch(tracer *tr, size_t n, int any_hit, ray_stats *rs)
     size_t i;
     memset(&e, 0, sizeof e);
     t0 = cli_now_ms();
-    if (any_hit)
+    if (tr->device) {
+        double kms = 0.0;
+        if (any_hit)
+            st = atrbvh_occluded_batch_device(tr->b->bvh, &tr->b->geometry,
+                                              tr->rays, n, tr->occluded,
+                                              tr->device_spec, &kms, &e);
+        else
+            st = atrbvh_intersect_batch_device(tr->b->bvh, &tr->b->geometry,
+                                               tr->rays, n, tr->hits,
+                                               tr->device_spec, &kms, &e);
+        rs->kernel_ms += kms;
+    } else if (any_hit) {
         st = atrbvh_occluded_batch(tr->b->bvh, &tr->b->geometry, tr->rays, n,
                                    tr->occluded, tr->threads, &e);
-    else
+    } else {
         st = atrbvh_intersect_batch(tr->b->bvh, &tr->b->geometry, tr->rays,
                                     n, tr->hits, tr->threads, &e);
+    }
     rs->ms += cli_now_ms() - t0;
     if (st != ATRBVH_OK) {
-        cli_error("tracing %s rays: %s", any_hit ? "occlusion" : "diffuse",
+        cli_error("tracing %s rays%s: %s", any_hit ? "occlusion" : "diffuse",
+                  tr->device ? " on the OpenCL device" : "",
                   e.text[0] ? e.text : atrbvh_strerror(st));
         return -1;
     }
@@ -165,28 +187,46 @@ static int run_batch(tracer *tr, size_t n, int any_hit, ray_stats *rs)
     return 0;
 }
 
-static void json_rays(json_writer *w, const char *key, const ray_stats *rs)
+static double mrays(size_t count, double ms)
+{
+    return ms > 0.0 ? (double)count / (ms * 1e3) : NAN;
+}
+
+static void json_rays(json_writer *w, const char *key, const ray_stats *rs,
+                      int device)
 {
     json_key(w, key);
     json_begin_object(w);
     json_kv_uint(w, "count", rs->count);
     json_kv_uint(w, "hits", rs->hits);
     json_kv_double(w, "ms", rs->ms);
-    if (rs->ms > 0.0)
-        json_kv_double(w, "mrays", (double)rs->count / (rs->ms * 1e3));
-    else
-        json_kv_double(w, "mrays", NAN);
+    json_kv_double(w, "mrays", mrays(rs->count, rs->ms));
+    if (device) {
+        json_kv_double(w, "kernel_ms", rs->kernel_ms);
+        json_kv_double(w, "kernel_mrays", mrays(rs->count, rs->kernel_ms));
+    }
     json_end_object(w);
 }
 
-static void text_rays(FILE *f, const char *name, const ray_stats *rs)
+static void text_rate(FILE *f, size_t count, double ms)
 {
-    fprintf(f, "  %-9s %12zu %12zu %10.3f ", name, rs->count, rs->hits,
-            rs->ms);
-    if (rs->ms > 0.0)
-        fprintf(f, "%10.3f\n", (double)rs->count / (rs->ms * 1e3));
+    if (ms > 0.0)
+        fprintf(f, " %10.3f", mrays(count, ms));
     else
-        fprintf(f, "%10s\n", "n/a");
+        fprintf(f, " %10s", "n/a");
+}
+
+static void text_rays(FILE *f, const char *name, const ray_stats *rs,
+                      int device)
+{
+    fprintf(f, "  %-9s %12zu %12zu %10.3f", name, rs->count, rs->hits,
+            rs->ms);
+    text_rate(f, rs->count, rs->ms);
+    if (device) {
+        fprintf(f, " %10.3f", rs->kernel_ms);
+        text_rate(f, rs->count, rs->kernel_ms);
+    }
+    fputc('\n', f);
 }
 
 static void trace_help(FILE *f)
@@ -235,6 +275,8 @@ static int trace(const cli_build_args *a, const cli_built *b,
     memset(&tr, 0, sizeof tr);
     tr.b = b;
     tr.threads = a->options.threads;
+    tr.device = a->options.backend == ATRBVH_BACKEND_OPENCL;
+    tr.device_spec = a->options.opencl_device;
     n = pixels > CHUNK ? pixels : CHUNK;
     tr.rays = malloc(n * sizeof *tr.rays);
     tr.hits = malloc(n * sizeof *tr.hits);
@@ -310,22 +352,33 @@ static int trace(const cli_build_args *a, const cli_built *b,
         json_kv_uint(&w, "width", width);
         json_kv_uint(&w, "height", height);
         json_kv_uint(&w, "spp", spp);
+        json_kv_string(&w, "trace_device",
+                       tr.device ? atrbvh_bvh_device(b->bvh) : "cpu");
         json_key(&w, "rays");
         json_begin_object(&w);
-        json_rays(&w, "primary", &prim);
-        json_rays(&w, "ao", &ao);
-        json_rays(&w, "diffuse", &dif);
+        json_rays(&w, "primary", &prim, tr.device);
+        json_rays(&w, "ao", &ao, tr.device);
+        json_rays(&w, "diffuse", &dif, tr.device);
         json_end_object(&w);
         json_end_object(&w);
     } else {
         cli_build_text(stdout, a, b);
         printf("image            %ux%u, %u sample%s per hit\n", width, height,
                spp, spp == 1 ? "" : "s");
-        printf("  %-9s %12s %12s %10s %10s\n", "rays", "count", "hits", "ms",
-               "Mrays/s");
-        text_rays(stdout, "primary", &prim);
-        text_rays(stdout, "ao", &ao);
-        text_rays(stdout, "diffuse", &dif);
+        if (tr.device) {
+            printf("traced on        OpenCL (kernel: device time from "
+                   "profiling events; ms:\n"
+                   "                 wall, with device setup and "
+                   "transfers)\n");
+            printf("  %-9s %12s %12s %10s %10s %10s %10s\n", "rays", "count",
+                   "hits", "ms", "Mrays/s", "kernel ms", "Mrays/s");
+        } else {
+            printf("  %-9s %12s %12s %10s %10s\n", "rays", "count", "hits",
+                   "ms", "Mrays/s");
+        }
+        text_rays(stdout, "primary", &prim, tr.device);
+        text_rays(stdout, "ao", &ao, tr.device);
+        text_rays(stdout, "diffuse", &dif, tr.device);
     }
     rc = CLI_OK;
 done:
