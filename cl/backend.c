@@ -582,11 +582,12 @@ static atrbvh_status harvest(cl_env *env, atrbvh_error *error)
 }
 
 /* Launches kernel k over `items` work-items (rounded up to a multiple of
- * 64; every kernel checks its range). */
+ * 64; every kernel checks its range); the work-group size is the
+ * implementation's choice except for the ray kernels. */
 static atrbvh_status launch(cl_env *env, int k, size_t items,
                             atrbvh_error *error)
 {
-    size_t global = (items + 63u) / 64u * 64u;
+    size_t global = (items + 63u) / 64u * 64u, local = 0;
     cl_event ev = NULL;
     cl_int err;
     atrbvh_status st;
@@ -597,8 +598,23 @@ static atrbvh_status launch(cl_env *env, int k, size_t items,
         if (st != ATRBVH_OK)
             return st;
     }
+    if (k == K_INTERSECT_CLOSEST || k == K_INTERSECT_ANY) {
+        /* An explicit work-group size: left to itself PoCL picks groups
+         * of 4096 for a large launch and runs out of stack with the
+         * traversal's private arrays (2 KB per item).  64, or the largest
+         * power of two the kernel allows below it (global is a multiple
+         * of 64, so it divides it). */
+        size_t max_wg = 0;
+        local = 64;
+        if (clGetKernelWorkGroupInfo(env->kernel[k], env->device,
+                                     CL_KERNEL_WORK_GROUP_SIZE, sizeof max_wg,
+                                     &max_wg, NULL) == CL_SUCCESS &&
+            max_wg > 0)
+            while (local > max_wg)
+                local /= 2;
+    }
     err = clEnqueueNDRangeKernel(env->queue, env->kernel[k], 1, NULL, &global,
-                                 NULL, 0, NULL, &ev);
+                                 local ? &local : NULL, 0, NULL, &ev);
     if (err != CL_SUCCESS)
         return __atrbvh_cl_fail(error, err, "clEnqueueNDRangeKernel",
                                 kernel_names[k]);

@@ -316,6 +316,35 @@ START_TEST(builtin_scenes)
 }
 END_TEST
 
+/* A batch large enough that the implementation, left to itself, would
+ * pick big work-groups (PoCL: 4096 items, which overflowed its stack with
+ * the traversal's private arrays before the ray kernels got an explicit
+ * size). */
+START_TEST(large_batch)
+{
+    scene s;
+    char err[128];
+    atrbvh_geometry g;
+    atrbvh_ray *rays;
+    atrbvh_bvh *b;
+    size_t n;
+    REQUIRE_DEVICE();
+    ck_assert(scene_builtin("sphere", 20000, &s, err, sizeof err) == 0);
+    g = scene_geometry(&s);
+    /* 196608 = 48 * 4096 rays in all: a size PoCL splits into groups of
+     * 4096 when it may choose */
+    rays = malloc(196608 * sizeof *rays);
+    ck_assert(rays);
+    n = make_rays(&g, 196608 - 8, 77, rays);
+    ck_assert_uint_eq(n, 196608);
+    b = build(&g, ATRBVH_METHOD_ATRBVH, 1, ATRBVH_BACKEND_CPU);
+    expect_same(b, &g, rays, n, "sphere, 196608 rays");
+    atrbvh_bvh_free(b);
+    free(rays);
+    scene_free(&s);
+}
+END_TEST
+
 /* Indexed triangles with padded vertices (stride 16) and indices (stride
  * 16), and a tree built on the device. */
 START_TEST(strided_and_device_built)
@@ -461,6 +490,7 @@ static Suite *clrays_suite(void)
     tcase_add_test(tc, builtin_scenes);
     tcase_add_test(tc, strided_and_device_built);
     tcase_add_test(tc, boxes);
+    tcase_add_test(tc, large_batch);
     tcase_set_timeout(tc, 240);
     suite_add_tcase(s, tc);
     tc = tcase_create("errors");
