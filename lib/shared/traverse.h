@@ -17,15 +17,12 @@
  * near-first traversal with a TRAVERSE_STACK-entry stack and a linear pass
  * over the leaves when a (hand-made) tree is deeper than that.
  *
- * Portability notes: the reciprocal direction is computed as
- * (float)(1.0 / (double)d).  Double rounding of a quotient of two floats
- * through double is innocuous (53 >= 2*24 + 2; Figueroa 1995), so this is
- * bit for bit the correctly rounded 1.0f / d, also on an OpenCL device
- * whose single-precision division is not correctly rounded (the default:
- * 2.5 ulp is allowed without -cl-fp32-correctly-rounded-divide-sqrt).
- * Every other float operation is +, -, * or a comparison, which OpenCL
- * rounds correctly; the double ones (including the division) are IEEE
- * under cl_khr_fp64.
+ * Portability: there is no single-precision division (OpenCL allows
+ * 2.5 ulp for it without -cl-fp32-correctly-rounded-divide-sqrt): the
+ * slab distances use the double reciprocal 1.0 / (double)d, and the
+ * triangle test is in double.  Every float operation left is a
+ * comparison or a conversion, which OpenCL rounds correctly; the double
+ * ones (division included) are IEEE under cl_khr_fp64.
  */
 #ifndef ATRBVH_SHARED_TRAVERSE_H
 #define ATRBVH_SHARED_TRAVERSE_H
@@ -87,9 +84,9 @@ typedef struct atrbvh_trav_scene {
 
 /* A ray, prepared. */
 typedef struct atrbvh_trav_ray {
-    float org[3];
-    float idir[3];
-    int sign[3]; /* 1 when idir[k] < 0 (direction -0 included) */
+    double orgd[3];  /* the slab tests run in double: see node_hit */
+    double idird[3];
+    int sign[3]; /* 1 when idird[k] < 0 (direction -0 included) */
     float tmin, tmax;
     /* watertight triangle test, in double */
     double o[3];
@@ -146,11 +143,11 @@ ATRBVH_FN int atrbvh_trav_setup(const float *origin, const float *dir,
     if (!(tmin <= tmax))
         return 0;
     for (k = 0; k < 3; k++) {
-        r->org[k] = origin[k];
-        /* = 1.0f / dir[k], correctly rounded (+-inf for +-0); see the
-         * header comment. */
-        r->idir[k] = (float)(1.0 / (double)dir[k]);
-        r->sign[k] = r->idir[k] < 0.0f;
+        r->orgd[k] = (double)origin[k];
+        /* finite for every nonzero float, subnormals included (a float
+         * reciprocal overflows to inf below 2^-128); +-inf for +-0 */
+        r->idird[k] = 1.0 / (double)dir[k];
+        r->sign[k] = r->idird[k] < 0.0;
         r->o[k] = (double)origin[k];
         ad[k] = atrbvh_trav_abs((double)dir[k]);
     }
@@ -175,29 +172,52 @@ ATRBVH_FN int atrbvh_trav_setup(const float *origin, const float *dir,
     return 1;
 }
 
+/* The slab distance (b - o) / d, in double: b - o cannot overflow (it
+ * can in float near FLT_MAX) and 1/d is finite for every nonzero float
+ * direction (in float it overflows for subnormal components, which made
+ * boxes the ray crosses look infinitely far).  A zero direction gives
+ * +-inf, or NaN when b == o (dropped by the comparisons below). */
+ATRBVH_FN double atrbvh_trav_slab_t(float b, const atrbvh_trav_ray *r, int k)
+{
+    return ((double)b - r->orgd[k]) * r->idird[k];
+}
+
+/* double to float for distances: beyond the float range is +-inf. */
+ATRBVH_FN float atrbvh_trav_dist_float(double d)
+{
+    if (d > (double)ATRBVH_TRAV_FLT_MAX)
+        return ATRBVH_TRAV_INF;
+    if (d < -(double)ATRBVH_TRAV_FLT_MAX)
+        return -ATRBVH_TRAV_INF;
+    return (float)d;
+}
+
 /* Conservative ray/node test.  Hit when the slab interval, far end widened,
- * meets [tlo, thi]; *tnear is where it starts. */
+ * meets [tlo, thi]; *tnear is where it starts.  In double the interval is
+ * exact to a few units of 2^-53; widening by the float factor covers that
+ * with a wide margin. */
 ATRBVH_FN int atrbvh_trav_node_hit(ATRBVH_CONST_GLOBAL atrbvh_node *n,
                                    const atrbvh_trav_ray *r, float tlo,
                                    float thi, float *tnear)
 {
-    float lo = -ATRBVH_TRAV_INF, hi = ATRBVH_TRAV_INF;
+    double lo = -ATRBVH_TRAV_INF, hi = ATRBVH_TRAV_INF;
     int k;
     for (k = 0; k < 3; k++) {
         float bn = r->sign[k] ? n->max[k] : n->min[k];
         float bf = r->sign[k] ? n->min[k] : n->max[k];
-        float tn = (bn - r->org[k]) * r->idir[k];
-        float tf = (bf - r->org[k]) * r->idir[k];
+        double tn = atrbvh_trav_slab_t(bn, r, k);
+        double tf = atrbvh_trav_slab_t(bf, r, k);
         /* NaN (0 * inf) fails the comparison and is dropped. */
         lo = tn > lo ? tn : lo;
         hi = tf < hi ? tf : hi;
     }
-    hi = hi * (hi > 0.0f ? ATRBVH_TRAV_WIDEN_UP : ATRBVH_TRAV_WIDEN_DOWN);
-    if (tlo > lo)
+    hi = hi * (hi > 0.0 ? (double)ATRBVH_TRAV_WIDEN_UP
+                        : (double)ATRBVH_TRAV_WIDEN_DOWN);
+    if ((double)tlo > lo)
         lo = tlo;
-    if (thi < hi)
+    if ((double)thi < hi)
         hi = thi;
-    *tnear = lo;
+    *tnear = atrbvh_trav_dist_float(lo);
     return lo <= hi;
 }
 
@@ -206,18 +226,18 @@ ATRBVH_FN int atrbvh_trav_box_interval(const float *b,
                                        const atrbvh_trav_ray *r, float *t0,
                                        float *t1)
 {
-    float lo = -ATRBVH_TRAV_INF, hi = ATRBVH_TRAV_INF;
+    double lo = -ATRBVH_TRAV_INF, hi = ATRBVH_TRAV_INF;
     int k;
     for (k = 0; k < 3; k++) {
         float bn = r->sign[k] ? b[3 + k] : b[k];
         float bf = r->sign[k] ? b[k] : b[3 + k];
-        float tn = (bn - r->org[k]) * r->idir[k];
-        float tf = (bf - r->org[k]) * r->idir[k];
+        double tn = atrbvh_trav_slab_t(bn, r, k);
+        double tf = atrbvh_trav_slab_t(bf, r, k);
         lo = tn > lo ? tn : lo;
         hi = tf < hi ? tf : hi;
     }
-    *t0 = lo;
-    *t1 = hi;
+    *t0 = atrbvh_trav_dist_float(lo);
+    *t1 = atrbvh_trav_dist_float(hi);
     return lo <= hi;
 }
 
