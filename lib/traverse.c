@@ -71,6 +71,9 @@
 #define WIDEN_DOWN 0.99999964f
 /* Relative slack on the closest-hit distance when pruning (2^-12). */
 #define PRUNE_SLACK (1.0f / 4096.0f)
+/* Relative slack on the near end of a triangle's own box (within_own_box):
+ * covers the float rounding of t (2^-24) with a wide margin. */
+#define OWN_BOX_SLACK (1.0 / 1048576.0)
 
 typedef struct ray_pre {
     float idir[3];
@@ -239,6 +242,41 @@ static inline int triangle_vertices(const atrbvh_geometry *g, uint32_t prim,
     return 1;
 }
 
+/* Whether distance t lies where the ray crosses the triangle's own box,
+ * both ends widened a little (float rounding of t, a few ulps of the double
+ * slab distances).  A true hit point lies in the triangle, so inside its
+ * box: this only rejects hits the edge functions got wrong, which happens
+ * for slivers mixing coordinates of wildly different magnitudes (1e36 next
+ * to 1e-28: the double edge functions cancel).  It also makes the answer
+ * independent of the tree: every node containing the triangle contains its
+ * box, so a hit accepted here is never behind a node the traversal skips
+ * (found by fuzz_build: tests/fuzz/corpus/build/regress-sliver-*). */
+static inline int within_own_box(float v[3][3], const ray_pre *r, float t)
+{
+    double lo = -INFINITY, hi = INFINITY;
+    int k;
+    for (k = 0; k < 3; k++) {
+        float mn = v[0][k], mx = v[0][k];
+        double tn, tf;
+        if (v[1][k] < mn)
+            mn = v[1][k];
+        if (v[2][k] < mn)
+            mn = v[2][k];
+        if (v[1][k] > mx)
+            mx = v[1][k];
+        if (v[2][k] > mx)
+            mx = v[2][k];
+        tn = slab_t(r->sign[k] ? mx : mn, r, k);
+        tf = slab_t(r->sign[k] ? mn : mx, r, k);
+        /* NaN (0 * inf: origin on the plane of a zero direction) drops */
+        lo = tn > lo ? tn : lo;
+        hi = tf < hi ? tf : hi;
+    }
+    hi = hi * (hi > 0.0 ? (double)WIDEN_UP : (double)WIDEN_DOWN);
+    lo = lo * (lo > 0.0 ? 1.0 - OWN_BOX_SLACK : 1.0 + OWN_BOX_SLACK);
+    return (double)t >= lo && (double)t <= hi;
+}
+
 /* Watertight ray/triangle test (Woop, Benthin, Wald 2013), in double.
  * On a hit with a finite t returns 1 with t and the barycentrics of
  * vertices 1 and 2. */
@@ -276,7 +314,7 @@ static inline int triangle_hit(float v[3][3], const ray_pre *r,
     if (!(fabs(tt) <= (double)FLT_MAX))
         return 0;
     *t = (float)tt;
-    if (!(fabsf(*t) <= FLT_MAX))
+    if (!(fabsf(*t) <= FLT_MAX) || !within_own_box(v, r, *t))
         return 0;
     *u = (float)(e1 / det);
     *w = (float)(e2 / det);
