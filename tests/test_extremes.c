@@ -979,6 +979,59 @@ START_TEST(largest_scene)
 }
 END_TEST
 
+/* A sliver with coordinates from 1e-28 to 4e36 (triangle 4, found by
+ * fuzz_build): the double-precision edge functions cancel and used to
+ * report a hit at t = 7.5e-14, at x = -0.73 where no vertex has x below
+ * 3.5e-19.  A one-primitive tree kept that false hit, a bigger tree pruned
+ * its leaf behind a real hit, so the answer depended on the tree.  Now a
+ * hit must lie in the ray's interval through the triangle's own box. */
+START_TEST(sliver_false_hit)
+{
+    static const float v[54] = {
+        -0x1.766938p-1f, 0x1.63c5acp-1f, 0x1.0e1afp-1f, -0x1.f59e5ep-2f, -0x1.2b2a88p-7f, -0x1.9dc4eap-4f, 0x1.36766p-2f, 0x1.27a718p-1f, -0x1.9fe346p-1f,
+        -0x1.e2f8e2p-1f, 0x1.57d2cep-1f, -0x1.1362d6p-3f, 0x1.0c9326p-1f, -0x1.fdd7eap-1f, -0x1.bf635ap-4f, 0x1.c5b6c8p-2f, -0x1.15bf5cp-1f, 0x1.c7f50ap-1f,
+        0x1.9b0fccp-1f, -0x1.e0ad04p-1f, -0x1.e5f186p-1f, 0x1.53404p-4f, 0x1.c1b052p-1f, -0x1.e69662p-3f, -0x1.2233c4p-1f, -0x1.3f02bp-3f, -0x1.e24322p-1f,
+        -0x1.1cfcdcp-1f, -0x1.fcd328p-4f, -0x1.1272eep-7f, -0x1.11525p-1f, -0x1.1397b8p-1f, -0x1.1ff7dep-1f, -0x1.4aedacp-4f, -0x1.ae86fap-2f, -0x1.e9fe9ap-1f,
+        0x1.ae800ap-38f, -0x1.794c7ep+79f, -0x1.6b3a7ap-92f, 0x1.a1ca7cp-62f, 0x1.5d4d7ep+121f, 0x1.95d27ep-15f, 0x1.356c7ep+5f, -0x1.a3e97ep-41f, -0x1.999f7cp+70f,
+        0x1.85507cp+99f, 0x1.fcdd7ep-99f, -0x1.d3297ep+125f, 0x1.72ef7ap-109f, 0x1.525178p-110f, -0x1.97b97ep-2f, 0x1.51f4ep-1f, 0x1.5cc92ap-2f, -0x1.92b388p-2f};
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 18, NULL, 6);
+    atrbvh_ray ray;
+    atrbvh_hit h, best;
+    atrbvh_bvh *b;
+    int k, i;
+    for (k = 0; k < 3; k++) {
+        ray.origin[k] = v[k];
+        ray.dir[k] = v[3 + k] - v[k];
+    }
+    ray.tmin = 0.0f;
+    ray.tmax = INFINITY;
+    best.primitive = ATRBVH_NO_HIT;
+    best.t = INFINITY;
+    for (i = 0; i < 6; i++) {
+        atrbvh_geometry one = atrbvh_geometry_triangles(v + 9 * i, 3, NULL, 1);
+        atrbvh_bvh *s = tu_build(&one, NULL);
+        if (atrbvh_intersect(s, &one, &ray, &h) && h.t < best.t) {
+            best = h;
+            best.primitive = (uint32_t)i;
+        }
+        if (i == 4)
+            ck_assert_msg(!atrbvh_intersect(s, &one, &ray, &h) || h.t > 1.0f,
+                          "false hit on the sliver at t = %g", (double)h.t);
+        atrbvh_bvh_free(s);
+    }
+    for (k = 0; k < 3; k++) {
+        atrbvh_build_options o;
+        atrbvh_build_options_init(&o);
+        o.method = (atrbvh_method)k;
+        b = tu_build(&g, &o);
+        ck_assert(atrbvh_intersect(b, &g, &ray, &h));
+        ck_assert_uint_eq(h.primitive, best.primitive);
+        ck_assert(memcmp(&h.t, &best.t, sizeof h.t) == 0);
+        atrbvh_bvh_free(b);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("extremes");
@@ -992,6 +1045,7 @@ int main(void)
     tcase_add_loop_test(num, scaled, 0, 8);
     tcase_add_test(num, whole_float_range);
     tcase_add_loop_test(num, translated, 0, 6);
+    tcase_add_test(num, sliver_false_hit);
     suite_add_tcase(s, num);
     tcase_set_timeout(deg, 600);
     tcase_add_loop_test(deg, flat, 1, 4);

@@ -62,6 +62,10 @@ typedef struct atrbvh_hit {
 #define ATRBVH_TRAV_WIDEN_DOWN 0.99999964f
 /* Relative slack on the closest-hit distance when pruning (2^-12). */
 #define ATRBVH_TRAV_PRUNE_SLACK (1.0f / 4096.0f)
+/* Relative slack on the near end of a triangle's own box
+ * (atrbvh_trav_within_own_box): covers the float rounding of t (2^-24)
+ * with a wide margin. */
+#define ATRBVH_TRAV_OWN_BOX_SLACK (1.0 / 1048576.0)
 
 /* What a query reads: the tree (depth-first atrbvh_node array, root 0) and
  * the geometry.  Strides are in floats (vertices, boxes) or in u32
@@ -263,6 +267,44 @@ ATRBVH_FN int atrbvh_trav_triangle_vertices(const atrbvh_trav_scene *s,
     return 1;
 }
 
+/* Whether distance t lies where the ray crosses the triangle's own box,
+ * both ends widened a little (float rounding of t, a few ulps of the double
+ * slab distances).  A true hit point lies in the triangle, so inside its
+ * box: this only rejects hits the edge functions got wrong, which happens
+ * for slivers mixing coordinates of wildly different magnitudes (1e36 next
+ * to 1e-28: the double edge functions cancel).  It also makes the answer
+ * independent of the tree: every node containing the triangle contains its
+ * box, so a hit accepted here is never behind a node the traversal skips
+ * (found by fuzz_build: tests/fuzz/corpus/build/regress-sliver-*). */
+ATRBVH_FN int atrbvh_trav_within_own_box(float v[3][3],
+                                         const atrbvh_trav_ray *r, float t)
+{
+    double lo = -ATRBVH_TRAV_INF, hi = ATRBVH_TRAV_INF;
+    int k;
+    for (k = 0; k < 3; k++) {
+        float mn = v[0][k], mx = v[0][k];
+        double tn, tf;
+        if (v[1][k] < mn)
+            mn = v[1][k];
+        if (v[2][k] < mn)
+            mn = v[2][k];
+        if (v[1][k] > mx)
+            mx = v[1][k];
+        if (v[2][k] > mx)
+            mx = v[2][k];
+        tn = atrbvh_trav_slab_t(r->sign[k] ? mx : mn, r, k);
+        tf = atrbvh_trav_slab_t(r->sign[k] ? mn : mx, r, k);
+        /* NaN (0 * inf: origin on the plane of a zero direction) drops */
+        lo = tn > lo ? tn : lo;
+        hi = tf < hi ? tf : hi;
+    }
+    hi = hi * (hi > 0.0 ? (double)ATRBVH_TRAV_WIDEN_UP
+                        : (double)ATRBVH_TRAV_WIDEN_DOWN);
+    lo = lo * (lo > 0.0 ? 1.0 - ATRBVH_TRAV_OWN_BOX_SLACK
+                        : 1.0 + ATRBVH_TRAV_OWN_BOX_SLACK);
+    return (double)t >= lo && (double)t <= hi;
+}
+
 /* Watertight ray/triangle test (Woop, Benthin, Wald 2013), in double.
  * On a hit with a finite t returns 1 with t and the barycentrics of
  * vertices 1 and 2. */
@@ -301,7 +343,8 @@ ATRBVH_FN int atrbvh_trav_triangle_hit(float v[3][3],
     if (!(atrbvh_trav_abs(tt) <= (double)ATRBVH_TRAV_FLT_MAX))
         return 0;
     *t = (float)tt;
-    if (!(atrbvh_trav_absf(*t) <= ATRBVH_TRAV_FLT_MAX))
+    if (!(atrbvh_trav_absf(*t) <= ATRBVH_TRAV_FLT_MAX) ||
+        !atrbvh_trav_within_own_box(v, r, *t))
         return 0;
     *u = (float)(e1 / det);
     *w = (float)(e2 / det);
