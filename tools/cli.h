@@ -95,5 +95,6 @@ int cli_build(int argc, char **argv);
 int cli_trace(int argc, char **argv);
 int cli_info(int argc, char **argv);
 int cli_compare(int argc, char **argv);
+int cli_validate(int argc, char **argv);
 
 #endif

@@ -163,6 +163,9 @@ static void usage(FILE *f)
           "second\n"
           "  info FILE                statistics of a saved BVH file\n"
           "  compare A B              compare two saved BVH files\n"
+          "  validate SCENE [OPTIONS] build on the CPU and on OpenCL and "
+          "compare\n"
+          "                           every stage's output\n"
           "\n"
           "SCENE is a .ply or .obj file, or builtin:NAME[:N] with NAME one "
           "of\n"
@@ -186,7 +189,8 @@ int main(int argc, char **argv)
     } commands[] = {{"build", cli_build},
                     {"trace", cli_trace},
                     {"info", cli_info},
-                    {"compare", cli_compare}};
+                    {"compare", cli_compare},
+                    {"validate", cli_validate}};
     size_t k;
     int rc;
     const char *cmd;
