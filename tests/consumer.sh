@@ -1,0 +1,111 @@
+#!/bin/sh
+# consumer.sh - install into a DESTDIR staging tree, then build and run
+# tests/consumer/consumer.c against it with pkg-config only, the way a
+# program outside the project would:
+#   shared: pkg-config --cflags --libs atrbvh, run with LD_LIBRARY_PATH
+#           pointing into the staging tree;
+#   static: pkg-config --static --cflags --libs atrbvh against a copy of the
+#           staging tree without libatrbvh.so, so the link must take
+#           libatrbvh.a and everything it needs must come from Libs.private;
+#           the program must not need libatrbvh.so.
+# PKG_CONFIG_LIBDIR/PKG_CONFIG_SYSROOT_DIR point into the tree, so nothing
+# installed on the system can stand in for it.  Run by `make check`.
+set -u
+: "${ATRBVH_BUILDDIR:?}" "${ATRBVH_SRCDIR:?}"
+CC=${CC:-cc}
+MAKE=${MAKE:-make}
+command -v pkg-config >/dev/null 2>&1 || { echo "consumer: no pkg-config; skipped"; exit 77; }
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/atrbvh-consumer.XXXXXX") || exit 99
+trap 'rm -rf "$work"' EXIT
+stage=$work/stage
+passed=0
+failed=0
+ok() { echo "consumer: ok: $1"; passed=$((passed + 1)); }
+ko() { echo "consumer: FAILED: $1"; failed=$((failed + 1)); }
+
+# The sub-make must not join the jobserver of the `make check` that runs us.
+if ! env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL $MAKE -s -C "$ATRBVH_BUILDDIR" \
+        install DESTDIR="$stage" >"$work/install.log" 2>&1; then
+    cat "$work/install.log"
+    echo "consumer: make install DESTDIR=... failed"
+    echo "consumer: 0 passed, 1 failed"
+    exit 1
+fi
+
+pc=$(find "$stage" -name atrbvh.pc -path '*/pkgconfig/*' | head -n 1)
+[ -n "$pc" ] || { echo "consumer: atrbvh.pc not installed"; exit 1; }
+pcdir=$(dirname "$pc")
+libdir=$(dirname "$pcdir")          # $stage$libdir
+echo "consumer: staging tree $stage, atrbvh.pc in ${pcdir#$stage}"
+
+pkgc() { # search dir, pkg-config arguments
+    d=$1; shift
+    PKG_CONFIG_LIBDIR=$d PKG_CONFIG_PATH= PKG_CONFIG_SYSROOT_DIR=$stage pkg-config "$@"
+}
+
+src=$ATRBVH_SRCDIR/tests/consumer/consumer.c
+has_needed() { # binary, library soname prefix
+    LC_ALL=C readelf -d "$1" 2>/dev/null | grep NEEDED | grep -q "\[$2"
+}
+
+# ------------------------------------------------------------------ shared
+if ls "$libdir"/libatrbvh.so >/dev/null 2>&1; then
+    flags=$(pkgc "$pcdir" --cflags --libs atrbvh) || { ko "pkg-config (shared)"; flags=; }
+    echo "consumer: shared: $CC ... $flags"
+    if $CC -o "$work/consumer-shared" "$src" $flags 2>"$work/cc.log"; then
+        out=$(LD_LIBRARY_PATH=$libdir "$work/consumer-shared" 2>&1)
+        rc=$?
+        echo "$out"
+        if [ $rc -ne 0 ]; then
+            ko "shared consumer exited $rc"
+        elif ! has_needed "$work/consumer-shared" libatrbvh.so; then
+            ko "shared consumer does not need libatrbvh.so"
+        elif command -v ldd >/dev/null 2>&1 &&
+             ! LD_LIBRARY_PATH=$libdir ldd "$work/consumer-shared" | grep libatrbvh | grep -q "$stage"; then
+            ko "shared consumer did not load libatrbvh from the staging tree"
+        else
+            ok "shared"
+        fi
+    else
+        cat "$work/cc.log"; ko "shared consumer does not build"
+    fi
+else
+    echo "consumer: no libatrbvh.so (--disable-shared); shared case skipped"
+fi
+
+# ------------------------------------------------------------------ static
+if [ -f "$libdir/libatrbvh.a" ]; then
+    # A copy of the tree without the shared library: the linker can only
+    # take the archive.
+    cp -R "$stage" "$work/static-stage"
+    sstage=$work/static-stage
+    slibdir=$sstage${libdir#$stage}
+    rm -f "$slibdir"/libatrbvh.so* "$slibdir"/libatrbvh.la
+    flags=$(PKG_CONFIG_LIBDIR=$sstage${pcdir#$stage} PKG_CONFIG_PATH= \
+            PKG_CONFIG_SYSROOT_DIR=$sstage pkg-config --static --cflags --libs atrbvh) ||
+        { ko "pkg-config --static"; flags=; }
+    echo "consumer: static: $CC ... $flags"
+    if $CC -o "$work/consumer-static" "$src" $flags 2>"$work/cc.log"; then
+        out=$(env -u LD_LIBRARY_PATH "$work/consumer-static" 2>&1)
+        rc=$?
+        echo "$out"
+        if [ $rc -ne 0 ]; then
+            ko "static consumer exited $rc"
+        elif has_needed "$work/consumer-static" libatrbvh; then
+            ko "static consumer needs libatrbvh.so"
+        else
+            ok "static (needs: $(LC_ALL=C readelf -d "$work/consumer-static" |
+                sed -n 's/.*NEEDED.*\[\(.*\)\]/\1/p' | tr '\n' ' '))"
+        fi
+    else
+        cat "$work/cc.log"; ko "static consumer does not link with pkg-config --static"
+    fi
+else
+    echo "consumer: no libatrbvh.a (--disable-static); static case skipped"
+fi
+
+echo "consumer: $passed passed, $failed failed"
+[ $failed -eq 0 ] || exit 1
+[ $passed -gt 0 ] || exit 77
+exit 0

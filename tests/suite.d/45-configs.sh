@@ -1,0 +1,86 @@
+#!/bin/sh
+# Every optional part switched off: out-of-tree builds in _build/configs/,
+# one per switch, each checked to have really dropped the part.
+#   all-off   --disable-openmp --disable-opencl --without-embree --without-png
+#             full `make check` (every Check suite, cli.sh, symbols, man
+#             pages, consumer): the serial, OpenCL-less, tool-without-extras
+#             build;
+#   no-openmp, no-opencl  (library switches, one each)
+#             build + the quick library tests: symbols, consumer (install,
+#             pkg-config, shared and static link), man pages;
+#   no-embree, no-png     (tool switches, one each)
+#             the same + cli.sh (the tool's tests);
+#             the full suites for these already ran in 10-check (everything
+#             on) and in all-off (everything off), and on the CI's two cores
+#             a full check per configuration would cost minutes each.
+# Set ATRBVH_CONFIGS_FULL=1 to run the full check in every configuration.
+# Contract: print '=== stage ok' as the last line on success.
+cd "$(dirname "$0")/../.." || exit 1
+top=$(pwd)
+[ -x configure ] || { echo "configs: run setup.sh first (no ./configure)"; exit 1; }
+jobs=$(nproc 2>/dev/null || echo 2)
+quick_lib="tests/symbols.sh tests/consumer.sh tests/manpages.sh"
+quick_tool="$quick_lib tests/cli.sh"
+passed=0
+failed=0
+
+# name, what must hold afterwards (a shell test run in the build dir),
+# full|lib|tool (which tests), configure flags
+config() {
+    name=$1 verify=$2 full=$3
+    shift 3
+    dir=$top/_build/configs/$name
+    start=$(date +%s)
+    rm -rf "$dir"
+    mkdir -p "$dir"
+    cd "$dir" || return 1
+    log=$dir/config.out
+    if ! "$top/configure" "$@" >"$log" 2>&1; then
+        tail -n 30 "$log"; echo "configs: FAILED: $name: configure $*"; failed=$((failed + 1)); cd "$top"; return
+    fi
+    if ! make -j"$jobs" >>"$log" 2>&1; then
+        tail -n 30 "$log"; echo "configs: FAILED: $name: make"; failed=$((failed + 1)); cd "$top"; return
+    fi
+    if ! sh -c "$verify" >>"$log" 2>&1; then
+        echo "configs: FAILED: $name: the part is still built in ($verify)"; failed=$((failed + 1)); cd "$top"; return
+    fi
+    if [ "$full" = full ] || [ "${ATRBVH_CONFIGS_FULL:-0}" = 1 ]; then
+        what="full make check"
+        make -j"$jobs" check >>"$log" 2>&1
+    else
+        [ "$full" = tool ] && quick=$quick_tool || quick=$quick_lib
+        what="build + $(echo $quick | sed 's,tests/,,g')"
+        make -j"$jobs" check TESTS="$quick" check_PROGRAMS= check_LTLIBRARIES= >>"$log" 2>&1
+    fi
+    rc=$?
+    res=$(grep -E '^# (PASS|SKIP|FAIL|ERROR): ' "$log" | tail -n 4 | tr -s ' ' | tr '\n' ' ')
+    if [ $rc -eq 0 ]; then
+        echo "configs: ok: $name ($*): $what: $res($(( $(date +%s) - start )) s)"
+        passed=$((passed + 1))
+    else
+        grep -E '^(FAIL|ERROR):' "$log"
+        for f in $(grep -lE '^(FAIL|ERROR)' tests/*.log 2>/dev/null); do echo "--- $f"; tail -n 30 "$f"; done
+        echo "configs: FAILED: $name ($*): $what"
+        failed=$((failed + 1))
+    fi
+    cd "$top" || exit 1
+}
+
+no_gomp='! readelf -d lib/.libs/libatrbvh.so | grep -q libgomp && ! grep -q "^OPENMP_CFLAGS = ." Makefile'
+no_cl='! grep -q "define ATRBVH_HAVE_OPENCL" config.h && ! grep -q -- -lOpenCL atrbvh.pc'
+no_embree='! grep -q "define HAVE_EMBREE" config.h && ! readelf -d tools/.libs/atrbvh tools/atrbvh 2>/dev/null | grep -q libembree'
+no_png='! grep -q "define HAVE_PNG" config.h && ! readelf -d tools/.libs/atrbvh tools/atrbvh 2>/dev/null | grep -q libpng'
+
+config all-off "$no_gomp && $no_cl && $no_embree && $no_png" full \
+    --disable-openmp --disable-opencl --without-embree --without-png
+config no-openmp "$no_gomp" lib --disable-openmp
+config no-opencl "$no_cl" lib --disable-opencl
+config no-embree "$no_embree" tool --without-embree
+config no-png "$no_png" tool --without-png
+
+# The configure summary of the all-off build, for the log.
+sed -n '/^  atrbvh /,/^    make check:/p' "$top/_build/configs/all-off/config.out"
+
+echo "configs: $passed passed, $failed failed"
+[ $failed -eq 0 ] && echo '=== stage ok'
+[ $failed -eq 0 ]
