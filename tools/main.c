@@ -163,6 +163,12 @@ static void usage(FILE *f)
           "second\n"
           "  info FILE                statistics of a saved BVH file\n"
           "  compare A B              compare two saved BVH files\n"
+          "  bench [SCENE...]         build time, SAH, memory and rays per "
+          "second of\n"
+          "                           many configurations, beside Embree; "
+          "plots\n"
+          "  render SCENE --output F  a shaded PNG, or a heat map of "
+          "traversal steps\n"
           "\n"
           "SCENE is a .ply or .obj file, or builtin:NAME[:N] with NAME one "
           "of\n"
@@ -186,7 +192,9 @@ int main(int argc, char **argv)
     } commands[] = {{"build", cli_build},
                     {"trace", cli_trace},
                     {"info", cli_info},
-                    {"compare", cli_compare}};
+                    {"compare", cli_compare},
+                    {"bench", cli_bench},
+                    {"render", cli_render}};
     size_t k;
     int rc;
     const char *cmd;
