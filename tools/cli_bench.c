@@ -421,7 +421,7 @@ static double total_mrays(const scene_data *sd, const double mrays[3])
  * available (skipped, noted); -1 after an error line. */
 static int run_config(const bench_args *a, scene_data *sd, const char *spec,
                       const config *c, embree_ctx *emb, int do_rays,
-                      unsigned long repeat, int warmup, row *r)
+                      unsigned long repeat, int warmup, int binary, row *r)
 {
     double *tot = malloc((repeat + 1) * sizeof *tot);
     double *stg = malloc((repeat + 1) * ATRBVH_STAGE_COUNT * sizeof *stg);
@@ -499,7 +499,8 @@ static int run_config(const bench_args *a, scene_data *sd, const char *spec,
         for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
             r->stage_ms[s] = median(stg + s * repeat, repeat);
         /* the binary tree */
-        {
+        r->sah_binary = NAN;
+        if (binary) {
             atrbvh_bvh *bin = NULL;
             atrbvh_stats bs;
             o.collapse = 0;
@@ -894,6 +895,12 @@ static void print_header(FILE *f, const bench_args *a)
         fprintf(f, "# Embree: not available (built without Embree); no "
                    "Embree rows\n");
     {
+        const char *wp = getenv("OMP_WAIT_POLICY");
+        fprintf(f, "# OMP_WAIT_POLICY=%s\n",
+                wp ? wp : "(unset: OpenMP threads spin at barriers; on a "
+                          "loaded machine set it to passive)");
+    }
+    {
         double l[3];
         FILE *la = fopen("/proc/loadavg", "r");
         if (la) {
@@ -979,7 +986,7 @@ static int bench_sweep(bench_args *a, FILE *csv)
         fflush(stdout);
         for (i = 0; i < a->nconfigs; i++) {
             int r = run_config(a, &sd, a->scenes[si], &a->configs[i], emb,
-                               a->rays, a->repeat, 1, &rows[n]);
+                               a->rays, a->repeat, 1, 1, &rows[n]);
             if (r < 0) {
                 rc = CLI_FAIL;
                 break;
@@ -1216,7 +1223,7 @@ static int bench_scaling(bench_args *a, FILE *csv)
                 }
                 sd.g = scene_geometry(&sd.sc);
                 r = run_config(a, &sd, bases[b], c, NULL, 0,
-                               big ? 1 : a->repeat, !big, &rows[n]);
+                               big ? 1 : a->repeat, !big, 0, &rows[n]);
                 if (r < 0) {
                     free_scene(&sd);
                     rc = CLI_FAIL;
@@ -1680,9 +1687,10 @@ int cli_bench(int argc, char **argv)
                     if (nr && rl[r2] == 0)
                         return cli_usage("bench", "--rounds: 0");
                     if (nt && strcmp(tok, "trbvh") == 0 && tl[t] > 10) {
-                        fprintf(stderr, "atrbvh: bench: trbvh treelet %lu "
-                                        "skipped (TRBVH takes 3 to 10)\n",
-                                tl[t]);
+                        if (r2 == 0)
+                            fprintf(stderr, "atrbvh: bench: trbvh treelet %lu "
+                                    "skipped (TRBVH takes 3 to 10)\n",
+                                    tl[t]);
                         continue;
                     }
                     m = snprintf(spec, sizeof spec, "%s", tok);
