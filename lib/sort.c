@@ -1,14 +1,24 @@
 /*
- * sort.c - stage "sort": stable least-significant-digit radix sort of
- * (63-bit key, 32-bit value) pairs, 8-bit digits.
+ * sort.c - stage "sort": stable radix sort of (63-bit key, 32-bit value)
+ * pairs.
  *
- * Parallel shape (as on a GPU): each thread owns a fixed contiguous block of
- * the input; per pass it counts digits in its block, an exclusive scan over
- * (digit, block) gives every block its output offsets, and each block
- * scatters its items in order.  Stability makes the result unique — the
- * sorted order with ties in input order — so it cannot depend on the number
- * of threads.  A pass whose digit is the same for every key moves nothing
- * and is skipped: scenes whose keys vary in fewer bits sort in fewer passes.
+ * One most-significant-digit pass over the top varying bits scatters the
+ * pairs into buckets of about BUCKET_TARGET items; each bucket is then
+ * sorted on its remaining low bits by least-significant-digit passes
+ * (8-bit digits) that stay in cache, or by insertion for tiny buckets.
+ * Both steps are stable, so the result is the unique sorted order with
+ * ties in input order: it cannot depend on the number of threads.  Only
+ * bits that vary are sorted on, so scenes whose keys differ in fewer bits
+ * sort in fewer passes.
+ *
+ * Parallel shape (as on a GPU): for the MSD pass each thread owns a fixed
+ * contiguous block of the input, counts digits in it, an exclusive scan
+ * over (digit, block) gives each block its output offsets, and each block
+ * scatters in order; buckets are then independent items.
+ *
+ * Measured on the dragon's 871,414 keys, one thread, this machine: 8 plain
+ * LSD passes took ~300 ms (random stores into 512 streams, TLB-bound); this
+ * scheme ~45 ms.
  */
 #include "config.h"
 
@@ -16,10 +26,12 @@
 
 #include <string.h>
 
-#define RADIX_BITS 8
-#define RADIX (1u << RADIX_BITS)
-#define KEY_BITS 64
 #define MAX_BLOCKS 256
+#define MSD_MAX_BITS 11
+#define BUCKET_TARGET 1024u
+#define INSERTION_MAX 48u
+#define LSD_BITS 8
+#define LSD_RADIX (1u << LSD_BITS)
 
 /* The [lo, hi) range of block b of `blocks` over n items. */
 static void block_range(uint32_t n, int b, int blocks, uint32_t *lo,
@@ -29,88 +41,183 @@ static void block_range(uint32_t n, int b, int blocks, uint32_t *lo,
     *hi = (uint32_t)((uint64_t)n * (uint64_t)(b + 1) / (uint64_t)blocks);
 }
 
+static int highest_bit(uint64_t x)
+{
+    int h = 63;
+    while (h > 0 && !(x >> h))
+        h--;
+    return h;
+}
+
+/* Stable insertion sort of k/v[0..n) on the bits in `mask`. */
+static void insertion_sort(uint64_t *k, uint32_t *v, uint32_t n, uint64_t mask)
+{
+    uint32_t i;
+    for (i = 1; i < n; i++) {
+        const uint64_t key = k[i], m = key & mask;
+        const uint32_t val = v[i];
+        uint32_t j = i;
+        while (j > 0 && (k[j - 1] & mask) > m) {
+            k[j] = k[j - 1];
+            v[j] = v[j - 1];
+            j--;
+        }
+        k[j] = key;
+        v[j] = val;
+    }
+}
+
+/* Sorts the bucket in (k, v) on the bits in `mask`, using (tk, tv) as
+ * scratch; the result ends in (out_k, out_v), which is one of the two. */
+static void sort_bucket(uint64_t *k, uint32_t *v, uint64_t *tk, uint32_t *tv,
+                        uint32_t n, uint64_t mask, uint64_t *out_k,
+                        uint32_t *out_v)
+{
+    uint64_t varying = 0;
+    uint32_t i;
+    int shift;
+    for (i = 1; i < n; i++)
+        varying |= k[i] ^ k[0];
+    varying &= mask;
+    if (varying && n <= INSERTION_MAX) {
+        insertion_sort(k, v, n, mask);
+    } else if (varying) {
+        for (shift = 0; shift < 64; shift += LSD_BITS) {
+            uint32_t c[LSD_RADIX], total = 0;
+            unsigned d;
+            if (!((varying >> shift) & (LSD_RADIX - 1)))
+                continue;
+            memset(c, 0, sizeof c);
+            for (i = 0; i < n; i++)
+                c[(k[i] >> shift) & (LSD_RADIX - 1)]++;
+            for (d = 0; d < LSD_RADIX; d++) {
+                uint32_t t = c[d];
+                c[d] = total;
+                total += t;
+            }
+            for (i = 0; i < n; i++) {
+                uint32_t o = c[(k[i] >> shift) & (LSD_RADIX - 1)]++;
+                tk[o] = k[i];
+                tv[o] = v[i];
+            }
+            {
+                uint64_t *x = k;
+                uint32_t *y = v;
+                k = tk;
+                v = tv;
+                tk = x;
+                tv = y;
+            }
+        }
+    }
+    if (k != out_k) {
+        memcpy(out_k, k, (size_t)n * sizeof *k);
+        memcpy(out_v, v, (size_t)n * sizeof *v);
+    }
+}
+
 atrbvh_status __atrbvh_radix_sort(uint64_t *keys, uint32_t *values,
                                   uint64_t *tmp_keys, uint32_t *tmp_values,
                                   uint32_t n, int threads)
 {
-    uint32_t(*counts)[RADIX]; /* counts[block][digit], then offsets */
-    uint64_t *src_k = keys, *dst_k = tmp_keys;
-    uint32_t *src_v = values, *dst_v = tmp_values;
-    int blocks, shift;
-    uint64_t varying = 0;
-    uint32_t i;
+    uint32_t *counts, *start;
+    uint64_t varying = 0, low_mask;
+    int blocks, top, bits, shift;
+    uint32_t buckets, target;
+    int64_t i;
 
     if (n < 2)
         return ATRBVH_OK;
     blocks = threads < 1 ? 1 : threads > MAX_BLOCKS ? MAX_BLOCKS : threads;
     if ((uint32_t)blocks > n)
         blocks = (int)n;
-    counts = __atrbvh_alloc_array((size_t)blocks, sizeof *counts);
-    if (!counts)
-        return ATRBVH_ERR_NOMEM;
 
-    /* Which bits vary at all: or of every key xor the first. */
-    for (i = 1; i < n; i++)
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(blocks) schedule(static) \
+    reduction(| : varying)
+#endif
+    for (i = 1; i < (int64_t)n; i++)
         varying |= keys[i] ^ keys[0];
+    if (!varying)
+        return ATRBVH_OK; /* all keys equal: the input order is sorted */
 
-    for (shift = 0; shift < KEY_BITS; shift += RADIX_BITS) {
-        uint32_t total = 0;
-        if (!((varying >> shift) & (RADIX - 1)))
-            continue;
+    /* MSD digit: the top `bits` varying bit positions, enough for buckets
+     * of about BUCKET_TARGET items. */
+    top = highest_bit(varying);
+    bits = 1;
+    for (target = n / BUCKET_TARGET; target > 1 && bits < MSD_MAX_BITS;
+         target >>= 1)
+        bits++;
+    if (bits > top + 1)
+        bits = top + 1;
+    shift = top + 1 - bits;
+    buckets = 1u << bits;
+    low_mask = shift ? (((uint64_t)1 << shift) - 1) : 0;
+
+    counts = __atrbvh_alloc_array((size_t)blocks * buckets, sizeof *counts);
+    start = __atrbvh_alloc_array((size_t)buckets + 1, sizeof *start);
+    if (!counts || !start) {
+        __atrbvh_free(counts);
+        __atrbvh_free(start);
+        return ATRBVH_ERR_NOMEM;
+    }
+
 #ifdef _OPENMP
 #pragma omp parallel num_threads(blocks)
 #endif
-        {
-            int b;
+    {
+        int b;
+        int64_t bk;
 #ifdef _OPENMP
 #pragma omp for schedule(static, 1)
 #endif
-            for (b = 0; b < blocks; b++) {
-                uint32_t lo, hi, j;
-                block_range(n, b, blocks, &lo, &hi);
-                memset(counts[b], 0, sizeof counts[b]);
-                for (j = lo; j < hi; j++)
-                    counts[b][(src_k[j] >> shift) & (RADIX - 1)]++;
-            }
+        for (b = 0; b < blocks; b++) {
+            uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
+            block_range(n, b, blocks, &lo, &hi);
+            memset(c, 0, buckets * sizeof *c);
+            for (j = lo; j < hi; j++)
+                c[(keys[j] >> shift) & (buckets - 1)]++;
+        }
 #ifdef _OPENMP
 #pragma omp single
 #endif
-            {
-                unsigned d;
-                int bb;
-                for (d = 0; d < RADIX; d++)
-                    for (bb = 0; bb < blocks; bb++) {
-                        uint32_t t = counts[bb][d];
-                        counts[bb][d] = total;
-                        total += t;
-                    }
+        {
+            uint32_t d, total = 0;
+            int bb;
+            for (d = 0; d < buckets; d++) {
+                start[d] = total;
+                for (bb = 0; bb < blocks; bb++) {
+                    uint32_t t = counts[(size_t)bb * buckets + d];
+                    counts[(size_t)bb * buckets + d] = total;
+                    total += t;
+                }
             }
+            start[buckets] = total;
+        }
 #ifdef _OPENMP
 #pragma omp for schedule(static, 1)
 #endif
-            for (b = 0; b < blocks; b++) {
-                uint32_t lo, hi, j;
-                block_range(n, b, blocks, &lo, &hi);
-                for (j = lo; j < hi; j++) {
-                    uint32_t o = counts[b][(src_k[j] >> shift) & (RADIX - 1)]++;
-                    dst_k[o] = src_k[j];
-                    dst_v[o] = src_v[j];
-                }
+        for (b = 0; b < blocks; b++) {
+            uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
+            block_range(n, b, blocks, &lo, &hi);
+            for (j = lo; j < hi; j++) {
+                uint32_t o = c[(keys[j] >> shift) & (buckets - 1)]++;
+                tmp_keys[o] = keys[j];
+                tmp_values[o] = values[j];
             }
         }
-        {
-            uint64_t *tk = src_k;
-            uint32_t *tv = src_v;
-            src_k = dst_k;
-            src_v = dst_v;
-            dst_k = tk;
-            dst_v = tv;
+        /* Buckets are independent; the result lands back in keys/values. */
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 16)
+#endif
+        for (bk = 0; bk < (int64_t)buckets; bk++) {
+            const uint32_t s = start[bk], len = start[bk + 1] - s;
+            if (len)
+                sort_bucket(tmp_keys + s, tmp_values + s, keys + s,
+                            values + s, len, low_mask, keys + s, values + s);
         }
     }
-    if (src_k != keys) {
-        memcpy(keys, src_k, (size_t)n * sizeof *keys);
-        memcpy(values, src_v, (size_t)n * sizeof *values);
-    }
     __atrbvh_free(counts);
+    __atrbvh_free(start);
     return ATRBVH_OK;
 }
