@@ -93,7 +93,7 @@ void cli_build_text(FILE *f, const cli_build_args *a, const cli_built *b);
 /* --quality presets (docs/benchmarks.md has the measurements behind
  * them): fast = LBVH, balanced = ATRBVH(9,2), high = ATRBVH with these.
  * 1 and the method, treelet size and rounds for a known name, else 0. */
-#define CLI_QUALITY_HIGH_TREELET 16u
+#define CLI_QUALITY_HIGH_TREELET 20u
 #define CLI_QUALITY_HIGH_ROUNDS 3u
 int cli_quality_preset(const char *name, atrbvh_method *m, unsigned *treelet,
                        unsigned *rounds);

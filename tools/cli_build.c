@@ -24,7 +24,7 @@ void cli_build_options_help(FILE *f)
           "  --method lbvh|trbvh|atrbvh  construction method (default "
           "atrbvh)\n"
           "  --quality fast|balanced|high  a preset: LBVH, ATRBVH(9,2), "
-          "ATRBVH(16,3)\n"
+          "ATRBVH(20,3)\n"
           "                       (later --method/--treelet/--rounds "
           "override it)\n"
           "  --treelet N          treelet size (default: trbvh 7, atrbvh 9)\n"
