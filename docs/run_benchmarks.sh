@@ -2,12 +2,14 @@
 # docs/run_benchmarks.sh [PART...] - regenerates the measurements, plots and
 # tables of docs/benchmarks.md.  PART: machine, main, sweep, scaling,
 # tables (default: all, in that order).  Run from anywhere after the build
-# in _build/ (BUILDDIR=... to use another); scenes from ../shared/scenes
-# (ATRBVH_SCENES=... to use others).  Needs gnuplot and python3.
+# in _build/ (BUILDDIR=... to use another); scenes from ../shared/scenes,
+# or ../../shared/scenes from a worktree (ATRBVH_SCENES=... to use others).  Needs gnuplot and python3.
 set -eu
 cd "$(dirname "$0")/.."
 TOOL=${BUILDDIR:-_build}/tools/atrbvh
 S=${ATRBVH_SCENES:-../shared/scenes}
+# a worktree of the repository sits one level deeper
+[ -d "$S" ] || [ -n "${ATRBVH_SCENES:-}" ] || S=../../shared/scenes
 OUT=docs/bench
 SCENES="$S/bunny.ply $S/sibenik.ply $S/dabrovic_sponza.ply $S/conference.ply $S/dragon.ply"
 # The machine these ran on is shared (load average above its core count):

@@ -769,6 +769,7 @@ static int plot_scene(const char *dir, const char *spec, const row *rows,
     FILE *f, *g;
     const row **front;
     int i, nf = 0, pass;
+    const char *base = strrchr(spec, '/') ? strrchr(spec, '/') + 1 : spec;
     scene_tag(spec, tag, sizeof tag);
     snprintf(name, sizeof name, "bench-%s.dat", tag);
     if (!(f = open_in(dir, name, path, sizeof path)))
@@ -783,9 +784,13 @@ static int plot_scene(const char *dir, const char *spec, const row *rows,
                 continue;
             config_label(&rows[i].c, rows[i].treelet, rows[i].rounds, label,
                          sizeof label);
-            fprintf(f, "\"%s\" %.6g %.9g %.6g\n", label, rows[i].build_ms,
-                    rows[i].sah,
-                    isfinite(rows[i].total_mrays) ? rows[i].total_mrays : 0.0);
+            /* column 5: the label drawn; with many points only those on
+             * the front and Embree's */
+            fprintf(f, "\"%s\" %.6g %.9g %.6g \"%s\"\n", label,
+                    rows[i].build_ms, rows[i].sah,
+                    isfinite(rows[i].total_mrays) ? rows[i].total_mrays : 0.0,
+                    n <= 14 || pass || !is_dominated(rows, n, i) ? label
+                                                                 : "");
         }
         fputs("\n\n", f);
     }
@@ -801,7 +806,8 @@ static int plot_scene(const char *dir, const char *spec, const row *rows,
     qsort(front, (size_t)nf, sizeof *front, cmp_row_time);
     fputs("# pareto front\n", f);
     for (i = 0; i < nf; i++)
-        fprintf(f, "\"-\" %.6g %.9g 0\n", front[i]->build_ms, front[i]->sah);
+        fprintf(f, "\"-\" %.6g %.9g 0 \"\"\n", front[i]->build_ms,
+                front[i]->sah);
     free(front);
     if (fclose(f) != 0) {
         cli_error("%s: %s", path, strerror(errno));
@@ -821,13 +827,13 @@ static int plot_scene(const char *dir, const char *spec, const row *rows,
              "rgb '#999999' title 'Pareto front', \\\n"
              "  '' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' "
              "title 'atrbvh', \\\n"
-             "  '' index 0 using 2:3:1 with labels offset 0.6,0.6 left "
+             "  '' index 0 using 2:3:5 with labels offset 0.6,0.6 left "
              "font ',8' noenhanced notitle, \\\n"
              "  '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' "
              "title 'Embree (rtcBuildBVH)', \\\n"
-             "  '' index 1 using 2:3:1 with labels offset 0.6,-0.6 left "
+             "  '' index 1 using 2:3:5 with labels offset 0.6,-0.6 left "
              "font ',8' noenhanced notitle",
-             spec, tag);
+             base, tag);
     {
         char stem[128];
         snprintf(stem, sizeof stem, "pareto-%s", tag);
@@ -844,13 +850,13 @@ static int plot_scene(const char *dir, const char *spec, const row *rows,
                  "set logscale x\nset grid\nset key bottom right\n"
                  "plot 'bench-%s.dat' index 0 using 2:4 with points pt 7 ps "
                  "1.2 lc rgb '#1f77b4' title 'atrbvh', \\\n"
-                 "  '' index 0 using 2:4:1 with labels offset 0.6,0.6 left "
+                 "  '' index 0 using 2:4:5 with labels offset 0.6,0.6 left "
                  "font ',8' noenhanced notitle, \\\n"
                  "  '' index 1 using 2:4 with points pt 5 ps 1.2 lc rgb "
                  "'#d62728' title 'Embree tree, our traverser', \\\n"
-                 "  '' index 1 using 2:4:1 with labels offset 0.6,-0.6 left "
+                 "  '' index 1 using 2:4:5 with labels offset 0.6,-0.6 left "
                  "font ',8' noenhanced notitle",
-                 spec, tag);
+                 base, tag);
         snprintf(stem, sizeof stem, "rays-%s", tag);
         gp_both(g, stem, body);
     }
