@@ -140,7 +140,7 @@ for s in scenes:
         t = num(at, "build_ms") / num(tr, "build_ms")
         q = num(at, "sah") / num(tr, "sah") - 1
         g["atrbvh92"] = "%s: time %.2fx, SAH %+.2f%%" % (
-            "yes" if t <= 0.5 and abs(q) <= 0.01 else "**no**", t, 100 * q)
+            "yes" if t <= 0.5 and q <= 0.01 else "**no**", t, 100 * q)
     el = [e for e in emb if e["method"] == "embree_low"]
     if lb and el:
         sp = num(el[0], "build_ms") / num(lb, "build_ms")

@@ -37,7 +37,7 @@ for part in "$@"; do
         ;;
     main)
         # shellcheck disable=SC2086
-        "$TOOL" bench $SCENES --repeat 3 \
+        "$TOOL" bench $SCENES --repeat 3 --width 320 --height 240 --spp 4 \
             --configs lbvh,trbvh:7:3,atrbvh:9:2,atrbvh:16:2,atrbvh:16:3,atrbvh:24:3,atrbvh:32:6,fast,balanced,high,embree \
             --csv "$OUT/bench.csv" --plot "$OUT" >"$OUT/bench.txt"
         ;;

@@ -115,6 +115,16 @@ run 0 bench "$SCENE" --repeat 1 --no-rays --methods atrbvh,lbvh --treelet 5,7 \
     { [ "$(wc -l <"$T/m.csv")" -eq 7 ] || fail "--methods: $(wc -l <"$T/m.csv") lines, expected 1 + 4 + lbvh + trbvh ref"; }
 checks=$((checks + 1))
 
+# plots, when gnuplot is there
+if command -v gnuplot >/dev/null 2>&1; then
+    run 0 bench "$SCENE" --repeat 1 --width 8 --height 8 --viewpoints 1 \
+        --configs lbvh,atrbvh:5:1 --plot "$T/plots" &&
+        for p in pareto-builtin_sphere_3000.png pareto-builtin_sphere_3000.svg rays-builtin_sphere_3000.png; do
+            [ -s "$T/plots/$p" ] || fail "--plot: no $p ($(ls "$T/plots"))"
+        done
+    checks=$((checks + 1))
+fi
+
 # scaling study
 run 0 bench --scaling builtin:sphere --sizes 1000,3000,9000 --configs lbvh \
     --repeat 1 --csv "$T/s.csv" && grep -q 'N^' "$T/out" ||
