@@ -102,6 +102,8 @@ int cli_quality_preset(const char *name, atrbvh_method *m, unsigned *treelet,
  * after an error line. */
 int cli_png_write(const char *path, unsigned width, unsigned height,
                   const unsigned char *rgb);
+/* 1 when built with libpng. */
+int cli_png_available(void);
 
 /* --------------------------------------------------------- subcommands */
 int cli_build(int argc, char **argv);

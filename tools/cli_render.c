@@ -278,11 +278,11 @@ int cli_render(int argc, char **argv)
     if ((size_t)width * height > MAX_PIXELS)
         return cli_usage("render", "%lux%lu is more than %zu pixels", width,
                          height, MAX_PIXELS);
-#ifndef HAVE_PNG
-    cli_error("render: this atrbvh was built without libpng (configure "
-              "found none), so it cannot write PNG");
-    return CLI_FAIL;
-#else
+    if (!cli_png_available()) {
+        cli_error("render: this atrbvh was built without libpng (configure "
+                  "found none), so it cannot write PNG");
+        return CLI_FAIL;
+    }
     rc = cli_load_and_build(&a, &b);
     if (rc == CLI_OK) {
         size_t pixels = (size_t)width * height, p;
@@ -387,5 +387,4 @@ int cli_render(int argc, char **argv)
     }
     cli_built_free(&b);
     return rc;
-#endif
 }

@@ -14,6 +14,11 @@
 #ifdef HAVE_PNG
 #include <png.h>
 
+int cli_png_available(void)
+{
+    return 1;
+}
+
 static void png_err(png_structp p, png_const_charp msg)
 {
     cli_error("libpng: %s", msg);
@@ -69,6 +74,11 @@ int cli_png_write(const char *path, unsigned width, unsigned height,
 }
 
 #else
+
+int cli_png_available(void)
+{
+    return 0;
+}
 
 int cli_png_write(const char *path, unsigned width, unsigned height,
                   const unsigned char *rgb)
