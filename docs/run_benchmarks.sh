@@ -1,7 +1,7 @@
 #!/bin/sh
 # docs/run_benchmarks.sh [PART...] - regenerates the measurements, plots and
 # tables of docs/benchmarks.md.  PART: machine, main, sweep, scaling,
-# tables (default: all, in that order).  Run from anywhere after the build
+# render, tables (default: all, in that order).  Run from anywhere after the build
 # in _build/ (BUILDDIR=... to use another); scenes from ../shared/scenes,
 # or ../../shared/scenes from a worktree (ATRBVH_SCENES=... to use others).  Needs gnuplot and python3.
 set -eu
@@ -18,7 +18,7 @@ SCENES="$S/bunny.ply $S/sibenik.ply $S/dabrovic_sponza.ply $S/conference.ply $S/
 # needs (docs/benchmarks.md shows both).
 OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 export OMP_WAIT_POLICY
-[ $# -gt 0 ] || set -- machine main sweep scaling tables
+[ $# -gt 0 ] || set -- machine main sweep scaling render tables
 mkdir -p "$OUT"
 for part in "$@"; do
     case $part in
@@ -51,6 +51,15 @@ for part in "$@"; do
         "$TOOL" bench --scaling builtin:sphere "$S/bunny.ply" --repeat 3 \
             --sizes 10000,100000,1000000,3000000,10000000 \
             --csv "$OUT/scaling.csv" --plot "$OUT" >"$OUT/scaling.txt"
+        ;;
+    render)
+        for q in fast balanced high; do
+            "$TOOL" render "$S/conference.ply" --heatmap --heat-top 120 \
+                --quality $q --width 400 --height 300 --viewpoint 2 \
+                -o "$OUT/heat-conference-$q.png" >"$OUT/render-$q.txt"
+        done
+        "$TOOL" render "$S/conference.ply" --width 400 --height 300 \
+            --viewpoint 2 -o "$OUT/shaded-conference.png" >/dev/null
         ;;
     tables)
         echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)" >>"$OUT/machine.txt"

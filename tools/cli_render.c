@@ -182,6 +182,10 @@ static void render_help(FILE *f)
           "  --height H           image height (default 480, at most 16384)\n"
           "  --viewpoint V        camera viewpoint (default 0; see CAMERAS "
           "in atrbvh(1))\n"
+          "  --heat-top N         the heat map's white: N nodes (default: "
+          "the 99th\n"
+          "                       percentile), to compare trees on one "
+          "scale\n"
           "\n",
           f);
     cli_build_options_help(f);
@@ -196,7 +200,7 @@ int cli_render(int argc, char **argv)
 {
     cli_build_args a;
     cli_built b;
-    unsigned long width = 640, height = 480, view = 0;
+    unsigned long width = 640, height = 480, view = 0, heat_top = 0;
     int heatmap = 0, i = 1, rc, dashdash = 0;
     const char *output = NULL;
     if ((rc = cli_help_or_version(argc, argv, render_help)) >= 0)
@@ -233,6 +237,16 @@ int cli_render(int argc, char **argv)
                     return cli_usage("render", "--height: '%s' is not a "
                                      "whole number from 1 to %lu", v,
                                      MAX_SIDE);
+                continue;
+            }
+            if ((r = cli_option("render", argc, argv, &i, "--heat-top",
+                                &v)) != 0) {
+                if (r < 0)
+                    return CLI_USAGE;
+                if (!cli_parse_ulong(v, 1000000ul, &heat_top) ||
+                    heat_top == 0)
+                    return cli_usage("render", "--heat-top: '%s' is not a "
+                                     "whole number from 1 to 1000000", v);
                 continue;
             }
             if ((r = cli_option("render", argc, argv, &i, "--viewpoint",
@@ -364,12 +378,18 @@ int cli_render(int argc, char **argv)
         top = sorted[(size_t)((double)(pixels - 1) * 0.99)];
         if (top == 0)
             top = 1;
+        {
+            unsigned pct = top;
+            if (heat_top)
+                top = (unsigned)heat_top;
         for (p = 0; p < pixels; p++) {
             sum += steps[p];
             if (steps[p] > maxs)
                 maxs = steps[p];
             if (heatmap)
                 heat_color((double)steps[p] / top, rgb + 3 * p);
+        }
+            top = pct;
         }
         if (cli_png_write(output, (unsigned)width, (unsigned)height, rgb) !=
             0) {
