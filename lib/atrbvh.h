@@ -231,6 +231,28 @@ ATRBVH_API const uint32_t *atrbvh_bvh_primitive_indices(const atrbvh_bvh *bvh,
                                                         size_t *count);
 ATRBVH_API void atrbvh_bvh_stats(const atrbvh_bvh *bvh, atrbvh_stats *stats);
 
+/* The device a BVH was built on: "cpu", or the OpenCL device's name. */
+ATRBVH_API const char *atrbvh_bvh_device(const atrbvh_bvh *bvh);
+/* Device time of the i-th kernel of an OpenCL build (from profiling
+ * events, summed over every launch of that kernel): returns 1 and sets
+ * *name ("morton", "sort_count", ...) and *ms, or 0 when i is past the
+ * last (always 0 for CPU builds and loaded BVHs). */
+ATRBVH_API int atrbvh_bvh_kernel_time(const atrbvh_bvh *bvh, size_t i,
+                                      const char **name, double *ms);
+
+/* Builds `geometry` on the CPU and on the OpenCL backend with the same
+ * options (options->backend is ignored) and compares every stage's output
+ * bit for bit: the primitive boxes, the Morton keys, the sorted keys and
+ * order, the topology, boxes, counts and costs after refit and after
+ * optimise, the collapse decisions, and the final node and index arrays.
+ * On ATRBVH_OK, *identical is 1 when everything matches; otherwise 0 and
+ * error->text names the first differing stage and item ("stage refit,
+ * node 1234: box differs ...") with error->status ATRBVH_OK.  A failing
+ * build returns its status (ATRBVH_ERR_UNSUPPORTED without OpenCL). */
+ATRBVH_API atrbvh_status atrbvh_validate_backends(
+    const atrbvh_geometry *geometry, const atrbvh_build_options *options,
+    int *identical, atrbvh_error *error);
+
 /* SAH cost of a node array: (ci * sum of internal areas + ct * sum over
  * leaves of area * count) / root area, areas in double precision.  0 when
  * the root's area is 0 (every box degenerate). */

@@ -21,9 +21,9 @@ static const float *vertex_at(const atrbvh_geometry *g, size_t stride,
 }
 
 /* Validates pointers, strides and counts; fills the effective strides. */
-static atrbvh_status check_geometry(const atrbvh_geometry *g, size_t *vstride,
-                                    size_t *istride, size_t *bstride,
-                                    atrbvh_error *error)
+atrbvh_status __atrbvh_check_geometry(const atrbvh_geometry *g,
+                                     size_t *vstride, size_t *istride,
+                                     size_t *bstride, atrbvh_error *error)
 {
     size_t need, last;
     if (!g)
@@ -104,8 +104,12 @@ static atrbvh_status check_geometry(const atrbvh_geometry *g, size_t *vstride,
     return ATRBVH_OK;
 }
 
-/* Per-primitive problems, in increasing severity for reporting. */
-enum { PRIM_OK = 0, PRIM_NONFINITE = 1, PRIM_BAD_INDEX = 2, PRIM_INVERTED = 3 };
+/* Per-primitive problems, in increasing severity for reporting (the
+ * per-primitive arithmetic is shared/stages.h's, shared with OpenCL). */
+#define PRIM_OK ATRBVH_PRIM_OK
+#define PRIM_NONFINITE ATRBVH_PRIM_NONFINITE
+#define PRIM_BAD_INDEX ATRBVH_PRIM_BAD_INDEX
+#define PRIM_INVERTED ATRBVH_PRIM_INVERTED
 
 /* Box of primitive i.  Returns a PRIM_* code; *bad_value receives the
  * offending vertex index (PRIM_BAD_INDEX). */
@@ -113,20 +117,10 @@ static int prim_box(const atrbvh_geometry *g, size_t vstride, size_t istride,
                     size_t bstride, size_t i, atrbvh_box *out,
                     uint32_t *bad_value)
 {
-    int k, c;
-    if (g->type == ATRBVH_GEOMETRY_BOXES) {
-        const float *b = (const float *)((const char *)g->boxes + i * bstride);
-        for (k = 0; k < 6; k++)
-            if (!isfinite(b[k]))
-                return PRIM_NONFINITE;
-        for (k = 0; k < 3; k++) {
-            if (b[k] > b[k + 3])
-                return PRIM_INVERTED;
-            out->min[k] = b[k];
-            out->max[k] = b[k + 3];
-        }
-        return PRIM_OK;
-    }
+    int c;
+    if (g->type == ATRBVH_GEOMETRY_BOXES)
+        return atrbvh_prim_box_from_box(
+            (const float *)((const char *)g->boxes + i * bstride), out);
     *out = atrbvh_box_empty();
     for (c = 0; c < 3; c++) {
         size_t v;
@@ -143,14 +137,8 @@ static int prim_box(const atrbvh_geometry *g, size_t vstride, size_t istride,
             v = 3 * i + (size_t)c;
         }
         p = vertex_at(g, vstride, v);
-        for (k = 0; k < 3; k++) {
-            if (!isfinite(p[k]))
-                return PRIM_NONFINITE;
-            if (p[k] < out->min[k])
-                out->min[k] = p[k];
-            if (p[k] > out->max[k])
-                out->max[k] = p[k];
-        }
+        if (!atrbvh_box_grow(out, p[0], p[1], p[2]))
+            return PRIM_NONFINITE;
     }
     return PRIM_OK;
 }
@@ -179,7 +167,7 @@ atrbvh_status __atrbvh_bounds(const atrbvh_geometry *g,
     float cmin0, cmin1, cmin2, cmax0, cmax1, cmax2;
 
     memset(out, 0, sizeof *out);
-    st = check_geometry(g, &vstride, &istride, &bstride, error);
+    st = __atrbvh_check_geometry(g, &vstride, &istride, &bstride, error);
     if (st != ATRBVH_OK)
         return st;
     n = g->primitive_count;

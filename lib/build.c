@@ -27,9 +27,28 @@ static void progress(const __atrbvh_config *cfg, atrbvh_stage stage)
                   "cannot allocate " what " for %lu primitives",               \
                   (unsigned long)n)
 
+/* Copies n items of `size` bytes into a new array at *dst (capture). */
+static int capture_copy(void *dst_ptr, const void *src, size_t n, size_t size)
+{
+    void **dst = (void **)dst_ptr;
+    *dst = __atrbvh_alloc_array(n, size);
+    if (!*dst)
+        return 0;
+    memcpy(*dst, src, n * size);
+    return 1;
+}
+
 atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
                            const atrbvh_build_options *options,
                            atrbvh_bvh **out, atrbvh_error *error)
+{
+    return __atrbvh_build_run(geometry, options, out, NULL, error);
+}
+
+atrbvh_status __atrbvh_build_run(const atrbvh_geometry *geometry,
+                                 const atrbvh_build_options *options,
+                                 atrbvh_bvh **out, __atrbvh_capture *cap,
+                                 atrbvh_error *error)
 {
     __atrbvh_config cfg;
     __atrbvh_prims prims;
@@ -40,7 +59,6 @@ atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
     atrbvh_status st;
     double ms[ATRBVH_STAGE_COUNT], t0, t;
     uint32_t n, i;
-    int s;
 
     __atrbvh_clear_error(error);
     memset(&prims, 0, sizeof prims);
@@ -54,8 +72,13 @@ atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
     if (st != ATRBVH_OK)
         return st;
     if (cfg.backend == ATRBVH_BACKEND_OPENCL)
+#ifdef ATRBVH_HAVE_OPENCL
+        return __atrbvh_cl_build(geometry, &cfg, out, cap, error);
+#else
         return __atrbvh_fail(error, ATRBVH_ERR_UNSUPPORTED, (uint64_t)-1,
-                             "this build of atrbvh has no OpenCL backend");
+                             "this build of atrbvh has no OpenCL backend "
+                             "(configure --enable-opencl)");
+#endif
 
     t0 = __atrbvh_now_ms();
     progress(&cfg, ATRBVH_STAGE_BOUNDS);
@@ -65,6 +88,15 @@ atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
     n = prims.count;
     t = __atrbvh_now_ms();
     ms[ATRBVH_STAGE_BOUNDS] = t - t0;
+    if (cap) {
+        cap->n = n;
+        cap->scene = prims.scene;
+        cap->centroids = prims.centroids;
+        if (!capture_copy(&cap->prim_boxes, prims.boxes, n, sizeof *prims.boxes)) {
+            st = NOMEM("the capture");
+            goto fail;
+        }
+    }
 
     progress(&cfg, ATRBVH_STAGE_MORTON);
     keys = __atrbvh_alloc_array(n, sizeof *keys);
@@ -74,6 +106,10 @@ atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
         goto fail;
     }
     __atrbvh_morton(&prims, keys, cfg.threads);
+    if (cap && !capture_copy(&cap->keys, keys, n, sizeof *keys)) {
+        st = NOMEM("the capture");
+        goto fail;
+    }
     ms[ATRBVH_STAGE_MORTON] = __atrbvh_now_ms() - t;
     t = __atrbvh_now_ms();
 
@@ -95,6 +131,11 @@ atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
     __atrbvh_free(tmp_order);
     tmp_keys = NULL;
     tmp_order = NULL;
+    if (cap && (!capture_copy(&cap->sorted_keys, keys, n, sizeof *keys) ||
+                !capture_copy(&cap->order, order, n, sizeof *order))) {
+        st = NOMEM("the capture");
+        goto fail;
+    }
     ms[ATRBVH_STAGE_SORT] = __atrbvh_now_ms() - t;
     t = __atrbvh_now_ms();
 
@@ -108,6 +149,10 @@ atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
     keys = NULL;
     for (i = 0; i < n; i++)
         tree.leaf_prim[i] = prims.ids ? prims.ids[order[i]] : order[i];
+    if (cap && __atrbvh_tree_copy(&cap->hierarchy, &tree) != ATRBVH_OK) {
+        st = NOMEM("the capture");
+        goto fail;
+    }
     ms[ATRBVH_STAGE_HIERARCHY] = __atrbvh_now_ms() - t;
     t = __atrbvh_now_ms();
 
@@ -116,6 +161,10 @@ atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
     __atrbvh_free(order);
     order = NULL;
     __atrbvh_prims_free(&prims);
+    if (cap && __atrbvh_tree_copy(&cap->refit, &tree) != ATRBVH_OK) {
+        st = NOMEM("the capture");
+        goto fail;
+    }
     ms[ATRBVH_STAGE_REFIT] = __atrbvh_now_ms() - t;
     t = __atrbvh_now_ms();
 
@@ -126,6 +175,10 @@ atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
             goto fail;
     }
     ms[ATRBVH_STAGE_OPTIMISE] = __atrbvh_now_ms() - t;
+    if (cap && __atrbvh_tree_copy(&cap->optimise, &tree) != ATRBVH_OK) {
+        st = NOMEM("the capture");
+        goto fail;
+    }
 
     progress(&cfg, ATRBVH_STAGE_COLLAPSE);
     bvh = __atrbvh_bvh_alloc(0, 0);
@@ -134,35 +187,15 @@ atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
         goto fail;
     }
     st = __atrbvh_collapse_layout(&tree, &cfg, bvh, &ms[ATRBVH_STAGE_COLLAPSE],
-                                  &ms[ATRBVH_STAGE_LAYOUT], error);
+                                  &ms[ATRBVH_STAGE_LAYOUT],
+                                  cap ? &cap->collapse_size : NULL, error);
     if (st != ATRBVH_OK)
         goto fail;
     __atrbvh_tree_free(&tree);
 
-    bvh->stats.invalid_skipped = prims.invalid;
-    bvh->stats.ci = cfg.cost.ci;
-    bvh->stats.ct = cfg.cost.ct;
-    bvh->stats.method = cfg.method;
-    bvh->stats.treelet_size = cfg.treelet_size;
-    bvh->stats.rounds = cfg.rounds;
-    bvh->stats.backend = cfg.backend;
-    bvh->stats.threads = cfg.threads;
-    st = __atrbvh_bvh_measure(bvh);
-    if (st != ATRBVH_OK) {
-        st = st == ATRBVH_ERR_NOMEM
-                 ? NOMEM("statistics scratch")
-                 : __atrbvh_fail(error, ATRBVH_ERR_BACKEND, (uint64_t)-1,
-                                 "internal error: the built tree is invalid");
-        goto fail;
-    }
-#ifdef ATRBVH_DEBUG_CHECKS
-    st = __atrbvh_bvh_check(bvh, 1, error);
+    st = __atrbvh_build_finish(bvh, &cfg, prims.invalid, ms, t0, error);
     if (st != ATRBVH_OK)
         goto fail;
-#endif
-    for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
-        bvh->stats.stage_ms[s] = ms[s];
-    bvh->stats.build_ms = __atrbvh_now_ms() - t0;
     *out = bvh;
     return ATRBVH_OK;
 
@@ -175,4 +208,79 @@ fail:
     __atrbvh_tree_free(&tree);
     atrbvh_bvh_free(bvh);
     return st;
+}
+
+atrbvh_status __atrbvh_build_finish(atrbvh_bvh *bvh, const __atrbvh_config *cfg,
+                                    size_t invalid, const double *stage_ms,
+                                    double t0, atrbvh_error *error)
+{
+    atrbvh_status st;
+    int s;
+    bvh->stats.invalid_skipped = invalid;
+    bvh->stats.ci = cfg->cost.ci;
+    bvh->stats.ct = cfg->cost.ct;
+    bvh->stats.method = cfg->method;
+    bvh->stats.treelet_size = cfg->treelet_size;
+    bvh->stats.rounds = cfg->rounds;
+    bvh->stats.backend = cfg->backend;
+    bvh->stats.threads = cfg->threads;
+    st = __atrbvh_bvh_measure(bvh);
+    if (st != ATRBVH_OK)
+        return st == ATRBVH_ERR_NOMEM
+                   ? __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                                   "cannot allocate statistics scratch for "
+                                   "%lu nodes",
+                                   (unsigned long)bvh->node_count)
+                   : __atrbvh_fail(error, ATRBVH_ERR_BACKEND, (uint64_t)-1,
+                                   "internal error: the built tree is "
+                                   "invalid");
+#ifdef ATRBVH_DEBUG_CHECKS
+    st = __atrbvh_bvh_check(bvh, 1, error);
+    if (st != ATRBVH_OK)
+        return st;
+#endif
+    for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
+        bvh->stats.stage_ms[s] = stage_ms[s];
+    bvh->stats.build_ms = __atrbvh_now_ms() - t0;
+    return ATRBVH_OK;
+}
+
+void __atrbvh_bvh_add_kernel_time(atrbvh_bvh *bvh, const char *name,
+                                  double ms)
+{
+    __atrbvh_device_info *d = bvh->device;
+    unsigned k;
+    if (!d)
+        return;
+    for (k = 0; k < d->kernel_count; k++) {
+        if (strcmp(d->kernel_name[k], name) == 0) {
+            d->kernel_ms[k] += ms;
+            return;
+        }
+    }
+    if (d->kernel_count == ATRBVH_MAX_KERNEL_TIMES)
+        return;
+    strncpy(d->kernel_name[k], name, sizeof d->kernel_name[k] - 1);
+    d->kernel_name[k][sizeof d->kernel_name[k] - 1] = '\0';
+    d->kernel_ms[k] = ms;
+    d->kernel_count++;
+}
+
+const char *atrbvh_bvh_device(const atrbvh_bvh *bvh)
+{
+    if (!bvh)
+        return NULL;
+    return bvh->device ? bvh->device->name : "cpu";
+}
+
+int atrbvh_bvh_kernel_time(const atrbvh_bvh *bvh, size_t i, const char **name,
+                           double *ms)
+{
+    if (!bvh || !bvh->device || i >= bvh->device->kernel_count)
+        return 0;
+    if (name)
+        *name = bvh->device->kernel_name[i];
+    if (ms)
+        *ms = bvh->device->kernel_ms[i];
+    return 1;
 }

@@ -20,8 +20,10 @@
 
 #include "internal.h"
 
+#include <string.h>
+
 #define TASK_CUTOFF 4096u
-#define IS_LEAF_FLAG 0x80000000u
+#define IS_LEAF_FLAG ATRBVH_SIZE_LEAF
 
 typedef struct collapse_ctx {
     const __atrbvh_tree *t;
@@ -35,7 +37,6 @@ static void decide(collapse_ctx *c, uint32_t node)
 {
     const __atrbvh_tree *t = c->t;
     uint32_t l, r;
-    int collapsed = 0;
     if (__atrbvh_is_leaf(t, node)) {
         c->size[node] = 1u | IS_LEAF_FLAG;
         return;
@@ -55,14 +56,9 @@ static void decide(collapse_ctx *c, uint32_t node)
         decide(c, l);
         decide(c, r);
     }
-    (void)atrbvh_node_cost(c->p, atrbvh_box_area(t->box[node]),
-                           t->count[node], t->cost[l], t->cost[r],
-                           &collapsed);
-    if (collapsed)
-        c->size[node] = 1u | IS_LEAF_FLAG;
-    else
-        c->size[node] = 1u + (c->size[l] & ~IS_LEAF_FLAG) +
-                        (c->size[r] & ~IS_LEAF_FLAG);
+    c->size[node] = atrbvh_collapse_size(c->p, t->box[node], t->count[node],
+                                         t->cost[l], t->cost[r], c->size[l],
+                                         c->size[r]);
 }
 
 /* Writes the primitives under `node`, left to right, from prims[at]:
@@ -129,7 +125,9 @@ static void emit(collapse_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at)
 atrbvh_status __atrbvh_collapse_layout(const __atrbvh_tree *t,
                                        const __atrbvh_config *cfg,
                                        atrbvh_bvh *bvh, double *collapse_ms,
-                                       double *layout_ms, atrbvh_error *error)
+                                       double *layout_ms,
+                                       uint32_t **capture_size,
+                                       atrbvh_error *error)
 {
     collapse_ctx c;
     double t0 = __atrbvh_now_ms(), t1;
@@ -146,6 +144,16 @@ atrbvh_status __atrbvh_collapse_layout(const __atrbvh_tree *t,
 #endif
     decide(&c, 0);
     node_count = c.size[0] & ~IS_LEAF_FLAG;
+    if (capture_size) {
+        size_t bytes = (2 * (size_t)t->n - 1) * sizeof *c.size;
+        *capture_size = __atrbvh_malloc(bytes);
+        if (!*capture_size) {
+            __atrbvh_free(c.size);
+            return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                                 "cannot allocate the capture");
+        }
+        memcpy(*capture_size, c.size, bytes);
+    }
     t1 = __atrbvh_now_ms();
     *collapse_ms = t1 - t0;
 

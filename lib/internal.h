@@ -8,6 +8,7 @@
 
 #include "atrbvh.h"
 #include "shared/arith.h"
+#include "shared/stages.h"
 
 #include <stddef.h>
 #include <stdint.h>
@@ -76,12 +77,22 @@ typedef struct __atrbvh_prims {
 
 void __atrbvh_prims_free(__atrbvh_prims *p);
 
+/* Validates pointers, strides and counts (no per-primitive check); fills
+ * the effective strides in bytes. */
+atrbvh_status __atrbvh_check_geometry(const atrbvh_geometry *g,
+                                     size_t *vstride, size_t *istride,
+                                     size_t *bstride, atrbvh_error *error);
 /* Validates the geometry and computes boxes (stage "bounds"). */
 atrbvh_status __atrbvh_bounds(const atrbvh_geometry *g,
                               const __atrbvh_config *cfg, __atrbvh_prims *out,
                               atrbvh_error *error);
 
 /* --------------------------------------------------------- morton, sort */
+/* The Morton frame of a centroid box: per axis the low end and the scale
+ * 2^21 / extent (0 for a zero extent), computed once on the host for
+ * every backend. */
+void __atrbvh_morton_frame(const atrbvh_box *centroids, double lo[3],
+                           double scale[3]);
 /* Stage "morton": 63-bit keys of the box centres. */
 void __atrbvh_morton(const __atrbvh_prims *p, uint64_t *keys, int threads);
 /* Stage "sort": stable LSD radix sort of (keys, values) pairs; `tmp_keys`
@@ -139,16 +150,72 @@ atrbvh_status __atrbvh_optimise(__atrbvh_tree *t, const __atrbvh_config *cfg,
 atrbvh_status __atrbvh_collapse_layout(const __atrbvh_tree *t,
                                        const __atrbvh_config *cfg,
                                        atrbvh_bvh *bvh, double *collapse_ms,
-                                       double *layout_ms, atrbvh_error *error);
+                                       double *layout_ms,
+                                       uint32_t **capture_size,
+                                       atrbvh_error *error);
 
 /* ------------------------------------------------------------- the BVH */
+#define ATRBVH_MAX_KERNEL_TIMES 32
 struct atrbvh_bvh {
     atrbvh_node *nodes;
     size_t node_count;
     uint32_t *prim_indices;
     size_t prim_count;
     atrbvh_stats stats;
+    struct __atrbvh_device_info *device; /* NULL unless built by OpenCL */
 };
+
+/* The device and per-kernel device times of an OpenCL build (allocated
+ * separately: CPU builds and loaded files stay small). */
+typedef struct __atrbvh_device_info {
+    char name[128];
+    unsigned kernel_count;
+    char kernel_name[ATRBVH_MAX_KERNEL_TIMES][24];
+    double kernel_ms[ATRBVH_MAX_KERNEL_TIMES];
+} __atrbvh_device_info;
+
+/* ------------------------------------------------------- stage capture */
+/* Copies of every stage's output, filled by __atrbvh_build_run when asked
+ * (atrbvh_validate_backends compares two of them).  Arrays are the
+ * library allocator's; __atrbvh_capture_free releases them. */
+typedef struct __atrbvh_capture {
+    uint32_t n;
+    atrbvh_box *prim_boxes;   /* bounds: n boxes in build order        */
+    atrbvh_box scene, centroids;
+    uint64_t *keys;           /* morton: n keys in build order         */
+    uint64_t *sorted_keys;    /* sort: keys and build indices, sorted  */
+    uint32_t *order;
+    __atrbvh_tree hierarchy;  /* left, right, parent, count, leaf_prim */
+    __atrbvh_tree refit;      /* + box, count, cost                    */
+    __atrbvh_tree optimise;   /* the same after the optimise stage     */
+    uint32_t *collapse_size;  /* collapse: output nodes per subtree    */
+} __atrbvh_capture;
+
+void __atrbvh_capture_free(__atrbvh_capture *c);
+/* A deep copy of a tree (every array), for the capture. */
+atrbvh_status __atrbvh_tree_copy(__atrbvh_tree *dst, const __atrbvh_tree *src);
+
+/* atrbvh_build with an optional capture (NULL: none). */
+atrbvh_status __atrbvh_build_run(const atrbvh_geometry *geometry,
+                                 const atrbvh_build_options *options,
+                                 atrbvh_bvh **out, __atrbvh_capture *capture,
+                                 atrbvh_error *error);
+/* The end of every backend's build: stats from the configuration and the
+ * node array (measure), stage times, the debug check. */
+atrbvh_status __atrbvh_build_finish(atrbvh_bvh *bvh, const __atrbvh_config *cfg,
+                                    size_t invalid, const double *stage_ms,
+                                    double t0, atrbvh_error *error);
+/* Records a kernel time under `name` (added to an existing entry). */
+void __atrbvh_bvh_add_kernel_time(atrbvh_bvh *bvh, const char *name,
+                                  double ms);
+
+#ifdef ATRBVH_HAVE_OPENCL
+/* The OpenCL backend (cl/backend.c): the whole pipeline on a device. */
+atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *geometry,
+                                const __atrbvh_config *cfg, atrbvh_bvh **out,
+                                __atrbvh_capture *capture,
+                                atrbvh_error *error);
+#endif
 
 /* Allocates an empty BVH object with room for the arrays. */
 atrbvh_bvh *__atrbvh_bvh_alloc(size_t node_count, size_t prim_count);

@@ -35,6 +35,7 @@ void atrbvh_bvh_free(atrbvh_bvh *bvh)
         return;
     __atrbvh_free(bvh->nodes);
     __atrbvh_free(bvh->prim_indices);
+    __atrbvh_free(bvh->device);
     __atrbvh_free(bvh);
 }
 

@@ -12,17 +12,23 @@
 
 #include "internal.h"
 
-void __atrbvh_morton(const __atrbvh_prims *p, uint64_t *keys, int threads)
+void __atrbvh_morton_frame(const atrbvh_box *centroids, double lo[3],
+                           double scale[3])
 {
-    double lo[3], scale[3];
     int k;
-    int64_t i;
     for (k = 0; k < 3; k++) {
-        double extent = (double)p->centroids.max[k] - (double)p->centroids.min[k];
-        lo[k] = (double)p->centroids.min[k];
+        double extent = (double)centroids->max[k] - (double)centroids->min[k];
+        lo[k] = (double)centroids->min[k];
         scale[k] = extent > 0.0 ? (double)(1u << ATRBVH_MORTON_BITS) / extent
                                 : 0.0;
     }
+}
+
+void __atrbvh_morton(const __atrbvh_prims *p, uint64_t *keys, int threads)
+{
+    double lo[3], scale[3];
+    int64_t i;
+    __atrbvh_morton_frame(&p->centroids, lo, scale);
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(threads) schedule(static)
 #else

@@ -57,7 +57,6 @@ static void process(const walk_ctx *c, uint32_t node)
 #ifdef _OPENMP
     w += omp_get_thread_num();
 #endif
-    atrbvh_treelet_refresh(&c->t, c->cost, node);
     if (c->method == ATRBVH_METHOD_TRBVH)
         __atrbvh_trbvh_treelet(&c->t, c->cost, node, c->n, w);
     else

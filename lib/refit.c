@@ -18,7 +18,6 @@ static void refit_node(__atrbvh_tree *t, uint32_t node,
                        const atrbvh_cost_params *p)
 {
     uint32_t l, r;
-    int collapsed;
     if (__atrbvh_is_leaf(t, node))
         return;
     l = t->left[node];
@@ -36,11 +35,9 @@ static void refit_node(__atrbvh_tree *t, uint32_t node,
         refit_node(t, l, p);
         refit_node(t, r, p);
     }
-    t->box[node] = atrbvh_box_union(t->box[l], t->box[r]);
-    t->count[node] = t->count[l] + t->count[r];
-    t->cost[node] = atrbvh_node_cost(p, atrbvh_box_area(t->box[node]),
-                                     t->count[node], t->cost[l], t->cost[r],
-                                     &collapsed);
+    atrbvh_refit_node(p, t->box[l], t->count[l], t->cost[l], t->box[r],
+                      t->count[r], t->cost[r], &t->box[node], &t->count[node],
+                      &t->cost[node]);
 }
 
 void __atrbvh_refit(__atrbvh_tree *t, const atrbvh_box *prim_boxes,
@@ -62,7 +59,7 @@ void __atrbvh_refit(__atrbvh_tree *t, const atrbvh_box *prim_boxes,
             const uint32_t leaf = (uint32_t)(n - 1 + i);
             t->box[leaf] = prim_boxes[order[i]];
             t->count[leaf] = 1;
-            t->cost[leaf] = atrbvh_leaf_cost(p, atrbvh_box_area(t->box[leaf]));
+            t->cost[leaf] = atrbvh_refit_leaf_cost(p, t->box[leaf]);
         }
 #ifdef _OPENMP
 #pragma omp single

@@ -71,10 +71,14 @@
 #define WIDEN_DOWN 0.99999964f
 /* Relative slack on the closest-hit distance when pruning (2^-12). */
 #define PRUNE_SLACK (1.0f / 4096.0f)
+/* Relative slack on the near end of a triangle's own box (within_own_box):
+ * covers the float rounding of t (2^-24) with a wide margin. */
+#define OWN_BOX_SLACK (1.0 / 1048576.0)
 
 typedef struct ray_pre {
-    float org[3];
     float idir[3];
+    double orgd[3];  /* the slab tests run in double: see node_hit */
+    double idird[3];
     int sign[3]; /* 1 when idir[k] < 0 (direction -0 included) */
     float tmin, tmax;
     /* watertight triangle test, in double */
@@ -111,8 +115,11 @@ static int ray_setup(const atrbvh_ray *ray, ray_pre *r)
     if (!(ray->tmin <= ray->tmax))
         return 0;
     for (k = 0; k < 3; k++) {
-        r->org[k] = ray->origin[k];
         r->idir[k] = 1.0f / ray->dir[k]; /* +-inf for +-0 */
+        r->orgd[k] = (double)ray->origin[k];
+        /* finite for every nonzero float, subnormals included (a float
+         * reciprocal overflows to inf below 2^-128) */
+        r->idird[k] = 1.0 / (double)ray->dir[k];
         r->sign[k] = r->idir[k] < 0.0f;
         r->o[k] = (double)ray->origin[k];
         ad[k] = fabs((double)ray->dir[k]);
@@ -138,28 +145,50 @@ static int ray_setup(const atrbvh_ray *ray, ray_pre *r)
     return 1;
 }
 
+/* The slab distance (b - o) / d, in double: b - o cannot overflow (it
+ * can in float near FLT_MAX) and 1/d is finite for every nonzero float
+ * direction (in float it overflows for subnormal components, which made
+ * boxes the ray crosses look infinitely far).  A zero direction gives
+ * +-inf, or NaN when b == o (dropped by the comparisons below). */
+static inline double slab_t(float b, const ray_pre *r, int k)
+{
+    return ((double)b - r->orgd[k]) * r->idird[k];
+}
+
+/* double to float for distances: beyond the float range is +-inf. */
+static inline float dist_float(double d)
+{
+    if (d > (double)FLT_MAX)
+        return INFINITY;
+    if (d < -(double)FLT_MAX)
+        return -INFINITY;
+    return (float)d;
+}
+
 /* Conservative ray/node test.  Hit when the slab interval, far end widened,
- * meets [tlo, thi]; *tnear is where it starts. */
+ * meets [tlo, thi]; *tnear is where it starts.  In double the interval is
+ * exact to a few units of 2^-53; widening by the float factor covers that
+ * with a wide margin. */
 static inline int node_hit(const atrbvh_node *n, const ray_pre *r, float tlo,
                            float thi, float *tnear)
 {
-    float lo = -INFINITY, hi = INFINITY;
+    double lo = -INFINITY, hi = INFINITY;
     int k;
     for (k = 0; k < 3; k++) {
         float bn = r->sign[k] ? n->max[k] : n->min[k];
         float bf = r->sign[k] ? n->min[k] : n->max[k];
-        float tn = (bn - r->org[k]) * r->idir[k];
-        float tf = (bf - r->org[k]) * r->idir[k];
+        double tn = slab_t(bn, r, k);
+        double tf = slab_t(bf, r, k);
         /* NaN (0 * inf) fails the comparison and is dropped. */
         lo = tn > lo ? tn : lo;
         hi = tf < hi ? tf : hi;
     }
-    hi = hi * (hi > 0.0f ? WIDEN_UP : WIDEN_DOWN);
-    if (tlo > lo)
+    hi = hi * (hi > 0.0 ? (double)WIDEN_UP : (double)WIDEN_DOWN);
+    if ((double)tlo > lo)
         lo = tlo;
-    if (thi < hi)
+    if ((double)thi < hi)
         hi = thi;
-    *tnear = lo;
+    *tnear = dist_float(lo);
     return lo <= hi;
 }
 
@@ -167,18 +196,18 @@ static inline int node_hit(const atrbvh_node *n, const ray_pre *r, float tlo,
 static inline int box_interval(const float *b, const ray_pre *r, float *t0,
                                float *t1)
 {
-    float lo = -INFINITY, hi = INFINITY;
+    double lo = -INFINITY, hi = INFINITY;
     int k;
     for (k = 0; k < 3; k++) {
         float bn = r->sign[k] ? b[3 + k] : b[k];
         float bf = r->sign[k] ? b[k] : b[3 + k];
-        float tn = (bn - r->org[k]) * r->idir[k];
-        float tf = (bf - r->org[k]) * r->idir[k];
+        double tn = slab_t(bn, r, k);
+        double tf = slab_t(bf, r, k);
         lo = tn > lo ? tn : lo;
         hi = tf < hi ? tf : hi;
     }
-    *t0 = lo;
-    *t1 = hi;
+    *t0 = dist_float(lo);
+    *t1 = dist_float(hi);
     return lo <= hi;
 }
 
@@ -211,6 +240,41 @@ static inline int triangle_vertices(const atrbvh_geometry *g, uint32_t prim,
         load3(base + id[k] * vs, v[k]);
     }
     return 1;
+}
+
+/* Whether distance t lies where the ray crosses the triangle's own box,
+ * both ends widened a little (float rounding of t, a few ulps of the double
+ * slab distances).  A true hit point lies in the triangle, so inside its
+ * box: this only rejects hits the edge functions got wrong, which happens
+ * for slivers mixing coordinates of wildly different magnitudes (1e36 next
+ * to 1e-28: the double edge functions cancel).  It also makes the answer
+ * independent of the tree: every node containing the triangle contains its
+ * box, so a hit accepted here is never behind a node the traversal skips
+ * (found by fuzz_build: tests/fuzz/corpus/build/regress-sliver-*). */
+static inline int within_own_box(float v[3][3], const ray_pre *r, float t)
+{
+    double lo = -INFINITY, hi = INFINITY;
+    int k;
+    for (k = 0; k < 3; k++) {
+        float mn = v[0][k], mx = v[0][k];
+        double tn, tf;
+        if (v[1][k] < mn)
+            mn = v[1][k];
+        if (v[2][k] < mn)
+            mn = v[2][k];
+        if (v[1][k] > mx)
+            mx = v[1][k];
+        if (v[2][k] > mx)
+            mx = v[2][k];
+        tn = slab_t(r->sign[k] ? mx : mn, r, k);
+        tf = slab_t(r->sign[k] ? mn : mx, r, k);
+        /* NaN (0 * inf: origin on the plane of a zero direction) drops */
+        lo = tn > lo ? tn : lo;
+        hi = tf < hi ? tf : hi;
+    }
+    hi = hi * (hi > 0.0 ? (double)WIDEN_UP : (double)WIDEN_DOWN);
+    lo = lo * (lo > 0.0 ? 1.0 - OWN_BOX_SLACK : 1.0 + OWN_BOX_SLACK);
+    return (double)t >= lo && (double)t <= hi;
 }
 
 /* Watertight ray/triangle test (Woop, Benthin, Wald 2013), in double.
@@ -250,7 +314,7 @@ static inline int triangle_hit(float v[3][3], const ray_pre *r,
     if (!(fabs(tt) <= (double)FLT_MAX))
         return 0;
     *t = (float)tt;
-    if (!(fabsf(*t) <= FLT_MAX))
+    if (!(fabsf(*t) <= FLT_MAX) || !within_own_box(v, r, *t))
         return 0;
     *u = (float)(e1 / det);
     *w = (float)(e2 / det);

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "testutil.h"
 
@@ -235,8 +236,12 @@ START_TEST(strings_and_version)
 END_TEST
 
 /* Fails allocation k for k = 0, 1, 2, ... until the build succeeds; every
- * failure must be ATRBVH_ERR_NOMEM with nothing left allocated. */
-static void fail_each_allocation(atrbvh_method m, int skip, int threads)
+ * failure must be ATRBVH_ERR_NOMEM with nothing left allocated.  `leaf`:
+ * 0 no collapse, 1 collapse, 2 collapse with at most 3 per leaf.  On a
+ * backend this build does not have (ATRBVH_ERR_UNSUPPORTED before any
+ * allocation) there is nothing to test. */
+static void fail_each_allocation_on(atrbvh_backend backend, atrbvh_method m,
+                                    int skip, int threads, int leaf)
 {
     enum { T = 3000 };
     float *v = tu_random_triangles(T, 11, 1.0f, 0.0f);
@@ -247,6 +252,9 @@ static void fail_each_allocation(atrbvh_method m, int skip, int threads)
     o.method = m;
     o.skip_invalid = skip;
     o.threads = threads;
+    o.backend = backend;
+    o.collapse = leaf != 0;
+    o.max_leaf_size = leaf == 2 ? 3 : 0;
     if (skip)
         v[9 * 17] = NAN;
     atrbvh_set_allocator(count_malloc, count_free);
@@ -258,7 +266,14 @@ static void fail_each_allocation(atrbvh_method m, int skip, int threads)
         countdown = k;
         s = atrbvh_build(&g, &o, &b, &e);
         countdown = -1;
+        if (s == ATRBVH_ERR_UNSUPPORTED && backend != ATRBVH_BACKEND_CPU &&
+            k == 0) {
+            ck_assert_int_eq(outstanding, 0);
+            break;
+        }
         if (s == ATRBVH_OK) {
+            char msg[256];
+            ck_assert_msg(tu_check_bvh(b, &g, msg, sizeof msg), "%s", msg);
             atrbvh_bvh_free(b);
             ck_assert_int_eq(outstanding, 0);
             break;
@@ -270,9 +285,15 @@ static void fail_each_allocation(atrbvh_method m, int skip, int threads)
                       outstanding);
         ck_assert_int_gt((int)strlen(e.text), 0);
     }
-    ck_assert_int_gt(k, 5); /* the loop really failed several allocations */
+    if (backend == ATRBVH_BACKEND_CPU)
+        ck_assert_int_gt(k, 5); /* the loop really failed several */
     atrbvh_set_allocator(NULL, NULL);
     free(v);
+}
+
+static void fail_each_allocation(atrbvh_method m, int skip, int threads)
+{
+    fail_each_allocation_on(ATRBVH_BACKEND_CPU, m, skip, threads, 1);
 }
 
 START_TEST(allocation_failure)
@@ -281,6 +302,86 @@ START_TEST(allocation_failure)
     fail_each_allocation(ATRBVH_METHOD_LBVH, 1, 2);
     fail_each_allocation(ATRBVH_METHOD_TRBVH, 0, 2);
     fail_each_allocation(ATRBVH_METHOD_ATRBVH, 0, 3);
+}
+END_TEST
+
+/* Every method, collapse off / on / max leaf 3, on every backend. */
+START_TEST(allocation_failure_all)
+{
+    static const atrbvh_backend backends[] = {ATRBVH_BACKEND_CPU,
+                                              ATRBVH_BACKEND_OPENCL};
+    int m = _i % 3, leaf = _i / 3;
+    size_t be;
+    for (be = 0; be < sizeof backends / sizeof *backends; be++)
+        fail_each_allocation_on(backends[be], (atrbvh_method)m, leaf == 1,
+                                1 + (_i % 2), leaf);
+}
+END_TEST
+
+/* Loads: every allocation of atrbvh_load_memory and atrbvh_load fails in
+ * turn; each failure is ATRBVH_ERR_NOMEM, names itself, and frees
+ * everything; save_memory likewise. */
+START_TEST(allocation_failure_load)
+{
+    enum { T = 500 };
+    float *v = tu_random_triangles(T, 12, 1.0f, 0.0f);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * T, NULL, T);
+    atrbvh_build_options o;
+    atrbvh_bvh *b, *l;
+    void *data = NULL;
+    size_t size = 0;
+    char path[256];
+    const char *tmp = getenv("TMPDIR");
+    int pass;
+    long k;
+    atrbvh_error e;
+    atrbvh_build_options_init(&o);
+    o.threads = 2;
+    v[9 * 3 + 1] = NAN;
+    o.skip_invalid = 1; /* input count != index count in the file */
+    b = tu_build(&g, &o);
+    snprintf(path, sizeof path, "%s/atrbvh_errors_%ld.bvh",
+             tmp && *tmp ? tmp : "/tmp", (long)getpid());
+    ck_assert_int_eq(atrbvh_save(b, path, &e), ATRBVH_OK);
+    atrbvh_set_allocator(count_malloc, count_free);
+    for (pass = 0; pass < 3; pass++) {
+        for (k = 0;; k++) {
+            atrbvh_status s;
+            outstanding = 0;
+            countdown = k;
+            l = NULL;
+            if (pass == 0) {
+                s = atrbvh_save_memory(b, &data, &size, &e);
+            } else if (pass == 1) {
+                s = atrbvh_load_memory(data, size, &l, &e);
+            } else {
+                s = atrbvh_load(path, &l, &e);
+            }
+            countdown = -1;
+            if (s == ATRBVH_OK) {
+                if (pass == 0) {
+                    ck_assert_int_eq(outstanding, 1);
+                } else {
+                    ck_assert_int_eq(atrbvh_compare(b, l, &e), 0);
+                    atrbvh_bvh_free(l);
+                    ck_assert_int_eq(outstanding, 0);
+                }
+                break;
+            }
+            ck_assert_msg(s == ATRBVH_ERR_NOMEM, "pass %d allocation %ld: %s",
+                          pass, k, e.text);
+            ck_assert_ptr_null(l);
+            ck_assert_msg(outstanding == 0, "pass %d allocation %ld: %ld "
+                          "leaked", pass, k, outstanding);
+            ck_assert_msg(strstr(e.text, "memory") != NULL, "%s", e.text);
+        }
+        ck_assert_int_gt(k, 0);
+    }
+    atrbvh_free(data);
+    atrbvh_set_allocator(NULL, NULL);
+    remove(path);
+    atrbvh_bvh_free(b);
+    free(v);
 }
 END_TEST
 
@@ -298,6 +399,8 @@ int main(void)
     tcase_add_test(tc, bad_options);
     tcase_add_test(tc, strings_and_version);
     tcase_add_test(tc, allocation_failure);
+    tcase_add_loop_test(tc, allocation_failure_all, 0, 9);
+    tcase_add_test(tc, allocation_failure_load);
     suite_add_tcase(s, tc);
     sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);

@@ -575,6 +575,80 @@ START_TEST(obj_empty_and_nan)
 }
 END_TEST
 
+/* Binary/ASCII mismatches and huge polygons (issue 6). */
+START_TEST(format_mismatch_and_huge_polygons)
+{
+    static const char vxyz[] = "element vertex 3\nproperty float x\n"
+                               "property float y\nproperty float z\n"
+                               "element face 1\n"
+                               "property list uchar int vertex_indices\n"
+                               "end_header\n";
+    static const char body[] = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    char text[1024];
+    size_t i, n, len;
+    char *big;
+    scene s;
+    /* declared binary, ASCII body: 12 bytes per vertex read as floats,
+     * then a list count of '3' (0x33) runs past the end */
+    snprintf(text, sizeof text, "ply\nformat binary_little_endian 1.0\n%s%s",
+             vxyz, body);
+    EXPECT_ERROR(write_text("bin_ascii.ply", text), "bin_ascii.ply",
+                 "byte offset");
+    /* declared ASCII, binary body */
+    {
+        unsigned char raw[1024];
+        size_t h;
+        float f[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+        snprintf(text, sizeof text, "ply\nformat ascii 1.0\n%s", vxyz);
+        h = strlen(text);
+        memcpy(raw, text, h);
+        memcpy(raw + h, f, sizeof f);
+        EXPECT_ERROR(write_file("ascii_bin.ply", raw, h + sizeof f),
+                     "ascii_bin.ply", "line 10");
+    }
+    /* a 200000-gon (ASCII PLY, uint count) and a 100000-gon (OBJ): fan
+     * triangulated, every index checked */
+    n = 200000;
+    big = malloc(64 + 20 * n);
+    ck_assert_ptr_nonnull(big);
+    len = (size_t)sprintf(big, "ply\nformat ascii 1.0\nelement vertex %zu\n"
+                          "property float x\nproperty float y\n"
+                          "property float z\nelement face 1\n"
+                          "property list uint int vertex_indices\n"
+                          "end_header\n", n);
+    for (i = 0; i < n; i++)
+        len += (size_t)sprintf(big + len, "%zu %zu 0\n", i % 1000, i / 1000);
+    len += (size_t)sprintf(big + len, "%zu", n);
+    for (i = 0; i < n; i++)
+        len += (size_t)sprintf(big + len, " %zu", i);
+    big[len++] = '\n';
+    load_ok(write_file("poly.ply", big, len), &s);
+    ck_assert_uint_eq(s.triangle_count, n - 2);
+    scene_free(&s);
+    n = 100000;
+    len = 0;
+    for (i = 0; i < n; i++)
+        len += (size_t)sprintf(big + len, "v %zu 0 %zu\n", i % 1000, i / 1000);
+    len += (size_t)sprintf(big + len, "f");
+    for (i = 0; i < n; i++)
+        len += (size_t)sprintf(big + len, " %zu", n - i);
+    big[len++] = '\n';
+    load_ok(write_file("poly.obj", big, len), &s);
+    ck_assert_uint_eq(s.triangle_count, n - 2);
+    scene_free(&s);
+    /* the same polygon with one index out of range: refused, named */
+    big[len - 2] = '0';
+    EXPECT_ERROR(write_file("poly_bad.obj", big, len), "poly_bad.obj",
+                 "out of range");
+    free(big);
+    /* empty and whitespace-only files */
+    EXPECT_ERROR(write_text("ws.ply", "\n\n"), "ws.ply", "line 1");
+    load_ok(write_text("ws.obj", "\n  \n# nothing\n"), &s);
+    ck_assert_uint_eq(s.triangle_count, 0);
+    scene_free(&s);
+}
+END_TEST
+
 START_TEST(scene_load_dispatch)
 {
     EXPECT_ERROR("scene.stl", "scene.stl", "unknown scene type");
@@ -855,6 +929,7 @@ int main(void)
     tcase_add_test(obj, obj_cube);
     tcase_add_test(obj, obj_forms);
     tcase_add_test(obj, obj_hostile);
+    tcase_add_test(obj, format_mismatch_and_huge_polygons);
     tcase_add_test(obj, obj_empty_and_nan);
     tcase_add_test(obj, scene_load_dispatch);
     suite_add_tcase(s, obj);

@@ -110,6 +110,7 @@ int cli_build(int argc, char **argv);
 int cli_trace(int argc, char **argv);
 int cli_info(int argc, char **argv);
 int cli_compare(int argc, char **argv);
+int cli_validate(int argc, char **argv);
 int cli_bench(int argc, char **argv);
 int cli_render(int argc, char **argv);
 

@@ -38,6 +38,10 @@ void cli_build_options_help(FILE *f)
           "  --ci X               SAH cost of an internal node (default "
           "1.2)\n"
           "  --ct X               SAH cost of a primitive (default 1.0)\n"
+          "  --backend cpu|opencl compute backend (default cpu)\n"
+          "  --device SPEC        OpenCL device: PLATFORM:DEVICE indices or a\n"
+          "                       name substring (default $ATRBVH_OPENCL_DEVICE,\n"
+          "                       else the first device)\n"
           "  --skip-invalid       leave out triangles with NaN or infinite\n"
           "                       coordinates (counted) instead of failing\n"
           "  -o, --output FILE    save the BVH to FILE (see atrbvh(5))\n"
@@ -96,6 +100,25 @@ int cli_build_option(const char *cmd, int argc, char **argv, int *i,
         a->options.method = m;
         a->options.treelet_size = t;
         a->options.rounds = rr;
+        return 1;
+    }
+    if ((r = cli_option(cmd, argc, argv, i, "--backend", &v)) != 0) {
+        if (r < 0)
+            return -1;
+        if (strcmp(v, "cpu") == 0)
+            a->options.backend = ATRBVH_BACKEND_CPU;
+        else if (strcmp(v, "opencl") == 0)
+            a->options.backend = ATRBVH_BACKEND_OPENCL;
+        else {
+            cli_usage(cmd, "--backend: '%s' is not cpu or opencl", v);
+            return -1;
+        }
+        return 1;
+    }
+    if ((r = cli_option(cmd, argc, argv, i, "--device", &v)) != 0) {
+        if (r < 0)
+            return -1;
+        a->options.opencl_device = v;
         return 1;
     }
     /* Values the tool can represent are passed on, and the library
@@ -280,6 +303,7 @@ void cli_build_json(json_writer *w, const cli_build_args *a,
     json_kv_uint(w, "treelet_size", s->treelet_size);
     json_kv_uint(w, "rounds", s->rounds);
     json_kv_string(w, "backend", backend_name(s->backend));
+    json_kv_string(w, "device", atrbvh_bvh_device(b->bvh));
     json_kv_int(w, "threads", s->threads);
     json_kv_bool(w, "collapse", a->options.collapse != 0);
     json_kv_uint(w, "max_leaf_size", a->options.max_leaf_size);
@@ -298,6 +322,18 @@ void cli_build_json(json_writer *w, const cli_build_args *a,
         json_kv_double(w, atrbvh_stage_name((atrbvh_stage)k),
                        s->stage_ms[k]);
     json_end_object(w);
+    if (s->backend == ATRBVH_BACKEND_OPENCL) {
+        /* Device time per kernel (OpenCL profiling events, summed over
+         * launches); stages_ms above are the stages' wall times. */
+        const char *name;
+        double ms;
+        size_t i;
+        json_key(w, "kernels_ms");
+        json_begin_object(w);
+        for (i = 0; atrbvh_bvh_kernel_time(b->bvh, i, &name, &ms); i++)
+            json_kv_double(w, name, ms);
+        json_end_object(w);
+    }
     if (a->output)
         json_kv_string(w, "output", a->output);
 }
@@ -313,8 +349,12 @@ void cli_build_text(FILE *f, const cli_build_args *a, const cli_built *b)
     if (s->method != ATRBVH_METHOD_LBVH)
         fprintf(f, " (treelet %u, %u rounds)", s->treelet_size, s->rounds);
     fputc('\n', f);
-    fprintf(f, "backend          %s, %d thread%s\n", backend_name(s->backend),
-            s->threads, s->threads == 1 ? "" : "s");
+    if (s->backend == ATRBVH_BACKEND_OPENCL)
+        fprintf(f, "backend          opencl, %s\n", atrbvh_bvh_device(b->bvh));
+    else
+        fprintf(f, "backend          %s, %d thread%s\n",
+                backend_name(s->backend), s->threads,
+                s->threads == 1 ? "" : "s");
     fprintf(f, "collapse         %s", a->options.collapse ? "yes" : "no");
     if (a->options.collapse && a->options.max_leaf_size)
         fprintf(f, " (at most %u per leaf)", a->options.max_leaf_size);

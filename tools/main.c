@@ -163,6 +163,9 @@ static void usage(FILE *f)
           "second\n"
           "  info FILE                statistics of a saved BVH file\n"
           "  compare A B              compare two saved BVH files\n"
+          "  validate SCENE [OPTIONS] build on the CPU and on OpenCL and "
+          "compare\n"
+          "                           every stage's output\n"
           "  bench [SCENE...]         build time, SAH, memory and rays per "
           "second of\n"
           "                           many configurations, beside Embree; "
@@ -193,6 +196,7 @@ int main(int argc, char **argv)
                     {"trace", cli_trace},
                     {"info", cli_info},
                     {"compare", cli_compare},
+                    {"validate", cli_validate},
                     {"bench", cli_bench},
                     {"render", cli_render}};
     size_t k;

@@ -512,4 +512,43 @@ ATRBVH_FN void atrbvh_treelet_refresh(const atrbvh_treelet_tree *t,
                                      t->cost[t->right[node]], &collapsed);
 }
 
+/* ------------------------------------------------------------ one treelet */
+/* Restructures the treelet rooted at internal node `root` (whose subtree
+ * must be final): refreshes the root's cost from its children, forms the
+ * treelet, builds a topology (TRBVH subset DP, or ATRBVH agglomerative
+ * clustering when `agglomerative`), and writes it back when it is
+ * strictly cheaper.  Returns 1 when written back.  The CPU driver
+ * (optimise.c) and the OpenCL kernel (cl/kernels.cl) both call this; only
+ * the scratch (`s` for TRBVH, `dist` for ATRBVH) and the walk differ. */
+ATRBVH_FN int atrbvh_treelet_process(const atrbvh_treelet_tree *t,
+                                     const atrbvh_cost_params *p,
+                                     atrbvh_u32 root, atrbvh_u32 n,
+                                     int agglomerative,
+                                     atrbvh_trbvh_scratch s,
+                                     ATRBVH_GLOBAL double *dist)
+{
+    atrbvh_treelet tl;
+    atrbvh_treelet_leaves lv;
+    atrbvh_treelet_topo topo;
+    double found, cost;
+    atrbvh_treelet_refresh(t, p, root);
+    if (atrbvh_treelet_form(t, root, n, &tl) < 3u)
+        return 0;
+    atrbvh_treelet_gather(t, &tl, &lv);
+    /* A quick reject: the DP's optimum (and the agglomerative root merge)
+     * is what evaluate recomputes (the same sums in the same order), so
+     * nothing strictly cheaper exists when it finds none. */
+    if (agglomerative)
+        found = atrbvh_agglomerate(p, tl.n, &lv, dist, &topo);
+    else
+        found = atrbvh_trbvh_dp(p, tl.n, &lv, s, &topo);
+    if (!(found < t->cost[root]))
+        return 0;
+    cost = atrbvh_treelet_evaluate(p, tl.n, &lv, &topo);
+    if (!(cost < t->cost[root]))
+        return 0;
+    atrbvh_treelet_write(t, &tl, &topo);
+    return 1;
+}
+
 #endif

@@ -1,0 +1,220 @@
+/*
+ * validate.c - stage capture and atrbvh_validate_backends: build on the CPU
+ * and on OpenCL, compare every stage's output, name the first difference.
+ */
+#include "config.h"
+
+#include "internal.h"
+
+#include <stdio.h>
+#include <string.h>
+
+void __atrbvh_capture_free(__atrbvh_capture *c)
+{
+    __atrbvh_free(c->prim_boxes);
+    __atrbvh_free(c->keys);
+    __atrbvh_free(c->sorted_keys);
+    __atrbvh_free(c->order);
+    __atrbvh_free(c->collapse_size);
+    __atrbvh_tree_free(&c->hierarchy);
+    __atrbvh_tree_free(&c->refit);
+    __atrbvh_tree_free(&c->optimise);
+    memset(c, 0, sizeof *c);
+}
+
+atrbvh_status __atrbvh_tree_copy(__atrbvh_tree *dst, const __atrbvh_tree *src)
+{
+    size_t n = src->n, nodes = 2 * n - 1, inner = n > 1 ? n - 1 : 1;
+    if (__atrbvh_tree_alloc(dst, src->n) != ATRBVH_OK)
+        return ATRBVH_ERR_NOMEM;
+    memcpy(dst->left, src->left, inner * sizeof *dst->left);
+    memcpy(dst->right, src->right, inner * sizeof *dst->right);
+    memcpy(dst->parent, src->parent, nodes * sizeof *dst->parent);
+    memcpy(dst->count, src->count, nodes * sizeof *dst->count);
+    memcpy(dst->box, src->box, nodes * sizeof *dst->box);
+    memcpy(dst->cost, src->cost, nodes * sizeof *dst->cost);
+    memcpy(dst->leaf_prim, src->leaf_prim, n * sizeof *dst->leaf_prim);
+    return ATRBVH_OK;
+}
+
+#ifdef ATRBVH_HAVE_OPENCL
+static void box_text(char *buf, size_t size, const atrbvh_box *b)
+{
+    snprintf(buf, size, "[%.9g %.9g %.9g]-[%.9g %.9g %.9g]", b->min[0],
+             b->min[1], b->min[2], b->max[0], b->max[1], b->max[2]);
+}
+
+static int box_differs(atrbvh_error *e, const char *stage, const char *what,
+                       size_t i, const atrbvh_box *a, const atrbvh_box *b)
+{
+    char ta[160], tb[160];
+    if (memcmp(a, b, sizeof *a) == 0)
+        return 0;
+    box_text(ta, sizeof ta, a);
+    box_text(tb, sizeof tb, b);
+    __atrbvh_fail(e, ATRBVH_OK, i, "stage %s, %s %lu: box differs (cpu %s, "
+                  "opencl %s)", stage, what, (unsigned long)i, ta, tb);
+    return 1;
+}
+
+#define U32_DIFF(stage, what, field, i, a, b)                                  \
+    if ((a) != (b)) {                                                          \
+        __atrbvh_fail(e, ATRBVH_OK, (uint64_t)(i),                             \
+                      "stage %s, %s %lu: %s differs (cpu %lu, opencl %lu)",    \
+                      stage, what, (unsigned long)(i), field,                  \
+                      (unsigned long)(a), (unsigned long)(b));                 \
+        return 1;                                                              \
+    }
+
+/* Topology (left, right, parent), counts, leaf primitives, and with
+ * `values` boxes and costs. */
+static int tree_differs(atrbvh_error *e, const char *stage,
+                        const __atrbvh_tree *a, const __atrbvh_tree *b,
+                        int values)
+{
+    size_t n = a->n, i;
+    for (i = 0; i + 1 < n; i++) {
+        U32_DIFF(stage, "node", "left child", i, a->left[i], b->left[i]);
+        U32_DIFF(stage, "node", "right child", i, a->right[i], b->right[i]);
+    }
+    for (i = 0; i < 2 * n - 1; i++) {
+        U32_DIFF(stage, "node", "parent", i, a->parent[i], b->parent[i]);
+        U32_DIFF(stage, "node", "count", i, a->count[i], b->count[i]);
+        if (!values)
+            continue;
+        if (box_differs(e, stage, "node", i, &a->box[i], &b->box[i]))
+            return 1;
+        if (memcmp(&a->cost[i], &b->cost[i], sizeof(double)) != 0) {
+            __atrbvh_fail(e, ATRBVH_OK, i,
+                          "stage %s, node %lu: cost differs (cpu %.17g, "
+                          "opencl %.17g)",
+                          stage, (unsigned long)i, a->cost[i], b->cost[i]);
+            return 1;
+        }
+    }
+    for (i = 0; i < n; i++)
+        U32_DIFF(stage, "leaf", "primitive", i, a->leaf_prim[i],
+                 b->leaf_prim[i]);
+    return 0;
+}
+
+static int captures_differ(atrbvh_error *e, const __atrbvh_capture *a,
+                           const atrbvh_bvh *ba, const __atrbvh_capture *b,
+                           const atrbvh_bvh *bb)
+{
+    size_t n = a->n, i;
+    U32_DIFF("bounds", "scene", "primitive count", 0, a->n, b->n);
+    if (box_differs(e, "bounds", "scene box", 0, &a->scene, &b->scene) ||
+        box_differs(e, "bounds", "centroid box", 0, &a->centroids,
+                    &b->centroids))
+        return 1;
+    for (i = 0; i < n; i++)
+        if (box_differs(e, "bounds", "primitive", i, &a->prim_boxes[i],
+                        &b->prim_boxes[i]))
+            return 1;
+    for (i = 0; i < n; i++)
+        if (a->keys[i] != b->keys[i]) {
+            __atrbvh_fail(e, ATRBVH_OK, i,
+                          "stage morton, primitive %lu: key differs (cpu "
+                          "%016llx, opencl %016llx)",
+                          (unsigned long)i, (unsigned long long)a->keys[i],
+                          (unsigned long long)b->keys[i]);
+            return 1;
+        }
+    for (i = 0; i < n; i++) {
+        if (a->sorted_keys[i] != b->sorted_keys[i]) {
+            __atrbvh_fail(e, ATRBVH_OK, i,
+                          "stage sort, position %lu: key differs (cpu "
+                          "%016llx, opencl %016llx)",
+                          (unsigned long)i,
+                          (unsigned long long)a->sorted_keys[i],
+                          (unsigned long long)b->sorted_keys[i]);
+            return 1;
+        }
+        U32_DIFF("sort", "position", "primitive", i, a->order[i], b->order[i]);
+    }
+    if (tree_differs(e, "hierarchy", &a->hierarchy, &b->hierarchy, 0) ||
+        tree_differs(e, "refit", &a->refit, &b->refit, 1))
+        return 1;
+    if (tree_differs(e, "optimise", &a->optimise, &b->optimise, 1))
+        return 1;
+    for (i = 0; i < 2 * n - 1; i++)
+        U32_DIFF("collapse", "node", "output size", i,
+                 a->collapse_size[i] & ATRBVH_SIZE_MASK,
+                 b->collapse_size[i] & ATRBVH_SIZE_MASK);
+    for (i = 0; i < 2 * n - 1; i++)
+        U32_DIFF("collapse", "node", "leaf decision", i,
+                 a->collapse_size[i] >> 31, b->collapse_size[i] >> 31);
+    U32_DIFF("layout", "array", "node count", 0, ba->node_count,
+             bb->node_count);
+    for (i = 0; i < ba->node_count; i++) {
+        const atrbvh_node *x = &ba->nodes[i], *y = &bb->nodes[i];
+        atrbvh_box bx, by;
+        memcpy(bx.min, x->min, sizeof bx.min);
+        memcpy(bx.max, x->max, sizeof bx.max);
+        memcpy(by.min, y->min, sizeof by.min);
+        memcpy(by.max, y->max, sizeof by.max);
+        if (box_differs(e, "layout", "output node", i, &bx, &by))
+            return 1;
+        U32_DIFF("layout", "output node", "index", i, x->index, y->index);
+        U32_DIFF("layout", "output node", "count", i, x->count, y->count);
+    }
+    for (i = 0; i < ba->prim_count; i++)
+        U32_DIFF("layout", "index array entry", "primitive", i,
+                 ba->prim_indices[i], bb->prim_indices[i]);
+    return 0;
+}
+
+#endif
+
+atrbvh_status atrbvh_validate_backends(const atrbvh_geometry *geometry,
+                                       const atrbvh_build_options *options,
+                                       int *identical, atrbvh_error *error)
+{
+    atrbvh_build_options o;
+#ifdef ATRBVH_HAVE_OPENCL
+    __atrbvh_capture ca, cb;
+    atrbvh_bvh *ba = NULL, *bb = NULL;
+    atrbvh_status st;
+#endif
+
+    __atrbvh_clear_error(error);
+    if (!identical)
+        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "the output pointer is NULL");
+    *identical = 0;
+    atrbvh_build_options_init(&o);
+    if (options) {
+        size_t size = options->size < sizeof o ? options->size : sizeof o;
+        if (size < sizeof(size_t))
+            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+                                 (uint64_t)-1, "options.size is %lu",
+                                 (unsigned long)options->size);
+        memcpy(&o, options, size);
+        o.size = sizeof o;
+    }
+#ifndef ATRBVH_HAVE_OPENCL
+    (void)geometry;
+    return __atrbvh_fail(error, ATRBVH_ERR_UNSUPPORTED, (uint64_t)-1,
+                         "this build of atrbvh has no OpenCL backend "
+                         "(configure --enable-opencl)");
+#else
+    memset(&ca, 0, sizeof ca);
+    memset(&cb, 0, sizeof cb);
+    o.backend = ATRBVH_BACKEND_CPU;
+    st = __atrbvh_build_run(geometry, &o, &ba, &ca, error);
+    if (st == ATRBVH_OK) {
+        o.backend = ATRBVH_BACKEND_OPENCL;
+        st = __atrbvh_build_run(geometry, &o, &bb, &cb, error);
+    }
+    if (st == ATRBVH_OK) {
+        __atrbvh_clear_error(error);
+        *identical = !captures_differ(error, &ca, ba, &cb, bb);
+    }
+    atrbvh_bvh_free(ba);
+    atrbvh_bvh_free(bb);
+    __atrbvh_capture_free(&ca);
+    __atrbvh_capture_free(&cb);
+    return st;
+#endif
+}

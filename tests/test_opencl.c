@@ -1,0 +1,411 @@
+/*
+ * test_opencl.c - the OpenCL backend against the CPU reference, stage by
+ * stage (atrbvh_validate_backends compares the captured output of every
+ * stage bit for bit), on generated scenes, the extremes, and the scenes of
+ * $ATRBVH_SCENES; the error paths.  Every test skips, saying so, when no
+ * OpenCL device (or no OpenCL support) is there.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <check.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "atrbvh.h"
+#include "testutil.h"
+
+static int have_device = -1;
+static char why_not[ATRBVH_ERROR_TEXT_LENGTH];
+
+/* 1 when an OpenCL build of one box works; else 0, reason in why_not. */
+static int device_available(void)
+{
+    if (have_device < 0) {
+        static const float box[6] = {0, 0, 0, 1, 1, 1};
+        atrbvh_geometry g = atrbvh_geometry_boxes(box, 1);
+        atrbvh_build_options o;
+        atrbvh_bvh *b = NULL;
+        atrbvh_error e;
+        atrbvh_status st;
+        atrbvh_build_options_init(&o);
+        o.backend = ATRBVH_BACKEND_OPENCL;
+        st = atrbvh_build(&g, &o, &b, &e);
+        have_device = st == ATRBVH_OK;
+        if (!have_device)
+            snprintf(why_not, sizeof why_not, "%s", e.text);
+        atrbvh_bvh_free(b);
+    }
+    return have_device;
+}
+
+#define REQUIRE_DEVICE()                                                       \
+    do {                                                                       \
+        if (!device_available()) {                                             \
+            fprintf(stderr, "SKIP %s: no OpenCL device (%s)\n", __func__,      \
+                    why_not);                                                  \
+            return;                                                            \
+        }                                                                      \
+    } while (0)
+
+/* One configuration of the matrix. */
+typedef struct config {
+    atrbvh_method method;
+    unsigned treelet, rounds;
+    int collapse;
+} config;
+
+static void expect_identical(const atrbvh_geometry *g, const config *c,
+                             const char *what)
+{
+    atrbvh_build_options o;
+    atrbvh_error e;
+    atrbvh_status st;
+    int identical = 0;
+    atrbvh_build_options_init(&o);
+    o.method = c->method;
+    o.treelet_size = c->treelet;
+    o.rounds = c->rounds;
+    o.collapse = c->collapse;
+    o.threads = 2;
+    st = atrbvh_validate_backends(g, &o, &identical, &e);
+    ck_assert_msg(st == ATRBVH_OK, "%s: validate failed: %s", what, e.text);
+    ck_assert_msg(identical,
+                  "%s (method %d, treelet %u, rounds %u, collapse %d): %s",
+                  what, (int)c->method, c->treelet, c->rounds, c->collapse,
+                  e.text);
+}
+
+/* The whole matrix of the issue: lbvh; trbvh n in {5,7,8}; atrbvh n in
+ * {4,9,16,32}; rounds 1..3; with and without collapse. */
+static size_t full_matrix(config *out)
+{
+    static const unsigned tr[] = {5, 7, 8}, at[] = {4, 9, 16, 32};
+    size_t k = 0, i;
+    unsigned r;
+    int col;
+    for (col = 0; col < 2; col++) {
+        config c = {ATRBVH_METHOD_LBVH, 0, 0, col};
+        out[k++] = c;
+        for (r = 1; r <= 3; r++) {
+            for (i = 0; i < 3; i++) {
+                config t = {ATRBVH_METHOD_TRBVH, tr[i], r, col};
+                out[k++] = t;
+            }
+            for (i = 0; i < 4; i++) {
+                config a = {ATRBVH_METHOD_ATRBVH, at[i], r, col};
+                out[k++] = a;
+            }
+        }
+    }
+    return k;
+}
+
+/* A small sample: one configuration of each kind. */
+static const config sample[] = {
+    {ATRBVH_METHOD_LBVH, 0, 0, 1},   {ATRBVH_METHOD_TRBVH, 7, 3, 1},
+    {ATRBVH_METHOD_TRBVH, 5, 1, 0},  {ATRBVH_METHOD_ATRBVH, 9, 2, 1},
+    {ATRBVH_METHOD_ATRBVH, 32, 1, 0}};
+#define SAMPLE_COUNT (sizeof sample / sizeof sample[0])
+
+/* ------------------------------------------------------------ generated */
+START_TEST(generated_full_matrix)
+{
+    config m[64];
+    size_t k, count;
+    float *v;
+    atrbvh_geometry g;
+    REQUIRE_DEVICE();
+    v = tu_random_triangles(1500, 42, 10.0f, -5.0f);
+    g = atrbvh_geometry_triangles(v, 4500, NULL, 1500);
+    count = full_matrix(m);
+    for (k = 0; k < count; k++)
+        expect_identical(&g, &m[k], "1500 random triangles");
+    free(v);
+}
+END_TEST
+
+START_TEST(generated_builtin_scenes)
+{
+    static const char *names[] = {"builtin:sphere:20000", "builtin:terrain:20000",
+                                  "builtin:city:20000"};
+    size_t s, k;
+    REQUIRE_DEVICE();
+    for (s = 0; s < 3; s++) {
+        scene sc;
+        char err[256];
+        atrbvh_geometry g;
+        ck_assert_msg(scene_load(names[s], &sc, err, sizeof err) == 0, "%s",
+                      err);
+        g = scene_geometry(&sc);
+        for (k = 0; k < SAMPLE_COUNT; k++)
+            expect_identical(&g, &sample[k], names[s]);
+        scene_free(&sc);
+    }
+}
+END_TEST
+
+/* ------------------------------------------------------------- extremes */
+static void extreme(const float *v, size_t tris, const char *what)
+{
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * tris, NULL, tris);
+    size_t k;
+    for (k = 0; k < SAMPLE_COUNT; k++)
+        expect_identical(&g, &sample[k], what);
+}
+
+START_TEST(extremes_flat_and_coincident)
+{
+    enum { N = 600 };
+    float *v = tu_random_triangles(N, 7, 4.0f, -2.0f);
+    float *w = malloc(sizeof(float) * 9 * N);
+    size_t i, k;
+    int axes;
+    REQUIRE_DEVICE();
+    ck_assert_ptr_nonnull(w);
+    /* Flat on 1, 2 and 3 axes (a plane, a line, a point). */
+    for (axes = 1; axes <= 3; axes++) {
+        char what[64];
+        memcpy(w, v, sizeof(float) * 9 * N);
+        for (i = 0; i < 3 * N; i++)
+            for (k = 0; k < (size_t)axes; k++)
+                w[3 * i + 2 - k] = 1.5f;
+        snprintf(what, sizeof what, "flat on %d axes", axes);
+        extreme(w, N, what);
+    }
+    /* Coincident centroids: triangles symmetric about (1, 2, 3). */
+    for (i = 0; i < N; i++) {
+        float dx = v[9 * i], dy = v[9 * i + 1], dz = v[9 * i + 2];
+        float c[3] = {1.0f, 2.0f, 3.0f}, d[3];
+        d[0] = dx;
+        d[1] = dy;
+        d[2] = dz;
+        for (k = 0; k < 3; k++) {
+            w[9 * i + k] = c[k] - d[k];
+            w[9 * i + 3 + k] = c[k] + d[k];
+            w[9 * i + 6 + k] = c[k];
+        }
+    }
+    extreme(w, N, "coincident centroids");
+    /* Identical triangles. */
+    for (i = 0; i < N; i++)
+        memcpy(w + 9 * i, v, 9 * sizeof(float));
+    extreme(w, N, "identical triangles");
+    /* One and two primitives. */
+    extreme(v, 1, "one triangle");
+    extreme(v, 2, "two triangles");
+    free(v);
+    free(w);
+}
+END_TEST
+
+START_TEST(extremes_boxes_and_invalid)
+{
+    enum { N = 300 };
+    float b[6 * N], *v;
+    size_t i, k;
+    tu_rng r;
+    atrbvh_geometry g;
+    atrbvh_build_options o;
+    atrbvh_error e1, e2;
+    atrbvh_bvh *x = NULL, *y = NULL;
+    atrbvh_status s1, s2;
+    int identical = 0;
+    REQUIRE_DEVICE();
+    tu_rng_seed(&r, 3);
+    for (i = 0; i < N; i++)
+        for (k = 0; k < 3; k++) {
+            float lo = tu_rng_float(&r) * 100.0f - 50.0f;
+            b[6 * i + k] = lo;
+            b[6 * i + 3 + k] = lo + tu_rng_float(&r) * (k == 1 ? 0.0f : 3.0f);
+        }
+    g = atrbvh_geometry_boxes(b, N);
+    for (k = 0; k < SAMPLE_COUNT; k++)
+        expect_identical(&g, &sample[k], "boxes, flat in y");
+
+    /* NaN primitives: the same error as the CPU, and with skip_invalid the
+     * same compaction (the host bounds path) and tree. */
+    v = tu_random_triangles(500, 11, 1.0f, 0.0f);
+    v[9 * 123 + 4] = 0.0f / 0.0f;
+    v[9 * 321 + 0] = 1.0f / 0.0f;
+    g = atrbvh_geometry_triangles(v, 1500, NULL, 500);
+    atrbvh_build_options_init(&o);
+    s1 = atrbvh_build(&g, &o, &x, &e1);
+    o.backend = ATRBVH_BACKEND_OPENCL;
+    s2 = atrbvh_build(&g, &o, &y, &e2);
+    ck_assert_int_eq(s1, ATRBVH_ERR_NONFINITE);
+    ck_assert_int_eq(s2, s1);
+    ck_assert_str_eq(e1.text, e2.text);
+    ck_assert(e1.index == 123 && e2.index == 123);
+    o.skip_invalid = 1;
+    ck_assert_int_eq(atrbvh_validate_backends(&g, &o, &identical, &e1),
+                     ATRBVH_OK);
+    ck_assert_msg(identical, "skip_invalid: %s", e1.text);
+    free(v);
+}
+END_TEST
+
+/* ---------------------------------------------------------- real scenes */
+START_TEST(real_scenes)
+{
+    char *paths[32];
+    size_t n = tu_scene_paths(paths, 32), s, k;
+    REQUIRE_DEVICE();
+    if (n == 0) {
+        fprintf(stderr, "SKIP real_scenes: no scenes in $ATRBVH_SCENES (%s)\n",
+                getenv("ATRBVH_SCENES") ? getenv("ATRBVH_SCENES") : "unset");
+        return;
+    }
+    for (s = 0; s < n; s++) {
+        scene sc;
+        char err[256];
+        atrbvh_geometry g;
+        ck_assert_msg(scene_load(paths[s], &sc, err, sizeof err) == 0, "%s",
+                      err);
+        g = scene_geometry(&sc);
+        /* Large scenes (dragon) get one configuration, the default
+         * (atrbvh 9, 2 rounds, collapse); the others the sample. */
+        for (k = 0; k < SAMPLE_COUNT; k++) {
+            if (sc.triangle_count > 300000 && k != 3)
+                continue;
+            expect_identical(&g, &sample[k], paths[s]);
+        }
+        scene_free(&sc);
+    }
+    tu_free_paths(paths, n);
+}
+END_TEST
+
+/* --------------------------------------------------------------- errors */
+START_TEST(bad_device_string)
+{
+    static const float box[6] = {0, 0, 0, 1, 1, 1};
+    atrbvh_geometry g = atrbvh_geometry_boxes(box, 1);
+    atrbvh_build_options o;
+    atrbvh_bvh *b = (atrbvh_bvh *)&o;
+    atrbvh_error e;
+    atrbvh_status st;
+    REQUIRE_DEVICE();
+    atrbvh_build_options_init(&o);
+    o.backend = ATRBVH_BACKEND_OPENCL;
+    o.opencl_device = "no such device, surely";
+    st = atrbvh_build(&g, &o, &b, &e);
+    ck_assert_int_eq(st, ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_ptr_null(b);
+    ck_assert_msg(strstr(e.text, "no device matches"), "%s", e.text);
+    o.opencl_device = "7:7";
+    st = atrbvh_build(&g, &o, &b, &e);
+    ck_assert_int_eq(st, ATRBVH_ERR_INVALID_ARGUMENT);
+    o.opencl_device = "0:0";
+    st = atrbvh_build(&g, &o, &b, &e);
+    ck_assert_int_eq(st, ATRBVH_OK);
+    ck_assert_ptr_nonnull(atrbvh_bvh_device(b));
+    ck_assert_str_ne(atrbvh_bvh_device(b), "cpu");
+    atrbvh_bvh_free(b);
+}
+END_TEST
+
+START_TEST(broken_kernel_source)
+{
+    static const float box[6] = {0, 0, 0, 1, 1, 1};
+    atrbvh_geometry g = atrbvh_geometry_boxes(box, 1);
+    atrbvh_build_options o;
+    atrbvh_bvh *b = NULL;
+    atrbvh_error e;
+    atrbvh_status st;
+    char dir[] = "/tmp/atrbvh-cl-XXXXXX", path[64];
+    FILE *f;
+    REQUIRE_DEVICE();
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/kernels.cl", dir);
+    f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs("__kernel void bounds_boxes(__global float *x)\n"
+          "{\n    x[0] = this_is_not_defined;\n}\n",
+          f);
+    fclose(f);
+    setenv("ATRBVH_CL_SOURCE_DIR", dir, 1);
+    atrbvh_build_options_init(&o);
+    o.backend = ATRBVH_BACKEND_OPENCL;
+    st = atrbvh_build(&g, &o, &b, &e);
+    unsetenv("ATRBVH_CL_SOURCE_DIR");
+    remove(path);
+    rmdir(dir);
+    ck_assert_int_eq(st, ATRBVH_ERR_BACKEND);
+    ck_assert_ptr_null(b);
+    ck_assert_msg(strstr(e.text, "kernel build failed"), "%s", e.text);
+    /* The compiler log: the file and the undeclared name. */
+    ck_assert_msg(strstr(e.text, "kernels.cl"), "%s", e.text);
+    ck_assert_msg(strstr(e.text, "this_is_not_defined"), "%s", e.text);
+}
+END_TEST
+
+START_TEST(kernel_times_and_device)
+{
+    float *v = tu_random_triangles(2000, 5, 1.0f, 0.0f);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 6000, NULL, 2000);
+    atrbvh_build_options o;
+    atrbvh_bvh *b = NULL, *c = NULL;
+    const char *name;
+    double ms;
+    size_t i;
+    int seen_sort = 0;
+    char msg[256];
+    REQUIRE_DEVICE();
+    atrbvh_build_options_init(&o);
+    o.backend = ATRBVH_BACKEND_OPENCL;
+    b = tu_build(&g, &o);
+    ck_assert_msg(tu_check_bvh(b, &g, msg, sizeof msg), "%s", msg);
+    for (i = 0; atrbvh_bvh_kernel_time(b, i, &name, &ms); i++) {
+        ck_assert(ms >= 0.0);
+        seen_sort |= strcmp(name, "sort_scatter") == 0;
+    }
+    ck_assert(seen_sort);
+    o.backend = ATRBVH_BACKEND_CPU;
+    c = tu_build(&g, &o);
+    ck_assert_str_eq(atrbvh_bvh_device(c), "cpu");
+    ck_assert_int_eq(atrbvh_bvh_kernel_time(c, 0, &name, &ms), 0);
+    ck_assert_msg(tu_same_bvh(b, c, msg, sizeof msg), "%s", msg);
+    atrbvh_bvh_free(b);
+    atrbvh_bvh_free(c);
+    free(v);
+}
+END_TEST
+
+static Suite *opencl_suite(void)
+{
+    Suite *s = suite_create("opencl");
+    TCase *tc;
+    tc = tcase_create("generated");
+    tcase_add_test(tc, generated_full_matrix);
+    tcase_add_test(tc, generated_builtin_scenes);
+    tcase_set_timeout(tc, 300);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("extremes");
+    tcase_add_test(tc, extremes_flat_and_coincident);
+    tcase_add_test(tc, extremes_boxes_and_invalid);
+    tcase_set_timeout(tc, 300);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("scenes");
+    tcase_add_test(tc, real_scenes);
+    tcase_set_timeout(tc, 600);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("errors");
+    tcase_add_test(tc, bad_device_string);
+    tcase_add_test(tc, broken_kernel_source);
+    tcase_add_test(tc, kernel_times_and_device);
+    tcase_set_timeout(tc, 120);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    SRunner *sr = srunner_create(opencl_suite());
+    int failed;
+    srunner_run_all(sr, CK_ENV);
+    failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed ? 1 : 0;
+}
