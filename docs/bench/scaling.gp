@@ -1,16 +1,16 @@
 set terminal pngcairo size 900,600 font 'sans,10'
 set output 'scaling.png'
-set title 'Build time against triangle count (log-log; dotted: N^1 through the first point of each series)'
+set title 'Build time against triangle count (log-log)'
 set xlabel 'triangles'
 set ylabel 'build time, ms'
 set logscale xy
 set grid
 set key top left
 set format x '10^{%L}'
-plot 'scaling.dat' index 0 using 1:2 with linespoints lw 2 title 'builtin:sphere LBVH: N^{0.99}', \
-  'scaling.dat' index 1 using 1:2 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): N^{0.99}', \
-  'scaling.dat' index 2 using 1:2 with linespoints lw 2 title '../../shared/scenes/bunny.ply LBVH: N^{1.04}', \
-  'scaling.dat' index 3 using 1:2 with linespoints lw 2 title '../../shared/scenes/bunny.ply ATRBVH(9,2): N^{0.94}'
+plot 'scaling.dat' index 0 using 1:2 with linespoints lw 2 title 'builtin:sphere LBVH: N^{0.98}', \
+  'scaling.dat' index 1 using 1:2 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): N^{1.06}', \
+  'scaling.dat' index 2 using 1:2 with linespoints lw 2 title 'bunny.ply LBVH: N^{1.00}', \
+  'scaling.dat' index 3 using 1:2 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): N^{0.93}'
 set terminal svg size 900,600 dynamic font 'sans,10'
 set output 'scaling.svg'
 replot
@@ -18,7 +18,7 @@ unset output
 reset
 set terminal pngcairo size 900,600 font 'sans,10'
 set output 'scaling-stages.png'
-set title 'Build time per stage, ../../shared/scenes/bunny.ply ATRBVH(9,2): N^{0.94} (log-log)'
+set title 'Build time per stage, bunny.ply ATRBVH(9,2): N^{0.93} (log-log)'
 set xlabel 'triangles'
 set ylabel 'ms'
 set logscale xy
@@ -48,10 +48,10 @@ set grid
 set key top right
 set yrange [0:*]
 set format x '10^{%L}'
-plot 'scaling.dat' index 0 using 1:11 with linespoints lw 2 title 'builtin:sphere LBVH: N^{0.99}', \
-  'scaling.dat' index 1 using 1:11 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): N^{0.99}', \
-  'scaling.dat' index 2 using 1:11 with linespoints lw 2 title '../../shared/scenes/bunny.ply LBVH: N^{1.04}', \
-  'scaling.dat' index 3 using 1:11 with linespoints lw 2 title '../../shared/scenes/bunny.ply ATRBVH(9,2): N^{0.94}'
+plot 'scaling.dat' index 0 using 1:11 with linespoints lw 2 title 'builtin:sphere LBVH: N^{0.98}', \
+  'scaling.dat' index 1 using 1:11 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): N^{1.06}', \
+  'scaling.dat' index 2 using 1:11 with linespoints lw 2 title 'bunny.ply LBVH: N^{1.00}', \
+  'scaling.dat' index 3 using 1:11 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): N^{0.93}'
 set terminal svg size 900,600 dynamic font 'sans,10'
 set output 'scaling-memory.svg'
 replot
