@@ -90,11 +90,28 @@ void cli_build_json(json_writer *w, const cli_build_args *a,
                     const cli_built *b);
 void cli_build_text(FILE *f, const cli_build_args *a, const cli_built *b);
 
+/* --quality presets (docs/benchmarks.md has the measurements behind
+ * them): fast = LBVH, balanced = ATRBVH(9,2), high = ATRBVH with these.
+ * 1 and the method, treelet size and rounds for a known name, else 0. */
+#define CLI_QUALITY_HIGH_TREELET 20u
+#define CLI_QUALITY_HIGH_ROUNDS 3u
+int cli_quality_preset(const char *name, atrbvh_method *m, unsigned *treelet,
+                       unsigned *rounds);
+
+/* An 8-bit RGB PNG (libpng; without HAVE_PNG always fails).  0, or -1
+ * after an error line. */
+int cli_png_write(const char *path, unsigned width, unsigned height,
+                  const unsigned char *rgb);
+/* 1 when built with libpng. */
+int cli_png_available(void);
+
 /* --------------------------------------------------------- subcommands */
 int cli_build(int argc, char **argv);
 int cli_trace(int argc, char **argv);
 int cli_info(int argc, char **argv);
 int cli_compare(int argc, char **argv);
 int cli_validate(int argc, char **argv);
+int cli_bench(int argc, char **argv);
+int cli_render(int argc, char **argv);
 
 #endif

@@ -23,6 +23,10 @@ void cli_build_options_help(FILE *f)
     fputs("Build options:\n"
           "  --method lbvh|trbvh|atrbvh  construction method (default "
           "atrbvh)\n"
+          "  --quality fast|balanced|high  a preset: LBVH, ATRBVH(9,2), "
+          "ATRBVH(20,3)\n"
+          "                       (later --method/--treelet/--rounds "
+          "override it)\n"
           "  --treelet N          treelet size (default: trbvh 7, atrbvh 9)\n"
           "  --rounds R           optimisation rounds (default: trbvh 3, "
           "atrbvh 2)\n"
@@ -81,6 +85,21 @@ int cli_build_option(const char *cmd, int argc, char **argv, int *i,
             cli_usage(cmd, "--method: '%s' is not lbvh, trbvh or atrbvh", v);
             return -1;
         }
+        return 1;
+    }
+    if ((r = cli_option(cmd, argc, argv, i, "--quality", &v)) != 0) {
+        atrbvh_method m;
+        unsigned t, rr;
+        if (r < 0)
+            return -1;
+        if (!cli_quality_preset(v, &m, &t, &rr)) {
+            cli_usage(cmd, "--quality: '%s' is not fast, balanced or high",
+                      v);
+            return -1;
+        }
+        a->options.method = m;
+        a->options.treelet_size = t;
+        a->options.rounds = rr;
         return 1;
     }
     if ((r = cli_option(cmd, argc, argv, i, "--backend", &v)) != 0) {

@@ -166,6 +166,12 @@ static void usage(FILE *f)
           "  validate SCENE [OPTIONS] build on the CPU and on OpenCL and "
           "compare\n"
           "                           every stage's output\n"
+          "  bench [SCENE...]         build time, SAH, memory and rays per "
+          "second of\n"
+          "                           many configurations, beside Embree; "
+          "plots\n"
+          "  render SCENE --output F  a shaded PNG, or a heat map of "
+          "traversal steps\n"
           "\n"
           "SCENE is a .ply or .obj file, or builtin:NAME[:N] with NAME one "
           "of\n"
@@ -190,7 +196,9 @@ int main(int argc, char **argv)
                     {"trace", cli_trace},
                     {"info", cli_info},
                     {"compare", cli_compare},
-                    {"validate", cli_validate}};
+                    {"validate", cli_validate},
+                    {"bench", cli_bench},
+                    {"render", cli_render}};
     size_t k;
     int rc;
     const char *cmd;

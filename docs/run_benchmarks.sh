@@ -1,0 +1,74 @@
+#!/bin/sh
+# docs/run_benchmarks.sh [PART...] - regenerates the measurements, plots and
+# tables of docs/benchmarks.md.  PART: machine, main, sweep, scaling,
+# render, tables (default: all, in that order).  Run from anywhere after the build
+# in _build/ (BUILDDIR=... to use another); scenes from ../shared/scenes,
+# or ../../shared/scenes from a worktree (ATRBVH_SCENES=... to use others).  Needs gnuplot and python3.
+set -eu
+cd "$(dirname "$0")/.."
+TOOL=${BUILDDIR:-_build}/tools/atrbvh
+S=${ATRBVH_SCENES:-../shared/scenes}
+# a worktree of the repository sits one level deeper
+[ -d "$S" ] || [ -n "${ATRBVH_SCENES:-}" ] || S=../../shared/scenes
+OUT=docs/bench
+SCENES="$S/bunny.ply $S/sibenik.ply $S/dabrovic_sponza.ply $S/conference.ply $S/dragon.ply"
+# The machine these ran on is shared (load average above its core count):
+# OpenMP threads that spin at barriers then lose whole time slices, and
+# builds take 5-10 times longer.  Passive waiting is what such a machine
+# needs (docs/benchmarks.md shows both).
+OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
+export OMP_WAIT_POLICY
+[ $# -gt 0 ] || set -- machine main sweep scaling render tables
+mkdir -p "$OUT"
+for part in "$@"; do
+    case $part in
+    machine)
+        {
+            echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
+            echo "cpu: $(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -n 1)"
+            echo "nproc: $(nproc)"
+            echo "memory: $(awk '/MemTotal/ { printf "%.1f GiB", $2 / 1048576 }' /proc/meminfo)"
+            echo "compiler: $(${CC:-cc} --version | head -n 1)"
+            echo "embree: $("$TOOL" bench --repeat 1 --no-rays --configs lbvh builtin:sphere:100 | sed -n 's/^# Embree\([^:]*\):.*/Embree\1/p')"
+            echo "OMP_WAIT_POLICY: $OMP_WAIT_POLICY"
+            echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+            echo "command: sh docs/run_benchmarks.sh"
+        } >"$OUT/machine.txt"
+        ;;
+    main)
+        # shellcheck disable=SC2086
+        "$TOOL" bench $SCENES --repeat 3 --width 320 --height 240 --spp 4 \
+            --configs lbvh,trbvh:7:3,atrbvh:9:2,atrbvh:16:2,atrbvh:16:3,atrbvh:24:3,atrbvh:32:6,fast,balanced,high,embree \
+            --csv "$OUT/bench.csv" --plot "$OUT" >"$OUT/bench.txt"
+        ;;
+    sweep)
+        # shellcheck disable=SC2086
+        "$TOOL" bench $SCENES --no-rays --repeat 1 --methods lbvh,atrbvh,embree \
+            --treelet 9,12,16,20,24,32 --rounds 2,3,4,6 \
+            --csv "$OUT/sweep.csv" --plot "$OUT/sweep" >"$OUT/sweep.txt"
+        ;;
+    scaling)
+        "$TOOL" bench --scaling builtin:sphere "$S/bunny.ply" --repeat 3 \
+            --sizes 10000,100000,1000000,3000000,10000000 \
+            --csv "$OUT/scaling.csv" --plot "$OUT" >"$OUT/scaling.txt"
+        ;;
+    render)
+        for q in fast balanced high; do
+            "$TOOL" render "$S/conference.ply" --heatmap --heat-top 120 \
+                --quality $q --width 400 --height 300 --viewpoint 2 \
+                -o "$OUT/heat-conference-$q.png" >"$OUT/render-$q.txt"
+        done
+        "$TOOL" render "$S/conference.ply" --width 400 --height 300 \
+            --viewpoint 2 -o "$OUT/shaded-conference.png" >/dev/null
+        ;;
+    tables)
+        echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)" >>"$OUT/machine.txt"
+        rm -f "$OUT"/*.gp.log "$OUT"/gnuplot.log "$OUT"/sweep/gnuplot.log
+        python3 docs/bench_tables.py "$OUT" docs/benchmarks.md
+        ;;
+    *)
+        echo "run_benchmarks.sh: unknown part '$part'" >&2
+        exit 2
+        ;;
+    esac
+done

@@ -1,0 +1,182 @@
+#!/bin/sh
+# bench.sh - `atrbvh bench` (CSV well formed, every column there, each
+# row's SAH equal to a direct `atrbvh build --json` with the same options,
+# the scaling study's CSV) and `atrbvh render` (a PNG of the requested
+# size: IHDR bytes, and libpng reads it back).  Tiny scenes, --repeat 1.
+# Run by `make check` with ATRBVH_BUILDDIR set.
+
+BUILDDIR=${ATRBVH_BUILDDIR:-.}
+TOOL=$BUILDDIR/tools/atrbvh
+PNGCHECK=$BUILDDIR/tests/pngcheck
+
+if [ ! -x "$TOOL" ]; then
+    echo "bench.sh: $TOOL not built" >&2
+    exit 99
+fi
+if ! command -v python3 >/dev/null 2>&1; then
+    echo "bench.sh: no python3, skipped" >&2
+    exit 77
+fi
+
+T=$(mktemp -d "${TMPDIR:-/tmp}/atrbvh_bench.XXXXXX") || exit 99
+trap 'rm -rf "$T"' EXIT INT TERM
+
+failures=0
+checks=0
+fail() {
+    echo "FAIL: $*" >&2
+    failures=$((failures + 1))
+}
+
+# run RC ARGS...: exit status RC; a failure is one "atrbvh: " line.
+run() {
+    want=$1
+    shift
+    checks=$((checks + 1))
+    "$TOOL" "$@" >"$T/out" 2>"$T/err"
+    rc=$?
+    if [ "$rc" -ne "$want" ]; then
+        fail "atrbvh $* exited $rc, expected $want; stderr: $(cat "$T/err")"
+        return 1
+    fi
+    if [ "$want" -ne 0 ]; then
+        if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q '^atrbvh: ' "$T/err"; then
+            fail "atrbvh $*: stderr is not one 'atrbvh: ' line: $(cat "$T/err")"
+            return 1
+        fi
+    fi
+    return 0
+}
+
+SCENE=builtin:sphere:3000
+TINY="--repeat 1 --width 24 --height 16 --viewpoints 2 --spp 1"
+
+# ---------------------------------------------------------------- bench
+run 0 bench "$SCENE" builtin:city:2000 $TINY --csv "$T/b.csv" \
+    --configs lbvh,trbvh:5:2,atrbvh:9:2,atrbvh:6:3,fast,balanced,high,embree &&
+    grep -q '^# atrbvh bench' "$T/out" || fail "bench: no header line"
+grep -Eq '^# Embree' "$T/out" || fail "bench: the header does not say whether Embree is there"
+
+checks=$((checks + 1))
+python3 - "$T/b.csv" "$TOOL" "$SCENE" builtin:city:2000 <<'PY' || fail "bench CSV check failed"
+import csv, json, math, subprocess, sys
+path, tool, scenes = sys.argv[1], sys.argv[2], sys.argv[3:]
+need = ("scene method treelet_size rounds backend threads build_ms sah "
+        "sah_binary nodes leaves peak_bytes primary_mrays ao_mrays "
+        "diffuse_mrays relative_pct").split()
+with open(path, newline="") as f:
+    rows = list(csv.reader(f))
+head, body = rows[0], rows[1:]
+for c in need:
+    assert c in head, "missing column " + c
+assert len(set(head)) == len(head), "duplicate columns"
+for r in body:
+    assert len(r) == len(head), "row with %d fields, header %d" % (len(r), len(head))
+recs = [dict(zip(head, r)) for r in body]
+# 2 scenes x (lbvh, trbvh 5 2, atrbvh 9 2, atrbvh 6 3, high, trbvh 7 3 [ref]
+# [+ 3 embree]); fast and balanced repeat lbvh and atrbvh 9 2.
+lib = [r for r in recs if not r["method"].startswith("embree")]
+emb = [r for r in recs if r["method"].startswith("embree")]
+assert len(lib) == 12, "expected 12 library rows, got %d" % len(lib)
+assert len(emb) in (0, 6), "expected 0 or 6 Embree rows, got %d" % len(emb)
+for r in recs:
+    assert r["scene"] in scenes, r["scene"]
+    for c in ("build_ms", "sah", "sah_binary", "primary_mrays", "relative_pct"):
+        v = float(r[c])
+        assert math.isfinite(v) and v > 0, (c, r[c])
+    for c in ("nodes", "leaves", "peak_bytes", "threads"):
+        assert int(r[c]) > 0, (c, r[c])
+    assert int(r["nodes"]) == 2 * int(r["leaves"]) - 1, "nodes != 2 leaves - 1"
+for s in scenes:
+    ref = [r for r in lib if r["scene"] == s and r["method"] == "trbvh"
+           and r["treelet_size"] == "7" and r["rounds"] == "3"]
+    assert len(ref) == 1 and float(ref[0]["relative_pct"]) == 100.0, "reference row"
+for r in lib:
+    cmd = [tool, "build", r["scene"], "--json", "--method", r["method"],
+           "--max-leaf", "8"]
+    if r["method"] != "lbvh":
+        cmd += ["--treelet", r["treelet_size"], "--rounds", r["rounds"]]
+    js = json.loads(subprocess.check_output(cmd))
+    assert repr(js["sah"]) == repr(float(r["sah"])), \
+        "SAH %s in the CSV, %r from %s" % (r["sah"], js["sah"], " ".join(cmd))
+    assert str(js["nodes"]) == r["nodes"], "nodes differ"
+    bcmd = cmd[:cmd.index("--max-leaf")] + cmd[cmd.index("--max-leaf") + 2:] + ["--no-collapse"]
+    jb = json.loads(subprocess.check_output(bcmd))
+    assert repr(jb["sah"]) == repr(float(r["sah_binary"])), \
+        "binary SAH %s in the CSV, %r from %s" % (r["sah_binary"], jb["sah"], " ".join(bcmd))
+for r in emb:
+    assert int(r["treelet_size"]) == 0 and r["backend"] == "embree"
+    assert float(r["embree_primary_mrays"]) > 0
+PY
+
+# --methods x --treelet x --rounds, no rays
+run 0 bench "$SCENE" --repeat 1 --no-rays --methods atrbvh,lbvh --treelet 5,7 \
+    --rounds 1,2 --csv "$T/m.csv" &&
+    { [ "$(wc -l <"$T/m.csv")" -eq 7 ] || fail "--methods: $(wc -l <"$T/m.csv") lines, expected 1 + 4 + lbvh + trbvh ref"; }
+checks=$((checks + 1))
+
+# plots, when gnuplot is there
+if command -v gnuplot >/dev/null 2>&1; then
+    run 0 bench "$SCENE" --repeat 1 --width 8 --height 8 --viewpoints 1 \
+        --configs lbvh,atrbvh:5:1 --plot "$T/plots" &&
+        for p in pareto-builtin_sphere_3000.png pareto-builtin_sphere_3000.svg rays-builtin_sphere_3000.png; do
+            [ -s "$T/plots/$p" ] || fail "--plot: no $p ($(ls "$T/plots"))"
+        done
+    checks=$((checks + 1))
+fi
+
+# scaling study
+run 0 bench --scaling builtin:sphere --sizes 1000,3000,9000 --configs lbvh \
+    --repeat 1 --csv "$T/s.csv" && grep -q 'N^' "$T/out" ||
+    fail "scaling: no fitted exponent: $(cat "$T/out")"
+checks=$((checks + 1))
+python3 - "$T/s.csv" <<'PY' || fail "scaling CSV check failed"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1], newline="")))
+assert len(rows) == 3, len(rows)
+for r in rows:
+    assert int(r["peak_bytes"]) > 0 and float(r["build_ms"]) > 0
+    assert float(r["peak_bytes_per_triangle"]) > 0
+PY
+
+# usage and errors
+run 2 bench --repeat 0
+run 2 bench --repeat 1x
+run 2 bench --configs lbvh,quick
+run 2 bench --configs atrbvh:0
+run 2 bench --width -3
+run 2 bench --bogus
+run 2 bench --treelet 9
+run 2 bench --quality best
+run 2 bench --scaling --configs embree_low
+run 1 bench /nonexistent/scene.ply --repeat 1 --no-rays
+run 2 build builtin:sphere:100 --quality slow
+run 0 build builtin:sphere:1000 --quality high --json &&
+    grep -q '"treelet_size": *20' "$T/out" || fail "--quality high: $(cat "$T/out")"
+
+# --------------------------------------------------------------- render
+if [ -x "$PNGCHECK" ]; then
+    for mode in "" --heatmap; do
+        run 0 render builtin:city:2000 $mode --width 37 --height 23 -o "$T/r.png" \
+            --quality fast || continue
+        checks=$((checks + 1))
+        # IHDR: bytes 16-19 width, 20-23 height, big-endian
+        sig=$(od -An -tx1 -N8 "$T/r.png" | tr -d ' \n')
+        dims=$(od -An -tu1 -j16 -N8 "$T/r.png" |
+               awk '{ print $1*16777216 + $2*65536 + $3*256 + $4, $5*16777216 + $6*65536 + $7*256 + $8 }')
+        [ "$sig" = 89504e470d0a1a0a ] || fail "render $mode: not a PNG signature ($sig)"
+        [ "$dims" = "37 23" ] || fail "render $mode: IHDR says $dims, expected 37 23"
+        got=$("$PNGCHECK" "$T/r.png") || fail "render $mode: libpng cannot read it"
+        [ "$got" = "37 23" ] || fail "render $mode: libpng reads $got"
+    done
+    run 2 render builtin:city:2000 --width 10
+    run 2 render builtin:city:2000 -o "$T/x.png" --width 0
+    run 1 render /nonexistent.ply -o "$T/x.png"
+    run 1 render builtin:city:2000 -o "$T/no/such/dir/x.png"
+else
+    run 1 render builtin:city:2000 -o "$T/r.png" && err_line=$(cat "$T/err") &&
+        case "$err_line" in *libpng*) ;; *) fail "render without libpng: $err_line" ;; esac
+fi
+
+echo "bench.sh: $checks runs, $failures failures"
+[ "$failures" -eq 0 ]

@@ -1,0 +1,523 @@
+/*
+ * embree_bvh.c - Embree 3 beside atrbvh (see embree_bvh.h).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "config.h"
+
+#include "embree_bvh.h"
+
+#include "cli.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+const char *embree_quality_name(embree_quality q)
+{
+    return q == EMBREE_LOW ? "embree_low"
+           : q == EMBREE_MEDIUM ? "embree_medium" : "embree_high";
+}
+
+#ifndef HAVE_EMBREE
+
+int embree_available(void) { return 0; }
+const char *embree_version(void) { return NULL; }
+embree_ctx *embree_open(int threads)
+{
+    (void)threads;
+    cli_error("not built with Embree");
+    return NULL;
+}
+void embree_close(embree_ctx *ctx) { (void)ctx; }
+int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
+                 unsigned max_leaf, double ci, double ct,
+                 embree_build_result *res)
+{
+    (void)ctx, (void)sc, (void)q, (void)max_leaf, (void)ci, (void)ct;
+    memset(res, 0, sizeof *res);
+    cli_error("not built with Embree");
+    return -1;
+}
+int embree_trace(embree_ctx *ctx, const scene *sc, embree_quality q,
+                 const ray_set *rays, int threads, double ms[3],
+                 double *commit_ms)
+{
+    (void)ctx, (void)sc, (void)q, (void)rays, (void)threads, (void)ms;
+    (void)commit_ms;
+    cli_error("not built with Embree");
+    return -1;
+}
+
+#else
+
+#include <embree3/rtcore.h>
+#include <float.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+struct embree_ctx {
+    RTCDevice device;
+    long current, peak; /* Embree's memory monitor, bytes */
+};
+
+int embree_available(void) { return 1; }
+
+const char *embree_version(void) { return RTC_VERSION_STRING; }
+
+static bool monitor(void *user, ssize_t bytes, bool post)
+{
+    embree_ctx *c = user;
+    long now = __sync_add_and_fetch(&c->current, (long)bytes), p;
+    (void)post;
+    while ((p = c->peak) < now)
+        if (__sync_bool_compare_and_swap(&c->peak, p, now))
+            break;
+    return true;
+}
+
+embree_ctx *embree_open(int threads)
+{
+    char config[64];
+    embree_ctx *c = calloc(1, sizeof *c);
+    if (!c) {
+        cli_error("out of memory");
+        return NULL;
+    }
+    if (threads > 0)
+        snprintf(config, sizeof config, "threads=%d", threads);
+    else
+        config[0] = '\0';
+    c->device = rtcNewDevice(config);
+    if (!c->device) {
+        cli_error("Embree: rtcNewDevice failed (error %d)",
+                  (int)rtcGetDeviceError(NULL));
+        free(c);
+        return NULL;
+    }
+    rtcSetDeviceMemoryMonitorFunction(c->device, monitor, c);
+    return c;
+}
+
+void embree_close(embree_ctx *ctx)
+{
+    if (!ctx)
+        return;
+    rtcReleaseDevice(ctx->device);
+    free(ctx);
+}
+
+/* The tree the callbacks make: an inner node has two children and their
+ * boxes; a leaf its primitive ids. */
+typedef struct enode {
+    unsigned count; /* 0: inner */
+    struct enode *child[2];
+    float lo[2][3], hi[2][3];
+    uint32_t prim[1]; /* count of them (allocated longer) */
+} enode;
+
+static void *create_node(RTCThreadLocalAllocator alloc, unsigned child_count,
+                         void *user)
+{
+    enode *n = rtcThreadLocalAlloc(alloc, sizeof *n, 16);
+    (void)user;
+    (void)child_count; /* maxBranchingFactor 2 */
+    n->count = 0;
+    n->child[0] = n->child[1] = NULL;
+    return n;
+}
+
+static void set_children(void *node, void **children, unsigned count,
+                         void *user)
+{
+    enode *n = node;
+    unsigned k;
+    (void)user;
+    for (k = 0; k < count && k < 2; k++)
+        n->child[k] = children[k];
+}
+
+static void set_bounds(void *node, const struct RTCBounds **b, unsigned count,
+                       void *user)
+{
+    enode *n = node;
+    unsigned k;
+    (void)user;
+    for (k = 0; k < count && k < 2; k++) {
+        n->lo[k][0] = b[k]->lower_x;
+        n->lo[k][1] = b[k]->lower_y;
+        n->lo[k][2] = b[k]->lower_z;
+        n->hi[k][0] = b[k]->upper_x;
+        n->hi[k][1] = b[k]->upper_y;
+        n->hi[k][2] = b[k]->upper_z;
+    }
+}
+
+static void *create_leaf(RTCThreadLocalAllocator alloc,
+                         const struct RTCBuildPrimitive *prims, size_t count,
+                         void *user)
+{
+    enode *n = rtcThreadLocalAlloc(
+        alloc, sizeof *n + (count ? count - 1 : 0) * sizeof(uint32_t), 16);
+    size_t k;
+    (void)user;
+    n->count = (unsigned)count;
+    for (k = 0; k < count; k++)
+        n->prim[k] = prims[k].primID;
+    return n;
+}
+
+static void put32(unsigned char *p, uint32_t v)
+{
+    p[0] = (unsigned char)v;
+    p[1] = (unsigned char)(v >> 8);
+    p[2] = (unsigned char)(v >> 16);
+    p[3] = (unsigned char)(v >> 24);
+}
+
+static void put64(unsigned char *p, uint64_t v)
+{
+    put32(p, (uint32_t)v);
+    put32(p + 4, (uint32_t)(v >> 32));
+}
+
+static void putf32(unsigned char *p, float f)
+{
+    uint32_t v;
+    memcpy(&v, &f, 4);
+    put32(p, v);
+}
+
+static void putf64(unsigned char *p, double d)
+{
+    uint64_t v;
+    memcpy(&v, &d, 8);
+    put64(p, v);
+}
+
+static uint32_t crc32_ieee(const unsigned char *p, size_t n)
+{
+    static uint32_t table[256];
+    static int ready;
+    uint32_t c = 0xffffffffu;
+    size_t i;
+    if (!ready) {
+        uint32_t k, j;
+        for (k = 0; k < 256; k++) {
+            uint32_t v = k;
+            for (j = 0; j < 8; j++)
+                v = v & 1 ? 0xedb88320u ^ (v >> 1) : v >> 1;
+            table[k] = v;
+        }
+        ready = 1;
+    }
+    for (i = 0; i < n; i++)
+        c = table[(c ^ p[i]) & 0xff] ^ (c >> 8);
+    return c ^ 0xffffffffu;
+}
+
+typedef struct work {
+    const enode *n;
+    float lo[3], hi[3];
+    size_t patch; /* the parent whose index is this node's position */
+    int is_right;
+} work;
+
+/* Depth-first layout (left child next, right child at `index`), written
+ * straight into the atrbvh(5) file format and loaded: the library checks
+ * the structure. */
+static int convert(const enode *root, const float rlo[3], const float rhi[3],
+                   size_t prims, double ci, double ct, atrbvh_bvh **out)
+{
+    size_t cap = 2 * prims, n = 0, p = 0, sp = 0, size, k;
+    atrbvh_node *nodes = malloc(cap * sizeof *nodes);
+    uint32_t *ids = malloc(prims * sizeof *ids);
+    work *stack = malloc((cap + 2) * sizeof *stack);
+    unsigned char *buf = NULL, *q;
+    atrbvh_error e;
+    int rc = -1;
+    if (!nodes || !ids || !stack) {
+        cli_error("out of memory converting an Embree tree");
+        goto done;
+    }
+    stack[sp].n = root;
+    memcpy(stack[sp].lo, rlo, sizeof stack[sp].lo);
+    memcpy(stack[sp].hi, rhi, sizeof stack[sp].hi);
+    stack[sp].is_right = 0;
+    sp++;
+    while (sp > 0) {
+        work w = stack[--sp];
+        atrbvh_node *nd;
+        if (n >= cap) {
+            cli_error("Embree tree: more nodes than expected");
+            goto done;
+        }
+        nd = &nodes[n];
+        memcpy(nd->min, w.lo, sizeof nd->min);
+        memcpy(nd->max, w.hi, sizeof nd->max);
+        if (w.is_right)
+            nodes[w.patch].index = (uint32_t)n;
+        if (w.n->count) {
+            if (p + w.n->count > prims) {
+                cli_error("Embree tree: more primitives than given");
+                goto done;
+            }
+            nd->index = (uint32_t)p;
+            nd->count = w.n->count;
+            memcpy(ids + p, w.n->prim, w.n->count * sizeof *ids);
+            p += w.n->count;
+        } else {
+            int c;
+            nd->index = 0;
+            nd->count = 0;
+            for (c = 1; c >= 0; c--) { /* right first: left is popped next */
+                work *x = &stack[sp++];
+                x->n = w.n->child[c];
+                memcpy(x->lo, w.n->lo[c], sizeof x->lo);
+                memcpy(x->hi, w.n->hi[c], sizeof x->hi);
+                x->patch = n;
+                x->is_right = c == 1;
+            }
+        }
+        n++;
+    }
+    if (p != prims) {
+        cli_error("Embree tree: %zu of %zu primitives in leaves", p, prims);
+        goto done;
+    }
+    size = 96 + 32 * n + 4 * p + 4;
+    buf = calloc(1, size);
+    if (!buf) {
+        cli_error("out of memory converting an Embree tree");
+        goto done;
+    }
+    memcpy(buf, "ATRBVH\0\n", 8);
+    put32(buf + 8, 1);
+    put32(buf + 12, 96);
+    put64(buf + 32, n);
+    put64(buf + 40, p);
+    put64(buf + 48, prims);
+    putf64(buf + 56, ci);
+    putf64(buf + 64, ct);
+    putf64(buf + 72, atrbvh_sah(nodes, n, ci, ct));
+    for (k = 0, q = buf + 96; k < n; k++, q += 32) {
+        int a;
+        for (a = 0; a < 3; a++) {
+            putf32(q + 4 * a, nodes[k].min[a]);
+            putf32(q + 12 + 4 * a, nodes[k].max[a]);
+        }
+        put32(q + 24, nodes[k].index);
+        put32(q + 28, nodes[k].count);
+    }
+    for (k = 0; k < p; k++, q += 4)
+        put32(q, ids[k]);
+    put32(q, crc32_ieee(buf, size - 4));
+    memset(&e, 0, sizeof e);
+    if (atrbvh_load_memory(buf, size, out, &e) != ATRBVH_OK) {
+        cli_error("Embree tree: %s", e.text);
+        goto done;
+    }
+    rc = 0;
+done:
+    free(nodes);
+    free(ids);
+    free(stack);
+    free(buf);
+    return rc;
+}
+
+static enum RTCBuildQuality rtc_quality(embree_quality q)
+{
+    return q == EMBREE_LOW ? RTC_BUILD_QUALITY_LOW
+           : q == EMBREE_MEDIUM ? RTC_BUILD_QUALITY_MEDIUM
+                                : RTC_BUILD_QUALITY_HIGH;
+}
+
+int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
+                 unsigned max_leaf, double ci, double ct,
+                 embree_build_result *res)
+{
+    size_t n = sc->triangle_count, i;
+    struct RTCBuildPrimitive *prims;
+    struct RTCBuildArguments args;
+    RTCBVH bvh;
+    enode *root;
+    float rlo[3] = {FLT_MAX, FLT_MAX, FLT_MAX};
+    float rhi[3] = {-FLT_MAX, -FLT_MAX, -FLT_MAX};
+    double t0, t1;
+    int rc;
+    memset(res, 0, sizeof *res);
+    if (n == 0 || n > UINT32_MAX) {
+        cli_error("Embree: %zu triangles", n);
+        return -1;
+    }
+    ctx->current = ctx->peak = 0;
+    t0 = cli_now_ms();
+    prims = malloc(n * sizeof *prims);
+    if (!prims) {
+        cli_error("out of memory for %zu Embree primitives", n);
+        return -1;
+    }
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static)
+#endif
+    for (i = 0; i < n; i++) {
+        const uint32_t *t = sc->indices + 3 * i;
+        const float *a = sc->vertices + 3 * (size_t)t[0];
+        const float *b = sc->vertices + 3 * (size_t)t[1];
+        const float *c = sc->vertices + 3 * (size_t)t[2];
+        float lo[3], hi[3];
+        int k;
+        for (k = 0; k < 3; k++) {
+            lo[k] = a[k] < b[k] ? a[k] : b[k];
+            lo[k] = c[k] < lo[k] ? c[k] : lo[k];
+            hi[k] = a[k] > b[k] ? a[k] : b[k];
+            hi[k] = c[k] > hi[k] ? c[k] : hi[k];
+        }
+        prims[i].lower_x = lo[0];
+        prims[i].lower_y = lo[1];
+        prims[i].lower_z = lo[2];
+        prims[i].geomID = 0;
+        prims[i].upper_x = hi[0];
+        prims[i].upper_y = hi[1];
+        prims[i].upper_z = hi[2];
+        prims[i].primID = (unsigned)i;
+    }
+    bvh = rtcNewBVH(ctx->device);
+    args = rtcDefaultBuildArguments();
+    args.byteSize = sizeof args;
+    args.buildFlags = RTC_BUILD_FLAG_NONE;
+    args.buildQuality = rtc_quality(q);
+    args.maxBranchingFactor = 2;
+    args.maxDepth = 1024;
+    args.sahBlockSize = 1;
+    args.minLeafSize = 1;
+    args.maxLeafSize = max_leaf ? max_leaf : 1;
+    args.traversalCost = (float)ci;
+    args.intersectionCost = (float)ct;
+    args.bvh = bvh;
+    args.primitives = prims;
+    args.primitiveCount = n;
+    args.primitiveArrayCapacity = n; /* no room: no spatial splits */
+    args.createNode = create_node;
+    args.setNodeChildren = set_children;
+    args.setNodeBounds = set_bounds;
+    args.createLeaf = create_leaf;
+    args.splitPrimitive = NULL;
+    args.buildProgress = NULL;
+    args.userPtr = NULL;
+    root = rtcBuildBVH(&args);
+    t1 = cli_now_ms();
+    res->build_ms = t1 - t0;
+    res->peak_bytes = n * sizeof *prims + (size_t)(ctx->peak > 0 ? ctx->peak : 0);
+    if (!root) {
+        cli_error("Embree: rtcBuildBVH failed (error %d)",
+                  (int)rtcGetDeviceError(ctx->device));
+        rtcReleaseBVH(bvh);
+        free(prims);
+        return -1;
+    }
+    /* The root's box: the union of every primitive's. */
+    for (i = 0; i < n; i++) {
+        const float lo[3] = {prims[i].lower_x, prims[i].lower_y,
+                             prims[i].lower_z};
+        const float hi[3] = {prims[i].upper_x, prims[i].upper_y,
+                             prims[i].upper_z};
+        int k;
+        for (k = 0; k < 3; k++) {
+            if (lo[k] < rlo[k])
+                rlo[k] = lo[k];
+            if (hi[k] > rhi[k])
+                rhi[k] = hi[k];
+        }
+    }
+    rc = convert(root, rlo, rhi, n, ci, ct, &res->bvh);
+    res->convert_ms = cli_now_ms() - t1;
+    rtcReleaseBVH(bvh);
+    free(prims);
+    return rc;
+}
+
+int embree_trace(embree_ctx *ctx, const scene *sc, embree_quality q,
+                 const ray_set *rays, int threads, double ms[3],
+                 double *commit_ms)
+{
+    RTCScene s;
+    RTCGeometry g;
+    float *vb;
+    unsigned *ib;
+    double t0;
+    int kind;
+    (void)threads;
+    s = rtcNewScene(ctx->device);
+    rtcSetSceneBuildQuality(s, rtc_quality(q));
+    g = rtcNewGeometry(ctx->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    vb = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                 RTC_FORMAT_FLOAT3, 12, sc->vertex_count);
+    ib = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0,
+                                 RTC_FORMAT_UINT3, 12, sc->triangle_count);
+    if (!vb || !ib) {
+        cli_error("Embree: no memory for the scene's buffers");
+        rtcReleaseGeometry(g);
+        rtcReleaseScene(s);
+        return -1;
+    }
+    memcpy(vb, sc->vertices, sc->vertex_count * 12);
+    memcpy(ib, sc->indices, sc->triangle_count * 12);
+    rtcSetGeometryBuildQuality(g, rtc_quality(q));
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(s, g);
+    rtcReleaseGeometry(g);
+    t0 = cli_now_ms();
+    rtcCommitScene(s);
+    *commit_ms = cli_now_ms() - t0;
+    if (rtcGetDeviceError(ctx->device) != RTC_ERROR_NONE) {
+        cli_error("Embree: rtcCommitScene failed");
+        rtcReleaseScene(s);
+        return -1;
+    }
+    for (kind = 0; kind < 3; kind++) {
+        const atrbvh_ray *r = kind == 0   ? rays->primary
+                              : kind == 1 ? rays->ao
+                                          : rays->diffuse;
+        long n = (long)(kind == 0   ? rays->n_primary
+                        : kind == 1 ? rays->n_ao
+                                    : rays->n_diffuse),
+             i;
+        long hits = 0;
+        t0 = cli_now_ms();
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 1024) reduction(+ : hits) \
+    num_threads(threads > 0 ? threads : omp_get_max_threads())
+#endif
+        for (i = 0; i < n; i++) {
+            struct RTCIntersectContext c;
+            struct RTCRayHit rh;
+            rtcInitIntersectContext(&c);
+            rh.ray.org_x = r[i].origin[0];
+            rh.ray.org_y = r[i].origin[1];
+            rh.ray.org_z = r[i].origin[2];
+            rh.ray.dir_x = r[i].dir[0];
+            rh.ray.dir_y = r[i].dir[1];
+            rh.ray.dir_z = r[i].dir[2];
+            rh.ray.tnear = r[i].tmin;
+            rh.ray.tfar = r[i].tmax;
+            rh.ray.time = 0.0f;
+            rh.ray.mask = 0xffffffffu;
+            rh.ray.id = 0;
+            rh.ray.flags = 0;
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            if (kind == 1) {
+                rtcOccluded1(s, &c, &rh.ray);
+                hits += rh.ray.tfar < 0.0f;
+            } else {
+                rtcIntersect1(s, &c, &rh);
+                hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+            }
+        }
+        ms[kind] = cli_now_ms() - t0;
+        (void)hits;
+    }
+    rtcReleaseScene(s);
+    return 0;
+}
+#endif

@@ -1,0 +1,184 @@
+/*
+ * rays.c - the ray sets of `atrbvh bench` (see rays.h).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "config.h"
+
+#include "rays.h"
+
+#include "cli.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+#define SEED_AO 0x61u
+#define SEED_DIFFUSE 0xd1u
+
+static uint64_t mix64(uint64_t x)
+{
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ull;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebull;
+    x ^= x >> 31;
+    return x;
+}
+
+static void hash2(uint64_t seed, uint64_t pixel, uint64_t sample, double *u1,
+                  double *u2)
+{
+    uint64_t h = mix64(mix64(mix64(seed) ^ pixel) ^ sample);
+    uint64_t g = mix64(h ^ 0x9e3779b97f4a7c15ull);
+    *u1 = (double)(h >> 11) * (1.0 / 9007199254740992.0);
+    *u2 = (double)(g >> 11) * (1.0 / 9007199254740992.0);
+}
+
+void rays_normal(const scene *sc, uint32_t prim, const float dir[3],
+                 double n[3])
+{
+    const uint32_t *tri = sc->indices + (size_t)prim * 3;
+    const float *v0 = sc->vertices + (size_t)tri[0] * 3;
+    const float *v1 = sc->vertices + (size_t)tri[1] * 3;
+    const float *v2 = sc->vertices + (size_t)tri[2] * 3;
+    double e1[3], e2[3], len, sign;
+    int k;
+    for (k = 0; k < 3; k++) {
+        e1[k] = (double)v1[k] - v0[k];
+        e2[k] = (double)v2[k] - v0[k];
+    }
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(len > 0.0) || !isfinite(len)) {
+        double d = sqrt((double)dir[0] * dir[0] + (double)dir[1] * dir[1] +
+                        (double)dir[2] * dir[2]);
+        for (k = 0; k < 3; k++)
+            n[k] = -(double)dir[k] / d;
+        return;
+    }
+    sign = n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2] > 0.0 ? -1.0 : 1.0;
+    for (k = 0; k < 3; k++)
+        n[k] *= sign / len;
+}
+
+static void secondary(const scene *sc, const atrbvh_ray *ray,
+                      const atrbvh_hit *hit, double eps_scale, uint64_t seed,
+                      uint64_t pixel, unsigned sample, float length,
+                      atrbvh_ray *out)
+{
+    double p[3], n[3], t[3], b[3], big = 0.0, eps, u1, u2, rad, phi, x, y, z;
+    int k;
+    rays_normal(sc, hit->primitive, ray->dir, n);
+    for (k = 0; k < 3; k++) {
+        p[k] = (double)ray->origin[k] + (double)hit->t * ray->dir[k];
+        if (fabs(p[k]) > big)
+            big = fabs(p[k]);
+    }
+    eps = eps_scale + big * 1e-6;
+    for (k = 0; k < 3; k++)
+        p[k] += n[k] * eps;
+    {
+        double sg = n[2] >= 0.0 ? 1.0 : -1.0;
+        double a = -1.0 / (sg + n[2]);
+        double bb = n[0] * n[1] * a;
+        t[0] = 1.0 + sg * n[0] * n[0] * a;
+        t[1] = sg * bb;
+        t[2] = -sg * n[0];
+        b[0] = bb;
+        b[1] = sg + n[1] * n[1] * a;
+        b[2] = -n[1];
+    }
+    hash2(seed, pixel, sample, &u1, &u2);
+    rad = sqrt(u1);
+    phi = 2.0 * PI * u2;
+    x = rad * cos(phi);
+    y = rad * sin(phi);
+    z = sqrt(1.0 - u1);
+    for (k = 0; k < 3; k++) {
+        out->origin[k] = (float)p[k];
+        out->dir[k] = (float)(x * t[k] + y * b[k] + z * n[k]);
+    }
+    out->tmin = 0.0f;
+    out->tmax = length;
+}
+
+void ray_set_free(ray_set *rs)
+{
+    free(rs->primary);
+    free(rs->ao);
+    free(rs->diffuse);
+    memset(rs, 0, sizeof *rs);
+}
+
+int ray_set_make(const scene *sc, const atrbvh_bvh *ref, unsigned width,
+                 unsigned height, unsigned viewpoints, unsigned spp,
+                 int threads, ray_set *rs)
+{
+    atrbvh_geometry g = scene_geometry(sc);
+    atrbvh_hit *hits = NULL;
+    atrbvh_error e;
+    float lo[3], hi[3];
+    double diag = 0.0;
+    size_t pixels = (size_t)width * height, n, i, hitcount = 0;
+    unsigned v, x, y, s;
+    int k;
+    memset(rs, 0, sizeof *rs);
+    n = pixels * viewpoints;
+    rs->primary = malloc((n ? n : 1) * sizeof *rs->primary);
+    hits = malloc((n ? n : 1) * sizeof *hits);
+    if (!rs->primary || !hits) {
+        cli_error("out of memory for %zu rays", n);
+        goto fail;
+    }
+    scene_bounds(sc, lo, hi);
+    for (k = 0; k < 3; k++)
+        diag += ((double)hi[k] - lo[k]) * ((double)hi[k] - lo[k]);
+    diag = sqrt(diag);
+    for (v = 0, i = 0; v < viewpoints; v++) {
+        camera cam;
+        camera_frame(lo, hi, v, (float)width / (float)height, &cam);
+        for (y = 0; y < height; y++)
+            for (x = 0; x < width; x++, i++)
+                camera_ray(&cam, width, height, x, y, 0.5f, 0.5f,
+                           &rs->primary[i]);
+    }
+    rs->n_primary = n;
+    memset(&e, 0, sizeof e);
+    if (atrbvh_intersect_batch(ref, &g, rs->primary, n, hits, threads, &e) !=
+        ATRBVH_OK) {
+        cli_error("tracing primary rays: %s", e.text);
+        goto fail;
+    }
+    for (i = 0; i < n; i++)
+        hitcount += hits[i].primitive != ATRBVH_NO_HIT;
+    if (spp > 0 && hitcount > 0) {
+        size_t m = hitcount * spp, a = 0;
+        rs->ao = malloc(m * sizeof *rs->ao);
+        rs->diffuse = malloc(m * sizeof *rs->diffuse);
+        if (!rs->ao || !rs->diffuse) {
+            cli_error("out of memory for %zu rays", 2 * m);
+            goto fail;
+        }
+        for (i = 0; i < n; i++) {
+            if (hits[i].primitive == ATRBVH_NO_HIT)
+                continue;
+            for (s = 0; s < spp; s++, a++) {
+                secondary(sc, &rs->primary[i], &hits[i], diag * 1e-5, SEED_AO,
+                          i, s, (float)(0.1 * diag), &rs->ao[a]);
+                secondary(sc, &rs->primary[i], &hits[i], diag * 1e-5,
+                          SEED_DIFFUSE, i, s, (float)(2.0 * diag),
+                          &rs->diffuse[a]);
+            }
+        }
+        rs->n_ao = rs->n_diffuse = m;
+    }
+    free(hits);
+    return 0;
+fail:
+    free(hits);
+    ray_set_free(rs);
+    return -1;
+}

@@ -1,0 +1,36 @@
+/*
+ * rays.h - the fixed ray sets `atrbvh bench` traces through every tree of a
+ * scene: primary rays from viewpoints 0..V-1 (camera_frame), then from each
+ * primary hit `spp` ambient-occlusion rays (any hit, 0.1 x the scene
+ * diagonal) and `spp` diffuse rays (closest hit, 2 x the diagonal),
+ * cosine-distributed about the normal turned towards the viewer, the
+ * directions from a hash of (viewpoint, pixel, sample).  The same
+ * definitions as `atrbvh trace` (which uses viewpoint 0 only).  The
+ * secondary rays start from the hits through a reference tree, and every
+ * tree then traces the same arrays.
+ */
+#ifndef ATRBVH_TOOLS_RAYS_H
+#define ATRBVH_TOOLS_RAYS_H
+
+#include <stddef.h>
+
+#include "atrbvh.h"
+#include "scene.h"
+
+typedef struct ray_set {
+    atrbvh_ray *primary, *ao, *diffuse;
+    size_t n_primary, n_ao, n_diffuse;
+} ray_set;
+
+/* 0 on success; -1 after a cli_error line.  `ref` is any BVH of `sc`. */
+int ray_set_make(const scene *sc, const atrbvh_bvh *ref, unsigned width,
+                 unsigned height, unsigned viewpoints, unsigned spp,
+                 int threads, ray_set *rs);
+void ray_set_free(ray_set *rs);
+
+/* Unit normal of triangle `prim` turned against `dir` (or -dir when the
+ * triangle has no area). */
+void rays_normal(const scene *sc, uint32_t prim, const float dir[3],
+                 double n[3]);
+
+#endif
