@@ -13,6 +13,10 @@
 set -u
 : "${ATRBVH_BUILDDIR:?}" "${ATRBVH_SRCDIR:?}"
 CC=${CC:-cc}
+# A consumer of an instrumented build (the sanitizer stage configures with
+# -fsanitize=...) must be compiled and linked the same way, or the static
+# link misses the sanitizer runtime: use the build's own CFLAGS/LDFLAGS.
+CC="$CC ${ATRBVH_BUILD_CFLAGS:-} ${ATRBVH_BUILD_LDFLAGS:-}"
 MAKE=${MAKE:-make}
 command -v pkg-config >/dev/null 2>&1 || { echo "consumer: no pkg-config; skipped"; exit 77; }
 
