@@ -23,4 +23,20 @@ if [ "$actual" != "$expected" ]; then
 fi
 n=$(printf '%s\n' "$actual" | wc -l)
 echo "symbols: $n exported, as listed"
-echo "1 passed, 0 failed"
+# The Debian symbols file must list the same symbols (a new export needs
+# its line there, with the upstream version that introduced it).
+deb="$ATRBVH_SRCDIR/packaging/debian/libatrbvh0.symbols"
+if [ -f "$deb" ]; then
+    debsyms=$(sed -n 's/^ \([A-Za-z_0-9]*\)@Base .*/\1/p' "$deb" | sort)
+    if [ "$debsyms" != "$expected" ]; then
+        echo "symbols: packaging/debian/libatrbvh0.symbols differs from tests/symbols.txt:"
+        printf '%s\n' "$expected" >expected.$$
+        printf '%s\n' "$debsyms" >deb.$$
+        diff -u expected.$$ deb.$$
+        rm -f expected.$$ deb.$$
+        echo "symbols: 1 passed, 1 failed"
+        exit 1
+    fi
+    echo "symbols: the Debian symbols file agrees"
+fi
+echo "symbols: 2 passed, 0 failed"
