@@ -71,7 +71,7 @@ typedef struct cl_env {
     double time_ms[ATRBVH_MAX_KERNEL_TIMES];
 } cl_env;
 
-const char *__atrbvh_cl_error_name(cl_int err)
+const char *atrbvh_i_cl_error_name(cl_int err)
 {
     switch (err) {
 #define E(x) \
@@ -144,22 +144,22 @@ const char *__atrbvh_cl_error_name(cl_int err)
     }
 }
 
-atrbvh_status __atrbvh_cl_fail(atrbvh_error *error, cl_int err,
+atrbvh_status atrbvh_i_cl_fail(atrbvh_error *error, cl_int err,
                                const char *call, const char *what)
 {
     atrbvh_status st = ATRBVH_ERR_BACKEND;
     if (err == CL_OUT_OF_HOST_MEMORY || err == CL_MEM_OBJECT_ALLOCATION_FAILURE)
         st = ATRBVH_ERR_NOMEM;
-    return __atrbvh_fail(error, st, NO_INDEX, "OpenCL: %s failed%s%s: %s (%d)",
+    return atrbvh_i_fail(error, st, NO_INDEX, "OpenCL: %s failed%s%s: %s (%d)",
                          call, what ? " for " : "", what ? what : "",
-                         __atrbvh_cl_error_name(err), (int)err);
+                         atrbvh_i_cl_error_name(err), (int)err);
 }
 
 #define CL_TRY(call_expr, name, what)                                          \
     do {                                                                       \
         cl_int e_ = (call_expr);                                               \
         if (e_ != CL_SUCCESS)                                                  \
-            return __atrbvh_cl_fail(error, e_, name, what);                    \
+            return atrbvh_i_cl_fail(error, e_, name, what);                    \
     } while (0)
 
 static void env_release(cl_env *env)
@@ -223,7 +223,7 @@ static int contains(const char *hay, const char *needle)
  * $ATRBVH_OPENCL_DEVICE) "P:D" by indices, or the first device whose name
  * contains spec; with no spec the first device of the first platform that
  * has one. */
-atrbvh_status __atrbvh_cl_select(const char *spec, cl_device_id *out,
+atrbvh_status atrbvh_i_cl_select(const char *spec, cl_device_id *out,
                                  char *name, size_t name_size,
                                  atrbvh_error *error)
 {
@@ -243,11 +243,11 @@ atrbvh_status __atrbvh_cl_select(const char *spec, cl_device_id *out,
         by_index = parse_index_pair(spec, &want_p, &want_d);
     err = clGetPlatformIDs(MAX_PLATFORMS, platforms, &np);
     if (err == -1001 /* CL_PLATFORM_NOT_FOUND_KHR */ || (err == CL_SUCCESS && np == 0))
-        return __atrbvh_fail(error, ATRBVH_ERR_UNSUPPORTED, NO_INDEX,
+        return atrbvh_i_fail(error, ATRBVH_ERR_UNSUPPORTED, NO_INDEX,
                              "OpenCL: no platform found (is an ICD such as "
                              "pocl-opencl-icd installed?)");
     if (err != CL_SUCCESS)
-        return __atrbvh_cl_fail(error, err, "clGetPlatformIDs", NULL);
+        return atrbvh_i_cl_fail(error, err, "clGetPlatformIDs", NULL);
     if (np > MAX_PLATFORMS)
         np = MAX_PLATFORMS;
     list[0] = '\0';
@@ -259,7 +259,7 @@ atrbvh_status __atrbvh_cl_select(const char *spec, cl_device_id *out,
         if (err == CL_DEVICE_NOT_FOUND)
             continue;
         if (err != CL_SUCCESS)
-            return __atrbvh_cl_fail(error, err, "clGetDeviceIDs", NULL);
+            return atrbvh_i_cl_fail(error, err, "clGetDeviceIDs", NULL);
         if (nd > MAX_DEVICES)
             nd = MAX_DEVICES;
         for (d = 0; d < nd; d++) {
@@ -287,10 +287,10 @@ atrbvh_status __atrbvh_cl_select(const char *spec, cl_device_id *out,
         }
     }
     if (!spec)
-        return __atrbvh_fail(error, ATRBVH_ERR_UNSUPPORTED, NO_INDEX,
+        return atrbvh_i_fail(error, ATRBVH_ERR_UNSUPPORTED, NO_INDEX,
                              "OpenCL: no device found on %u platform%s",
                              (unsigned)np, np == 1 ? "" : "s");
-    return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
+    return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
                          "OpenCL: no device matches \"%.40s\" (want "
                          "PLATFORM:DEVICE or a name substring; devices: %s)",
                          spec, list[0] ? list : "none");
@@ -314,13 +314,13 @@ static char *read_file(const char *path, size_t *len)
         fclose(f);
         return NULL;
     }
-    buf = __atrbvh_malloc((size_t)size + 1);
+    buf = atrbvh_i_malloc((size_t)size + 1);
     if (!buf) {
         fclose(f);
         return NULL;
     }
     if (fread(buf, 1, (size_t)size, f) != (size_t)size) {
-        __atrbvh_free(buf);
+        atrbvh_i_free(buf);
         fclose(f);
         return NULL;
     }
@@ -361,7 +361,7 @@ static char *kernel_source(void)
             lens[k] = atrbvh_cl_files[k].length;
         total += lens[k] + 64;
     }
-    src = __atrbvh_malloc(total);
+    src = atrbvh_i_malloc(total);
     if (src) {
         o = src;
         for (k = 0; k < ATRBVH_CL_FILE_COUNT; k++) {
@@ -389,7 +389,7 @@ static char *kernel_source(void)
         *o = '\0';
     }
     for (k = 0; k < ATRBVH_CL_FILE_COUNT; k++)
-        __atrbvh_free(parts[k]);
+        atrbvh_i_free(parts[k]);
     return src;
 }
 
@@ -408,9 +408,9 @@ static atrbvh_status build_failed(cl_env *env, cl_int err, atrbvh_error *error)
     for (k = 0; log[k]; k++)
         if (log[k] == '\n' || log[k] == '\r' || log[k] == '\t')
             log[k] = ' ';
-    return __atrbvh_fail(error, ATRBVH_ERR_BACKEND, NO_INDEX,
+    return atrbvh_i_fail(error, ATRBVH_ERR_BACKEND, NO_INDEX,
                          "OpenCL kernel build failed (%s): %s",
-                         __atrbvh_cl_error_name(err), log);
+                         atrbvh_i_cl_error_name(err), log);
 }
 
 /* Context, queue (profiling), program, kernels. */
@@ -425,7 +425,7 @@ static atrbvh_status env_open(cl_env *env, const char *spec,
     int k;
     atrbvh_status st;
 
-    st = __atrbvh_cl_select(spec, &env->device, env->device_name,
+    st = atrbvh_i_cl_select(spec, &env->device, env->device_name,
                             sizeof env->device_name, error);
     if (st != ATRBVH_OK)
         return st;
@@ -435,7 +435,7 @@ static atrbvh_status env_open(cl_env *env, const char *spec,
            "clGetDeviceInfo", "CL_DEVICE_EXTENSIONS");
     ext[sizeof ext - 1] = '\0';
     if (!strstr(ext, "cl_khr_fp64"))
-        return __atrbvh_fail(error, ATRBVH_ERR_UNSUPPORTED, NO_INDEX,
+        return atrbvh_i_fail(error, ATRBVH_ERR_UNSUPPORTED, NO_INDEX,
                              "OpenCL device \"%s\" lacks cl_khr_fp64: atrbvh "
                              "computes areas and costs in double precision",
                              env->device_name);
@@ -448,21 +448,21 @@ static atrbvh_status env_open(cl_env *env, const char *spec,
            "clGetDeviceInfo", "CL_DEVICE_MAX_COMPUTE_UNITS");
     env->ctx = clCreateContext(NULL, 1, &env->device, NULL, NULL, &err);
     if (!env->ctx)
-        return __atrbvh_cl_fail(error, err, "clCreateContext", NULL);
+        return atrbvh_i_cl_fail(error, err, "clCreateContext", NULL);
     env->queue = clCreateCommandQueue(env->ctx, env->device,
                                       CL_QUEUE_PROFILING_ENABLE, &err);
     if (!env->queue)
-        return __atrbvh_cl_fail(error, err, "clCreateCommandQueue", NULL);
+        return atrbvh_i_cl_fail(error, err, "clCreateCommandQueue", NULL);
     src = kernel_source();
     if (!src)
-        return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                              "cannot allocate the OpenCL kernel source");
     srcs[0] = src;
     len = strlen(src);
     env->program = clCreateProgramWithSource(env->ctx, 1, srcs, &len, &err);
-    __atrbvh_free(src);
+    atrbvh_i_free(src);
     if (!env->program)
-        return __atrbvh_cl_fail(error, err, "clCreateProgramWithSource", NULL);
+        return atrbvh_i_cl_fail(error, err, "clCreateProgramWithSource", NULL);
     /* No -cl-fast-relaxed-math, no -cl-mad-enable: bit-for-bit with C. */
     err = clBuildProgram(env->program, 1, &env->device, "-cl-std=CL1.2", NULL,
                          NULL);
@@ -471,7 +471,7 @@ static atrbvh_status env_open(cl_env *env, const char *spec,
     for (k = 0; k < K_COUNT; k++) {
         env->kernel[k] = clCreateKernel(env->program, kernel_names[k], &err);
         if (!env->kernel[k])
-            return __atrbvh_cl_fail(error, err, "clCreateKernel",
+            return atrbvh_i_cl_fail(error, err, "clCreateKernel",
                                     kernel_names[k]);
     }
     return ATRBVH_OK;
@@ -484,22 +484,22 @@ static atrbvh_status buffer(cl_env *env, size_t count, size_t item,
     size_t bytes;
     cl_int err;
     *out = NULL;
-    if (!__atrbvh_mul_size(count ? count : 1, item, &bytes))
-        return __atrbvh_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
+    if (!atrbvh_i_mul_size(count ? count : 1, item, &bytes))
+        return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
                              "OpenCL buffer %s: size overflows", what);
     if ((cl_ulong)bytes > env->max_alloc)
-        return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                              "OpenCL buffer %s of %lu bytes exceeds the "
                              "device's largest allocation "
                              "(CL_DEVICE_MAX_MEM_ALLOC_SIZE %lu)",
                              what, (unsigned long)bytes,
                              (unsigned long)env->max_alloc);
     if (env->buffer_count == MAX_BUFFERS)
-        return __atrbvh_fail(error, ATRBVH_ERR_BACKEND, NO_INDEX,
+        return atrbvh_i_fail(error, ATRBVH_ERR_BACKEND, NO_INDEX,
                              "OpenCL: too many buffers (internal)");
     *out = clCreateBuffer(env->ctx, CL_MEM_READ_WRITE, bytes, NULL, &err);
     if (!*out)
-        return __atrbvh_cl_fail(error, err, "clCreateBuffer", what);
+        return atrbvh_i_cl_fail(error, err, "clCreateBuffer", what);
     env->buffers[env->buffer_count++] = *out;
     return ATRBVH_OK;
 }
@@ -616,7 +616,7 @@ static atrbvh_status launch(cl_env *env, int k, size_t items,
     err = clEnqueueNDRangeKernel(env->queue, env->kernel[k], 1, NULL, &global,
                                  local ? &local : NULL, 0, NULL, &ev);
     if (err != CL_SUCCESS)
-        return __atrbvh_cl_fail(error, err, "clEnqueueNDRangeKernel",
+        return atrbvh_i_cl_fail(error, err, "clEnqueueNDRangeKernel",
                                 kernel_names[k]);
     env->events[env->event_count] = ev;
     env->event_name[env->event_count++] = kernel_names[k];
@@ -639,7 +639,7 @@ static atrbvh_status set_args(cl_env *env, int k, const karg *a, int count,
         if (err != CL_SUCCESS) {
             char what[64];
             snprintf(what, sizeof what, "%s argument %d", kernel_names[k], i);
-            return __atrbvh_cl_fail(error, err, "clSetKernelArg", what);
+            return atrbvh_i_cl_fail(error, err, "clSetKernelArg", what);
         }
     }
     return ATRBVH_OK;
@@ -668,7 +668,7 @@ static atrbvh_status stage_end(cl_env *env, double *ms, double *t,
                                atrbvh_error *error)
 {
     atrbvh_status st = harvest(env, error);
-    double now = __atrbvh_now_ms();
+    double now = atrbvh_i_now_ms();
     *ms += now - *t;
     *t = now;
     return st;
@@ -678,13 +678,13 @@ static atrbvh_status stage_end(cl_env *env, double *ms, double *t,
 static atrbvh_status read_tree(cl_env *env, uint32_t n, cl_mem left,
                                cl_mem right, cl_mem parent, cl_mem count,
                                cl_mem box, cl_mem cost, cl_mem leaf_prim,
-                               int values, __atrbvh_tree *out,
+                               int values, atrbvh_i_tree *out,
                                atrbvh_error *error)
 {
     size_t nodes = 2 * (size_t)n - 1, inner = n > 1 ? (size_t)n - 1 : 0;
     atrbvh_status st;
-    if (__atrbvh_tree_alloc(out, n) != ATRBVH_OK)
-        return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+    if (atrbvh_i_tree_alloc(out, n) != ATRBVH_OK)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                              "cannot allocate the capture");
     st = download(env, left, out->left, inner * 4, "left", error);
     if (st == ATRBVH_OK)
@@ -708,13 +708,13 @@ static atrbvh_status read_tree(cl_env *env, uint32_t n, cl_mem left,
 #define ALIGN64(x) (((x) + 63u) & ~(size_t)63u)
 
 /* ------------------------------------------------------------ the build */
-atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *g,
-                                const __atrbvh_config *cfg, atrbvh_bvh **out,
-                                __atrbvh_capture *cap, atrbvh_error *error)
+atrbvh_status atrbvh_i_cl_build(const atrbvh_geometry *g,
+                                const atrbvh_i_config *cfg, atrbvh_bvh **out,
+                                atrbvh_i_capture *cap, atrbvh_error *error)
 {
     cl_env env;
     atrbvh_status st;
-    __atrbvh_prims prims;
+    atrbvh_i_prims prims;
     atrbvh_bvh *bvh = NULL;
     double ms[ATRBVH_STAGE_COUNT], t0, t;
     size_t vstride = 0, istride = 0, bstride = 0;
@@ -735,15 +735,15 @@ atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *g,
     memset(&env, 0, sizeof env);
     memset(&prims, 0, sizeof prims);
     memset(ms, 0, sizeof ms);
-    t0 = __atrbvh_now_ms();
-    st = __atrbvh_check_geometry(g, &vstride, &istride, &bstride, error);
+    t0 = atrbvh_i_now_ms();
+    st = atrbvh_i_check_geometry(g, &vstride, &istride, &bstride, error);
     if (st != ATRBVH_OK)
         return st;
     st = env_open(&env, cfg->opencl_device, error);
     if (st != ATRBVH_OK)
         goto done;
     /* Device setup (program build) is part of build_ms, not of a stage. */
-    t = __atrbvh_now_ms();
+    t = atrbvh_i_now_ms();
 
     /* ------------------------------------------------------- bounds */
     {
@@ -785,7 +785,7 @@ atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *g,
             /* NaN/Inf or a bad index somewhere: the CPU stage reports the
              * exact error (the lowest index, the right kind) or, with
              * skip_invalid, compacts; its boxes are then uploaded. */
-            CHECK(__atrbvh_bounds(g, cfg, &prims, error));
+            CHECK(atrbvh_i_bounds(g, cfg, &prims, error));
             n = prims.count;
             CHECK(upload(&env, boxes, prims.boxes, (size_t)n * sizeof(atrbvh_box),
                          "primitive boxes", error));
@@ -823,9 +823,9 @@ atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *g,
             cap->n = n;
             cap->scene = prims.scene;
             cap->centroids = prims.centroids;
-            cap->prim_boxes = __atrbvh_alloc_array(n, sizeof(atrbvh_box));
+            cap->prim_boxes = atrbvh_i_alloc_array(n, sizeof(atrbvh_box));
             if (!cap->prim_boxes) {
-                st = __atrbvh_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                                    "cannot allocate the capture");
                 goto done;
             }
@@ -841,15 +841,15 @@ atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *g,
     /* ------------------------------------------------------- morton */
     {
         double lo[3], scale[3];
-        __atrbvh_morton_frame(&prims.centroids, lo, scale);
+        atrbvh_i_morton_frame(&prims.centroids, lo, scale);
         CHECK(buffer(&env, n, sizeof(cl_ulong), "keys", &keys, error));
         CHECK(buffer(&env, n, sizeof(cl_uint), "order", &order, error));
         RUN(K_MORTON, n, A(boxes), A(n), A(lo[0]), A(lo[1]), A(lo[2]),
             A(scale[0]), A(scale[1]), A(scale[2]), A(keys), A(order));
         if (cap) {
-            cap->keys = __atrbvh_alloc_array(n, sizeof *cap->keys);
+            cap->keys = atrbvh_i_alloc_array(n, sizeof *cap->keys);
             if (!cap->keys) {
-                st = __atrbvh_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                                    "cannot allocate the capture");
                 goto done;
             }
@@ -900,10 +900,10 @@ atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *g,
         buffer_drop(&env, &hist);
     }
     if (cap) {
-        cap->sorted_keys = __atrbvh_alloc_array(n, sizeof *cap->sorted_keys);
-        cap->order = __atrbvh_alloc_array(n, sizeof *cap->order);
+        cap->sorted_keys = atrbvh_i_alloc_array(n, sizeof *cap->sorted_keys);
+        cap->order = atrbvh_i_alloc_array(n, sizeof *cap->order);
         if (!cap->sorted_keys || !cap->order) {
-            st = __atrbvh_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+            st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                                "cannot allocate the capture");
             goto done;
         }
@@ -1008,7 +1008,7 @@ atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *g,
     if (cap)
         CHECK(read_tree(&env, n, left, right, parent, count, box, cost,
                         leaf_prim, 1, &cap->optimise, error));
-    t = __atrbvh_now_ms();
+    t = atrbvh_i_now_ms();
 
     /* ----------------------------------------------------- collapse */
     {
@@ -1020,9 +1020,9 @@ atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *g,
             A(counter));
         CHECK(download(&env, size, &root_size, 4, "subtree sizes", error));
         if (cap) {
-            cap->collapse_size = __atrbvh_alloc_array(nodes, 4);
+            cap->collapse_size = atrbvh_i_alloc_array(nodes, 4);
             if (!cap->collapse_size) {
-                st = __atrbvh_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                                    "cannot allocate the capture");
                 goto done;
             }
@@ -1033,9 +1033,9 @@ atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *g,
 
         /* ---------------------------------------------------- layout */
         root_size &= ATRBVH_SIZE_MASK;
-        bvh = __atrbvh_bvh_alloc(root_size, n);
+        bvh = atrbvh_i_bvh_alloc(root_size, n);
         if (!bvh) {
-            st = __atrbvh_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+            st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                                "cannot allocate the output (%lu nodes)",
                                (unsigned long)root_size);
             goto done;
@@ -1054,9 +1054,9 @@ atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *g,
         CHECK(stage_end(&env, &ms[ATRBVH_STAGE_LAYOUT], &t, error));
     }
 
-    bvh->device = __atrbvh_malloc(sizeof *bvh->device);
+    bvh->device = atrbvh_i_malloc(sizeof *bvh->device);
     if (!bvh->device) {
-        st = __atrbvh_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+        st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                            "cannot allocate the device information");
         goto done;
     }
@@ -1064,12 +1064,12 @@ atrbvh_status __atrbvh_cl_build(const atrbvh_geometry *g,
     snprintf(bvh->device->name, sizeof bvh->device->name, "%s",
              env.device_name);
     for (k = 0; k < env.time_count; k++)
-        __atrbvh_bvh_add_kernel_time(bvh, env.time_name[k], env.time_ms[k]);
-    st = __atrbvh_build_finish(bvh, cfg, prims.invalid, ms, t0, error);
+        atrbvh_i_bvh_add_kernel_time(bvh, env.time_name[k], env.time_ms[k]);
+    st = atrbvh_i_build_finish(bvh, cfg, prims.invalid, ms, t0, error);
 
 done:
     env_release(&env);
-    __atrbvh_prims_free(&prims);
+    atrbvh_i_prims_free(&prims);
     if (st != ATRBVH_OK) {
         atrbvh_bvh_free(bvh);
         bvh = NULL;
@@ -1082,7 +1082,7 @@ done:
 /* The BVH and the geometry are uploaded once; the rays go in chunks that
  * fit the device's largest allocation.  One launch of intersect_closest or
  * intersect_any (shared/traverse.h per ray) per chunk. */
-atrbvh_status __atrbvh_cl_trace(const atrbvh_bvh *bvh,
+atrbvh_status atrbvh_i_cl_trace(const atrbvh_bvh *bvh,
                                 const atrbvh_geometry *g,
                                 const atrbvh_ray *rays, size_t count,
                                 atrbvh_hit *hits, uint8_t *occluded,

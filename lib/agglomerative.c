@@ -9,9 +9,9 @@
  */
 #include "optimise.h"
 
-int __atrbvh_atrbvh_treelet(const atrbvh_treelet_tree *t,
+int atrbvh_i_atrbvh_treelet(const atrbvh_treelet_tree *t,
                             const atrbvh_cost_params *p, uint32_t root,
-                            unsigned n, __atrbvh_opt_worker *w)
+                            unsigned n, atrbvh_i_opt_worker *w)
 {
     int applied = atrbvh_treelet_process(t, p, root, n, 1, w->trbvh, w->dist);
     w->treelets++;

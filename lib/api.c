@@ -53,7 +53,7 @@ const char *atrbvh_strerror(atrbvh_status status)
     return "unknown status";
 }
 
-atrbvh_status __atrbvh_fail(atrbvh_error *error, atrbvh_status status,
+atrbvh_status atrbvh_i_fail(atrbvh_error *error, atrbvh_status status,
                             uint64_t index, const char *fmt, ...)
 {
     if (error) {
@@ -67,7 +67,7 @@ atrbvh_status __atrbvh_fail(atrbvh_error *error, atrbvh_status status,
     return status;
 }
 
-void __atrbvh_clear_error(atrbvh_error *error)
+void atrbvh_i_clear_error(atrbvh_error *error)
 {
     if (error) {
         error->status = ATRBVH_OK;
@@ -99,14 +99,14 @@ void atrbvh_get_allocator(atrbvh_malloc_fn *malloc_fn, atrbvh_free_fn *free_fn)
         *free_fn = user_free ? user_free : free;
 }
 
-void *__atrbvh_malloc(size_t size)
+void *atrbvh_i_malloc(size_t size)
 {
     if (size == 0)
         size = 1;
     return user_malloc ? user_malloc(size) : malloc(size);
 }
 
-void __atrbvh_free(void *ptr)
+void atrbvh_i_free(void *ptr)
 {
     if (!ptr)
         return;
@@ -118,10 +118,10 @@ void __atrbvh_free(void *ptr)
 
 void atrbvh_free(void *ptr)
 {
-    __atrbvh_free(ptr);
+    atrbvh_i_free(ptr);
 }
 
-int __atrbvh_mul_size(size_t count, size_t size, size_t *out)
+int atrbvh_i_mul_size(size_t count, size_t size, size_t *out)
 {
     if (size != 0 && count > SIZE_MAX / size) {
         *out = 0;
@@ -131,16 +131,16 @@ int __atrbvh_mul_size(size_t count, size_t size, size_t *out)
     return 1;
 }
 
-void *__atrbvh_alloc_array(size_t count, size_t size)
+void *atrbvh_i_alloc_array(size_t count, size_t size)
 {
     size_t bytes;
-    if (!__atrbvh_mul_size(count, size, &bytes))
+    if (!atrbvh_i_mul_size(count, size, &bytes))
         return NULL;
-    return __atrbvh_malloc(bytes);
+    return atrbvh_i_malloc(bytes);
 }
 
 /* ----------------------------------------------------------------- threads */
-int __atrbvh_resolve_threads(int requested)
+int atrbvh_i_resolve_threads(int requested)
 {
 #ifdef _OPENMP
     if (requested > 0)
@@ -152,7 +152,7 @@ int __atrbvh_resolve_threads(int requested)
 #endif
 }
 
-double __atrbvh_now_ms(void)
+double atrbvh_i_now_ms(void)
 {
 #if defined(CLOCK_MONOTONIC) && _POSIX_C_SOURCE >= 199309L
     struct timespec ts;
@@ -232,8 +232,8 @@ void atrbvh_build_options_init(atrbvh_build_options *o)
 #define ATRBVH_MAX_N 32u
 #define MAX_ROUNDS 64u
 
-atrbvh_status __atrbvh_resolve_options(const atrbvh_build_options *user,
-                                       __atrbvh_config *c,
+atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
+                                       atrbvh_i_config *c,
                                        atrbvh_error *error)
 {
     atrbvh_build_options o;
@@ -242,7 +242,7 @@ atrbvh_status __atrbvh_resolve_options(const atrbvh_build_options *user,
         if (user->size < offsetof(atrbvh_build_options, method) +
                              sizeof(atrbvh_method) ||
             user->size > sizeof o)
-            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                  (uint64_t)-1,
                                  "options.size is %lu; set it with "
                                  "atrbvh_build_options_init()",
@@ -252,7 +252,7 @@ atrbvh_status __atrbvh_resolve_options(const atrbvh_build_options *user,
     }
     memset(c, 0, sizeof *c);
     if ((int)o.method < ATRBVH_METHOD_LBVH || o.method > ATRBVH_METHOD_ATRBVH)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "options.method %d is not lbvh, trbvh or atrbvh",
                              (int)o.method);
     c->method = o.method;
@@ -269,19 +269,19 @@ atrbvh_status __atrbvh_resolve_options(const atrbvh_build_options *user,
         c->rounds = o.rounds ? o.rounds
                     : o.method == ATRBVH_METHOD_TRBVH ? 3u : 2u;
         if (c->treelet_size < lo || c->treelet_size > hi)
-            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                  (uint64_t)-1,
                                  "treelet size %u is out of range for %s "
                                  "(%u to %u)",
                                  c->treelet_size, name, lo, hi);
         if (c->rounds > MAX_ROUNDS)
-            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                  (uint64_t)-1,
                                  "rounds %u is out of range (1 to %u)",
                                  c->rounds, MAX_ROUNDS);
         c->gamma = o.gamma ? o.gamma : c->treelet_size;
         if (c->gamma < c->treelet_size)
-            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                  (uint64_t)-1,
                                  "gamma %u is smaller than the treelet size "
                                  "%u (a treelet root needs that many "
@@ -290,27 +290,27 @@ atrbvh_status __atrbvh_resolve_options(const atrbvh_build_options *user,
     }
     /* NaN fails both comparisons, so it is rejected here too. */
     if (!(o.ci > 0.0 && o.ci < 1e30))
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "ci %g must be positive and finite", o.ci);
     if (!(o.ct > 0.0 && o.ct < 1e30))
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "ct %g must be positive and finite", o.ct);
     if (o.threads < 0)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "threads %d is negative", o.threads);
     if (o.max_leaf_size > 0 && !o.collapse)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "max_leaf_size needs collapse (leaves hold one "
                              "primitive without it)");
     if ((int)o.backend < ATRBVH_BACKEND_CPU || o.backend > ATRBVH_BACKEND_OPENCL)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "options.backend %d is not cpu or opencl",
                              (int)o.backend);
     c->cost.ci = o.ci;
     c->cost.ct = o.ct;
     c->cost.collapse = o.collapse != 0;
     c->cost.max_leaf = o.max_leaf_size;
-    c->threads = __atrbvh_resolve_threads(o.threads);
+    c->threads = atrbvh_i_resolve_threads(o.threads);
     c->skip_invalid = o.skip_invalid != 0;
     c->backend = o.backend;
     c->opencl_device = o.opencl_device;

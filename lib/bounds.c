@@ -21,19 +21,19 @@ static const float *vertex_at(const atrbvh_geometry *g, size_t stride,
 }
 
 /* Validates pointers, strides and counts; fills the effective strides. */
-atrbvh_status __atrbvh_check_geometry(const atrbvh_geometry *g,
+atrbvh_status atrbvh_i_check_geometry(const atrbvh_geometry *g,
                                      size_t *vstride, size_t *istride,
                                      size_t *bstride, atrbvh_error *error)
 {
     size_t need, last;
     if (!g)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
                              "geometry is NULL");
     if (g->primitive_count == 0)
-        return __atrbvh_fail(error, ATRBVH_ERR_NO_PRIMITIVES, NO_INDEX,
+        return atrbvh_i_fail(error, ATRBVH_ERR_NO_PRIMITIVES, NO_INDEX,
                              "the geometry has no primitives");
     if (g->primitive_count > ATRBVH_MAX_PRIMITIVES)
-        return __atrbvh_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
+        return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
                              "%lu primitives exceed the limit of %lu",
                              (unsigned long)g->primitive_count,
                              (unsigned long)ATRBVH_MAX_PRIMITIVES);
@@ -41,41 +41,41 @@ atrbvh_status __atrbvh_check_geometry(const atrbvh_geometry *g,
         *vstride = g->vertex_stride ? g->vertex_stride : 3 * sizeof(float);
         *istride = g->index_stride ? g->index_stride : 3 * sizeof(uint32_t);
         if (!g->vertices)
-            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
                                  "geometry.vertices is NULL");
         if (*vstride < 3 * sizeof(float) || *vstride % sizeof(float))
-            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
                                  "vertex_stride %lu is not a multiple of 4 "
                                  "of at least 12 bytes",
                                  (unsigned long)*vstride);
         /* The last byte read must be addressable: stride * (count-1) + 12. */
         if (g->vertex_count == 0)
-            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
                                  "geometry has triangles but no vertices");
-        if (!__atrbvh_mul_size(g->vertex_count - 1, *vstride, &last) ||
+        if (!atrbvh_i_mul_size(g->vertex_count - 1, *vstride, &last) ||
             last > SIZE_MAX - 3 * sizeof(float))
-            return __atrbvh_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
+            return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
                                  "vertex_count %lu times vertex_stride %lu "
                                  "overflows",
                                  (unsigned long)g->vertex_count,
                                  (unsigned long)*vstride);
         if (g->indices) {
             if (*istride < 3 * sizeof(uint32_t) || *istride % sizeof(uint32_t))
-                return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+                return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                      NO_INDEX,
                                      "index_stride %lu is not a multiple of "
                                      "4 of at least 12 bytes",
                                      (unsigned long)*istride);
-            if (!__atrbvh_mul_size(g->primitive_count, *istride, &need))
-                return __atrbvh_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
+            if (!atrbvh_i_mul_size(g->primitive_count, *istride, &need))
+                return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
                                      "primitive_count times index_stride "
                                      "overflows");
         } else {
-            if (!__atrbvh_mul_size(g->primitive_count, 3, &need))
-                return __atrbvh_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
+            if (!atrbvh_i_mul_size(g->primitive_count, 3, &need))
+                return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
                                      "3 * primitive_count overflows");
             if (g->vertex_count < need)
-                return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+                return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                      NO_INDEX,
                                      "%lu unindexed triangles need %lu "
                                      "vertices, vertex_count is %lu",
@@ -86,18 +86,18 @@ atrbvh_status __atrbvh_check_geometry(const atrbvh_geometry *g,
     } else if (g->type == ATRBVH_GEOMETRY_BOXES) {
         *bstride = g->box_stride ? g->box_stride : 6 * sizeof(float);
         if (!g->boxes)
-            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
                                  "geometry.boxes is NULL");
         if (*bstride < 6 * sizeof(float) || *bstride % sizeof(float))
-            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
                                  "box_stride %lu is not a multiple of 4 of "
                                  "at least 24 bytes",
                                  (unsigned long)*bstride);
-        if (!__atrbvh_mul_size(g->primitive_count, *bstride, &need))
-            return __atrbvh_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
+        if (!atrbvh_i_mul_size(g->primitive_count, *bstride, &need))
+            return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
                                  "primitive_count times box_stride overflows");
     } else {
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
                              "geometry.type %d is not triangles or boxes",
                              (int)g->type);
     }
@@ -143,16 +143,16 @@ static int prim_box(const atrbvh_geometry *g, size_t vstride, size_t istride,
     return PRIM_OK;
 }
 
-void __atrbvh_prims_free(__atrbvh_prims *p)
+void atrbvh_i_prims_free(atrbvh_i_prims *p)
 {
-    __atrbvh_free(p->ids);
-    __atrbvh_free(p->boxes);
+    atrbvh_i_free(p->ids);
+    atrbvh_i_free(p->boxes);
     p->ids = NULL;
     p->boxes = NULL;
 }
 
-atrbvh_status __atrbvh_bounds(const atrbvh_geometry *g,
-                              const __atrbvh_config *cfg, __atrbvh_prims *out,
+atrbvh_status atrbvh_i_bounds(const atrbvh_geometry *g,
+                              const atrbvh_i_config *cfg, atrbvh_i_prims *out,
                               atrbvh_error *error)
 {
     size_t vstride = 0, istride = 0, bstride = 0;
@@ -167,13 +167,13 @@ atrbvh_status __atrbvh_bounds(const atrbvh_geometry *g,
     float cmin0, cmin1, cmin2, cmax0, cmax1, cmax2;
 
     memset(out, 0, sizeof *out);
-    st = __atrbvh_check_geometry(g, &vstride, &istride, &bstride, error);
+    st = atrbvh_i_check_geometry(g, &vstride, &istride, &bstride, error);
     if (st != ATRBVH_OK)
         return st;
     n = g->primitive_count;
-    boxes = __atrbvh_alloc_array(n, sizeof *boxes);
+    boxes = atrbvh_i_alloc_array(n, sizeof *boxes);
     if (!boxes)
-        return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                              "cannot allocate %lu primitive boxes",
                              (unsigned long)n);
 
@@ -227,31 +227,31 @@ atrbvh_status __atrbvh_bounds(const atrbvh_geometry *g,
     }
 
     if (bad_kind == PRIM_BAD_INDEX) {
-        __atrbvh_free(boxes);
-        return __atrbvh_fail(error, ATRBVH_ERR_INDEX_RANGE, (uint64_t)first_bad,
+        atrbvh_i_free(boxes);
+        return atrbvh_i_fail(error, ATRBVH_ERR_INDEX_RANGE, (uint64_t)first_bad,
                              "triangle %ld uses vertex %lu, but there are "
                              "only %lu vertices",
                              (long)first_bad, (unsigned long)bad_value,
                              (unsigned long)g->vertex_count);
     }
     if (bad_kind == PRIM_INVERTED) {
-        __atrbvh_free(boxes);
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+        atrbvh_i_free(boxes);
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                              (uint64_t)first_bad,
                              "box %ld has min greater than max",
                              (long)first_bad);
     }
     if (bad_kind == PRIM_NONFINITE && !cfg->skip_invalid) {
-        __atrbvh_free(boxes);
-        return __atrbvh_fail(error, ATRBVH_ERR_NONFINITE, (uint64_t)first_bad,
+        atrbvh_i_free(boxes);
+        return atrbvh_i_fail(error, ATRBVH_ERR_NONFINITE, (uint64_t)first_bad,
                              "%s %ld has a NaN or infinite coordinate",
                              g->type == ATRBVH_GEOMETRY_BOXES ? "box"
                                                               : "triangle",
                              (long)first_bad);
     }
     if (invalid == n) {
-        __atrbvh_free(boxes);
-        return __atrbvh_fail(error, ATRBVH_ERR_NO_PRIMITIVES, NO_INDEX,
+        atrbvh_i_free(boxes);
+        return atrbvh_i_fail(error, ATRBVH_ERR_NO_PRIMITIVES, NO_INDEX,
                              "all %lu primitives have NaN or infinite "
                              "coordinates",
                              (unsigned long)n);
@@ -259,10 +259,10 @@ atrbvh_status __atrbvh_bounds(const atrbvh_geometry *g,
     kept = n;
     if (invalid) {
         /* Compact in input order, so the kept ids are ascending. */
-        out->ids = __atrbvh_alloc_array(n - invalid, sizeof *out->ids);
+        out->ids = atrbvh_i_alloc_array(n - invalid, sizeof *out->ids);
         if (!out->ids) {
-            __atrbvh_free(boxes);
-            return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+            atrbvh_i_free(boxes);
+            return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                                  "cannot allocate the kept primitive list");
         }
         kept = 0;

@@ -14,7 +14,7 @@
 
 #include <string.h>
 
-static void progress(const __atrbvh_config *cfg, atrbvh_stage stage)
+static void progress(const atrbvh_i_config *cfg, atrbvh_stage stage)
 {
     if (cfg->progress)
         cfg->progress(atrbvh_stage_name(stage),
@@ -23,7 +23,7 @@ static void progress(const __atrbvh_config *cfg, atrbvh_stage stage)
 }
 
 #define NOMEM(what)                                                            \
-    __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,                      \
+    atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,                      \
                   "cannot allocate " what " for %lu primitives",               \
                   (unsigned long)n)
 
@@ -31,7 +31,7 @@ static void progress(const __atrbvh_config *cfg, atrbvh_stage stage)
 static int capture_copy(void *dst_ptr, const void *src, size_t n, size_t size)
 {
     void **dst = (void **)dst_ptr;
-    *dst = __atrbvh_alloc_array(n, size);
+    *dst = atrbvh_i_alloc_array(n, size);
     if (!*dst)
         return 0;
     memcpy(*dst, src, n * size);
@@ -42,17 +42,17 @@ atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
                            const atrbvh_build_options *options,
                            atrbvh_bvh **out, atrbvh_error *error)
 {
-    return __atrbvh_build_run(geometry, options, out, NULL, error);
+    return atrbvh_i_build_run(geometry, options, out, NULL, error);
 }
 
-atrbvh_status __atrbvh_build_run(const atrbvh_geometry *geometry,
+atrbvh_status atrbvh_i_build_run(const atrbvh_geometry *geometry,
                                  const atrbvh_build_options *options,
-                                 atrbvh_bvh **out, __atrbvh_capture *cap,
+                                 atrbvh_bvh **out, atrbvh_i_capture *cap,
                                  atrbvh_error *error)
 {
-    __atrbvh_config cfg;
-    __atrbvh_prims prims;
-    __atrbvh_tree tree;
+    atrbvh_i_config cfg;
+    atrbvh_i_prims prims;
+    atrbvh_i_tree tree;
     uint64_t *keys = NULL, *tmp_keys = NULL;
     uint32_t *order = NULL, *tmp_order = NULL;
     atrbvh_bvh *bvh = NULL;
@@ -60,33 +60,33 @@ atrbvh_status __atrbvh_build_run(const atrbvh_geometry *geometry,
     double ms[ATRBVH_STAGE_COUNT], t0, t;
     uint32_t n, i;
 
-    __atrbvh_clear_error(error);
+    atrbvh_i_clear_error(error);
     memset(&prims, 0, sizeof prims);
     memset(&tree, 0, sizeof tree);
     memset(ms, 0, sizeof ms);
     if (!out)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "the output pointer is NULL");
     *out = NULL;
-    st = __atrbvh_resolve_options(options, &cfg, error);
+    st = atrbvh_i_resolve_options(options, &cfg, error);
     if (st != ATRBVH_OK)
         return st;
     if (cfg.backend == ATRBVH_BACKEND_OPENCL)
 #ifdef ATRBVH_HAVE_OPENCL
-        return __atrbvh_cl_build(geometry, &cfg, out, cap, error);
+        return atrbvh_i_cl_build(geometry, &cfg, out, cap, error);
 #else
-        return __atrbvh_fail(error, ATRBVH_ERR_UNSUPPORTED, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_UNSUPPORTED, (uint64_t)-1,
                              "this build of atrbvh has no OpenCL backend "
                              "(configure --enable-opencl)");
 #endif
 
-    t0 = __atrbvh_now_ms();
+    t0 = atrbvh_i_now_ms();
     progress(&cfg, ATRBVH_STAGE_BOUNDS);
-    st = __atrbvh_bounds(geometry, &cfg, &prims, error);
+    st = atrbvh_i_bounds(geometry, &cfg, &prims, error);
     if (st != ATRBVH_OK)
         return st;
     n = prims.count;
-    t = __atrbvh_now_ms();
+    t = atrbvh_i_now_ms();
     ms[ATRBVH_STAGE_BOUNDS] = t - t0;
     if (cap) {
         cap->n = n;
@@ -99,36 +99,36 @@ atrbvh_status __atrbvh_build_run(const atrbvh_geometry *geometry,
     }
 
     progress(&cfg, ATRBVH_STAGE_MORTON);
-    keys = __atrbvh_alloc_array(n, sizeof *keys);
-    order = __atrbvh_alloc_array(n, sizeof *order);
+    keys = atrbvh_i_alloc_array(n, sizeof *keys);
+    order = atrbvh_i_alloc_array(n, sizeof *order);
     if (!keys || !order) {
         st = NOMEM("Morton keys");
         goto fail;
     }
-    __atrbvh_morton(&prims, keys, cfg.threads);
+    atrbvh_i_morton(&prims, keys, cfg.threads);
     if (cap && !capture_copy(&cap->keys, keys, n, sizeof *keys)) {
         st = NOMEM("the capture");
         goto fail;
     }
-    ms[ATRBVH_STAGE_MORTON] = __atrbvh_now_ms() - t;
-    t = __atrbvh_now_ms();
+    ms[ATRBVH_STAGE_MORTON] = atrbvh_i_now_ms() - t;
+    t = atrbvh_i_now_ms();
 
     progress(&cfg, ATRBVH_STAGE_SORT);
-    tmp_keys = __atrbvh_alloc_array(n, sizeof *tmp_keys);
-    tmp_order = __atrbvh_alloc_array(n, sizeof *tmp_order);
+    tmp_keys = atrbvh_i_alloc_array(n, sizeof *tmp_keys);
+    tmp_order = atrbvh_i_alloc_array(n, sizeof *tmp_order);
     if (!tmp_keys || !tmp_order) {
         st = NOMEM("sort buffers");
         goto fail;
     }
     for (i = 0; i < n; i++)
         order[i] = i;
-    if (__atrbvh_radix_sort(keys, order, tmp_keys, tmp_order, n,
+    if (atrbvh_i_radix_sort(keys, order, tmp_keys, tmp_order, n,
                             cfg.threads) != ATRBVH_OK) {
         st = NOMEM("sort counters");
         goto fail;
     }
-    __atrbvh_free(tmp_keys);
-    __atrbvh_free(tmp_order);
+    atrbvh_i_free(tmp_keys);
+    atrbvh_i_free(tmp_order);
     tmp_keys = NULL;
     tmp_order = NULL;
     if (cap && (!capture_copy(&cap->sorted_keys, keys, n, sizeof *keys) ||
@@ -136,81 +136,81 @@ atrbvh_status __atrbvh_build_run(const atrbvh_geometry *geometry,
         st = NOMEM("the capture");
         goto fail;
     }
-    ms[ATRBVH_STAGE_SORT] = __atrbvh_now_ms() - t;
-    t = __atrbvh_now_ms();
+    ms[ATRBVH_STAGE_SORT] = atrbvh_i_now_ms() - t;
+    t = atrbvh_i_now_ms();
 
     progress(&cfg, ATRBVH_STAGE_HIERARCHY);
-    if (__atrbvh_tree_alloc(&tree, n) != ATRBVH_OK) {
+    if (atrbvh_i_tree_alloc(&tree, n) != ATRBVH_OK) {
         st = NOMEM("the tree");
         goto fail;
     }
-    __atrbvh_hierarchy(keys, &tree, cfg.threads);
-    __atrbvh_free(keys);
+    atrbvh_i_hierarchy(keys, &tree, cfg.threads);
+    atrbvh_i_free(keys);
     keys = NULL;
     for (i = 0; i < n; i++)
         tree.leaf_prim[i] = prims.ids ? prims.ids[order[i]] : order[i];
-    if (cap && __atrbvh_tree_copy(&cap->hierarchy, &tree) != ATRBVH_OK) {
+    if (cap && atrbvh_i_tree_copy(&cap->hierarchy, &tree) != ATRBVH_OK) {
         st = NOMEM("the capture");
         goto fail;
     }
-    ms[ATRBVH_STAGE_HIERARCHY] = __atrbvh_now_ms() - t;
-    t = __atrbvh_now_ms();
+    ms[ATRBVH_STAGE_HIERARCHY] = atrbvh_i_now_ms() - t;
+    t = atrbvh_i_now_ms();
 
     progress(&cfg, ATRBVH_STAGE_REFIT);
-    __atrbvh_refit(&tree, prims.boxes, order, &cfg.cost, cfg.threads);
-    __atrbvh_free(order);
+    atrbvh_i_refit(&tree, prims.boxes, order, &cfg.cost, cfg.threads);
+    atrbvh_i_free(order);
     order = NULL;
-    __atrbvh_prims_free(&prims);
-    if (cap && __atrbvh_tree_copy(&cap->refit, &tree) != ATRBVH_OK) {
+    atrbvh_i_prims_free(&prims);
+    if (cap && atrbvh_i_tree_copy(&cap->refit, &tree) != ATRBVH_OK) {
         st = NOMEM("the capture");
         goto fail;
     }
-    ms[ATRBVH_STAGE_REFIT] = __atrbvh_now_ms() - t;
-    t = __atrbvh_now_ms();
+    ms[ATRBVH_STAGE_REFIT] = atrbvh_i_now_ms() - t;
+    t = atrbvh_i_now_ms();
 
     if (cfg.method != ATRBVH_METHOD_LBVH) {
         progress(&cfg, ATRBVH_STAGE_OPTIMISE);
-        st = __atrbvh_optimise(&tree, &cfg, error);
+        st = atrbvh_i_optimise(&tree, &cfg, error);
         if (st != ATRBVH_OK)
             goto fail;
     }
-    ms[ATRBVH_STAGE_OPTIMISE] = __atrbvh_now_ms() - t;
-    if (cap && __atrbvh_tree_copy(&cap->optimise, &tree) != ATRBVH_OK) {
+    ms[ATRBVH_STAGE_OPTIMISE] = atrbvh_i_now_ms() - t;
+    if (cap && atrbvh_i_tree_copy(&cap->optimise, &tree) != ATRBVH_OK) {
         st = NOMEM("the capture");
         goto fail;
     }
 
     progress(&cfg, ATRBVH_STAGE_COLLAPSE);
-    bvh = __atrbvh_bvh_alloc(0, 0);
+    bvh = atrbvh_i_bvh_alloc(0, 0);
     if (!bvh) {
         st = NOMEM("the BVH object");
         goto fail;
     }
-    st = __atrbvh_collapse_layout(&tree, &cfg, bvh, &ms[ATRBVH_STAGE_COLLAPSE],
+    st = atrbvh_i_collapse_layout(&tree, &cfg, bvh, &ms[ATRBVH_STAGE_COLLAPSE],
                                   &ms[ATRBVH_STAGE_LAYOUT],
                                   cap ? &cap->collapse_size : NULL, error);
     if (st != ATRBVH_OK)
         goto fail;
-    __atrbvh_tree_free(&tree);
+    atrbvh_i_tree_free(&tree);
 
-    st = __atrbvh_build_finish(bvh, &cfg, prims.invalid, ms, t0, error);
+    st = atrbvh_i_build_finish(bvh, &cfg, prims.invalid, ms, t0, error);
     if (st != ATRBVH_OK)
         goto fail;
     *out = bvh;
     return ATRBVH_OK;
 
 fail:
-    __atrbvh_free(keys);
-    __atrbvh_free(tmp_keys);
-    __atrbvh_free(order);
-    __atrbvh_free(tmp_order);
-    __atrbvh_prims_free(&prims);
-    __atrbvh_tree_free(&tree);
+    atrbvh_i_free(keys);
+    atrbvh_i_free(tmp_keys);
+    atrbvh_i_free(order);
+    atrbvh_i_free(tmp_order);
+    atrbvh_i_prims_free(&prims);
+    atrbvh_i_tree_free(&tree);
     atrbvh_bvh_free(bvh);
     return st;
 }
 
-atrbvh_status __atrbvh_build_finish(atrbvh_bvh *bvh, const __atrbvh_config *cfg,
+atrbvh_status atrbvh_i_build_finish(atrbvh_bvh *bvh, const atrbvh_i_config *cfg,
                                     size_t invalid, const double *stage_ms,
                                     double t0, atrbvh_error *error)
 {
@@ -224,31 +224,31 @@ atrbvh_status __atrbvh_build_finish(atrbvh_bvh *bvh, const __atrbvh_config *cfg,
     bvh->stats.rounds = cfg->rounds;
     bvh->stats.backend = cfg->backend;
     bvh->stats.threads = cfg->threads;
-    st = __atrbvh_bvh_measure(bvh);
+    st = atrbvh_i_bvh_measure(bvh);
     if (st != ATRBVH_OK)
         return st == ATRBVH_ERR_NOMEM
-                   ? __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                   ? atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                                    "cannot allocate statistics scratch for "
                                    "%lu nodes",
                                    (unsigned long)bvh->node_count)
-                   : __atrbvh_fail(error, ATRBVH_ERR_BACKEND, (uint64_t)-1,
+                   : atrbvh_i_fail(error, ATRBVH_ERR_BACKEND, (uint64_t)-1,
                                    "internal error: the built tree is "
                                    "invalid");
 #ifdef ATRBVH_DEBUG_CHECKS
-    st = __atrbvh_bvh_check(bvh, 1, error);
+    st = atrbvh_i_bvh_check(bvh, 1, error);
     if (st != ATRBVH_OK)
         return st;
 #endif
     for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
         bvh->stats.stage_ms[s] = stage_ms[s];
-    bvh->stats.build_ms = __atrbvh_now_ms() - t0;
+    bvh->stats.build_ms = atrbvh_i_now_ms() - t0;
     return ATRBVH_OK;
 }
 
-void __atrbvh_bvh_add_kernel_time(atrbvh_bvh *bvh, const char *name,
+void atrbvh_i_bvh_add_kernel_time(atrbvh_bvh *bvh, const char *name,
                                   double ms)
 {
-    __atrbvh_device_info *d = bvh->device;
+    atrbvh_i_device_info *d = bvh->device;
     unsigned k;
     if (!d)
         return;

@@ -26,7 +26,7 @@
 #define IS_LEAF_FLAG ATRBVH_SIZE_LEAF
 
 typedef struct collapse_ctx {
-    const __atrbvh_tree *t;
+    const atrbvh_i_tree *t;
     const atrbvh_cost_params *p;
     uint32_t *size; /* output nodes of the subtree | IS_LEAF_FLAG */
     atrbvh_node *nodes;
@@ -35,9 +35,9 @@ typedef struct collapse_ctx {
 
 static void decide(collapse_ctx *c, uint32_t node)
 {
-    const __atrbvh_tree *t = c->t;
+    const atrbvh_i_tree *t = c->t;
     uint32_t l, r;
-    if (__atrbvh_is_leaf(t, node)) {
+    if (atrbvh_i_is_leaf(t, node)) {
         c->size[node] = 1u | IS_LEAF_FLAG;
         return;
     }
@@ -63,11 +63,11 @@ static void decide(collapse_ctx *c, uint32_t node)
 
 /* Writes the primitives under `node`, left to right, from prims[at]:
  * a stackless walk with parent links, so any depth is fine. */
-static void gather(const __atrbvh_tree *t, uint32_t node, uint32_t *out)
+static void gather(const atrbvh_i_tree *t, uint32_t node, uint32_t *out)
 {
     uint32_t cur = node, k = 0;
     for (;;) {
-        while (!__atrbvh_is_leaf(t, cur))
+        while (!atrbvh_i_is_leaf(t, cur))
             cur = t->left[cur];
         out[k++] = t->leaf_prim[cur - (t->n - 1)];
         /* Climb while we are a right child, then step to the sibling. */
@@ -87,7 +87,7 @@ static void gather(const __atrbvh_tree *t, uint32_t node, uint32_t *out)
 
 static void emit(collapse_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at)
 {
-    const __atrbvh_tree *t = c->t;
+    const atrbvh_i_tree *t = c->t;
     atrbvh_node *out = &c->nodes[at];
     int k;
     for (k = 0; k < 3; k++) {
@@ -122,21 +122,21 @@ static void emit(collapse_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at)
     }
 }
 
-atrbvh_status __atrbvh_collapse_layout(const __atrbvh_tree *t,
-                                       const __atrbvh_config *cfg,
+atrbvh_status atrbvh_i_collapse_layout(const atrbvh_i_tree *t,
+                                       const atrbvh_i_config *cfg,
                                        atrbvh_bvh *bvh, double *collapse_ms,
                                        double *layout_ms,
                                        uint32_t **capture_size,
                                        atrbvh_error *error)
 {
     collapse_ctx c;
-    double t0 = __atrbvh_now_ms(), t1;
+    double t0 = atrbvh_i_now_ms(), t1;
     uint32_t node_count;
     c.t = t;
     c.p = &cfg->cost;
-    c.size = __atrbvh_alloc_array(2 * (size_t)t->n - 1, sizeof *c.size);
+    c.size = atrbvh_i_alloc_array(2 * (size_t)t->n - 1, sizeof *c.size);
     if (!c.size)
-        return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "cannot allocate the collapse flags");
 #ifdef _OPENMP
 #pragma omp parallel num_threads(cfg->threads)
@@ -146,22 +146,22 @@ atrbvh_status __atrbvh_collapse_layout(const __atrbvh_tree *t,
     node_count = c.size[0] & ~IS_LEAF_FLAG;
     if (capture_size) {
         size_t bytes = (2 * (size_t)t->n - 1) * sizeof *c.size;
-        *capture_size = __atrbvh_malloc(bytes);
+        *capture_size = atrbvh_i_malloc(bytes);
         if (!*capture_size) {
-            __atrbvh_free(c.size);
-            return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+            atrbvh_i_free(c.size);
+            return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                                  "cannot allocate the capture");
         }
         memcpy(*capture_size, c.size, bytes);
     }
-    t1 = __atrbvh_now_ms();
+    t1 = atrbvh_i_now_ms();
     *collapse_ms = t1 - t0;
 
-    bvh->nodes = __atrbvh_alloc_array(node_count, sizeof *bvh->nodes);
-    bvh->prim_indices = __atrbvh_alloc_array(t->n, sizeof *bvh->prim_indices);
+    bvh->nodes = atrbvh_i_alloc_array(node_count, sizeof *bvh->nodes);
+    bvh->prim_indices = atrbvh_i_alloc_array(t->n, sizeof *bvh->prim_indices);
     if (!bvh->nodes || !bvh->prim_indices) {
-        __atrbvh_free(c.size);
-        return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+        atrbvh_i_free(c.size);
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "cannot allocate the output (%lu nodes)",
                              (unsigned long)node_count);
     }
@@ -174,7 +174,7 @@ atrbvh_status __atrbvh_collapse_layout(const __atrbvh_tree *t,
 #pragma omp single
 #endif
     emit(&c, 0, 0, 0);
-    __atrbvh_free(c.size);
-    *layout_ms = __atrbvh_now_ms() - t1;
+    atrbvh_i_free(c.size);
+    *layout_ms = atrbvh_i_now_ms() - t1;
     return ATRBVH_OK;
 }

@@ -12,39 +12,39 @@
 
 #include <string.h>
 
-atrbvh_status __atrbvh_tree_alloc(__atrbvh_tree *t, uint32_t n)
+atrbvh_status atrbvh_i_tree_alloc(atrbvh_i_tree *t, uint32_t n)
 {
     size_t nodes = 2 * (size_t)n - 1, inner = n > 1 ? (size_t)n - 1 : 1;
     memset(t, 0, sizeof *t);
     t->n = n;
-    t->left = __atrbvh_alloc_array(inner, sizeof *t->left);
-    t->right = __atrbvh_alloc_array(inner, sizeof *t->right);
-    t->parent = __atrbvh_alloc_array(nodes, sizeof *t->parent);
-    t->count = __atrbvh_alloc_array(nodes, sizeof *t->count);
-    t->box = __atrbvh_alloc_array(nodes, sizeof *t->box);
-    t->cost = __atrbvh_alloc_array(nodes, sizeof *t->cost);
-    t->leaf_prim = __atrbvh_alloc_array(n, sizeof *t->leaf_prim);
+    t->left = atrbvh_i_alloc_array(inner, sizeof *t->left);
+    t->right = atrbvh_i_alloc_array(inner, sizeof *t->right);
+    t->parent = atrbvh_i_alloc_array(nodes, sizeof *t->parent);
+    t->count = atrbvh_i_alloc_array(nodes, sizeof *t->count);
+    t->box = atrbvh_i_alloc_array(nodes, sizeof *t->box);
+    t->cost = atrbvh_i_alloc_array(nodes, sizeof *t->cost);
+    t->leaf_prim = atrbvh_i_alloc_array(n, sizeof *t->leaf_prim);
     if (!t->left || !t->right || !t->parent || !t->count || !t->box ||
         !t->cost || !t->leaf_prim) {
-        __atrbvh_tree_free(t);
+        atrbvh_i_tree_free(t);
         return ATRBVH_ERR_NOMEM;
     }
     return ATRBVH_OK;
 }
 
-void __atrbvh_tree_free(__atrbvh_tree *t)
+void atrbvh_i_tree_free(atrbvh_i_tree *t)
 {
-    __atrbvh_free(t->left);
-    __atrbvh_free(t->right);
-    __atrbvh_free(t->parent);
-    __atrbvh_free(t->count);
-    __atrbvh_free(t->box);
-    __atrbvh_free(t->cost);
-    __atrbvh_free(t->leaf_prim);
+    atrbvh_i_free(t->left);
+    atrbvh_i_free(t->right);
+    atrbvh_i_free(t->parent);
+    atrbvh_i_free(t->count);
+    atrbvh_i_free(t->box);
+    atrbvh_i_free(t->cost);
+    atrbvh_i_free(t->leaf_prim);
     memset(t, 0, sizeof *t);
 }
 
-void __atrbvh_hierarchy(const uint64_t *sorted_keys, __atrbvh_tree *t,
+void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                         int threads)
 {
     const int64_t n = t->n;

@@ -172,21 +172,21 @@ static atrbvh_status serialise(const atrbvh_bvh *bvh, unsigned char **data,
     uint64_t input;
     if (bvh->node_count == 0 || bvh->prim_count == 0 || !bvh->nodes ||
         !bvh->prim_indices)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "the BVH is empty");
-    if (!__atrbvh_mul_size(bvh->node_count, NODE_SIZE, &nodes_bytes) ||
-        !__atrbvh_mul_size(bvh->prim_count, 4, &prims_bytes) ||
+    if (!atrbvh_i_mul_size(bvh->node_count, NODE_SIZE, &nodes_bytes) ||
+        !atrbvh_i_mul_size(bvh->prim_count, 4, &prims_bytes) ||
         nodes_bytes > SIZE_MAX - HEADER_SIZE - CRC_SIZE ||
         prims_bytes > SIZE_MAX - HEADER_SIZE - CRC_SIZE - nodes_bytes)
-        return __atrbvh_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
                              "the BVH (%lu nodes, %lu primitives) is too "
                              "large to save in memory",
                              (unsigned long)bvh->node_count,
                              (unsigned long)bvh->prim_count);
     total = HEADER_SIZE + nodes_bytes + prims_bytes + CRC_SIZE;
-    buf = (unsigned char *)__atrbvh_malloc(total);
+    buf = (unsigned char *)atrbvh_i_malloc(total);
     if (!buf)
-        return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "out of memory for a %lu-byte BVH file image",
                              (unsigned long)total);
     input = (uint64_t)bvh->stats.primitives + bvh->stats.invalid_skipped;
@@ -237,7 +237,7 @@ atrbvh_status atrbvh_save_memory(const atrbvh_bvh *bvh, void **data,
     if (size)
         *size = 0;
     if (!bvh || !data || !size)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "atrbvh_save_memory: %s is NULL",
                              !bvh ? "bvh" : !data ? "data" : "size");
     st = serialise(bvh, &buf, &n, error);
@@ -245,7 +245,7 @@ atrbvh_status atrbvh_save_memory(const atrbvh_bvh *bvh, void **data,
         return st;
     *data = buf;
     *size = n;
-    __atrbvh_clear_error(error);
+    atrbvh_i_clear_error(error);
     return ATRBVH_OK;
 }
 
@@ -258,7 +258,7 @@ atrbvh_status atrbvh_save(const atrbvh_bvh *bvh, const char *path,
     FILE *f;
     int failed;
     if (!bvh || !path)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "atrbvh_save: %s is NULL", !bvh ? "bvh" : "path");
     st = serialise(bvh, &buf, &n, error);
     if (st != ATRBVH_OK)
@@ -267,8 +267,8 @@ atrbvh_status atrbvh_save(const atrbvh_bvh *bvh, const char *path,
     f = fopen(path, "wb");
     if (!f) {
         int e = errno;
-        __atrbvh_free(buf);
-        return __atrbvh_fail(error, ATRBVH_ERR_IO, (uint64_t)-1,
+        atrbvh_i_free(buf);
+        return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)-1,
                              "%s: cannot open for writing: %s", path,
                              e ? strerror(e) : "unknown error");
     }
@@ -276,16 +276,16 @@ atrbvh_status atrbvh_save(const atrbvh_bvh *bvh, const char *path,
     failed = written != n;
     if (fclose(f) != 0)
         failed = 1;
-    __atrbvh_free(buf);
+    atrbvh_i_free(buf);
     if (failed) {
         int e = errno;
         remove(path);
-        return __atrbvh_fail(error, ATRBVH_ERR_IO, (uint64_t)written,
+        return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)written,
                              "%s: write failed after %lu of %lu bytes: %s",
                              path, (unsigned long)written, (unsigned long)n,
                              e ? strerror(e) : "unknown error");
     }
-    __atrbvh_clear_error(error);
+    atrbvh_i_clear_error(error);
     return ATRBVH_OK;
 }
 
@@ -298,7 +298,7 @@ typedef struct file_header {
 } file_header;
 
 #define FAIL_AT(off, ...)                                                      \
-    __atrbvh_fail(error, ATRBVH_ERR_FORMAT, (uint64_t)(off), __VA_ARGS__)
+    atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, (uint64_t)(off), __VA_ARGS__)
 
 /* Parses and checks the fixed header; `have` bytes of it are present (at
  * least the 96 bytes), `size` is the size of the whole data. */
@@ -456,10 +456,10 @@ static atrbvh_status decode_body(const unsigned char *data,
     atrbvh_status st = ATRBVH_OK;
     int ids_by_bitmap = input / 8 <= fh->total;
 
-    end = (uint32_t *)__atrbvh_alloc_array(n, sizeof *end);
-    slots = (unsigned char *)__atrbvh_malloc(p / 8 + 1);
+    end = (uint32_t *)atrbvh_i_alloc_array(n, sizeof *end);
+    slots = (unsigned char *)atrbvh_i_malloc(p / 8 + 1);
     if (!end || !slots) {
-        st = __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+        st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                            "out of memory checking a BVH of %lu nodes",
                            (unsigned long)n);
         goto done;
@@ -569,9 +569,9 @@ static atrbvh_status decode_body(const unsigned char *data,
 
     /* primitive indices */
     if (ids_by_bitmap) {
-        seen = (unsigned char *)__atrbvh_malloc(input / 8 + 1);
+        seen = (unsigned char *)atrbvh_i_malloc(input / 8 + 1);
         if (!seen) {
-            st = __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+            st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                                "out of memory checking %lu primitive indices",
                                (unsigned long)p);
             goto done;
@@ -604,10 +604,10 @@ static atrbvh_status decode_body(const unsigned char *data,
     if (!seen) {
         /* The input count dwarfs the file: sort a copy instead of a bitmap
          * (end[] is free now and has room when n >= p; else allocate). */
-        uint32_t *copy = n >= p ? end : (uint32_t *)__atrbvh_alloc_array(
+        uint32_t *copy = n >= p ? end : (uint32_t *)atrbvh_i_alloc_array(
                                             p, sizeof *copy);
         if (!copy) {
-            st = __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+            st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                                "out of memory checking %lu primitive indices",
                                (unsigned long)p);
             goto done;
@@ -623,12 +623,12 @@ static atrbvh_status decode_body(const unsigned char *data,
             }
         }
         if (copy != end)
-            __atrbvh_free(copy);
+            atrbvh_i_free(copy);
     }
 done:
-    __atrbvh_free(end);
-    __atrbvh_free(slots);
-    __atrbvh_free(seen);
+    atrbvh_i_free(end);
+    atrbvh_i_free(slots);
+    atrbvh_i_free(seen);
     return st;
 }
 
@@ -643,7 +643,7 @@ atrbvh_status atrbvh_load_memory(const void *data, size_t size,
     if (out)
         *out = NULL;
     if (!out || (!data && size > 0))
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "atrbvh_load_memory: %s is NULL",
                              !out ? "out" : "data");
     if (!data)
@@ -659,9 +659,9 @@ atrbvh_status atrbvh_load_memory(const void *data, size_t size,
                        "byte %lu: checksum 0x%08x, the data's is 0x%08x "
                        "(the file is corrupt)",
                        (unsigned long)(size - CRC_SIZE), stored, actual);
-    bvh = __atrbvh_bvh_alloc((size_t)fh.node_count, (size_t)fh.prim_count);
+    bvh = atrbvh_i_bvh_alloc((size_t)fh.node_count, (size_t)fh.prim_count);
     if (!bvh)
-        return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "out of memory for a BVH of %llu nodes",
                              (unsigned long long)fh.node_count);
     st = decode_body(d, &fh, bvh, error);
@@ -679,16 +679,16 @@ atrbvh_status atrbvh_load_memory(const void *data, size_t size,
     bvh->stats.rounds = fh.rounds;
     bvh->stats.backend = (atrbvh_backend)fh.backend;
     bvh->stats.threads = 0;
-    st = __atrbvh_bvh_measure(bvh);
+    st = atrbvh_i_bvh_measure(bvh);
     if (st != ATRBVH_OK) { /* only out of memory, after the checks above */
         atrbvh_bvh_free(bvh);
-        return __atrbvh_fail(error, st, (uint64_t)-1,
+        return atrbvh_i_fail(error, st, (uint64_t)-1,
                              "%s measuring the loaded BVH",
                              st == ATRBVH_ERR_NOMEM ? "out of memory"
                                                     : "invalid tree");
     }
     *out = bvh;
-    __atrbvh_clear_error(error);
+    atrbvh_i_clear_error(error);
     return ATRBVH_OK;
 }
 
@@ -725,13 +725,13 @@ atrbvh_status atrbvh_load(const char *path, atrbvh_bvh **out,
     if (out)
         *out = NULL;
     if (!path || !out)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "atrbvh_load: %s is NULL", !path ? "path" : "out");
     errno = 0;
     f = fopen(path, "rb");
     if (!f) {
         int e = errno;
-        return __atrbvh_fail(error, ATRBVH_ERR_IO, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)-1,
                              "%s: cannot open: %s", path,
                              e ? strerror(e) : "unknown error");
     }
@@ -739,7 +739,7 @@ atrbvh_status atrbvh_load(const char *path, atrbvh_bvh **out,
         fseek(f, 0, SEEK_SET) != 0) {
         int e = errno;
         fclose(f);
-        return __atrbvh_fail(error, ATRBVH_ERR_IO, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)-1,
                              "%s: cannot determine the size: %s", path,
                              e ? strerror(e) : "not a regular file");
     }
@@ -747,7 +747,7 @@ atrbvh_status atrbvh_load(const char *path, atrbvh_bvh **out,
     got = fread(header, 1, sizeof header, f);
     if (got < sizeof header && ferror(f)) {
         fclose(f);
-        return __atrbvh_fail(error, ATRBVH_ERR_IO, (uint64_t)got,
+        return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)got,
                              "%s: read error at byte %lu", path,
                              (unsigned long)got);
     }
@@ -759,10 +759,10 @@ atrbvh_status atrbvh_load(const char *path, atrbvh_bvh **out,
         prefix_path(error, path);
         return st;
     }
-    buf = (unsigned char *)__atrbvh_malloc((size_t)fh.total);
+    buf = (unsigned char *)atrbvh_i_malloc((size_t)fh.total);
     if (!buf) {
         fclose(f);
-        return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "%s: out of memory for %llu bytes", path,
                              (unsigned long long)fh.total);
     }
@@ -771,8 +771,8 @@ atrbvh_status atrbvh_load(const char *path, atrbvh_bvh **out,
     if (got != (size_t)fh.total - sizeof header) {
         int bad = ferror(f);
         fclose(f);
-        __atrbvh_free(buf);
-        return __atrbvh_fail(error, bad ? ATRBVH_ERR_IO : ATRBVH_ERR_FORMAT,
+        atrbvh_i_free(buf);
+        return atrbvh_i_fail(error, bad ? ATRBVH_ERR_IO : ATRBVH_ERR_FORMAT,
                              (uint64_t)(sizeof header + got),
                              "%s: %s at byte %lu", path,
                              bad ? "read error" : "truncated",
@@ -780,7 +780,7 @@ atrbvh_status atrbvh_load(const char *path, atrbvh_bvh **out,
     }
     fclose(f);
     st = atrbvh_load_memory(buf, (size_t)fh.total, out, error);
-    __atrbvh_free(buf);
+    atrbvh_i_free(buf);
     if (st != ATRBVH_OK)
         prefix_path(error, path);
     return st;
@@ -837,7 +837,7 @@ int atrbvh_compare(const atrbvh_bvh *a, const atrbvh_bvh *b,
 {
     size_t i;
     if (!a || !b) {
-        __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                       "atrbvh_compare: %s is NULL", !a ? "a" : "b");
         return -1;
     }
@@ -880,6 +880,6 @@ int atrbvh_compare(const atrbvh_bvh *a, const atrbvh_bvh *b,
             return differ(error, i, "primitive index %lu differs: %lu vs %lu",
                           (unsigned long)i, (unsigned long)a->prim_indices[i],
                           (unsigned long)b->prim_indices[i]);
-    __atrbvh_clear_error(error);
+    atrbvh_i_clear_error(error);
     return 0;
 }

@@ -10,15 +10,15 @@
 #include <math.h>
 #include <string.h>
 
-atrbvh_bvh *__atrbvh_bvh_alloc(size_t node_count, size_t prim_count)
+atrbvh_bvh *atrbvh_i_bvh_alloc(size_t node_count, size_t prim_count)
 {
-    atrbvh_bvh *b = __atrbvh_malloc(sizeof *b);
+    atrbvh_bvh *b = atrbvh_i_malloc(sizeof *b);
     if (!b)
         return NULL;
     memset(b, 0, sizeof *b);
     if (node_count) {
-        b->nodes = __atrbvh_alloc_array(node_count, sizeof *b->nodes);
-        b->prim_indices = __atrbvh_alloc_array(prim_count, sizeof *b->prim_indices);
+        b->nodes = atrbvh_i_alloc_array(node_count, sizeof *b->nodes);
+        b->prim_indices = atrbvh_i_alloc_array(prim_count, sizeof *b->prim_indices);
         if (!b->nodes || !b->prim_indices) {
             atrbvh_bvh_free(b);
             return NULL;
@@ -33,10 +33,10 @@ void atrbvh_bvh_free(atrbvh_bvh *bvh)
 {
     if (!bvh)
         return;
-    __atrbvh_free(bvh->nodes);
-    __atrbvh_free(bvh->prim_indices);
-    __atrbvh_free(bvh->device);
-    __atrbvh_free(bvh);
+    atrbvh_i_free(bvh->nodes);
+    atrbvh_i_free(bvh->prim_indices);
+    atrbvh_i_free(bvh->device);
+    atrbvh_i_free(bvh);
 }
 
 const atrbvh_node *atrbvh_bvh_nodes(const atrbvh_bvh *bvh, size_t *count)
@@ -111,13 +111,13 @@ static atrbvh_status walk(const atrbvh_bvh *b, int check_boxes,
     const size_t n = b->node_count;
 
     if (n == 0)
-        return __atrbvh_fail(error, ATRBVH_ERR_FORMAT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, (uint64_t)-1,
                              "the BVH has no nodes");
-    stack_node = __atrbvh_alloc_array(n, sizeof *stack_node);
-    stack_depth = __atrbvh_alloc_array(n, sizeof *stack_depth);
-    parent_of = __atrbvh_alloc_array(n, sizeof *parent_of);
+    stack_node = atrbvh_i_alloc_array(n, sizeof *stack_node);
+    stack_depth = atrbvh_i_alloc_array(n, sizeof *stack_depth);
+    parent_of = atrbvh_i_alloc_array(n, sizeof *parent_of);
     if (!stack_node || !stack_depth || !parent_of) {
-        st = __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+        st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                            "cannot allocate %lu nodes of scratch",
                            (unsigned long)n);
         goto done;
@@ -127,7 +127,7 @@ static atrbvh_status walk(const atrbvh_bvh *b, int check_boxes,
         const atrbvh_node *nd;
         int k;
         if (cur != next) {
-            st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, cur,
+            st = atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, cur,
                                "node %lu is reached where node %lu was "
                                "expected (not a depth-first layout)",
                                (unsigned long)cur, (unsigned long)next);
@@ -138,7 +138,7 @@ static atrbvh_status walk(const atrbvh_bvh *b, int check_boxes,
         for (k = 0; k < 3; k++) {
             if (!isfinite(nd->min[k]) || !isfinite(nd->max[k]) ||
                 nd->min[k] > nd->max[k]) {
-                st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, cur,
+                st = atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, cur,
                                    "node %lu has an invalid box on axis %d",
                                    (unsigned long)cur, k);
                 goto done;
@@ -146,7 +146,7 @@ static atrbvh_status walk(const atrbvh_bvh *b, int check_boxes,
             if (check_boxes && parent_of[cur] != ATRBVH_NONE) {
                 const atrbvh_node *pa = &b->nodes[parent_of[cur]];
                 if (nd->min[k] < pa->min[k] || nd->max[k] > pa->max[k]) {
-                    st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, cur,
+                    st = atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, cur,
                                        "node %lu sticks out of its parent "
                                        "%lu on axis %d",
                                        (unsigned long)cur,
@@ -160,7 +160,7 @@ static atrbvh_status walk(const atrbvh_bvh *b, int check_boxes,
         if (nd->count == 0) {
             if ((size_t)cur + 1 >= n || nd->index <= cur + 1 ||
                 nd->index >= n) {
-                st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, cur,
+                st = atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, cur,
                                    "internal node %lu has right child %lu "
                                    "out of range",
                                    (unsigned long)cur,
@@ -168,7 +168,7 @@ static atrbvh_status walk(const atrbvh_bvh *b, int check_boxes,
                 goto done;
             }
             if (sp >= n) { /* cannot happen in a valid walk */
-                st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, cur,
+                st = atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, cur,
                                    "node %lu: the tree is deeper than its "
                                    "node count",
                                    (unsigned long)cur);
@@ -183,7 +183,7 @@ static atrbvh_status walk(const atrbvh_bvh *b, int check_boxes,
         } else {
             if (nd->index > b->prim_count ||
                 nd->count > b->prim_count - nd->index) {
-                st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, cur,
+                st = atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, cur,
                                    "leaf %lu references primitives %lu..%lu "
                                    "of %lu",
                                    (unsigned long)cur,
@@ -199,19 +199,19 @@ static atrbvh_status walk(const atrbvh_bvh *b, int check_boxes,
         }
     }
     if (next != n)
-        st = __atrbvh_fail(error, ATRBVH_ERR_FORMAT, next,
+        st = atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, next,
                            "only %lu of %lu nodes are reachable from the "
                            "root",
                            (unsigned long)next, (unsigned long)n);
     *depth_out = max_depth;
 done:
-    __atrbvh_free(stack_node);
-    __atrbvh_free(stack_depth);
-    __atrbvh_free(parent_of);
+    atrbvh_i_free(stack_node);
+    atrbvh_i_free(stack_depth);
+    atrbvh_i_free(parent_of);
     return st;
 }
 
-atrbvh_status __atrbvh_bvh_check(const atrbvh_bvh *b, int check_boxes,
+atrbvh_status atrbvh_i_bvh_check(const atrbvh_bvh *b, int check_boxes,
                                  atrbvh_error *error)
 {
     unsigned depth;
@@ -222,7 +222,7 @@ atrbvh_status __atrbvh_bvh_check(const atrbvh_bvh *b, int check_boxes,
     for (i = 0; i < b->node_count; i++)
         covered += b->nodes[i].count;
     if (covered != b->prim_count)
-        return __atrbvh_fail(error, ATRBVH_ERR_FORMAT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, (uint64_t)-1,
                              "leaves hold %lu primitive slots, the index "
                              "array has %lu",
                              (unsigned long)covered,
@@ -234,7 +234,7 @@ atrbvh_status __atrbvh_bvh_check(const atrbvh_bvh *b, int check_boxes,
         if (!b->nodes[i].count)
             continue;
         if (b->nodes[i].index != covered)
-            return __atrbvh_fail(error, ATRBVH_ERR_FORMAT, i,
+            return atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, i,
                                  "leaf %lu starts at primitive slot %lu, "
                                  "expected %lu",
                                  (unsigned long)i,
@@ -245,7 +245,7 @@ atrbvh_status __atrbvh_bvh_check(const atrbvh_bvh *b, int check_boxes,
     return ATRBVH_OK;
 }
 
-atrbvh_status __atrbvh_bvh_measure(atrbvh_bvh *b)
+atrbvh_status atrbvh_i_bvh_measure(atrbvh_bvh *b)
 {
     unsigned depth = 0;
     size_t i, leaves = 0;

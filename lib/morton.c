@@ -12,7 +12,7 @@
 
 #include "internal.h"
 
-void __atrbvh_morton_frame(const atrbvh_box *centroids, double lo[3],
+void atrbvh_i_morton_frame(const atrbvh_box *centroids, double lo[3],
                            double scale[3])
 {
     int k;
@@ -24,11 +24,11 @@ void __atrbvh_morton_frame(const atrbvh_box *centroids, double lo[3],
     }
 }
 
-void __atrbvh_morton(const __atrbvh_prims *p, uint64_t *keys, int threads)
+void atrbvh_i_morton(const atrbvh_i_prims *p, uint64_t *keys, int threads)
 {
     double lo[3], scale[3];
     int64_t i;
-    __atrbvh_morton_frame(&p->centroids, lo, scale);
+    atrbvh_i_morton_frame(&p->centroids, lo, scale);
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(threads) schedule(static)
 #else

@@ -43,7 +43,7 @@ typedef struct walk_ctx {
     atrbvh_method method;
     unsigned n;
     uint32_t gamma;
-    __atrbvh_opt_worker *workers;
+    atrbvh_i_opt_worker *workers;
 } walk_ctx;
 
 static int in_crown(const walk_ctx *c, uint32_t node)
@@ -53,14 +53,14 @@ static int in_crown(const walk_ctx *c, uint32_t node)
 
 static void process(const walk_ctx *c, uint32_t node)
 {
-    __atrbvh_opt_worker *w = c->workers;
+    atrbvh_i_opt_worker *w = c->workers;
 #ifdef _OPENMP
     w += omp_get_thread_num();
 #endif
     if (c->method == ATRBVH_METHOD_TRBVH)
-        __atrbvh_trbvh_treelet(&c->t, c->cost, node, c->n, w);
+        atrbvh_i_trbvh_treelet(&c->t, c->cost, node, c->n, w);
     else
-        __atrbvh_atrbvh_treelet(&c->t, c->cost, node, c->n, w);
+        atrbvh_i_atrbvh_treelet(&c->t, c->cost, node, c->n, w);
 }
 
 /* Post-order over the crown below (and including) crown node s, without a
@@ -127,11 +127,11 @@ static void walk_tasks(const walk_ctx *c, uint32_t node, int depth)
 /* Per-thread scratch layout, each part aligned to 64 bytes. */
 #define ALIGN64(x) (((x) + 63u) & ~(size_t)63u)
 
-atrbvh_status __atrbvh_optimise(__atrbvh_tree *t, const __atrbvh_config *cfg,
+atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
                                 atrbvh_error *error)
 {
     walk_ctx c;
-    __atrbvh_opt_worker *workers = NULL;
+    atrbvh_i_opt_worker *workers = NULL;
     unsigned char *block = NULL;
     size_t subsets = 0, pairs = 0, stride = 0, off_cost, off_count,
            off_split, off_dist, total;
@@ -142,16 +142,16 @@ atrbvh_status __atrbvh_optimise(__atrbvh_tree *t, const __atrbvh_config *cfg,
         return ATRBVH_OK;
     if (cfg->method != ATRBVH_METHOD_TRBVH &&
         cfg->method != ATRBVH_METHOD_ATRBVH)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "optimise: method %d has no treelet optimiser",
                              (int)cfg->method);
     if (n < 3u ||
         n > (cfg->method == ATRBVH_METHOD_TRBVH ? (unsigned)ATRBVH_TRBVH_MAX
                                                 : (unsigned)ATRBVH_TREELET_MAX))
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "optimise: treelet size %u out of range", n);
     if (cfg->gamma < n)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "optimise: gamma %u below the treelet size %u",
                              cfg->gamma, n);
     /* A tree of fewer than n primitives has no treelet root. */
@@ -169,15 +169,15 @@ atrbvh_status __atrbvh_optimise(__atrbvh_tree *t, const __atrbvh_config *cfg,
     off_split = off_count + ALIGN64(subsets * sizeof(uint32_t));
     off_dist = off_split + ALIGN64(subsets * sizeof(uint32_t));
     stride = off_dist + ALIGN64(pairs * sizeof(double));
-    if (!__atrbvh_mul_size((size_t)threads, stride, &total))
-        return __atrbvh_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
+    if (!atrbvh_i_mul_size((size_t)threads, stride, &total))
+        return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
                              "optimise: scratch size overflows");
-    workers = __atrbvh_alloc_array((size_t)threads, sizeof *workers);
-    block = __atrbvh_alloc_array(total, 1);
+    workers = atrbvh_i_alloc_array((size_t)threads, sizeof *workers);
+    block = atrbvh_i_alloc_array(total, 1);
     if (!workers || !block) {
-        __atrbvh_free(workers);
-        __atrbvh_free(block);
-        return __atrbvh_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+        atrbvh_i_free(workers);
+        atrbvh_i_free(block);
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "optimise: out of memory for %d x %lu bytes of "
                              "treelet scratch",
                              threads, (unsigned long)stride);
@@ -220,7 +220,7 @@ atrbvh_status __atrbvh_optimise(__atrbvh_tree *t, const __atrbvh_config *cfg,
         }
     }
 
-    __atrbvh_free(block);
-    __atrbvh_free(workers);
+    atrbvh_i_free(block);
+    atrbvh_i_free(workers);
     return ATRBVH_OK;
 }

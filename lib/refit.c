@@ -14,11 +14,11 @@
 /* Subtrees smaller than this are refitted by one task, serially. */
 #define TASK_CUTOFF 4096u
 
-static void refit_node(__atrbvh_tree *t, uint32_t node,
+static void refit_node(atrbvh_i_tree *t, uint32_t node,
                        const atrbvh_cost_params *p)
 {
     uint32_t l, r;
-    if (__atrbvh_is_leaf(t, node))
+    if (atrbvh_i_is_leaf(t, node))
         return;
     l = t->left[node];
     r = t->right[node];
@@ -40,7 +40,7 @@ static void refit_node(__atrbvh_tree *t, uint32_t node,
                       &t->cost[node]);
 }
 
-void __atrbvh_refit(__atrbvh_tree *t, const atrbvh_box *prim_boxes,
+void atrbvh_i_refit(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
                     const uint32_t *order, const atrbvh_cost_params *p,
                     int threads)
 {

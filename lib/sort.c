@@ -116,7 +116,7 @@ static void sort_bucket(uint64_t *k, uint32_t *v, uint64_t *tk, uint32_t *tv,
     }
 }
 
-atrbvh_status __atrbvh_radix_sort(uint64_t *keys, uint32_t *values,
+atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
                                   uint64_t *tmp_keys, uint32_t *tmp_values,
                                   uint32_t n, int threads)
 {
@@ -154,11 +154,11 @@ atrbvh_status __atrbvh_radix_sort(uint64_t *keys, uint32_t *values,
     buckets = 1u << bits;
     low_mask = shift ? (((uint64_t)1 << shift) - 1) : 0;
 
-    counts = __atrbvh_alloc_array((size_t)blocks * buckets, sizeof *counts);
-    start = __atrbvh_alloc_array((size_t)buckets + 1, sizeof *start);
+    counts = atrbvh_i_alloc_array((size_t)blocks * buckets, sizeof *counts);
+    start = atrbvh_i_alloc_array((size_t)buckets + 1, sizeof *start);
     if (!counts || !start) {
-        __atrbvh_free(counts);
-        __atrbvh_free(start);
+        atrbvh_i_free(counts);
+        atrbvh_i_free(start);
         return ATRBVH_ERR_NOMEM;
     }
 
@@ -217,7 +217,7 @@ atrbvh_status __atrbvh_radix_sort(uint64_t *keys, uint32_t *values,
                             values + s, len, low_mask, keys + s, values + s);
         }
     }
-    __atrbvh_free(counts);
-    __atrbvh_free(start);
+    atrbvh_i_free(counts);
+    atrbvh_i_free(start);
     return ATRBVH_OK;
 }

@@ -150,7 +150,7 @@ int atrbvh_occluded(const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
 }
 
 /* The checks both batch functions make. */
-atrbvh_status __atrbvh_trav_check(const atrbvh_bvh *bvh,
+atrbvh_status atrbvh_i_trav_check(const atrbvh_bvh *bvh,
                                   const atrbvh_geometry *g,
                                  const atrbvh_ray *rays, size_t count,
                                  const void *out, int threads,
@@ -158,34 +158,34 @@ atrbvh_status __atrbvh_trav_check(const atrbvh_bvh *bvh,
 {
     size_t needed;
     if (!bvh)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "%s: bvh is NULL", fn);
     if (!g)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "%s: geometry is NULL", fn);
     if (count > 0 && !rays)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "%s: rays is NULL", fn);
     if (count > 0 && !out)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "%s: the output array is NULL", fn);
     if (threads < 0)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "%s: threads %d is negative", fn, threads);
     if (g->type != ATRBVH_GEOMETRY_TRIANGLES &&
         g->type != ATRBVH_GEOMETRY_BOXES)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "%s: geometry type %d is not triangles or boxes",
                              fn, (int)g->type);
     if (!geometry_usable(g))
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "%s: geometry.%s is NULL", fn,
                              g->type == ATRBVH_GEOMETRY_TRIANGLES ? "vertices"
                                                                   : "boxes");
     {
         atrbvh_trav_scene s;
         if (!trav_scene(bvh, g, &s))
-            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                  (uint64_t)-1,
                                  "%s: a geometry byte stride is not a "
                                  "multiple of 4", fn);
@@ -194,7 +194,7 @@ atrbvh_status __atrbvh_trav_check(const atrbvh_bvh *bvh,
     if (needed < bvh->prim_count)
         needed = bvh->prim_count;
     if (g->primitive_count < needed)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                              (uint64_t)g->primitive_count,
                              "%s: the geometry has %lu primitives but the BVH "
                              "was built over %lu",
@@ -212,15 +212,15 @@ atrbvh_status atrbvh_intersect_batch(const atrbvh_bvh *bvh,
     long long i, n = (long long)count;
     atrbvh_trav_scene s;
     atrbvh_status st;
-    st = __atrbvh_trav_check(bvh, geometry, rays, count, hits, threads,
+    st = atrbvh_i_trav_check(bvh, geometry, rays, count, hits, threads,
                      "atrbvh_intersect_batch", error);
     if (st != ATRBVH_OK)
         return st;
-    __atrbvh_clear_error(error);
+    atrbvh_i_clear_error(error);
 trav_scene(bvh, geometry, &s); /* checked */
 #ifdef _OPENMP
     {
-        int nt = __atrbvh_resolve_threads(threads);
+        int nt = atrbvh_i_resolve_threads(threads);
 #pragma omp parallel for schedule(dynamic, 64) num_threads(nt)
         for (i = 0; i < n; i++)
             closest(&s, &rays[i], &hits[i]);
@@ -241,15 +241,15 @@ atrbvh_status atrbvh_occluded_batch(const atrbvh_bvh *bvh,
     long long i, n = (long long)count;
     atrbvh_trav_scene s;
     atrbvh_status st;
-    st = __atrbvh_trav_check(bvh, geometry, rays, count, occluded, threads,
+    st = atrbvh_i_trav_check(bvh, geometry, rays, count, occluded, threads,
                      "atrbvh_occluded_batch", error);
     if (st != ATRBVH_OK)
         return st;
-    __atrbvh_clear_error(error);
+    atrbvh_i_clear_error(error);
 trav_scene(bvh, geometry, &s); /* checked */
 #ifdef _OPENMP
     {
-        int nt = __atrbvh_resolve_threads(threads);
+        int nt = atrbvh_i_resolve_threads(threads);
 #pragma omp parallel for schedule(dynamic, 64) num_threads(nt)
         for (i = 0; i < n; i++)
             occluded[i] = (uint8_t)(atrbvh_trav_any(&s, rays[i].origin,
@@ -277,21 +277,21 @@ static atrbvh_status device_batch(const atrbvh_bvh *bvh,
     atrbvh_status st;
     if (kernel_ms)
         *kernel_ms = 0.0;
-    st = __atrbvh_trav_check(bvh, geometry, rays, count,
+    st = atrbvh_i_trav_check(bvh, geometry, rays, count,
                              any ? (const void *)occluded
                                  : (const void *)hits,
                              0, fn, error);
     if (st != ATRBVH_OK)
         return st;
 #ifdef ATRBVH_HAVE_OPENCL
-    __atrbvh_clear_error(error);
+    atrbvh_i_clear_error(error);
     if (count == 0)
         return ATRBVH_OK;
-    return __atrbvh_cl_trace(bvh, geometry, rays, count, hits, occluded,
+    return atrbvh_i_cl_trace(bvh, geometry, rays, count, hits, occluded,
                              device, kernel_ms, error);
 #else
     (void)device;
-    return __atrbvh_fail(error, ATRBVH_ERR_UNSUPPORTED, (uint64_t)-1,
+    return atrbvh_i_fail(error, ATRBVH_ERR_UNSUPPORTED, (uint64_t)-1,
                          "%s: this build has no OpenCL backend "
                          "(configure --enable-opencl)",
                          fn);

@@ -9,23 +9,23 @@
 #include <stdio.h>
 #include <string.h>
 
-void __atrbvh_capture_free(__atrbvh_capture *c)
+void atrbvh_i_capture_free(atrbvh_i_capture *c)
 {
-    __atrbvh_free(c->prim_boxes);
-    __atrbvh_free(c->keys);
-    __atrbvh_free(c->sorted_keys);
-    __atrbvh_free(c->order);
-    __atrbvh_free(c->collapse_size);
-    __atrbvh_tree_free(&c->hierarchy);
-    __atrbvh_tree_free(&c->refit);
-    __atrbvh_tree_free(&c->optimise);
+    atrbvh_i_free(c->prim_boxes);
+    atrbvh_i_free(c->keys);
+    atrbvh_i_free(c->sorted_keys);
+    atrbvh_i_free(c->order);
+    atrbvh_i_free(c->collapse_size);
+    atrbvh_i_tree_free(&c->hierarchy);
+    atrbvh_i_tree_free(&c->refit);
+    atrbvh_i_tree_free(&c->optimise);
     memset(c, 0, sizeof *c);
 }
 
-atrbvh_status __atrbvh_tree_copy(__atrbvh_tree *dst, const __atrbvh_tree *src)
+atrbvh_status atrbvh_i_tree_copy(atrbvh_i_tree *dst, const atrbvh_i_tree *src)
 {
     size_t n = src->n, nodes = 2 * n - 1, inner = n > 1 ? n - 1 : 1;
-    if (__atrbvh_tree_alloc(dst, src->n) != ATRBVH_OK)
+    if (atrbvh_i_tree_alloc(dst, src->n) != ATRBVH_OK)
         return ATRBVH_ERR_NOMEM;
     memcpy(dst->left, src->left, inner * sizeof *dst->left);
     memcpy(dst->right, src->right, inner * sizeof *dst->right);
@@ -52,14 +52,14 @@ static int box_differs(atrbvh_error *e, const char *stage, const char *what,
         return 0;
     box_text(ta, sizeof ta, a);
     box_text(tb, sizeof tb, b);
-    __atrbvh_fail(e, ATRBVH_OK, i, "stage %s, %s %lu: box differs (cpu %s, "
+    atrbvh_i_fail(e, ATRBVH_OK, i, "stage %s, %s %lu: box differs (cpu %s, "
                   "opencl %s)", stage, what, (unsigned long)i, ta, tb);
     return 1;
 }
 
 #define U32_DIFF(stage, what, field, i, a, b)                                  \
     if ((a) != (b)) {                                                          \
-        __atrbvh_fail(e, ATRBVH_OK, (uint64_t)(i),                             \
+        atrbvh_i_fail(e, ATRBVH_OK, (uint64_t)(i),                             \
                       "stage %s, %s %lu: %s differs (cpu %lu, opencl %lu)",    \
                       stage, what, (unsigned long)(i), field,                  \
                       (unsigned long)(a), (unsigned long)(b));                 \
@@ -69,7 +69,7 @@ static int box_differs(atrbvh_error *e, const char *stage, const char *what,
 /* Topology (left, right, parent), counts, leaf primitives, and with
  * `values` boxes and costs. */
 static int tree_differs(atrbvh_error *e, const char *stage,
-                        const __atrbvh_tree *a, const __atrbvh_tree *b,
+                        const atrbvh_i_tree *a, const atrbvh_i_tree *b,
                         int values)
 {
     size_t n = a->n, i;
@@ -85,7 +85,7 @@ static int tree_differs(atrbvh_error *e, const char *stage,
         if (box_differs(e, stage, "node", i, &a->box[i], &b->box[i]))
             return 1;
         if (memcmp(&a->cost[i], &b->cost[i], sizeof(double)) != 0) {
-            __atrbvh_fail(e, ATRBVH_OK, i,
+            atrbvh_i_fail(e, ATRBVH_OK, i,
                           "stage %s, node %lu: cost differs (cpu %.17g, "
                           "opencl %.17g)",
                           stage, (unsigned long)i, a->cost[i], b->cost[i]);
@@ -98,8 +98,8 @@ static int tree_differs(atrbvh_error *e, const char *stage,
     return 0;
 }
 
-static int captures_differ(atrbvh_error *e, const __atrbvh_capture *a,
-                           const atrbvh_bvh *ba, const __atrbvh_capture *b,
+static int captures_differ(atrbvh_error *e, const atrbvh_i_capture *a,
+                           const atrbvh_bvh *ba, const atrbvh_i_capture *b,
                            const atrbvh_bvh *bb)
 {
     size_t n = a->n, i;
@@ -114,7 +114,7 @@ static int captures_differ(atrbvh_error *e, const __atrbvh_capture *a,
             return 1;
     for (i = 0; i < n; i++)
         if (a->keys[i] != b->keys[i]) {
-            __atrbvh_fail(e, ATRBVH_OK, i,
+            atrbvh_i_fail(e, ATRBVH_OK, i,
                           "stage morton, primitive %lu: key differs (cpu "
                           "%016llx, opencl %016llx)",
                           (unsigned long)i, (unsigned long long)a->keys[i],
@@ -123,7 +123,7 @@ static int captures_differ(atrbvh_error *e, const __atrbvh_capture *a,
         }
     for (i = 0; i < n; i++) {
         if (a->sorted_keys[i] != b->sorted_keys[i]) {
-            __atrbvh_fail(e, ATRBVH_OK, i,
+            atrbvh_i_fail(e, ATRBVH_OK, i,
                           "stage sort, position %lu: key differs (cpu "
                           "%016llx, opencl %016llx)",
                           (unsigned long)i,
@@ -173,21 +173,21 @@ atrbvh_status atrbvh_validate_backends(const atrbvh_geometry *geometry,
 {
     atrbvh_build_options o;
 #ifdef ATRBVH_HAVE_OPENCL
-    __atrbvh_capture ca, cb;
+    atrbvh_i_capture ca, cb;
     atrbvh_bvh *ba = NULL, *bb = NULL;
     atrbvh_status st;
 #endif
 
-    __atrbvh_clear_error(error);
+    atrbvh_i_clear_error(error);
     if (!identical)
-        return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "the output pointer is NULL");
     *identical = 0;
     atrbvh_build_options_init(&o);
     if (options) {
         size_t size = options->size < sizeof o ? options->size : sizeof o;
         if (size < sizeof(size_t))
-            return __atrbvh_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                  (uint64_t)-1, "options.size is %lu",
                                  (unsigned long)options->size);
         memcpy(&o, options, size);
@@ -195,26 +195,26 @@ atrbvh_status atrbvh_validate_backends(const atrbvh_geometry *geometry,
     }
 #ifndef ATRBVH_HAVE_OPENCL
     (void)geometry;
-    return __atrbvh_fail(error, ATRBVH_ERR_UNSUPPORTED, (uint64_t)-1,
+    return atrbvh_i_fail(error, ATRBVH_ERR_UNSUPPORTED, (uint64_t)-1,
                          "this build of atrbvh has no OpenCL backend "
                          "(configure --enable-opencl)");
 #else
     memset(&ca, 0, sizeof ca);
     memset(&cb, 0, sizeof cb);
     o.backend = ATRBVH_BACKEND_CPU;
-    st = __atrbvh_build_run(geometry, &o, &ba, &ca, error);
+    st = atrbvh_i_build_run(geometry, &o, &ba, &ca, error);
     if (st == ATRBVH_OK) {
         o.backend = ATRBVH_BACKEND_OPENCL;
-        st = __atrbvh_build_run(geometry, &o, &bb, &cb, error);
+        st = atrbvh_i_build_run(geometry, &o, &bb, &cb, error);
     }
     if (st == ATRBVH_OK) {
-        __atrbvh_clear_error(error);
+        atrbvh_i_clear_error(error);
         *identical = !captures_differ(error, &ca, ba, &cb, bb);
     }
     atrbvh_bvh_free(ba);
     atrbvh_bvh_free(bb);
-    __atrbvh_capture_free(&ca);
-    __atrbvh_capture_free(&cb);
+    atrbvh_i_capture_free(&ca);
+    atrbvh_i_capture_free(&cb);
     return st;
 #endif
 }

@@ -12,7 +12,7 @@
  *    a clear SAH gain over LBVH on the real scenes.
  *
  * Links the static core, so it calls the shared treelet functions and
- * __atrbvh_optimise directly.
+ * atrbvh_i_optimise directly.
  */
 #include <check.h>
 #include <math.h>
@@ -536,7 +536,7 @@ END_TEST
 
 /* ------------------------------------------------------------ whole trees */
 typedef struct test_tree {
-    __atrbvh_tree t;
+    atrbvh_i_tree t;
     uint32_t *storage;
     atrbvh_box *boxes;
     double *costs;
@@ -608,7 +608,7 @@ static void tree_random(test_tree *tt, uint32_t n, uint64_t seed,
     uint32_t i, next = 1, sp = 0;
     uint32_t *stack;
     float *keys;
-    __atrbvh_tree *t;
+    atrbvh_i_tree *t;
     rng_seed(&r, seed);
     tree_alloc(tt, n);
     t = &tt->t;
@@ -689,7 +689,7 @@ static void tree_random(test_tree *tt, uint32_t n, uint64_t seed,
 static void tree_check(const test_tree *tt, const test_tree *orig,
                        const atrbvh_cost_params *p)
 {
-    const __atrbvh_tree *t = &tt->t;
+    const atrbvh_i_tree *t = &tt->t;
     uint32_t n = t->n, nodes = 2 * n - 1, sp = 0, seen = 0, i;
     uint32_t *stack = malloc(sizeof(uint32_t) * nodes);
     unsigned char *visited = calloc(nodes, 1);
@@ -732,11 +732,11 @@ static void tree_check(const test_tree *tt, const test_tree *orig,
     free(visited);
 }
 
-static __atrbvh_config config(atrbvh_method method, unsigned n,
+static atrbvh_i_config config(atrbvh_method method, unsigned n,
                               unsigned rounds, unsigned gamma,
                               const atrbvh_cost_params *p, int threads)
 {
-    __atrbvh_config c;
+    atrbvh_i_config c;
     memset(&c, 0, sizeof c);
     c.method = method;
     c.treelet_size = n;
@@ -755,7 +755,7 @@ static void rounds_case(atrbvh_method method, unsigned n, unsigned rounds,
     atrbvh_cost_params p = cost_model(model);
     test_tree orig, t, whole;
     atrbvh_error err;
-    __atrbvh_config c;
+    atrbvh_i_config c;
     unsigned r;
     double before, first;
     tree_random(&orig, prims, 1000u + prims + (uint64_t)box_mode, box_mode,
@@ -765,7 +765,7 @@ static void rounds_case(atrbvh_method method, unsigned n, unsigned rounds,
     first = before = t.t.cost[0];
     for (r = 0; r < rounds; r++) {
         c = config(method, n, 1, n << r, &p, 1);
-        ck_assert_int_eq(__atrbvh_optimise(&t.t, &c, &err), ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_i_optimise(&t.t, &c, &err), ATRBVH_OK);
         tree_check(&t, &orig, &p);
         ck_assert_msg(t.t.cost[0] <= before,
                       "round %u raised the cost %.17g -> %.17g", r, before,
@@ -776,7 +776,7 @@ static void rounds_case(atrbvh_method method, unsigned n, unsigned rounds,
     ck_assert_msg(before < 0.95 * first, "cost %.6g -> %.6g", first, before);
     tree_copy(&whole, &orig);
     c = config(method, n, rounds, n, &p, 2);
-    ck_assert_int_eq(__atrbvh_optimise(&whole.t, &c, &err), ATRBVH_OK);
+    ck_assert_int_eq(atrbvh_i_optimise(&whole.t, &c, &err), ATRBVH_OK);
     ck_assert(tree_same(&whole, &t));
     tree_free(&orig);
     tree_free(&t);
@@ -808,14 +808,14 @@ static void threads_case(atrbvh_method method, unsigned n, unsigned rounds,
     atrbvh_cost_params p = cost_model(model);
     test_tree orig, ref, t;
     atrbvh_error err;
-    __atrbvh_config c;
+    atrbvh_i_config c;
     int threads;
     tree_random(&orig, 70000, 77u + (uint64_t)box_mode, box_mode, &p);
     for (threads = 1; threads <= 4; threads++) {
         test_tree *dst = threads == 1 ? &ref : &t;
         tree_copy(dst, &orig);
         c = config(method, n, rounds, n, &p, threads);
-        ck_assert_int_eq(__atrbvh_optimise(&dst->t, &c, &err), ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_i_optimise(&dst->t, &c, &err), ATRBVH_OK);
         if (threads == 1) {
             tree_check(&ref, &orig, &p);
             ck_assert(ref.t.cost[0] < orig.t.cost[0]);
@@ -848,14 +848,14 @@ START_TEST(small_trees)
     for (n = 1; n <= 20; n++) {
         test_tree orig, t;
         atrbvh_error err;
-        __atrbvh_config c;
+        atrbvh_i_config c;
         int m;
         tree_random(&orig, n, n, 0, &p);
         for (m = 0; m < 2; m++) {
             tree_copy(&t, &orig);
             c = config(m ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_TRBVH, 3, 4,
                        3, &p, 2);
-            ck_assert_int_eq(__atrbvh_optimise(&t.t, &c, &err), ATRBVH_OK);
+            ck_assert_int_eq(atrbvh_i_optimise(&t.t, &c, &err), ATRBVH_OK);
             if (n > 1)
                 tree_check(&t, &orig, &p);
             ck_assert(t.t.cost[0] <= orig.t.cost[0]);
@@ -890,7 +890,7 @@ START_TEST(nomem)
     atrbvh_cost_params p = cost_model(1);
     test_tree orig, t;
     atrbvh_error err;
-    __atrbvh_config c;
+    atrbvh_i_config c;
     int k, m;
     tree_random(&orig, 500, 5, 0, &p);
     atrbvh_set_allocator(counting_malloc, counting_free);
@@ -901,7 +901,7 @@ START_TEST(nomem)
             live_allocs = 0;
             c = config(m ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_TRBVH, 7, 2,
                        7, &p, 2);
-            ck_assert_int_eq(__atrbvh_optimise(&t.t, &c, &err),
+            ck_assert_int_eq(atrbvh_i_optimise(&t.t, &c, &err),
                              ATRBVH_ERR_NOMEM);
             ck_assert_int_eq(err.status, ATRBVH_ERR_NOMEM);
             ck_assert_int_eq(live_allocs, 0);

@@ -65,7 +65,7 @@ START_TEST(radix_sort_is_stable_and_sorted)
                     ref[i].v = i;
                 }
                 qsort(ref, n, sizeof *ref, cmp_pair);
-                ck_assert_int_eq(__atrbvh_radix_sort(k, v, tk, tv, n, threads),
+                ck_assert_int_eq(atrbvh_i_radix_sort(k, v, tk, tv, n, threads),
                                  ATRBVH_OK);
                 for (i = 0; i < n; i++)
                     ck_assert_msg(k[i] == ref[i].k && v[i] == ref[i].v,

@@ -42,7 +42,7 @@
 #define ATRBVH_TRBVH_MAX 10
 
 /* ------------------------------------------------------------- the tree */
-/* The tree arrays the optimiser reads and writes (see __atrbvh_tree):
+/* The tree arrays the optimiser reads and writes (see atrbvh_i_tree):
  * nodes < n_internal are internal (left/right valid), the rest leaves.
  * On OpenCL they are volatile (ATRBVH_SHARED_GLOBAL): a treelet reads
  * nodes that other work-items of the same opt_round launch wrote, handed
