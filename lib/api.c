@@ -49,6 +49,8 @@ const char *atrbvh_strerror(atrbvh_status status)
         return "not supported by this build";
     case ATRBVH_ERR_BACKEND:
         return "compute backend failure";
+    case ATRBVH_ERR_CANCELLED:
+        return "cancelled";
     }
     return "unknown status";
 }

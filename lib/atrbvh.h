@@ -59,7 +59,8 @@ typedef enum atrbvh_status {
     ATRBVH_ERR_IO = 7,               /* reading or writing a file failed    */
     ATRBVH_ERR_FORMAT = 8,           /* a file is not a valid BVH file      */
     ATRBVH_ERR_UNSUPPORTED = 9,      /* feature not built in (e.g. OpenCL)  */
-    ATRBVH_ERR_BACKEND = 10          /* the compute backend failed          */
+    ATRBVH_ERR_BACKEND = 10,         /* the compute backend failed          */
+    ATRBVH_ERR_CANCELLED = 11        /* the progress callback asked to stop */
 } atrbvh_status;
 
 /* A short, static description of a status code ("out of memory", ...). */
@@ -138,6 +139,24 @@ typedef enum atrbvh_backend {
     ATRBVH_BACKEND_CPU = 0,
     ATRBVH_BACKEND_OPENCL = 1
 } atrbvh_backend;
+
+/* ------------------------------------------------------------------ device */
+/* A compute device, opened once and reused by any number of builds and ray
+ * batches: opening selects the device, creates its context and compiles
+ * its program (OpenCL), and the handle keeps scratch memory between builds.
+ * `spec`: "cpu"; "opencl" (the first OpenCL device); "opencl:P:D" (device D
+ * of platform P); or "opencl:NAME", a case-insensitive substring of the
+ * device or platform name.  Thread-safe.  One build or ray batch runs on a
+ * handle at a time (calls on the same handle from several threads wait for
+ * each other). */
+typedef struct atrbvh_device atrbvh_device;
+ATRBVH_API atrbvh_status atrbvh_device_open(const char *spec,
+                                            atrbvh_device **out,
+                                            atrbvh_error *error);
+ATRBVH_API void atrbvh_device_close(atrbvh_device *device);
+/* "cpu", or the OpenCL device's name. */
+ATRBVH_API const char *atrbvh_device_name(const atrbvh_device *device);
+ATRBVH_API atrbvh_backend atrbvh_device_backend(const atrbvh_device *device);
 
 /* Called from the thread that called atrbvh_build, between stages. */
 typedef void (*atrbvh_progress_fn)(const char *stage, double fraction,

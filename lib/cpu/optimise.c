@@ -23,7 +23,16 @@
  * treelet root keeps its id and parent, so the walk's way up stays valid.
  * Scratch is per thread, allocated once per build.
  */
-#include "optimise.h"
+#include "internal.h"
+#include "shared/treelet.h"
+
+/* One thread's scratch, allocated once per build (never per treelet). */
+typedef struct opt_worker {
+    atrbvh_trbvh_scratch trbvh; /* 2^n entries each (TRBVH)             */
+    double *dist;               /* n(n-1)/2 distances (ATRBVH)          */
+    uint64_t treelets;          /* treelets processed                   */
+    uint64_t applied;           /* of which restructured                */
+} opt_worker;
 
 #include <string.h>
 
@@ -43,7 +52,7 @@ typedef struct walk_ctx {
     atrbvh_method method;
     unsigned n;
     uint32_t gamma;
-    atrbvh_i_opt_worker *workers;
+    opt_worker *workers;
 } walk_ctx;
 
 static int in_crown(const walk_ctx *c, uint32_t node)
@@ -53,14 +62,20 @@ static int in_crown(const walk_ctx *c, uint32_t node)
 
 static void process(const walk_ctx *c, uint32_t node)
 {
-    atrbvh_i_opt_worker *w = c->workers;
+    opt_worker *w = c->workers;
 #ifdef _OPENMP
     w += omp_get_thread_num();
 #endif
-    if (c->method == ATRBVH_METHOD_TRBVH)
-        atrbvh_i_trbvh_treelet(&c->t, c->cost, node, c->n, w);
-    else
-        atrbvh_i_atrbvh_treelet(&c->t, c->cost, node, c->n, w);
+    /* One treelet: form, new topology (TRBVH: the subset DP of Karras &
+     * Aila 2013; ATRBVH: the agglomerative clustering of Domingues &
+     * Pedrini 2015), write back if strictly cheaper - all of it
+     * shared/treelet.h's atrbvh_treelet_process, which the OpenCL kernel
+     * calls too. */
+    int applied = atrbvh_treelet_process(&c->t, c->cost, node, c->n,
+                                         c->method == ATRBVH_METHOD_ATRBVH,
+                                         w->trbvh, w->dist);
+    w->treelets++;
+    w->applied += (uint64_t)applied;
 }
 
 /* Post-order over the crown below (and including) crown node s, without a
@@ -131,7 +146,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
                                 atrbvh_error *error)
 {
     walk_ctx c;
-    atrbvh_i_opt_worker *workers = NULL;
+    opt_worker *workers = NULL;
     unsigned char *block = NULL;
     size_t subsets = 0, pairs = 0, stride = 0, off_cost, off_count,
            off_split, off_dist, total;

@@ -1,0 +1,212 @@
+/*
+ * backend.h - the one interface between the pipeline (lib/pipeline.c) and a
+ * backend (lib/cpu/: OpenMP; cl/: OpenCL).
+ *
+ * The pipeline runs the stages in order and owns everything that is not
+ * per-item work: option checks, the geometry's metadata checks, the exact
+ * error for an invalid primitive, the host constants that steer decisions
+ * (the Morton frame), timing, progress, cancellation, stage capture and
+ * the output object.  A backend holds only the mapping of each stage onto
+ * its hardware (scheduling, memory movement, synchronisation); the
+ * per-item arithmetic is lib/shared/'s, compiled for both.
+ *
+ * A backend sees nothing of lib/ but this header (and lib/shared/): no
+ * include or call circle.  The helpers it may call are declared below
+ * (allocation, errors, clock).
+ */
+#ifndef ATRBVH_BACKEND_H
+#define ATRBVH_BACKEND_H
+
+#include "atrbvh.h"
+#include "shared/arith.h"
+#include "shared/stages.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* ---------------------------------------------------- library services */
+void *atrbvh_i_malloc(size_t size);
+void atrbvh_i_free(void *ptr);
+/* count * size into *out; 0 (and *out = 0) on overflow. */
+int atrbvh_i_mul_size(size_t count, size_t size, size_t *out);
+/* count * size bytes; NULL on overflow or allocator failure. */
+void *atrbvh_i_alloc_array(size_t count, size_t size);
+/* Fills `error` (may be NULL) and returns `status`; printf-style text. */
+atrbvh_status atrbvh_i_fail(atrbvh_error *error, atrbvh_status status,
+                            uint64_t index, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+double atrbvh_i_now_ms(void);
+
+/* Scratch that outlives one build: slot k keeps its largest allocation
+ * until the device is closed, so repeated builds of similar sizes
+ * allocate nothing new.  A build without a device handle uses a scratch
+ * that the pipeline frees when the build ends. */
+#define ATRBVH_I_SCRATCH_SLOTS 24
+typedef struct atrbvh_i_scratch {
+    void *ptr[ATRBVH_I_SCRATCH_SLOTS];
+    size_t bytes[ATRBVH_I_SCRATCH_SLOTS];
+} atrbvh_i_scratch;
+/* At least count * size bytes in slot `slot` (contents undefined); NULL
+ * on overflow or allocation failure (the slot is then empty). */
+void *atrbvh_i_scratch_get(atrbvh_i_scratch *s, unsigned slot, size_t count,
+                           size_t size);
+void atrbvh_i_scratch_free(atrbvh_i_scratch *s);
+
+/* ------------------------------------------------------- a build's data */
+/* The geometry after its metadata checks: strides in bytes. */
+typedef struct atrbvh_i_input {
+    const atrbvh_geometry *g;
+    size_t vstride, istride, bstride;
+} atrbvh_i_input;
+
+/* Options after validation and default resolution. */
+typedef struct atrbvh_i_config {
+    atrbvh_method method;
+    unsigned treelet_size; /* resolved, 0 for LBVH */
+    unsigned rounds;       /* resolved, 0 for LBVH */
+    unsigned gamma;        /* resolved first-round gamma */
+    atrbvh_cost_params cost; /* ci, ct, collapse, max_leaf */
+    int threads;
+    int skip_invalid;
+} atrbvh_i_config;
+
+typedef struct atrbvh_i_run atrbvh_i_run;
+
+/* Reports progress inside a stage: `done` of `total` items of the current
+ * stage (pass / round granularity is enough).  Call it from the thread
+ * that runs the stage function only.  Returns nonzero when the user asked
+ * to cancel: the stage then returns ATRBVH_ERR_CANCELLED (through
+ * atrbvh_i_fail) after releasing nothing it does not own; the pipeline
+ * frees the rest. */
+int atrbvh_i_stage_progress(atrbvh_i_run *run, uint64_t done, uint64_t total);
+
+/* One build, shared by the pipeline and the backend.  Fields are written by
+ * the stage named beside them and read by later ones. */
+struct atrbvh_i_run {
+    atrbvh_i_input in;
+    const atrbvh_i_config *cfg;
+    /* bounds: primitives in the build, scene and centroid boxes; `bad`
+     * set when some primitive is invalid (NaN/Inf, a bad index, an
+     * inverted box) - the pipeline then finds the exact error on the
+     * host (or compacts, skip_invalid) and calls backend->set_prims. */
+    uint32_t n;
+    atrbvh_box scene, centroids;
+    int bad;
+    size_t invalid; /* primitives left out (skip_invalid)            */
+    /* pipeline, before morton: the Morton frame of the centroid box
+     * (lib/shared/stages.h atrbvh_morton_quantise's lo and scale). */
+    double morton_lo[3], morton_scale[3];
+    /* collapse: output nodes (the root's ATRBVH_SIZE_MASK part). */
+    uint32_t node_count;
+    /* pipeline, after collapse: the output; layout fills nodes and
+     * prim_indices (node_count and n entries). */
+    atrbvh_node *nodes;
+    uint32_t *prim_indices;
+    /* the backend's per-build state (begin/end) */
+    void *state;
+    /* pipeline-private (progress, cancellation) */
+    void *pipeline;
+};
+
+/* ------------------------------------------------------- stage capture */
+/* The tree as the stages leave it (structure of arrays; n leaves,
+ * internal nodes 0..n-2 with the root at 0, leaves n-1..2n-2). */
+typedef struct atrbvh_i_tree {
+    uint32_t n;
+    uint32_t *left;      /* n-1 entries: child of internal node i       */
+    uint32_t *right;     /* n-1 entries                                 */
+    uint32_t *parent;    /* 2n-1 entries, ATRBVH_U32_MAX for the root    */
+    uint32_t *count;     /* 2n-1: primitives under the node             */
+    atrbvh_box *box;     /* 2n-1                                        */
+    double *cost;        /* 2n-1: unnormalised SAH cost of the subtree  */
+    uint32_t *leaf_prim; /* n: leaf n-1+p -> original primitive index   */
+} atrbvh_i_tree;
+
+/* Copies of every stage's output (atrbvh_validate_backends compares two;
+ * stage dumps write them).  Arrays are the library allocator's. */
+typedef struct atrbvh_i_capture {
+    uint32_t n;
+    atrbvh_box *prim_boxes;   /* bounds: n boxes in build order        */
+    atrbvh_box scene, centroids;
+    uint64_t *keys;           /* morton: n keys in build order         */
+    uint64_t *sorted_keys;    /* sort: keys and build indices, sorted  */
+    uint32_t *order;
+    atrbvh_i_tree hierarchy;  /* left, right, parent, count, leaf_prim */
+    atrbvh_i_tree refit;      /* + box, count, cost                    */
+    atrbvh_i_tree optimise;   /* the same after the optimise stage     */
+    uint32_t *collapse_size;  /* collapse: output nodes per subtree    */
+} atrbvh_i_capture;
+
+/* Allocates the capture's arrays for `what` (tree_alloc: every array of a
+ * tree of n leaves; values = 0 leaves box and cost NULL). */
+atrbvh_status atrbvh_i_tree_alloc(atrbvh_i_tree *t, uint32_t n, int values);
+void atrbvh_i_tree_free(atrbvh_i_tree *t);
+
+/* ---------------------------------------------------------- the backend */
+typedef struct atrbvh_i_backend atrbvh_i_backend;
+
+/* What every device handle holds; `impl` is the backend's (context,
+ * program, device buffers). */
+struct atrbvh_device {
+    const atrbvh_i_backend *backend;
+    char name[128];
+    atrbvh_i_scratch scratch; /* host scratch kept between builds */
+    void *impl;
+};
+
+typedef atrbvh_status (*atrbvh_i_stage_fn)(atrbvh_device *dev,
+                                           atrbvh_i_run *run,
+                                           atrbvh_error *error);
+
+struct atrbvh_i_backend {
+    const char *name; /* "cpu", "opencl" */
+    atrbvh_backend kind;
+    /* Select the device named by `spec` (backend-specific; NULL or "" the
+     * first), set dev->name, create what every build reuses (context,
+     * queue, program).  Thread-safe. */
+    atrbvh_status (*open)(atrbvh_device *dev, const char *spec,
+                          atrbvh_error *error);
+    void (*close)(atrbvh_device *dev);
+    /* Per-build state into run->state (buffers for run->in.g's
+     * primitive_count); end releases what begin made (scratch kept on the
+     * device stays).  end is called on every path once begin succeeded. */
+    atrbvh_status (*begin)(atrbvh_device *dev, atrbvh_i_run *run,
+                           atrbvh_error *error);
+    void (*end)(atrbvh_device *dev, atrbvh_i_run *run);
+    /* The stages, by atrbvh_stage.  bounds sets n, scene, centroids (or
+     * bad); morton reads morton_lo/scale; collapse sets node_count;
+     * layout writes run->nodes and run->prim_indices. */
+    atrbvh_i_stage_fn stage[ATRBVH_STAGE_COUNT];
+    /* After an invalid primitive: the boxes (n, build order) and, with
+     * skip_invalid, the kept ids (NULL: the identity) the pipeline
+     * computed on the host replace the bounds stage's output. */
+    atrbvh_status (*set_prims)(atrbvh_device *dev, atrbvh_i_run *run,
+                               const atrbvh_box *boxes, const uint32_t *ids,
+                               atrbvh_error *error);
+    /* Copies the output of `stage` (just run) into `cap`. */
+    atrbvh_status (*capture)(atrbvh_device *dev, atrbvh_i_run *run,
+                             atrbvh_stage stage, atrbvh_i_capture *cap,
+                             atrbvh_error *error);
+    /* Ray queries over a built tree (arguments checked by the caller):
+     * closest hits into `hits`, or any hits into `occluded` when it is
+     * non-NULL.  *kernel_ms (may be NULL): device time, when known. */
+    atrbvh_status (*trace)(atrbvh_device *dev, const atrbvh_node *nodes,
+                           size_t node_count, const uint32_t *prim_indices,
+                           size_t prim_count, const atrbvh_i_input *in,
+                           const atrbvh_ray *rays, size_t count,
+                           atrbvh_hit *hits, uint8_t *occluded, int threads,
+                           double *kernel_ms, atrbvh_error *error);
+    /* Per-kernel device times of the last build (i-th; 0 past the last). */
+    int (*kernel_time)(atrbvh_device *dev, size_t i, const char **name,
+                       double *ms);
+};
+
+extern const atrbvh_i_backend atrbvh_i_cpu_backend;
+#ifdef ATRBVH_HAVE_OPENCL
+extern const atrbvh_i_backend atrbvh_i_cl_backend;
+#endif
+
+#endif
