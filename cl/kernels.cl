@@ -16,13 +16,6 @@
 #pragma OPENCL FP_CONTRACT OFF
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 
-typedef struct cl_node {
-    float min[3];
-    float max[3];
-    uint index;
-    uint count;
-} cl_node;
-
 static atrbvh_cost_params cost_params(double ci, double ct, int collapse,
                                       uint max_leaf)
 {
@@ -396,11 +389,11 @@ __kernel void layout(__global const atrbvh_box *box, __global const uint *count,
                      __global const uint *left, __global const uint *right,
                      __global const uint *parent, __global const uint *size,
                      __global const uint *leaf_prim, uint n,
-                     __global cl_node *nodes, __global uint *prims)
+                     __global atrbvh_node *nodes, __global uint *prims)
 {
     uint x = (uint)get_global_id(0), c, pos = 0, prim = 0;
     int emitted = 1, k;
-    cl_node out;
+    atrbvh_node out;
     atrbvh_box b;
     if (x >= 2u * n - 1u)
         return;

@@ -65,6 +65,17 @@ static inline int atrbvh_clz64_portable(uint64_t x)
 #endif
 #endif
 
+/* ------------------------------------------------------------- finiteness */
+/* Nonzero when x is neither NaN nor infinite: x - x is 0 exactly for every
+ * finite x and NaN otherwise (no libc isfinite needed; never compiled with
+ * fast-math, which would break it).  The one finiteness test of both
+ * backends: the bounds stage and the ray setup use it. */
+ATRBVH_FN int atrbvh_finite(float x)
+{
+    float d = x - x;
+    return d == 0.0f;
+}
+
 /* ------------------------------------------------------------------ boxes */
 typedef struct atrbvh_box {
     float min[3];

@@ -9,18 +9,9 @@
 #ifndef ATRBVH_SHARED_STAGES_H
 #define ATRBVH_SHARED_STAGES_H
 
-#include "arith.h"
+#include "fetch.h"
 
 /* ------------------------------------------------------------------ bounds */
-/* Nonzero when x is neither NaN nor infinite: x - x is 0 exactly for every
- * finite x and NaN otherwise (no libc isfinite needed; never compiled with
- * fast-math, which would break it). */
-ATRBVH_FN int atrbvh_finite(float x)
-{
-    float d = x - x;
-    return d == 0.0f;
-}
-
 /* Grows box b by point (x, y, z); returns 0 (b untouched on that axis
  * onwards) when a coordinate is NaN or infinite. */
 ATRBVH_FN int atrbvh_box_grow(atrbvh_box *b, float x, float y, float z)
@@ -61,6 +52,49 @@ ATRBVH_FN int atrbvh_prim_box_from_box(const float *b, atrbvh_box *out)
         out->max[k] = b[k + 3];
     }
     return ATRBVH_PRIM_OK;
+}
+
+/* Box of triangle i (strides in elements, shared/fetch.h): corners in
+ * order, each index checked against vertex_count before its vertex is
+ * read.  Returns ATRBVH_PRIM_OK, ATRBVH_PRIM_BAD_INDEX (*bad_value: the
+ * index) or ATRBVH_PRIM_NONFINITE, whichever the first failing corner
+ * gives; *out is then partial.  The CPU bounds and the bounds_triangles
+ * kernel both call this. */
+ATRBVH_FN int atrbvh_prim_box_triangle(ATRBVH_CONST_GLOBAL float *vertices,
+                                       atrbvh_u64 vstride,
+                                       atrbvh_u64 vertex_count,
+                                       ATRBVH_CONST_GLOBAL atrbvh_u32 *indices,
+                                       atrbvh_u64 istride, int indexed,
+                                       atrbvh_u64 i, atrbvh_box *out,
+                                       atrbvh_u32 *bad_value)
+{
+    int c;
+    *out = atrbvh_box_empty();
+    for (c = 0; c < 3; c++) {
+        float p[3];
+        atrbvh_u64 v = atrbvh_fetch_vertex_id(indices, istride, indexed, i, c);
+        if (v >= vertex_count) {
+            *bad_value = (atrbvh_u32)v;
+            return ATRBVH_PRIM_BAD_INDEX;
+        }
+        atrbvh_fetch_vertex(vertices, vstride, v, p);
+        if (!atrbvh_box_grow(out, p[0], p[1], p[2]))
+            return ATRBVH_PRIM_NONFINITE;
+    }
+    return ATRBVH_PRIM_OK;
+}
+
+/* Box of box primitive i (stride in floats): ATRBVH_PRIM_OK,
+ * ATRBVH_PRIM_NONFINITE or ATRBVH_PRIM_INVERTED (*out then empty or
+ * partial).  The CPU bounds and the bounds_boxes kernel both call this. */
+ATRBVH_FN int atrbvh_prim_box_box(ATRBVH_CONST_GLOBAL float *boxes,
+                                  atrbvh_u64 bstride, atrbvh_u64 i,
+                                  atrbvh_box *out)
+{
+    float f[6];
+    atrbvh_fetch_box(boxes, bstride, i, f);
+    *out = atrbvh_box_empty();
+    return atrbvh_prim_box_from_box(f, out);
 }
 
 /* ---------------------------------------------------------- scene boxes */
@@ -119,6 +153,50 @@ ATRBVH_FN atrbvh_u32 atrbvh_collapse_size(const atrbvh_cost_params *p,
     if (collapsed)
         return 1u | ATRBVH_SIZE_LEAF;
     return 1u + (size_l & ATRBVH_SIZE_MASK) + (size_r & ATRBVH_SIZE_MASK);
+}
+
+/* ------------------------------------------------------------------ layout */
+/* The depth-first placement rule of the output (lib/cpu/collapse.c's
+ * top-down emission, the layout kernel's walk up from each node): a node
+ * at output position `pos` whose primitives start at `prim` puts its left
+ * child at pos + 1 with the same first primitive, and its right child
+ * after the whole left subtree: pos + 1 + size(left), primitives from
+ * prim + count(left).  `size_left` is the left child's collapse size
+ * (ATRBVH_SIZE_LEAF flag allowed). */
+ATRBVH_FN atrbvh_u32 atrbvh_layout_right_pos(atrbvh_u32 pos,
+                                             atrbvh_u32 size_left)
+{
+    return pos + 1u + (size_left & ATRBVH_SIZE_MASK);
+}
+
+ATRBVH_FN atrbvh_u32 atrbvh_layout_right_prim(atrbvh_u32 prim,
+                                              atrbvh_u32 count_left)
+{
+    return prim + count_left;
+}
+
+/* The output node at `pos` (atrbvh_node, depth-first): a leaf (size has
+ * ATRBVH_SIZE_LEAF) holds primitives prim .. prim + count - 1; an internal
+ * node's left child is the next node and its right child is at
+ * atrbvh_layout_right_pos. */
+ATRBVH_FN atrbvh_node atrbvh_layout_node(atrbvh_box b, atrbvh_u32 size,
+                                         atrbvh_u32 count, atrbvh_u32 pos,
+                                         atrbvh_u32 prim, atrbvh_u32 size_left)
+{
+    atrbvh_node out;
+    int k;
+    for (k = 0; k < 3; k++) {
+        out.min[k] = b.min[k];
+        out.max[k] = b.max[k];
+    }
+    if (size & ATRBVH_SIZE_LEAF) {
+        out.index = prim;
+        out.count = count;
+    } else {
+        out.index = atrbvh_layout_right_pos(pos, size_left);
+        out.count = 0u;
+    }
+    return out;
 }
 
 #endif

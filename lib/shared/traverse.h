@@ -27,32 +27,12 @@
 #ifndef ATRBVH_SHARED_TRAVERSE_H
 #define ATRBVH_SHARED_TRAVERSE_H
 
-#include "arith.h"
+#include "fetch.h" /* types.h: atrbvh_node, atrbvh_ray, atrbvh_hit */
 
-#ifdef __OPENCL_VERSION__
-#define ATRBVH_TRAV_INF INFINITY
-/* The public types of atrbvh.h, same layout. */
-typedef struct atrbvh_node {
-    float min[3];
-    float max[3];
-    atrbvh_u32 index;
-    atrbvh_u32 count;
-} atrbvh_node;
-typedef struct atrbvh_ray {
-    float origin[3];
-    float dir[3];
-    float tmin, tmax;
-} atrbvh_ray;
-typedef struct atrbvh_hit {
-    float t, u, v;
-    atrbvh_u32 primitive;
-} atrbvh_hit;
-#define ATRBVH_NO_HIT 0xffffffffu
-#else
+#ifndef __OPENCL_VERSION__
 #include <math.h> /* INFINITY only */
-#include "atrbvh.h"
-#define ATRBVH_TRAV_INF INFINITY
 #endif
+#define ATRBVH_TRAV_INF INFINITY
 
 #define ATRBVH_TRAVERSE_STACK 256
 #define ATRBVH_TRAV_FLT_MAX 3.402823466e+38f
@@ -115,13 +95,6 @@ ATRBVH_FN double atrbvh_trav_abs(double x)
     return x < 0.0 ? -x : (x == 0.0 ? 0.0 : x);
 }
 
-/* Neither NaN nor infinite (x - x is 0 exactly for every finite x). */
-ATRBVH_FN int atrbvh_trav_finite(float x)
-{
-    float d = x - x;
-    return d == 0.0f;
-}
-
 ATRBVH_FN float atrbvh_trav_widen_limit(float t)
 {
     /* t + |t| * slack; inf stays inf, -inf stays -inf. */
@@ -139,7 +112,7 @@ ATRBVH_FN int atrbvh_trav_setup(const float *origin, const float *dir,
     if (!(tmin == tmin) || !(tmax == tmax))
         return 0;
     for (k = 0; k < 3; k++) {
-        if (!atrbvh_trav_finite(origin[k]) || !atrbvh_trav_finite(dir[k]))
+        if (!atrbvh_finite(origin[k]) || !atrbvh_finite(dir[k]))
             return 0;
     }
     if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f)
@@ -250,19 +223,14 @@ ATRBVH_FN int atrbvh_trav_triangle_vertices(const atrbvh_trav_scene *s,
                                             atrbvh_u32 prim, float v[3][3])
 {
     atrbvh_u64 id[3];
-    int k, c;
-    for (k = 0; k < 3; k++) {
-        if (s->indexed)
-            id[k] = s->indices[(atrbvh_u64)prim * s->index_stride +
-                               (atrbvh_u64)k];
-        else
-            id[k] = 3u * (atrbvh_u64)prim + (atrbvh_u64)k;
-    }
+    int k;
+    for (k = 0; k < 3; k++)
+        id[k] = atrbvh_fetch_vertex_id(s->indices, s->index_stride,
+                                       s->indexed, (atrbvh_u64)prim, k);
     for (k = 0; k < 3; k++) {
         if (id[k] >= s->vertex_count)
             return 0;
-        for (c = 0; c < 3; c++)
-            v[k][c] = s->vertices[id[k] * s->vertex_stride + (atrbvh_u64)c];
+        atrbvh_fetch_vertex(s->vertices, s->vertex_stride, id[k], v[k]);
     }
     return 1;
 }
@@ -379,10 +347,8 @@ ATRBVH_FN int atrbvh_trav_leaf(const atrbvh_trav_scene *s,
             }
         } else {
             float box[6], t0, t1;
-            int k;
-            for (k = 0; k < 6; k++)
-                box[k] = s->box_data[(atrbvh_u64)prim * s->box_stride +
-                                     (atrbvh_u64)k];
+            atrbvh_fetch_box(s->box_data, s->box_stride, (atrbvh_u64)prim,
+                             box);
             if (!atrbvh_trav_box_interval(box, r, &t0, &t1))
                 continue;
             if (any) {

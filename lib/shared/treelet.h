@@ -35,11 +35,23 @@
 
 #include "arith.h"
 
-/* Largest treelet of each optimiser.  TRBVH needs 2^n subset entries of
+/* Treelet sizes, the one definition (option checks in lib/api.c, the
+ * private array sizes below, the CPU and OpenCL optimise stages).
+ * Largest treelet of each optimiser: TRBVH needs 2^n subset entries of
  * scratch and O(3^n) work per treelet; ATRBVH keeps one cluster per leaf
- * and n(n-1)/2 distances. */
+ * and n(n-1)/2 distances.  ATRBVH_TREELET_MAX is the largest of all (the
+ * private arrays' size). */
 #define ATRBVH_TREELET_MAX 32
 #define ATRBVH_TRBVH_MAX 10
+#define ATRBVH_TRBVH_MIN 3
+#define ATRBVH_ATRBVH_MIN 3
+#define ATRBVH_ATRBVH_MAX ATRBVH_TREELET_MAX
+/* Defaults (atrbvh_build_options: treelet_size 0, rounds 0). */
+#define ATRBVH_TRBVH_DEFAULT 7
+#define ATRBVH_ATRBVH_DEFAULT 9
+#define ATRBVH_TRBVH_ROUNDS_DEFAULT 3
+#define ATRBVH_ATRBVH_ROUNDS_DEFAULT 2
+#define ATRBVH_ROUNDS_MAX 64
 
 /* ------------------------------------------------------------- the tree */
 /* The tree arrays the optimiser reads and writes (see atrbvh_i_tree):

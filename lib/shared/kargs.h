@@ -1,0 +1,118 @@
+/*
+ * shared/kargs.h - the scalar arguments of the OpenCL kernels, one plain
+ * struct per stage, passed by value (clSetKernelArg with the struct's
+ * size).  The host (cl/stages.c, cl/trace.c) fills one struct per launch;
+ * the kernel (cl/kernels.cl) reads its fields.
+ *
+ * Only u32, u64 and double fields, largest first, padded by hand to a
+ * multiple of 8 bytes, so the layout is the same under any C ABI and
+ * OpenCL C; the assertions at the end compile on both sides and pin every
+ * size (types.h's ATRBVH_STATIC_ASSERT).  Strides are in elements (floats
+ * or u32), counts are of items.
+ */
+#ifndef ATRBVH_SHARED_KARGS_H
+#define ATRBVH_SHARED_KARGS_H
+
+#include "types.h"
+
+/* bounds_triangles, bounds_boxes, bounds_reduce */
+typedef struct atrbvh_kargs_bounds {
+    atrbvh_u64 vstride;      /* vertices: floats between vertices       */
+    atrbvh_u64 istride;      /* indices: u32 between triangles          */
+    atrbvh_u64 bstride;      /* boxes: floats between boxes             */
+    atrbvh_u64 vertex_count;
+    atrbvh_u32 n;            /* primitives                              */
+    atrbvh_u32 indexed;      /* 1: indices used                         */
+    atrbvh_u32 parts;        /* bounds_reduce: partial boxes            */
+    atrbvh_u32 pad0;
+} atrbvh_kargs_bounds;
+
+/* morton: the host's Morton frame (atrbvh_morton_quantise) */
+typedef struct atrbvh_kargs_morton {
+    double lo[3];
+    double scale[3];
+    atrbvh_u32 n;
+    atrbvh_u32 pad0;
+} atrbvh_kargs_morton;
+
+/* sort_count, sort_scan, sort_scatter: one 8-bit pass */
+typedef struct atrbvh_kargs_sort {
+    atrbvh_u32 n;
+    atrbvh_u32 shift;   /* the digit's lowest bit */
+    atrbvh_u32 blocks;  /* contiguous blocks (shared/sort.h) */
+    atrbvh_u32 entries; /* ATRBVH_SORT_RADIX * blocks */
+} atrbvh_kargs_sort;
+
+/* hierarchy, refit, collapse, layout */
+typedef struct atrbvh_kargs_tree {
+    double ci, ct;        /* the cost model (atrbvh_cost_params) */
+    atrbvh_u32 n;         /* leaves */
+    atrbvh_u32 collapse;
+    atrbvh_u32 max_leaf;
+    atrbvh_u32 has_ids;   /* hierarchy: 1 when kept ids map the leaves */
+} atrbvh_kargs_tree;
+
+/* opt_prepare, opt_round: one round */
+typedef struct atrbvh_kargs_optimise {
+    double ci, ct;
+    atrbvh_u64 stride;    /* scratch bytes per worker, and the offsets of */
+    atrbvh_u64 off_cost;  /* its arrays within them                       */
+    atrbvh_u64 off_count;
+    atrbvh_u64 off_split;
+    atrbvh_u64 off_dist;
+    atrbvh_u32 collapse;
+    atrbvh_u32 max_leaf;
+    atrbvh_u32 n_internal;
+    atrbvh_u32 gamma;     /* crown: subtrees of at least gamma primitives */
+    atrbvh_u32 list_len;  /* walk starts (opt_round)                      */
+    atrbvh_u32 treelet_size;
+    atrbvh_u32 agglomerative; /* 1: ATRBVH, 0: TRBVH                       */
+    atrbvh_u32 workers;
+} atrbvh_kargs_optimise;
+
+/* intersect_closest, intersect_any (atrbvh_trav_scene's scalars) */
+typedef struct atrbvh_kargs_trace {
+    atrbvh_u64 node_count;
+    atrbvh_u64 prim_count;      /* entries of the primitive index array */
+    atrbvh_u64 primitive_count; /* of the geometry                      */
+    atrbvh_u64 vertex_count;
+    atrbvh_u64 vstride;
+    atrbvh_u64 istride;
+    atrbvh_u64 bstride;
+    atrbvh_u64 ray_count;
+    atrbvh_u32 boxes;   /* 0 triangles, 1 boxes */
+    atrbvh_u32 indexed;
+    atrbvh_u32 pad0, pad1;
+} atrbvh_kargs_trace;
+
+/* The cost model from a struct's fields. */
+ATRBVH_FN atrbvh_cost_params atrbvh_kargs_cost(double ci, double ct,
+                                               atrbvh_u32 collapse,
+                                               atrbvh_u32 max_leaf)
+{
+    atrbvh_cost_params p;
+    p.ci = ci;
+    p.ct = ct;
+    p.collapse = collapse != 0u;
+    p.max_leaf = max_leaf;
+    return p;
+}
+
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_bounds) == 48, kargs_bounds);
+ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_bounds, n) == 32,
+                     kargs_bounds_n);
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_morton) == 56, kargs_morton);
+ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_morton, n) == 48,
+                     kargs_morton_n);
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_sort) == 16, kargs_sort);
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_tree) == 32, kargs_tree);
+ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_tree, n) == 16,
+                     kargs_tree_n);
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_optimise) == 88, kargs_optimise);
+ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_optimise, collapse) == 56,
+                     kargs_optimise_collapse);
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_trace) == 80, kargs_trace);
+ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_trace, boxes) == 64,
+                     kargs_trace_boxes);
+
+#endif
