@@ -36,10 +36,6 @@ typedef struct opt_worker {
 
 #include <string.h>
 
-#if ATRBVH_TREELET_MAX < 32 || ATRBVH_TRBVH_MAX < 10
-#error "treelet maxima below the ranges api.c accepts"
-#endif
-
 /* Subtrees smaller than this are walked serially inside one task. */
 #define TASK_CUTOFF 2048u
 /* Deeper task recursion falls back to the serial walk (bounds the stack
