@@ -118,8 +118,11 @@ atrbvh_status atrbvh_i_check_geometry(const atrbvh_geometry *g,
 #define PRIM_BAD_INDEX ATRBVH_PRIM_BAD_INDEX
 #define PRIM_INVERTED ATRBVH_PRIM_INVERTED
 
-int atrbvh_i_prim_box(const atrbvh_i_input *in, size_t i, atrbvh_box *out,
-                      uint32_t *bad_value)
+/* Box of primitive i: an ATRBVH_PRIM_* code, *bad_value the offending
+ * vertex index for ATRBVH_PRIM_BAD_INDEX (the rule every backend's bounds
+ * stage applies). */
+static int prim_box(const atrbvh_i_input *in, size_t i, atrbvh_box *out,
+                    uint32_t *bad_value)
 {
     const atrbvh_geometry *g = in->g;
     if (g->type == ATRBVH_GEOMETRY_BOXES)
@@ -175,7 +178,7 @@ atrbvh_status atrbvh_i_scan_prims(const atrbvh_i_input *in,
 #endif
         for (j = 0; j < (int64_t)n; j++) {
             uint32_t value = 0;
-            int r = atrbvh_i_prim_box(in, (size_t)j, &boxes[j], &value);
+            int r = prim_box(in, (size_t)j, &boxes[j], &value);
             if (r == PRIM_NONFINITE) {
                 my_invalid++;
                 boxes[j].min[0] = NAN; /* marks it for compaction */
