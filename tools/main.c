@@ -130,6 +130,7 @@ static void usage(FILE *f)
           "plots\n"
           "  render SCENE --output F  a shaded PNG, or a heat map of "
           "traversal steps\n"
+          "  help [COMMAND]           this help, or that command's\n"
           "\n"
           "SCENE is a .ply or .obj file, or builtin:NAME[:N] with NAME one "
           "of\n"
@@ -143,7 +144,8 @@ static void usage(FILE *f)
           "built in and\n"
           "                           the licence\n"
           "\n"
-          "Exit status: 0 success, 1 bad input or failure, 2 usage error.\n"
+          "Exit status: 0 success, 1 bad input or failure, 2 usage error;\n"
+          "compare and validate: 0 same, 1 different, 2 trouble.\n"
           "See atrbvh(1).\n",
           f);
 }
