@@ -152,6 +152,16 @@ rc=$?
 [ $rc = 1 ] || fail "bench --backend opencl without OpenCL exited $rc, expected 1"
 grep -q '^atrbvh: .*OpenCL' "$T/err" || fail "bench --backend opencl without OpenCL: $(cat "$T/err")"
 
+# A run that fails leaves an existing CSV as it was (written beside it
+# and renamed only when complete), and leaves no temporary file.
+mkdir "$T/keep" && echo 'keep me' >"$T/keep/k.csv"
+run 1 bench /nonexistent/scene.ply --repeat 1 --no-rays --csv "$T/keep/k.csv"
+[ "$(cat "$T/keep/k.csv")" = 'keep me' ] || fail "a failed bench changed the CSV: $(head -c 200 "$T/keep/k.csv")"
+[ "$(ls "$T/keep")" = k.csv ] || fail "a failed bench left files: $(ls "$T/keep")"
+# An unwritable CSV is reported before any measurement.
+run 1 bench "$SCENE" --repeat 1 --no-rays --csv "$T/no/such/dir/x.csv" &&
+    { grep -q '^#' "$T/out" && fail "bench measured before finding the CSV unwritable"; }
+
 # usage and errors: out-of-range values name the option
 for bad in "--threads -1" "--threads 100000" "--threads 2147483647" \
     "--repeat -1" "--ci 0" "--max-leaf 5000" "--spp -2"; do

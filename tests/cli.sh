@@ -125,7 +125,7 @@ for cmd in build trace info compare validate bench render; do
     for opt in $(sed -n 's/^ *\(-[a-z], \)\{0,1\}\(--[a-z-]*\).*/\2/p' "$T/help1"); do
         case $opt in --help | --version) continue ;; esac
         # (a last unknown option stops any run once $opt is read)
-        "$TOOL" $cmd "$opt" --zz-not-an-option >"$T/o2" 2>"$T/e2"
+        "$TOOL" $cmd "$opt" zz-value --zz-not-an-option >"$T/o2" 2>"$T/e2"
         if grep -q "unknown option '$opt'" "$T/e2"; then
             fail "$cmd --help shows $opt, which $cmd refuses"
         fi

@@ -7,6 +7,7 @@
 
 #include "bench.h"
 #include "memtrack.h"
+#include "outfile.h"
 
 #include <errno.h>
 #include <math.h>
@@ -307,6 +308,7 @@ int cli_bench(int argc, char **argv)
     const cli_opt *tables[2];
     int rc, k, npos;
     FILE *csv = NULL;
+    cli_out csv_out;
     atrbvh_backend be = ATRBVH_BACKEND_CPU;
     if ((rc = cli_help_or_version(argc, argv, bench_help)) >= 0)
         return rc;
@@ -455,27 +457,30 @@ int cli_bench(int argc, char **argv)
     }
     if (ap->nconfigs == 0)
         return cli_usage("bench", "no configuration to run");
+    /* The CSV goes to a temporary file beside it (outfile.h), renamed
+     * over it when the run is complete; opened now, so that an unwritable
+     * path is reported before the measurements. */
     if (ap->csv) {
-        csv = fopen(ap->csv, "w");
-        if (!csv) {
-            cli_error("%s: %s", ap->csv, strerror(errno));
+        csv = cli_out_open(ap->csv, &csv_out);
+        if (!csv)
             return CLI_FAIL;
-        }
         if (!ap->scaling)
             csv_header(csv);
     }
     if (ap->plot && mkdir(ap->plot, 0777) != 0 && errno != EEXIST) {
         cli_error("%s: %s", ap->plot, strerror(errno));
         if (csv)
-            fclose(csv);
+            cli_out_abort(&csv_out);
         return CLI_FAIL;
     }
     memtrack_install();
     rc = ap->scaling ? bench_scaling(ap, csv) : bench_sweep(ap, csv);
     memtrack_uninstall();
-    if (csv && (fclose(csv) != 0) && rc == CLI_OK) {
-        cli_error("%s: %s", ap->csv, strerror(errno));
-        rc = CLI_FAIL;
+    if (csv) {
+        if (rc != CLI_OK)
+            cli_out_abort(&csv_out); /* nothing half written */
+        else if (cli_out_commit(&csv_out) != 0)
+            rc = CLI_FAIL;
     }
     return rc;
 }

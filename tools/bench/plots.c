@@ -6,6 +6,7 @@
 #include "config.h"
 
 #include "bench.h"
+#include "outfile.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -13,6 +14,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -31,20 +33,86 @@ static void scene_tag(const char *spec, char *buf, size_t n)
     buf[k] = '\0';
 }
 
-static FILE *open_in(const char *dir, const char *name, char *path,
-                     size_t n)
+/* DIR/NAME through outfile.h (a temporary file renamed when complete). */
+static FILE *open_in(const char *dir, const char *name, cli_out *h)
 {
-    FILE *f;
-    snprintf(path, n, "%s/%s", dir, name);
-    f = fopen(path, "w");
-    if (!f)
-        cli_error("%s: %s", path, strerror(errno));
-    return f;
+    char path[4200];
+    int w = snprintf(path, sizeof path, "%s/%s", dir, name);
+    if (w < 0 || (size_t)w >= sizeof path) {
+        cli_error("%s: folder name too long", dir);
+        return NULL;
+    }
+    return cli_out_open(path, h);
+}
+
+/* The pictures a script makes: gnuplot writes STEM.EXT.part (the script
+ * appends the variable outsuffix, which the tool sets and a user running
+ * the script does not), and they are renamed over STEM.EXT only once
+ * gnuplot has succeeded. */
+typedef struct pictures {
+    char (*stem)[160];
+    int n, cap, oom;
+} pictures;
+
+static void pictures_add(pictures *p, const char *stem)
+{
+    if (p->n == p->cap) {
+        int cap = p->cap ? 2 * p->cap : 8;
+        char(*m)[160] = realloc(p->stem, (size_t)cap * sizeof *m);
+        if (!m) {
+            p->oom = 1;
+            return;
+        }
+        p->stem = m;
+        p->cap = cap;
+    }
+    snprintf(p->stem[p->n++], sizeof p->stem[0], "%s", stem);
+}
+
+static const char *const picture_ext[2] = {"png", "svg"};
+
+/* Renames the finished pictures into place (ok) or removes the partial
+ * ones.  0, or -1 after an error line. */
+static int pictures_finish(const char *dir, pictures *p, int ok)
+{
+    int k, e, rc = 0;
+    for (k = 0; k < p->n; k++)
+        for (e = 0; e < 2; e++) {
+            char part[4416], final[4400];
+            struct stat st;
+            int w = snprintf(final, sizeof final, "%s/%s.%s", dir,
+                             p->stem[k], picture_ext[e]);
+            if (w < 0 || (size_t)w >= sizeof final) {
+                cli_error("%s: folder name too long", dir);
+                rc = -1;
+                continue;
+            }
+            snprintf(part, sizeof part, "%s.part", final);
+            if (!ok) {
+                remove(part);
+                continue;
+            }
+            /* replace only a regular file (or nothing) */
+            if (lstat(final, &st) == 0 && !S_ISREG(st.st_mode)) {
+                cli_error("%s: not a regular file, not replaced (the "
+                          "picture is in %s)", final, part);
+                rc = -1;
+                continue;
+            }
+            if (rename(part, final) != 0) {
+                cli_error("%s: %s", final, strerror(errno));
+                remove(part);
+                rc = -1;
+            }
+        }
+    free(p->stem);
+    memset(p, 0, sizeof *p);
+    return rc;
 }
 
 /* gnuplot SCRIPT in DIR, its messages in DIR/gnuplot.log; no shell (a
  * folder name is never interpreted). */
-static int run_gnuplot(const char *dir, const char *script)
+static int run_gnuplot(const char *dir, const char *script, pictures *pics)
 {
     pid_t pid;
     int st;
@@ -53,10 +121,11 @@ static int run_gnuplot(const char *dir, const char *script)
     if (pid < 0) {
         cli_error("%s/%s: cannot start gnuplot: %s", dir, script,
                   strerror(errno));
+        pictures_finish(dir, pics, 0);
         return -1;
     }
     if (pid == 0) {
-        char *argv[3];
+        char *argv[5];
         int fd;
         if (chdir(dir) != 0)
             _exit(126);
@@ -71,8 +140,10 @@ static int run_gnuplot(const char *dir, const char *script)
             close(fd);
         }
         argv[0] = (char *)"gnuplot";
-        argv[1] = (char *)script;
-        argv[2] = NULL;
+        argv[1] = (char *)"-e";
+        argv[2] = (char *)"outsuffix = '.part'";
+        argv[3] = (char *)script;
+        argv[4] = NULL;
         execvp(argv[0], argv);
         _exit(127);
     }
@@ -80,19 +151,22 @@ static int run_gnuplot(const char *dir, const char *script)
         if (errno != EINTR) {
             cli_error("%s/%s: waiting for gnuplot: %s", dir, script,
                       strerror(errno));
+            pictures_finish(dir, pics, 0);
             return -1;
         }
     if (WIFEXITED(st) && WEXITSTATUS(st) == 127) {
         cli_error("%s/%s: gnuplot not found (install gnuplot to get the "
                   "pictures; the data and script are there)", dir, script);
+        pictures_finish(dir, pics, 0);
         return -1;
     }
     if (!WIFEXITED(st) || WEXITSTATUS(st) != 0) {
         cli_error("%s/%s: gnuplot failed (see %s/gnuplot.log)", dir, script,
                   dir);
+        pictures_finish(dir, pics, 0);
         return -1;
     }
-    return 0;
+    return pictures_finish(dir, pics, 1);
 }
 
 /* A gnuplot single-quoted string: '' stands for one quote. */
@@ -108,16 +182,25 @@ static void gp_string(FILE *g, const char *s)
 }
 
 /* Both terminals for the plot commands written by `body`. */
-static void gp_both(FILE *g, const char *stem,
+static void gp_both(FILE *g, pictures *pics, const char *stem,
                     void (*body)(FILE *g, const void *ctx), const void *ctx)
 {
+    pictures_add(pics, stem);
     fprintf(g, "set terminal pngcairo size 900,600 font 'sans,10'\n"
-               "set output '%s.png'\n",
+               "set output '%s.png'.outsuffix\n",
             stem);
     body(g, ctx);
     fprintf(g, "set terminal svg size 900,600 dynamic font 'sans,10'\n"
-               "set output '%s.svg'\nreplot\nunset output\nreset\n",
+               "set output '%s.svg'.outsuffix\nreplot\nunset output\nreset\n",
             stem);
+}
+
+/* The first lines of every script. */
+static void gp_preamble(FILE *g, const char *name)
+{
+    fprintf(g, "# regenerate: gnuplot %s (in this folder)\n"
+               "if (!exists('outsuffix')) outsuffix = ''\n",
+            name);
 }
 
 /* ------------------------------------------------------ label placement
@@ -361,9 +444,11 @@ static void body_scene(FILE *g, const void *ctx)
 int plot_scene(const char *dir, const char *spec, const row *rows, int n,
                int have_rays)
 {
-    char tag[64], name[128], path[4200], stem[160];
+    char tag[64], name[128], stem[160];
     char (*labels)[64] = NULL;
     FILE *f = NULL, *g = NULL;
+    cli_out fo, go;
+    pictures pics = {NULL, 0, 0, 0};
     const row **front = NULL;
     point *pts = NULL;
     int i, nf = 0, pass, np, rc = -1;
@@ -382,7 +467,7 @@ int plot_scene(const char *dir, const char *spec, const row *rows, int n,
         config_label(&rows[i].c, rows[i].treelet, rows[i].rounds, labels[i],
                      sizeof labels[i]);
     snprintf(name, sizeof name, "bench-%s.dat", tag);
-    if (!(f = open_in(dir, name, path, sizeof path)))
+    if (!(f = open_in(dir, name, &fo)))
         goto done;
     /* index 0: atrbvh configurations, 1: Embree, 2: the Pareto front */
     for (pass = 0; pass < 2; pass++) {
@@ -403,16 +488,13 @@ int plot_scene(const char *dir, const char *spec, const row *rows, int n,
     fputs("# pareto front\n", f);
     for (i = 0; i < nf; i++)
         fprintf(f, "\"-\" %.6g %.9g 0\n", front[i]->build_ms, front[i]->sah);
-    i = fclose(f);
     f = NULL;
-    if (i != 0) {
-        cli_error("%s: %s", path, strerror(errno));
+    if (cli_out_commit(&fo) != 0)
         goto done;
-    }
     snprintf(name, sizeof name, "bench-%s.gp", tag);
-    if (!(g = open_in(dir, name, path, sizeof path)))
+    if (!(g = open_in(dir, name, &go)))
         goto done;
-    fprintf(g, "# regenerate: gnuplot %s (in this folder)\n", name);
+    gp_preamble(g, name);
     for (i = 0, np = 0; i < n; i++) {
         if (!(rows[i].build_ms > 0.0) || !isfinite(rows[i].sah))
             continue;
@@ -431,7 +513,7 @@ int plot_scene(const char *dir, const char *spec, const row *rows, int n,
     sp.n = np;
     sp.col = 3;
     snprintf(stem, sizeof stem, "pareto-%s", tag);
-    gp_both(g, stem, body_scene, &sp);
+    gp_both(g, &pics, stem, body_scene, &sp);
     if (have_rays) {
         for (i = 0, np = 0; i < n; i++) {
             if (!(rows[i].build_ms > 0.0) || !(rows[i].total_mrays > 0.0))
@@ -447,20 +529,23 @@ int plot_scene(const char *dir, const char *spec, const row *rows, int n,
         sp.n = np;
         sp.col = 4;
         snprintf(stem, sizeof stem, "rays-%s", tag);
-        gp_both(g, stem, body_scene, &sp);
+        gp_both(g, &pics, stem, body_scene, &sp);
     }
-    i = fclose(g);
     g = NULL;
-    if (i != 0) {
-        cli_error("%s: %s", path, strerror(errno));
+    if (pics.oom) {
+        cli_out_abort(&go);
+        cli_error("out of memory");
         goto done;
     }
-    rc = run_gnuplot(dir, name);
+    if (cli_out_commit(&go) != 0)
+        goto done;
+    rc = run_gnuplot(dir, name, &pics);
 done:
     if (f)
-        fclose(f);
+        cli_out_abort(&fo);
     if (g)
-        fclose(g);
+        cli_out_abort(&go);
+    free(pics.stem);
     free(labels);
     free(pts);
     free(front);
@@ -530,8 +615,9 @@ static void body_scaling(FILE *g, const void *ctx)
 
 int plot_scaling(const char *dir, const scaling_series *s, int n)
 {
-    char path[4200];
     FILE *f = NULL, *g = NULL;
+    cli_out fo, go;
+    pictures pics = {NULL, 0, 0, 0};
     scaling_plot sp;
     int k, i, st, rc = -1;
     char (*titles)[160] = malloc((size_t)(n ? n : 1) * sizeof *titles);
@@ -539,7 +625,7 @@ int plot_scaling(const char *dir, const scaling_series *s, int n)
         cli_error("out of memory");
         return -1;
     }
-    if (!(f = open_in(dir, "scaling.dat", path, sizeof path)))
+    if (!(f = open_in(dir, "scaling.dat", &fo)))
         goto done;
     for (k = 0; k < n; k++) {
         const char *bn = strrchr(s[k].base, '/');
@@ -561,21 +647,18 @@ int plot_scaling(const char *dir, const scaling_series *s, int n)
         }
         fputs("\n\n", f);
     }
-    k = fclose(f);
     f = NULL;
-    if (k != 0) {
-        cli_error("%s: %s", path, strerror(errno));
+    if (cli_out_commit(&fo) != 0)
         goto done;
-    }
-    if (!(g = open_in(dir, "scaling.gp", path, sizeof path)))
+    if (!(g = open_in(dir, "scaling.gp", &go)))
         goto done;
-    fputs("# regenerate: gnuplot scaling.gp (in this folder)\n", g);
+    gp_preamble(g, "scaling.gp");
     sp.s = s;
     sp.n = n;
     sp.titles = titles;
     sp.one = 0;
     sp.which = 0;
-    gp_both(g, "scaling", body_scaling, &sp);
+    gp_both(g, &pics, "scaling", body_scaling, &sp);
     /* one stage plot per series, named after it */
     sp.which = 1;
     for (k = 0; k < n; k++) {
@@ -587,22 +670,25 @@ int plot_scaling(const char *dir, const scaling_series *s, int n)
         ct[i] = '\0';
         snprintf(stem, sizeof stem, "scaling-stages-%s-%s", bt, ct);
         sp.one = k;
-        gp_both(g, stem, body_scaling, &sp);
+        gp_both(g, &pics, stem, body_scaling, &sp);
     }
     sp.which = 2;
-    gp_both(g, "scaling-memory", body_scaling, &sp);
-    k = fclose(g);
+    gp_both(g, &pics, "scaling-memory", body_scaling, &sp);
     g = NULL;
-    if (k != 0) {
-        cli_error("%s: %s", path, strerror(errno));
+    if (pics.oom) {
+        cli_out_abort(&go);
+        cli_error("out of memory");
         goto done;
     }
-    rc = run_gnuplot(dir, "scaling.gp");
+    if (cli_out_commit(&go) != 0)
+        goto done;
+    rc = run_gnuplot(dir, "scaling.gp", &pics);
 done:
     if (f)
-        fclose(f);
+        cli_out_abort(&fo);
     if (g)
-        fclose(g);
+        cli_out_abort(&go);
+    free(pics.stem);
     free(titles);
     return rc;
 }
