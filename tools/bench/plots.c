@@ -203,6 +203,20 @@ static void gp_preamble(FILE *g, const char *name)
             name);
 }
 
+/* Puts the script in place and runs it.  0, or -1 after an error line. */
+static int finish_script(const char *dir, const char *name, cli_out *go,
+                         pictures *pics)
+{
+    if (pics->oom) {
+        cli_out_abort(go);
+        cli_error("out of memory");
+        return -1;
+    }
+    if (cli_out_commit(go) != 0)
+        return -1;
+    return run_gnuplot(dir, name, pics);
+}
+
 /* ------------------------------------------------------ label placement
  * Every point gets its label once, placed where it overlaps the fewest
  * other labels and points: the plot's ranges are set by the script, so
@@ -495,51 +509,37 @@ int plot_scene(const char *dir, const char *spec, const row *rows, int n,
     if (!(g = open_in(dir, name, &go)))
         goto done;
     gp_preamble(g, name);
-    for (i = 0, np = 0; i < n; i++) {
-        if (!(rows[i].build_ms > 0.0) || !isfinite(rows[i].sah))
-            continue;
-        pts[np].x = rows[i].build_ms;
-        pts[np].y = rows[i].sah;
-        pts[np++].label = labels[i];
-    }
-    fr = frame_for(pts, np, 1);
-    place_labels(&fr, pts, np);
     sp.base = base;
     sp.tag = tag;
-    sp.what = "build time against SAH cost, each configuration once (lower "
-              "left is better)";
     sp.fr = &fr;
     sp.p = pts;
-    sp.n = np;
-    sp.col = 3;
-    snprintf(stem, sizeof stem, "pareto-%s", tag);
-    gp_both(g, &pics, stem, body_scene, &sp);
-    if (have_rays) {
+    /* col 3: SAH (pareto-), col 4: rays per second (rays-) */
+    for (sp.col = 3; sp.col <= (have_rays ? 4 : 3); sp.col++) {
         for (i = 0, np = 0; i < n; i++) {
-            if (!(rows[i].build_ms > 0.0) || !(rows[i].total_mrays > 0.0))
+            double y = sp.col == 3 ? rows[i].sah : rows[i].total_mrays;
+            if (!(rows[i].build_ms > 0.0) || !isfinite(y) ||
+                (sp.col == 4 && !(y > 0.0)))
                 continue;
             pts[np].x = rows[i].build_ms;
-            pts[np].y = rows[i].total_mrays;
+            pts[np].y = y;
             pts[np++].label = labels[i];
         }
+        if (np == 0)
+            continue;
         fr = frame_for(pts, np, 1);
         place_labels(&fr, pts, np);
-        sp.what = "ray throughput of each tree through our traverser "
-                  "against its build time (upper left is better)";
         sp.n = np;
-        sp.col = 4;
-        snprintf(stem, sizeof stem, "rays-%s", tag);
+        sp.what = sp.col == 3
+                      ? "build time against SAH cost, each configuration "
+                        "once (lower left is better)"
+                      : "ray throughput of each tree through our traverser "
+                        "against its build time (upper left is better)";
+        snprintf(stem, sizeof stem, "%s-%s", sp.col == 3 ? "pareto" : "rays",
+                 tag);
         gp_both(g, &pics, stem, body_scene, &sp);
     }
     g = NULL;
-    if (pics.oom) {
-        cli_out_abort(&go);
-        cli_error("out of memory");
-        goto done;
-    }
-    if (cli_out_commit(&go) != 0)
-        goto done;
-    rc = run_gnuplot(dir, name, &pics);
+    rc = finish_script(dir, name, &go, &pics);
 done:
     if (f)
         cli_out_abort(&fo);
@@ -675,14 +675,7 @@ int plot_scaling(const char *dir, const scaling_series *s, int n)
     sp.which = 2;
     gp_both(g, &pics, "scaling-memory", body_scaling, &sp);
     g = NULL;
-    if (pics.oom) {
-        cli_out_abort(&go);
-        cli_error("out of memory");
-        goto done;
-    }
-    if (cli_out_commit(&go) != 0)
-        goto done;
-    rc = run_gnuplot(dir, "scaling.gp", &pics);
+    rc = finish_script(dir, "scaling.gp", &go, &pics);
 done:
     if (f)
         cli_out_abort(&fo);

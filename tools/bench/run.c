@@ -120,6 +120,21 @@ static double total_mrays(const scene_data *sd, const double mrays[3])
     return ms > 0.0 ? count / (ms * 1e3) : NAN;
 }
 
+/* The tree's size and the build times (minimum, median of `repeat`). */
+static void set_tree_and_times(row *r, const atrbvh_stats *st, double *tot,
+                               unsigned repeat)
+{
+    unsigned k;
+    r->nodes = st->nodes;
+    r->leaves = st->leaves;
+    r->bvh_bytes = bvh_bytes(st);
+    r->build_min_ms = tot[0];
+    for (k = 1; k < repeat; k++)
+        if (tot[k] < r->build_min_ms)
+            r->build_min_ms = tot[k];
+    r->build_ms = bench_median(tot, repeat);
+}
+
 int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
                      const config *c, embree_ctx *emb, int do_rays,
                      unsigned repeat, int warmup, int binary, row *r)
@@ -192,14 +207,7 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
         r->treelet = st.treelet_size;
         r->rounds = st.rounds;
         r->sah = st.sah;
-        r->nodes = st.nodes;
-        r->leaves = st.leaves;
-        r->bvh_bytes = bvh_bytes(&st);
-        r->build_min_ms = tot[0];
-        for (k = 1; k < repeat; k++)
-            if (tot[k] < r->build_min_ms)
-                r->build_min_ms = tot[k];
-        r->build_ms = bench_median(tot, repeat);
+        set_tree_and_times(r, &st, tot, repeat);
         for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
             r->stage_ms[s] = bench_median(stg + s * repeat, repeat);
         /* the binary tree */
@@ -237,14 +245,7 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
         nodes = atrbvh_bvh_nodes(bvh, &nn);
         r->threads = bench_threads(a);
         r->sah = atrbvh_sah(nodes, nn, a->base.ci, a->base.ct);
-        r->nodes = st.nodes;
-        r->leaves = st.leaves;
-        r->bvh_bytes = bvh_bytes(&st);
-        r->build_min_ms = tot[0];
-        for (k = 1; k < repeat; k++)
-            if (tot[k] < r->build_min_ms)
-                r->build_min_ms = tot[k];
-        r->build_ms = bench_median(tot, repeat);
+        set_tree_and_times(r, &st, tot, repeat);
         for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
             r->stage_ms[s] = NAN;
         {
