@@ -82,8 +82,7 @@ void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table)
                      "(later --method/--treelet/--rounds override it)"},
             {.name = "--treelet", .kind = CLI_OPT_UINT, .arg = "N",
              .min = 0, .max = UINT_MAX, .dest = &o->treelet_size,
-             .help = "treelet size (default: trbvh 7, atrbvh 9; the\n"
-                     "library's range: trbvh 3 to 10, atrbvh 3 to 32)"},
+             .help = "treelet size (default: trbvh 7, atrbvh 9)"},
             {.name = "--rounds", .kind = CLI_OPT_UINT, .arg = "R", .min = 0,
              .max = UINT_MAX, .dest = &o->rounds,
              .help = "optimisation rounds (default: trbvh 3, atrbvh 2)"},

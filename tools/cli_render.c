@@ -166,6 +166,8 @@ static int cmp_unsigned(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+#define RENDER_OPTS 7
+
 typedef struct render_args {
     unsigned width, height, view, heat_top;
     int heatmap;
@@ -195,9 +197,8 @@ static void render_opts(render_args *r, cli_opt *table)
          .help = "the heat map's white: N nodes (default: the 99th\n"
                  "percentile), to compare trees on one scale"},
         {.name = NULL}};
-    memcpy(table, opts, sizeof opts);
+    CLI_OPTS_COPY(table, opts, RENDER_OPTS);
 }
-#define RENDER_OPTS 7
 /* -o names the picture here, and there is no JSON output. */
 #define RENDER_BUILD_OPTS (CLI_BUILD_CORE | CLI_BUILD_BACKEND | CLI_BUILD_DEVICE)
 

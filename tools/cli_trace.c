@@ -132,6 +132,8 @@ static void text_rays(FILE *f, const char *name, const ray_stats *rs,
     fputc('\n', f);
 }
 
+#define TRACE_OPTS 4
+
 typedef struct trace_args {
     unsigned width, height, spp;
 } trace_args;
@@ -150,9 +152,8 @@ static void trace_opts(trace_args *t, cli_opt *table)
          .help = "occlusion and diffuse rays per primary hit (default 4,\n"
                  "0 to 1024)"},
         {.name = NULL}};
-    memcpy(table, opts, sizeof opts);
+    CLI_OPTS_COPY(table, opts, TRACE_OPTS);
 }
-#define TRACE_OPTS 4
 
 static void trace_help(FILE *f)
 {

@@ -41,6 +41,16 @@ struct cli_opt {
     int *seen;         /* set to 1 when the option is given (optional)  */
 };
 
+/* Copies the option array `opts` (a literal, ended by {.name = NULL})
+ * into `table`, which has room for `room` entries; fails to compile when
+ * it does not fit. */
+#define CLI_OPTS_COPY(table, opts, room)                                       \
+    do {                                                                       \
+        (void)sizeof(                                                          \
+            char[sizeof(opts) / sizeof((opts)[0]) <= (room) ? 1 : -1]);        \
+        memcpy((table), (opts), sizeof(opts));                                 \
+    } while (0)
+
 /* Parses argv[1..argc-1] against the NULL-name-terminated tables in
  * `tables` (a NULL-terminated array).  "--name VALUE", "--name=VALUE",
  * "-o VALUE"; "--" ends the options; "-" is a positional argument.

@@ -276,7 +276,7 @@ static void bench_opts(bench_cl *b, cli_opt *table)
          .help = "triangle counts for --scaling (default " DEFAULT_SIZES
                  ")"},
         {.name = NULL}};
-    memcpy(table, opts, sizeof opts);
+    CLI_OPTS_COPY(table, opts, BENCH_OPTS);
 }
 
 static void bench_help(FILE *f)
