@@ -139,7 +139,35 @@ for r in rows:
     assert float(r["peak_bytes_per_triangle"]) > 0
 PY
 
-# usage and errors
+# the scaling table has a header naming its columns
+grep -Eq '^base scene +config +triangles +copies +build ms +peak B/tri +peak/tree' "$T/out" ||
+    fail "scaling: no table header: $(head -c 600 "$T/out")"
+
+# OpenCL asked for without any OpenCL platform (an empty ICD folder): the
+# run fails, rather than report the CPU rows alone.
+checks=$((checks + 1))
+OCL_ICD_VENDORS="$T/no-icds" "$TOOL" bench "$SCENE" --repeat 1 --no-rays \
+    --configs lbvh --backend opencl >"$T/out" 2>"$T/err"
+rc=$?
+[ $rc = 1 ] || fail "bench --backend opencl without OpenCL exited $rc, expected 1"
+grep -q '^atrbvh: .*OpenCL' "$T/err" || fail "bench --backend opencl without OpenCL: $(cat "$T/err")"
+
+# A run that fails leaves an existing CSV as it was (written beside it
+# and renamed only when complete), and leaves no temporary file.
+mkdir "$T/keep" && echo 'keep me' >"$T/keep/k.csv"
+run 1 bench /nonexistent/scene.ply --repeat 1 --no-rays --csv "$T/keep/k.csv"
+[ "$(cat "$T/keep/k.csv")" = 'keep me' ] || fail "a failed bench changed the CSV: $(head -c 200 "$T/keep/k.csv")"
+[ "$(ls "$T/keep")" = k.csv ] || fail "a failed bench left files: $(ls "$T/keep")"
+# An unwritable CSV is reported before any measurement.
+run 1 bench "$SCENE" --repeat 1 --no-rays --csv "$T/no/such/dir/x.csv" &&
+    { grep -q '^#' "$T/out" && fail "bench measured before finding the CSV unwritable"; }
+
+# usage and errors: out-of-range values name the option
+for bad in "--threads -1" "--threads 100000" "--threads 2147483647" \
+    "--repeat -1" "--ci 0" "--max-leaf 5000" "--spp -2"; do
+    run 2 bench $bad &&
+        { grep -q "^atrbvh: bench: ${bad%% *}: " "$T/err" || fail "bench $bad: $(cat "$T/err")"; }
+done
 run 2 bench --repeat 0
 run 2 bench --repeat 1x
 run 2 bench --configs lbvh,quick

@@ -116,6 +116,64 @@ for cmd in build trace info compare; do
     run 0 $cmd --bogus --help && out_has "^Usage: atrbvh $cmd"
 done
 
+# `atrbvh help COMMAND` is that command's --help; every option a
+# command's help shows is accepted (help and parser share one table).
+for cmd in build trace info compare validate bench render; do
+    run 0 help $cmd && out_has "^Usage: atrbvh $cmd"
+    "$TOOL" $cmd --help >"$T/help1" 2>&1
+    cmp -s "$T/out" "$T/help1" || fail "help $cmd differs from $cmd --help"
+    for opt in $(sed -n 's/^ *\(-[a-z], \)\{0,1\}\(--[a-z-]*\).*/\2/p' "$T/help1"); do
+        case $opt in --help | --version) continue ;; esac
+        # (a last unknown option stops any run once $opt is read)
+        "$TOOL" $cmd "$opt" zz-value --zz-not-an-option >"$T/o2" 2>"$T/e2"
+        if grep -q "unknown option '$opt'" "$T/e2"; then
+            fail "$cmd --help shows $opt, which $cmd refuses"
+        fi
+    done
+done
+run 2 help frobnicate && err_has 'unknown command'
+# render has no JSON output, and its help does not claim one.
+run 0 render --help
+grep -q -- '--json' "$T/out" && fail "render --help advertises --json"
+run 2 render builtin:sphere:100 -o "$T/r.png" --json && err_has "unknown option '--json'"
+# validate saves nothing: -o is refused, not ignored, and not in its help.
+run 0 validate --help
+grep -Eq -- '--output|--backend' "$T/out" && fail "validate --help shows options it does not take"
+run 2 validate builtin:sphere:100 -o "$T/v.bvh" && err_has "unknown option '-o'"
+[ -e "$T/v.bvh" ] && fail "validate wrote $T/v.bvh"
+# validate: 0 identical, 1 different, 2 trouble; --json says what the
+# trouble was.
+run 2 validate "$T/nothere.ply" && err_has 'nothere\.ply'
+if run 2 validate "$T/nothere.ply" --json; then
+    json_check scene identical error
+    v=$(json_value identical)
+    [ "$v" = null ] || fail "validate --json on a missing scene: identical is $v"
+fi
+# Without any OpenCL platform (an empty ICD folder): trouble, not a
+# difference.
+if OCL_ICD_VENDORS="$T/no-icds" "$TOOL" validate builtin:sphere:200 --json >"$T/out" 2>"$T/err"; then
+    fail "validate without OpenCL exited 0"
+else
+    rc=$?
+    checks=$((checks + 1))
+    [ $rc = 2 ] || fail "validate without OpenCL exited $rc, expected 2: $(cat "$T/err")"
+    json_check error
+fi
+if "$TOOL" validate builtin:sphere:200 --method lbvh >"$T/out" 2>"$T/err"; then
+    checks=$((checks + 1))
+    out_has 'identical at every stage'
+    run 2 validate builtin:sphere:200 --device no-such-device-xyz &&
+        err_has -- '--device: '
+else
+    echo "cli.sh: validate on OpenCL skipped: $(cat "$T/err")"
+fi
+
+# --version: the optional parts of this build and the licence
+run 0 --version && {
+    out_has '^Optional parts: OpenMP (yes|no), OpenCL (yes|no), Embree (yes|no), PNG (yes|no)$'
+    out_has 'MIT License'
+}
+
 # ------------------------------------------------------------ usage: 2
 run 2 frobnicate && err_has 'unknown command'
 run 2 --frobnicate && err_has 'unknown option'
@@ -148,11 +206,31 @@ run 1 build builtin:sphere:50000001
 run 1 build "$DATA/empty.obj" --method lbvh && err_has 'empty\.obj: .*no triangles'
 printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 oops 0\n0 1 0\n' >"$T/bad.ply"
 run 1 build "$T/bad.ply" && err_has 'bad\.ply: line 9: .*oops'
-# Values the library rejects: its message, exit 1.
-run 1 build "$DATA/cube.obj" --method trbvh --treelet 100 && err_has 'cube\.obj: .*treelet'
-run 1 build "$DATA/cube.obj" --method lbvh --ci -1 && err_has 'ci'
-run 1 build "$DATA/cube.obj" --method lbvh --ct nan
-run 1 build "$DATA/cube.obj" --method lbvh --threads -2 && err_has 'threads'
+# Out-of-range option values are usage errors (2) naming the option, found
+# before the scene is read and never blamed on it (the scene here does not
+# even exist).
+for cmd in build trace render validate; do
+    out=
+    [ $cmd = render ] && out="-o $T/never.png"
+    for bad in "--threads -1" "--threads 100000" "--threads 2147483647" \
+        "--rounds -1" "--ci -1" "--ct nan" "--max-leaf -1"; do
+        opt=${bad%% *}
+        run 2 $cmd "$T/nothere.ply" $out $bad &&
+            err_has "^atrbvh: $cmd: $opt: " &&
+            { ! grep -q 'nothere' "$T/err" || fail "$cmd $bad: blamed on the scene: $(cat "$T/err")"; }
+    done
+    # the library's own limits, asked before loading
+    run 2 $cmd "$T/nothere.ply" $out --method trbvh --treelet 100 &&
+        err_has "^atrbvh: $cmd: --treelet: .*trbvh"
+    run 2 $cmd "$T/nothere.ply" $out --max-leaf 4 --no-collapse &&
+        err_has "^atrbvh: $cmd: --max-leaf: "
+done
+# --device only with --backend opencl (validate always uses OpenCL)
+for cmd in build trace render; do
+    out=
+    [ $cmd = render ] && out="-o $T/never.png"
+    run 2 $cmd builtin:sphere:100 $out --device 0:0 && err_has -- '--device needs --backend opencl'
+done
 
 # NaN: an error naming the primitive (triangle 1), unless skipped.
 run 1 build "$DATA/nan.obj" --method lbvh && err_has '^atrbvh: .*nan\.obj: .*[^0-9]1([^0-9]|$)'
@@ -213,7 +291,9 @@ if run 0 build "$DATA/tetra.ply" --method lbvh --output "$T/a.bvh" &&
     run 0 info --json "$T/c.bvh" &&
         json_check file primitives method nodes leaves max_depth sah
     run 1 info "$DATA/cube.obj" && err_has 'cube\.obj'
-    run 1 compare "$T/a.bvh" "$T/nothere.bvh" && err_has 'nothere\.bvh'
+    # As cmp: 0 same, 1 different, 2 trouble (a file that cannot be read).
+    run 2 compare "$T/a.bvh" "$T/nothere.bvh" && err_has 'nothere\.bvh'
+    run 2 compare "$DATA/cube.obj" "$T/a.bvh" && err_has 'cube\.obj'
 fi
 run 1 build "$DATA/cube.obj" --method lbvh --output "$T/no/such/dir/x.bvh" &&
     err_has 'x\.bvh'

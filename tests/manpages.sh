@@ -37,8 +37,8 @@ done
 
 # ------------- atrbvh(1) documents every command and option of the tool
 # Commands: the names in tools/main.c's command table; options: every
-# "--name" string literal in tools/main.c and tools/cli*.c (the installed
-# tool; not the benchmark programs).  The page's escapes (\-, \fB...)
+# "--name" string literal in tools/main.c, tools/cli*.c and tools/bench/*.c
+# (the installed tool).  The page's escapes (\-, \fB...)
 # are removed before looking.
 page1=$(sed 's/\\f[BIRP]//g; s/\\f(..//g; s/\\-/-/g; s/\\(em/-/g' "$man/atrbvh.1")
 for cmd in $(sed -n 's/.*{ *"\([a-z][a-z-]*\)", *cli_[a-z_]* *}.*/\1/p; s/.*{"\([a-z][a-z-]*\)", cli_.*/\1/p' \
@@ -46,7 +46,7 @@ for cmd in $(sed -n 's/.*{ *"\([a-z][a-z-]*\)", *cli_[a-z_]* *}.*/\1/p; s/.*{"\(
     if printf '%s\n' "$page1" | grep -q -e "atrbvh $cmd\b" -e "^\.B $cmd\$"; then ok
     else ko "atrbvh(1) does not document the command '$cmd'"; fi
 done
-for opt in $(cat "$ATRBVH_SRCDIR"/tools/main.c "$ATRBVH_SRCDIR"/tools/cli*.c | grep -o '"--[a-z][a-z0-9-]*' | tr -d '"' | sort -u); do
+for opt in $(cat "$ATRBVH_SRCDIR"/tools/main.c "$ATRBVH_SRCDIR"/tools/cli*.c "$ATRBVH_SRCDIR"/tools/bench/*.c | grep -o '"--[a-z][a-z0-9-]*' | tr -d '"' | sort -u); do
     if printf '%s\n' "$page1" | grep -q -e "$opt\b"; then ok
     else ko "atrbvh(1) does not document the option '$opt'"; fi
 done

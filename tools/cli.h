@@ -12,11 +12,18 @@
 
 #include "atrbvh.h"
 #include "json.h"
+#include "options.h"
 #include "scene.h"
 
 #define CLI_OK 0
 #define CLI_FAIL 1
 #define CLI_USAGE 2
+
+/* The most threads the tool asks for; the library defines the limit (a
+ * larger count is an invalid argument there). */
+#ifndef ATRBVH_MAX_THREADS
+#define ATRBVH_MAX_THREADS 1024
+#endif
 
 /* Both print one line to stderr, prefixed "atrbvh: ". */
 void cli_error(const char *fmt, ...)
@@ -33,44 +40,59 @@ int cli_usage(const char *cmd, const char *fmt, ...)
 
 void cli_print_version(FILE *f);
 
-/* Strict number parsing: the whole string, decimal, within [min, max].
- * 1 on success. */
-int cli_parse_ulong(const char *s, unsigned long max, unsigned long *out);
-int cli_parse_long(const char *s, long min, long max, long *out);
-int cli_parse_double(const char *s, double *out);
-
-/* If argv[*i] is the option `name` ("--name VALUE" or "--name=VALUE"),
- * sets *value, advances *i past it and returns 1; returns 0 when argv[*i]
- * is another argument, and CLI_USAGE's negative (-1) after a usage
- * message when the value is missing. */
-int cli_option(const char *cmd, int argc, char **argv, int *i,
-               const char *name, const char **value);
-
 /* Scans argv[1..] (up to "--") for --help/-h and --version: prints the
  * help or the version and returns CLI_OK; -1 when neither is there.  They
  * win over every other argument, wherever they stand. */
 int cli_help_or_version(int argc, char **argv, void (*help)(FILE *));
+
+/* The --help and --version lines of every command's help, and its exit
+ * status line. */
+void cli_common_help(FILE *f, const char *exit_status);
 
 /* Wall clock in milliseconds, monotonic. */
 double cli_now_ms(void);
 
 const char *cli_method_name(atrbvh_method m);
 
-/* ------------------------------------------ build options (build, trace) */
+/* ------------------------------- build options (build, trace, render,
+ * validate) */
 typedef struct cli_build_args {
     const char *scene;
     atrbvh_build_options options;
     int json;
     const char *output;
+    int method, backend; /* CLI_OPT_ENUM indices, applied to options */
+    int device_given;
+    const char *cmd; /* the subcommand, for usage messages */
 } cli_build_args;
 
+/* Which build options a command takes. */
+#define CLI_BUILD_CORE 1u    /* method, quality, treelet, rounds, threads,
+                                collapse, leaves, costs, skip-invalid */
+#define CLI_BUILD_BACKEND 2u /* --backend */
+#define CLI_BUILD_DEVICE 4u  /* --device */
+#define CLI_BUILD_OUTPUT 8u  /* -o, --output: save the BVH */
+#define CLI_BUILD_JSON 16u   /* --json */
+#define CLI_BUILD_ALL 31u
+#define CLI_BUILD_MAX_OPTS 24
+
 void cli_build_args_init(cli_build_args *a);
-/* Consumes argv[*i] if it is a build option: 1 consumed, 0 not a build
- * option, -1 usage error (already printed). */
-int cli_build_option(const char *cmd, int argc, char **argv, int *i,
-                     cli_build_args *a);
-/* The build options' lines of a --help text. */
-void cli_build_options_help(FILE *f);
+/* The build options of `groups` as an option table writing into `a`
+ * (table has room for CLI_BUILD_MAX_OPTS + 1 entries). */
+void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table);
+/* The whole command line of build, trace, render and validate: `extra`
+ * (the command's own options, may be NULL), the build options of
+ * `groups`, one SCENE.  Then the option values are checked against each
+ * other and against the library's limits before anything is loaded (an
+ * out-of-range value is a usage error naming the option).  CLI_OK or
+ * CLI_USAGE (after the message). */
+int cli_build_parse(const char *cmd, int argc, char **argv,
+                    const cli_opt *extra, unsigned groups, cli_build_args *a);
+/* "Usage" text, the command's own options under `title`, the build
+ * options of `groups`, --help/--version and the exit status. */
+void cli_build_help(FILE *f, const char *intro, const char *title,
+                    const cli_opt *extra, unsigned groups,
+                    const char *exit_status);
 
 typedef struct cli_built {
     scene sc;
@@ -83,8 +105,12 @@ typedef struct cli_built {
 } cli_built;
 
 /* Loads the scene, builds, saves when asked; CLI_OK, or CLI_FAIL after an
- * error line.  Free with cli_built_free either way. */
+ * error line (CLI_USAGE for a device that is not there).  Free with cli_built_free either way. */
 int cli_load_and_build(const cli_build_args *a, cli_built *b);
+/* 1 when the library's answer (st, text) says that the OpenCL device
+ * asked for is not there: a usage error naming --device. */
+int cli_bad_device(const cli_build_args *a, atrbvh_status st,
+                   const char *text);
 void cli_built_free(cli_built *b);
 
 /* The build's keys, inside an object the caller opened. */

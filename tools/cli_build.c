@@ -12,190 +12,238 @@
 #include <string.h>
 #include <unistd.h>
 
+static const char *const method_names[] = {"lbvh", "trbvh", "atrbvh", NULL};
+static const atrbvh_method method_values[] = {
+    ATRBVH_METHOD_LBVH, ATRBVH_METHOD_TRBVH, ATRBVH_METHOD_ATRBVH};
+static const char *const backend_names[] = {"cpu", "opencl", NULL};
+
 void cli_build_args_init(cli_build_args *a)
 {
     memset(a, 0, sizeof *a);
     atrbvh_build_options_init(&a->options);
+    a->method = 2; /* atrbvh, the library's default */
+    a->backend = 0;
 }
 
-void cli_build_options_help(FILE *f)
+/* The quality presets (atrbvh(1), --quality; docs/benchmarks.md has the
+ * measurements they come from). */
+int cli_quality_preset(const char *name, atrbvh_method *m, unsigned *treelet,
+                       unsigned *rounds)
 {
-    fputs("Build options:\n"
-          "  --method lbvh|trbvh|atrbvh  construction method (default "
-          "atrbvh)\n"
-          "  --quality fast|balanced|high  a preset: LBVH, ATRBVH(9,2), "
-          "ATRBVH(20,3)\n"
-          "                       (later --method/--treelet/--rounds "
-          "override it)\n"
-          "  --treelet N          treelet size (default: trbvh 7, atrbvh 9)\n"
-          "  --rounds R           optimisation rounds (default: trbvh 3, "
-          "atrbvh 2)\n"
-          "  --threads N          threads (default: all; 0 = OpenMP "
-          "default)\n"
-          "  --no-collapse        keep one primitive per leaf\n"
-          "  --max-leaf N         at most N primitives per leaf (0 = no "
-          "limit)\n"
-          "  --ci X               SAH cost of an internal node (default "
-          "1.2)\n"
-          "  --ct X               SAH cost of a primitive (default 1.0)\n"
-          "  --backend cpu|opencl compute backend (default cpu)\n"
-          "  --device SPEC        OpenCL device: PLATFORM:DEVICE indices or a\n"
-          "                       name substring (default $ATRBVH_OPENCL_DEVICE,\n"
-          "                       else the first device)\n"
-          "  --skip-invalid       leave out triangles with NaN or infinite\n"
-          "                       coordinates (counted) instead of failing\n"
-          "  -o, --output FILE    save the BVH to FILE (see atrbvh(5))\n"
-          "  --json               print one JSON object\n",
-          f);
+    if (strcmp(name, "fast") == 0) {
+        *m = ATRBVH_METHOD_LBVH;
+        *treelet = 0;
+        *rounds = 0;
+    } else if (strcmp(name, "balanced") == 0) {
+        *m = ATRBVH_METHOD_ATRBVH;
+        *treelet = 9;
+        *rounds = 2;
+    } else if (strcmp(name, "high") == 0) {
+        *m = ATRBVH_METHOD_ATRBVH;
+        *treelet = CLI_QUALITY_HIGH_TREELET;
+        *rounds = CLI_QUALITY_HIGH_ROUNDS;
+    } else {
+        return 0;
+    }
+    return 1;
 }
 
-int cli_build_option(const char *cmd, int argc, char **argv, int *i,
-                     cli_build_args *a)
+static int on_quality(const char *cmd, const cli_opt *o, const char *v,
+                      void *user)
 {
-    const char *arg = argv[*i], *v;
-    int r;
-    unsigned long u;
-    long l;
-    double d;
-    if (strcmp(arg, "--no-collapse") == 0) {
-        a->options.collapse = 0;
-        *i += 1;
-        return 1;
-    }
-    if (strcmp(arg, "--skip-invalid") == 0) {
-        a->options.skip_invalid = 1;
-        *i += 1;
-        return 1;
-    }
-    if (strcmp(arg, "--json") == 0) {
-        a->json = 1;
-        *i += 1;
-        return 1;
-    }
-    if ((r = cli_option(cmd, argc, argv, i, "--method", &v)) != 0) {
-        if (r < 0)
-            return -1;
-        if (strcmp(v, "lbvh") == 0)
-            a->options.method = ATRBVH_METHOD_LBVH;
-        else if (strcmp(v, "trbvh") == 0)
-            a->options.method = ATRBVH_METHOD_TRBVH;
-        else if (strcmp(v, "atrbvh") == 0)
-            a->options.method = ATRBVH_METHOD_ATRBVH;
-        else {
-            cli_usage(cmd, "--method: '%s' is not lbvh, trbvh or atrbvh", v);
-            return -1;
-        }
-        return 1;
-    }
-    if ((r = cli_option(cmd, argc, argv, i, "--quality", &v)) != 0) {
-        atrbvh_method m;
-        unsigned t, rr;
-        if (r < 0)
-            return -1;
-        if (!cli_quality_preset(v, &m, &t, &rr)) {
-            cli_usage(cmd, "--quality: '%s' is not fast, balanced or high",
-                      v);
-            return -1;
-        }
-        a->options.method = m;
-        a->options.treelet_size = t;
-        a->options.rounds = rr;
-        return 1;
-    }
-    if ((r = cli_option(cmd, argc, argv, i, "--backend", &v)) != 0) {
-        if (r < 0)
-            return -1;
-        if (strcmp(v, "cpu") == 0)
-            a->options.backend = ATRBVH_BACKEND_CPU;
-        else if (strcmp(v, "opencl") == 0)
-            a->options.backend = ATRBVH_BACKEND_OPENCL;
-        else {
-            cli_usage(cmd, "--backend: '%s' is not cpu or opencl", v);
-            return -1;
-        }
-        return 1;
-    }
-    if ((r = cli_option(cmd, argc, argv, i, "--device", &v)) != 0) {
-        if (r < 0)
-            return -1;
-        a->options.opencl_device = v;
-        return 1;
-    }
-    /* Values the tool can represent are passed on, and the library
-     * judges the range (exit 1 with its message); what is not a number of
-     * the right kind at all is a usage error here. */
-    if ((r = cli_option(cmd, argc, argv, i, "--treelet", &v)) != 0) {
-        if (r < 0)
-            return -1;
-        if (!cli_parse_ulong(v, UINT_MAX, &u)) {
-            cli_usage(cmd, "--treelet: '%s' is not a whole number", v);
-            return -1;
-        }
-        a->options.treelet_size = (unsigned)u;
-        return 1;
-    }
-    if ((r = cli_option(cmd, argc, argv, i, "--rounds", &v)) != 0) {
-        if (r < 0)
-            return -1;
-        if (!cli_parse_ulong(v, UINT_MAX, &u)) {
-            cli_usage(cmd, "--rounds: '%s' is not a whole number", v);
-            return -1;
-        }
-        a->options.rounds = (unsigned)u;
-        return 1;
-    }
-    if ((r = cli_option(cmd, argc, argv, i, "--max-leaf", &v)) != 0) {
-        if (r < 0)
-            return -1;
-        if (!cli_parse_ulong(v, UINT_MAX, &u)) {
-            cli_usage(cmd, "--max-leaf: '%s' is not a whole number", v);
-            return -1;
-        }
-        a->options.max_leaf_size = (unsigned)u;
-        return 1;
-    }
-    if ((r = cli_option(cmd, argc, argv, i, "--threads", &v)) != 0) {
-        if (r < 0)
-            return -1;
-        if (!cli_parse_long(v, INT_MIN, INT_MAX, &l)) {
-            cli_usage(cmd, "--threads: '%s' is not a whole number", v);
-            return -1;
-        }
-        a->options.threads = (int)l;
-        return 1;
-    }
-    if ((r = cli_option(cmd, argc, argv, i, "--ci", &v)) != 0) {
-        if (r < 0)
-            return -1;
-        if (!cli_parse_double(v, &d)) {
-            cli_usage(cmd, "--ci: '%s' is not a number", v);
-            return -1;
-        }
-        a->options.ci = d;
-        return 1;
-    }
-    if ((r = cli_option(cmd, argc, argv, i, "--ct", &v)) != 0) {
-        if (r < 0)
-            return -1;
-        if (!cli_parse_double(v, &d)) {
-            cli_usage(cmd, "--ct: '%s' is not a number", v);
-            return -1;
-        }
-        a->options.ct = d;
-        return 1;
-    }
-    if ((r = cli_option(cmd, argc, argv, i, "--output", &v)) != 0 ||
-        (r = cli_option(cmd, argc, argv, i, "-o", &v)) != 0) {
-        if (r < 0)
-            return -1;
-        if (*v == '\0') {
-            cli_usage(cmd, "--output: empty file name");
-            return -1;
-        }
-        a->output = v;
-        return 1;
-    }
+    cli_build_args *a = o->dest;
+    atrbvh_method m;
+    unsigned t, r;
+    int k;
+    (void)user;
+    if (!cli_quality_preset(v, &m, &t, &r))
+        return cli_usage(cmd, "--quality: '%s' is not fast, balanced or high",
+                         v);
+    for (k = 0; method_names[k]; k++)
+        if (method_values[k] == m)
+            a->method = k;
+    a->options.treelet_size = t;
+    a->options.rounds = r;
     return 0;
+}
+
+void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table)
+{
+    int n = 0;
+    atrbvh_build_options *o = &a->options;
+    if (groups & CLI_BUILD_CORE) {
+        const cli_opt core[] = {
+            {.name = "--method", .kind = CLI_OPT_ENUM, .dest = &a->method,
+             .choices = method_names,
+             .help = "construction method (default atrbvh)"},
+            {.name = "--quality", .kind = CLI_OPT_CALL,
+             .arg = "fast|balanced|high", .dest = a, .call = on_quality,
+             .help = "a preset: LBVH, ATRBVH(9,2), ATRBVH(20,3)\n"
+                     "(later --method/--treelet/--rounds override it)"},
+            {.name = "--treelet", .kind = CLI_OPT_UINT, .arg = "N",
+             .min = 0, .max = UINT_MAX, .dest = &o->treelet_size,
+             .help = "treelet size (default: trbvh 7, atrbvh 9)"},
+            {.name = "--rounds", .kind = CLI_OPT_UINT, .arg = "R", .min = 0,
+             .max = UINT_MAX, .dest = &o->rounds,
+             .help = "optimisation rounds (default: trbvh 3, atrbvh 2)"},
+            {.name = "--threads", .kind = CLI_OPT_INT, .arg = "N", .min = 0,
+             .max = ATRBVH_MAX_THREADS, .dest = &o->threads,
+             .help = "threads (default: all; 0 = OpenMP default)"},
+            {.name = "--no-collapse", .kind = CLI_OPT_FLAG,
+             .dest = &o->collapse, .flag_value = 0,
+             .help = "keep one primitive per leaf"},
+            {.name = "--max-leaf", .kind = CLI_OPT_UINT, .arg = "N", .min = 0,
+             .max = UINT_MAX, .dest = &o->max_leaf_size,
+             .help = "at most N primitives per leaf (0 = no limit)"},
+            {.name = "--ci", .kind = CLI_OPT_DOUBLE, .arg = "X", .min = 0.0,
+             .min_open = 1, .max = 1e30, .dest = &o->ci,
+             .help = "SAH cost of an internal node (default 1.2)"},
+            {.name = "--ct", .kind = CLI_OPT_DOUBLE, .arg = "X", .min = 0.0,
+             .min_open = 1, .max = 1e30, .dest = &o->ct,
+             .help = "SAH cost of a primitive (default 1.0)"},
+            {.name = "--skip-invalid", .kind = CLI_OPT_FLAG,
+             .dest = &o->skip_invalid, .flag_value = 1,
+             .help = "leave out triangles with NaN or infinite\n"
+                     "coordinates (counted) instead of failing"},
+        };
+        size_t k;
+        for (k = 0; k < sizeof core / sizeof core[0]; k++)
+            table[n++] = core[k];
+    }
+    if (groups & CLI_BUILD_BACKEND) {
+        const cli_opt be = {.name = "--backend", .kind = CLI_OPT_ENUM,
+                            .dest = &a->backend, .choices = backend_names,
+                            .help = "compute backend (default cpu)"};
+        table[n++] = be;
+    }
+    if (groups & CLI_BUILD_DEVICE) {
+        const cli_opt dev = {
+            .name = "--device", .kind = CLI_OPT_STRING, .arg = "SPEC",
+            .dest = &o->opencl_device, .seen = &a->device_given,
+            .help = (groups & CLI_BUILD_BACKEND)
+                        ? "OpenCL device (with --backend opencl):\n"
+                          "PLATFORM:DEVICE indices or a name substring\n"
+                          "(default $ATRBVH_OPENCL_DEVICE, else the first)"
+                        : "OpenCL device: PLATFORM:DEVICE indices or a\n"
+                          "name substring (default $ATRBVH_OPENCL_DEVICE,\n"
+                          "else the first)"};
+        table[n++] = dev;
+    }
+    if (groups & CLI_BUILD_OUTPUT) {
+        const cli_opt out = {.name = "--output", .alias = "-o",
+                             .kind = CLI_OPT_STRING, .arg = "FILE",
+                             .dest = &a->output,
+                             .help = "save the BVH to FILE (see atrbvh(5))"};
+        table[n++] = out;
+    }
+    if (groups & CLI_BUILD_JSON) {
+        const cli_opt js = {.name = "--json", .kind = CLI_OPT_FLAG,
+                            .dest = &a->json, .flag_value = 1,
+                            .help = "print one JSON object"};
+        table[n++] = js;
+    }
+    memset(&table[n], 0, sizeof table[n]);
+}
+
+/* The words of the library's message that name each option. */
+static const char *option_named(const char *text)
+{
+    static const struct {
+        const char *word, *option;
+    } words[] = {{"treelet size", "--treelet"}, {"rounds", "--rounds"},
+                 {"gamma", "--treelet"},        {"ci ", "--ci"},
+                 {"ct ", "--ct"},               {"threads", "--threads"},
+                 {"max_leaf_size", "--max-leaf"}};
+    size_t k;
+    for (k = 0; k < sizeof words / sizeof words[0]; k++)
+        if (strstr(text, words[k].word))
+            return words[k].option;
+    return "options";
+}
+
+/* The library's own limits, asked before the scene is loaded: the same
+ * options (on the CPU, one thread) over one triangle. */
+static int check_with_library(const char *cmd, const cli_build_args *a)
+{
+    static const float v[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    static const uint32_t idx[3] = {0, 1, 2};
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3, idx, 1);
+    atrbvh_build_options o = a->options;
+    atrbvh_bvh *bvh = NULL;
+    atrbvh_error e;
+    atrbvh_status st;
+    o.backend = ATRBVH_BACKEND_CPU;
+    o.opencl_device = NULL;
+    o.threads = 1;
+    o.progress = NULL;
+    memset(&e, 0, sizeof e);
+    st = atrbvh_build(&g, &o, &bvh, &e);
+    atrbvh_bvh_free(bvh);
+    if (st == ATRBVH_ERR_INVALID_ARGUMENT)
+        return cli_usage(cmd, "%s: %s", option_named(e.text),
+                         e.text[0] ? e.text : atrbvh_strerror(st));
+    return 0;
+}
+
+int cli_build_parse(const char *cmd, int argc, char **argv,
+                    const cli_opt *extra, unsigned groups, cli_build_args *a)
+{
+    static const cli_opt none[] = {{.name = NULL}};
+    cli_opt table[CLI_BUILD_MAX_OPTS + 1];
+    const cli_opt *tables[3];
+    const char *pos[1];
+    int n;
+    cli_build_opts(a, groups, table);
+    tables[0] = extra ? extra : none;
+    tables[1] = table;
+    tables[2] = NULL;
+    if (cli_parse(cmd, argc, argv, tables, NULL, pos, 1, &n, "SCENE") != 0)
+        return CLI_USAGE;
+    if (n == 0)
+        return cli_usage(cmd, "no SCENE given");
+    a->scene = pos[0];
+    a->cmd = cmd;
+    a->options.method = method_values[a->method];
+    a->options.backend =
+        a->backend == 1 ? ATRBVH_BACKEND_OPENCL : ATRBVH_BACKEND_CPU;
+    if ((groups & CLI_BUILD_BACKEND) && a->device_given &&
+        a->options.backend != ATRBVH_BACKEND_OPENCL)
+        return cli_usage(cmd, "--device needs --backend opencl");
+    /* Device selection from the environment is the tool's business. */
+    if ((groups & CLI_BUILD_DEVICE) && !a->options.opencl_device) {
+        const char *env = getenv("ATRBVH_OPENCL_DEVICE");
+        if (env && *env)
+            a->options.opencl_device = env;
+    }
+    return check_with_library(cmd, a);
+}
+
+void cli_build_help(FILE *f, const char *intro, const char *title,
+                    const cli_opt *extra, unsigned groups,
+                    const char *exit_status)
+{
+    cli_build_args a;
+    cli_opt table[CLI_BUILD_MAX_OPTS + 1];
+    cli_build_args_init(&a);
+    cli_build_opts(&a, groups, table);
+    fputs(intro, f);
+    if (extra && extra->name) {
+        fprintf(f, "\n%s options:\n", title);
+        cli_opts_help(f, extra);
+    }
+    fputs("\nBuild options:\n", f);
+    cli_opts_help(f, table);
+    cli_common_help(f, exit_status);
+}
+
+/* A device the library cannot find by --device (or
+ * $ATRBVH_OPENCL_DEVICE) is a usage error naming the option, not a
+ * failure of the scene.  1 when `st`/`text` is that. */
+int cli_bad_device(const cli_build_args *a, atrbvh_status st,
+                   const char *text)
+{
+    return st == ATRBVH_ERR_INVALID_ARGUMENT && a->options.opencl_device &&
+           strstr(text, "device") != NULL;
 }
 
 /* ------------------------------------------------------------ progress */
@@ -248,13 +296,14 @@ int cli_load_and_build(const cli_build_args *a, cli_built *b)
     if (o.backend == ATRBVH_BACKEND_OPENCL) {
         /* One device handle for the build and any ray batches after it;
          * the library reads no environment, the tool does. */
-        const char *name = o.opencl_device ? o.opencl_device
-                                           : getenv("ATRBVH_OPENCL_DEVICE");
+        const char *name = o.opencl_device; /* --device or the env */
         char spec[512];
         snprintf(spec, sizeof spec, "opencl%s%s", name && *name ? ":" : "",
                  name && *name ? name : "");
         memset(&e, 0, sizeof e);
         st = atrbvh_device_open(spec, &b->device, &e);
+        if (st != ATRBVH_OK && cli_bad_device(a, st, e.text))
+            return cli_usage(a->cmd, "--device: %s", e.text);
         if (st != ATRBVH_OK) {
             cli_error("%s", e.text[0] ? e.text : atrbvh_strerror(st));
             return CLI_FAIL;
@@ -271,6 +320,10 @@ int cli_load_and_build(const cli_build_args *a, cli_built *b)
     st = atrbvh_build(&b->geometry, &o, &b->bvh, &e);
     if (prog.shown)
         fprintf(stderr, "\r%40s\r", "");
+    if (st != ATRBVH_OK && cli_bad_device(a, st, e.text)) {
+        b->bvh = NULL;
+        return cli_usage(a->cmd, "--device: %s", e.text);
+    }
     if (st != ATRBVH_OK) {
         b->bvh = NULL;
         cli_error("%s: %s", a->scene,
@@ -394,19 +447,15 @@ void cli_build_text(FILE *f, const cli_build_args *a, const cli_built *b)
 /* ---------------------------------------------------------------- build */
 static void build_help(FILE *f)
 {
-    fputs("Usage: atrbvh build SCENE [OPTIONS]\n"
-          "Build a BVH over SCENE and print its statistics.\n"
-          "SCENE: a .ply or .obj file, or builtin:NAME[:N] (NAME sphere, "
-          "terrain or city;\n"
-          "N roughly the triangle count, 1 to 50000000, default 100000).\n"
-          "\n",
-          f);
-    cli_build_options_help(f);
-    fputs("  -h, --help           this help\n"
-          "  --version            the version\n"
-          "\n"
-          "Exit status: 0 success, 1 bad input or failure, 2 usage error.\n",
-          f);
+    cli_build_help(f,
+                   "Usage: atrbvh build SCENE [OPTIONS]\n"
+                   "Build a BVH over SCENE and print its statistics.\n"
+                   "SCENE: a .ply or .obj file, or builtin:NAME[:N] (NAME "
+                   "sphere, terrain or city;\n"
+                   "N roughly the triangle count, 1 to 50000000, default "
+                   "100000).\n",
+                   NULL, NULL, CLI_BUILD_ALL,
+                   "0 success, 1 bad input or failure, 2 usage error");
 }
 
 int cli_help_or_version(int argc, char **argv, void (*help)(FILE *))
@@ -427,38 +476,26 @@ int cli_help_or_version(int argc, char **argv, void (*help)(FILE *))
     return -1;
 }
 
+void cli_common_help(FILE *f, const char *exit_status)
+{
+    fprintf(f,
+            "  -h, --help           this help\n"
+            "  --version            the version, optional parts and licence\n"
+            "\n"
+            "Exit status: %s.\n",
+            exit_status);
+}
+
 int cli_build(int argc, char **argv)
 {
     cli_build_args a;
     cli_built b;
-    int i = 1, rc, dashdash = 0;
+    int rc;
     if ((rc = cli_help_or_version(argc, argv, build_help)) >= 0)
         return rc;
     cli_build_args_init(&a);
-    while (i < argc) {
-        const char *arg = argv[i];
-        if (!dashdash && arg[0] == '-' && arg[1] != '\0') {
-            int r;
-            if (strcmp(arg, "--") == 0) {
-                dashdash = 1;
-                i++;
-                continue;
-            }
-            r = cli_build_option("build", argc, argv, &i, &a);
-            if (r < 0)
-                return CLI_USAGE;
-            if (r == 0)
-                return cli_usage("build", "unknown option '%s'", arg);
-            continue;
-        }
-        if (a.scene)
-            return cli_usage("build", "more than one SCENE ('%s', '%s')",
-                             a.scene, arg);
-        a.scene = arg;
-        i++;
-    }
-    if (!a.scene)
-        return cli_usage("build", "no SCENE given");
+    if (cli_build_parse("build", argc, argv, NULL, CLI_BUILD_ALL, &a) != 0)
+        return CLI_USAGE;
     rc = cli_load_and_build(&a, &b);
     if (rc == CLI_OK) {
         if (a.json) {

@@ -3,24 +3,29 @@
  * files (atrbvh(5)), through atrbvh_load only, so that the tool checks
  * files exactly as strictly as the library does.
  */
+#define _POSIX_C_SOURCE 200809L
 #include "config.h"
 
 #include "cli.h"
 
 #include <string.h>
 
+static int info_json;
+static const cli_opt info_opts[] = {
+    {.name = "--json", .kind = CLI_OPT_FLAG, .dest = &info_json,
+     .flag_value = 1, .help = "print one JSON object"},
+    {.name = NULL}};
+static const cli_opt compare_opts[] = {{.name = NULL}};
+
 static void info_help(FILE *f)
 {
     fputs("Usage: atrbvh info FILE [--json]\n"
           "Print the statistics of a BVH file saved by 'atrbvh build "
           "--output'.\n"
-          "\n"
-          "  --json               print one JSON object\n"
-          "  -h, --help           this help\n"
-          "  --version            the version\n"
-          "\n"
-          "Exit status: 0 success, 1 bad input or failure, 2 usage error.\n",
+          "\n",
           f);
+    cli_opts_help(f, info_opts);
+    cli_common_help(f, "0 success, 1 bad input or failure, 2 usage error");
 }
 
 static void compare_help(FILE *f)
@@ -30,37 +35,23 @@ static void compare_help(FILE *f)
           "nodes\n"
           "bit for bit, primitive indices); otherwise exit 1 naming the first "
           "difference.\n"
-          "\n"
-          "  -h, --help           this help\n"
-          "  --version            the version\n"
-          "\n"
-          "Exit status: 0 identical, 1 different or unreadable, 2 usage "
-          "error.\n",
+          "\n",
           f);
+    cli_opts_help(f, compare_opts);
+    cli_common_help(f, "0 identical, 1 different, 2 trouble (usage error, "
+                       "a file that cannot\nbe read)");
 }
 
-/* Positional arguments of info/compare; only --json is an option. */
-static int collect(const char *cmd, int argc, char **argv, int allow_json,
-                   const char **pos, int want, int *json)
+/* The positional arguments of info/compare. */
+static int collect(const char *cmd, int argc, char **argv,
+                   const cli_opt *opts, const char **pos, int want)
 {
-    int i, n = 0, dashdash = 0;
-    for (i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        if (!dashdash && strcmp(arg, "--") == 0) {
-            dashdash = 1;
-            continue;
-        }
-        if (!dashdash && arg[0] == '-' && arg[1] != '\0') {
-            if (allow_json && strcmp(arg, "--json") == 0) {
-                *json = 1;
-                continue;
-            }
-            return cli_usage(cmd, "unknown option '%s'", arg);
-        }
-        if (n == want)
-            return cli_usage(cmd, "too many arguments ('%s')", arg);
-        pos[n++] = arg;
-    }
+    const cli_opt *tables[2];
+    int n;
+    tables[0] = opts;
+    tables[1] = NULL;
+    if (cli_parse(cmd, argc, argv, tables, NULL, pos, want, &n, "FILE") != 0)
+        return CLI_USAGE;
     if (n < want)
         return cli_usage(cmd, want == 1 ? "no FILE given"
                                         : "needs two files, A and B");
@@ -93,8 +84,10 @@ int cli_info(int argc, char **argv)
     atrbvh_stats s;
     if ((rc = cli_help_or_version(argc, argv, info_help)) >= 0)
         return rc;
-    if ((rc = collect("info", argc, argv, 1, &path, 1, &json)) != CLI_OK)
+    info_json = 0;
+    if ((rc = collect("info", argc, argv, info_opts, &path, 1)) != CLI_OK)
         return rc;
+    json = info_json;
     if (load(path, &bvh) != CLI_OK)
         return CLI_FAIL;
     atrbvh_bvh_stats(bvh, &s);
@@ -135,18 +128,20 @@ int cli_info(int argc, char **argv)
 int cli_compare(int argc, char **argv)
 {
     const char *pos[2] = {NULL, NULL};
-    int json = 0, rc;
+    int rc;
     atrbvh_bvh *a, *b;
     atrbvh_error e;
     if ((rc = cli_help_or_version(argc, argv, compare_help)) >= 0)
         return rc;
-    if ((rc = collect("compare", argc, argv, 0, pos, 2, &json)) != CLI_OK)
+    if ((rc = collect("compare", argc, argv, compare_opts, pos, 2)) != CLI_OK)
         return rc;
+    /* As cmp: a file that cannot be read is trouble (2), not a
+     * difference (1). */
     if (load(pos[0], &a) != CLI_OK)
-        return CLI_FAIL;
+        return CLI_USAGE;
     if (load(pos[1], &b) != CLI_OK) {
         atrbvh_bvh_free(a);
-        return CLI_FAIL;
+        return CLI_USAGE;
     }
     memset(&e, 0, sizeof e);
     if (atrbvh_compare(a, b, &e) != 0) {

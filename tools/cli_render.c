@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MAX_SIDE 16384ul
+#define MAX_SIDE 16384u
 #define MAX_PIXELS ((size_t)1 << 26)
 #define STACK 256
 
@@ -166,131 +166,89 @@ static int cmp_unsigned(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+#define RENDER_OPTS 7
+
+typedef struct render_args {
+    unsigned width, height, view, heat_top;
+    int heatmap;
+    const char *output;
+} render_args;
+
+static void render_opts(render_args *r, cli_opt *table)
+{
+    const cli_opt opts[] = {
+        {.name = "--output", .alias = "-o", .kind = CLI_OPT_STRING,
+         .arg = "FILE", .dest = &r->output,
+         .help = "the PNG to write (required)"},
+        {.name = "--heatmap", .kind = CLI_OPT_FLAG, .dest = &r->heatmap,
+         .flag_value = 1, .help = "traversal steps per pixel instead of "
+                                  "shading"},
+        {.name = "--width", .kind = CLI_OPT_UINT, .arg = "W", .min = 1,
+         .max = MAX_SIDE, .dest = &r->width,
+         .help = "image width (default 640, at most 16384)"},
+        {.name = "--height", .kind = CLI_OPT_UINT, .arg = "H", .min = 1,
+         .max = MAX_SIDE, .dest = &r->height,
+         .help = "image height (default 480, at most 16384)"},
+        {.name = "--viewpoint", .kind = CLI_OPT_UINT, .arg = "V", .min = 0,
+         .max = 1000000, .dest = &r->view,
+         .help = "camera viewpoint (default 0; see CAMERAS in atrbvh(1))"},
+        {.name = "--heat-top", .kind = CLI_OPT_UINT, .arg = "N", .min = 1,
+         .max = 1000000, .dest = &r->heat_top,
+         .help = "the heat map's white: N nodes (default: the 99th\n"
+                 "percentile), to compare trees on one scale"},
+        {.name = NULL}};
+    CLI_OPTS_COPY(table, opts, RENDER_OPTS);
+}
+/* -o names the picture here, and there is no JSON output. */
+#define RENDER_BUILD_OPTS (CLI_BUILD_CORE | CLI_BUILD_BACKEND | CLI_BUILD_DEVICE)
+
 static void render_help(FILE *f)
 {
-    fputs("Usage: atrbvh render SCENE --output FILE.png [OPTIONS]\n"
-          "Build a BVH over SCENE and write a picture of it from a camera\n"
-          "viewpoint: shaded (the default), or with --heatmap the number of\n"
-          "BVH nodes each primary ray visits (black few, white many; the\n"
-          "scale's top is the 99th percentile, printed).\n"
-          "\n"
-          "Render options:\n"
-          "  -o, --output FILE    the PNG to write (required)\n"
-          "  --heatmap            traversal steps per pixel instead of "
-          "shading\n"
-          "  --width W            image width (default 640, at most 16384)\n"
-          "  --height H           image height (default 480, at most 16384)\n"
-          "  --viewpoint V        camera viewpoint (default 0; see CAMERAS "
-          "in atrbvh(1))\n"
-          "  --heat-top N         the heat map's white: N nodes (default: "
-          "the 99th\n"
-          "                       percentile), to compare trees on one "
-          "scale\n"
-          "\n",
-          f);
-    cli_build_options_help(f);
-    fputs("  -h, --help           this help\n"
-          "  --version            the version\n"
-          "\n"
-          "Exit status: 0 success, 1 bad input or failure, 2 usage error.\n",
-          f);
+    render_args r;
+    cli_opt table[RENDER_OPTS];
+    render_opts(&r, table);
+    cli_build_help(f,
+                   "Usage: atrbvh render SCENE --output FILE.png [OPTIONS]\n"
+                   "Build a BVH over SCENE and write a picture of it from a "
+                   "camera\n"
+                   "viewpoint: shaded (the default), or with --heatmap the "
+                   "number of\n"
+                   "BVH nodes each primary ray visits (black few, white "
+                   "many; the\n"
+                   "scale's top is the 99th percentile, printed).\n",
+                   "Render", table, RENDER_BUILD_OPTS,
+                   "0 success, 1 bad input or failure, 2 usage error");
 }
 
 int cli_render(int argc, char **argv)
 {
     cli_build_args a;
     cli_built b;
-    unsigned long width = 640, height = 480, view = 0, heat_top = 0;
-    int heatmap = 0, i = 1, rc, dashdash = 0;
-    const char *output = NULL;
+    render_args ra;
+    cli_opt table[RENDER_OPTS];
+    unsigned width, height, view, heat_top;
+    int heatmap, rc;
+    const char *output;
     if ((rc = cli_help_or_version(argc, argv, render_help)) >= 0)
         return rc;
+    memset(&ra, 0, sizeof ra);
+    ra.width = 640;
+    ra.height = 480;
+    render_opts(&ra, table);
     cli_build_args_init(&a);
-    while (i < argc) {
-        const char *arg = argv[i], *v;
-        if (!dashdash && arg[0] == '-' && arg[1] != '\0') {
-            int r;
-            if (strcmp(arg, "--") == 0) {
-                dashdash = 1;
-                i++;
-                continue;
-            }
-            if (strcmp(arg, "--heatmap") == 0) {
-                heatmap = 1;
-                i++;
-                continue;
-            }
-            if ((r = cli_option("render", argc, argv, &i, "--width", &v)) !=
-                0) {
-                if (r < 0)
-                    return CLI_USAGE;
-                if (!cli_parse_ulong(v, MAX_SIDE, &width) || width == 0)
-                    return cli_usage("render", "--width: '%s' is not a whole "
-                                     "number from 1 to %lu", v, MAX_SIDE);
-                continue;
-            }
-            if ((r = cli_option("render", argc, argv, &i, "--height", &v)) !=
-                0) {
-                if (r < 0)
-                    return CLI_USAGE;
-                if (!cli_parse_ulong(v, MAX_SIDE, &height) || height == 0)
-                    return cli_usage("render", "--height: '%s' is not a "
-                                     "whole number from 1 to %lu", v,
-                                     MAX_SIDE);
-                continue;
-            }
-            if ((r = cli_option("render", argc, argv, &i, "--heat-top",
-                                &v)) != 0) {
-                if (r < 0)
-                    return CLI_USAGE;
-                if (!cli_parse_ulong(v, 1000000ul, &heat_top) ||
-                    heat_top == 0)
-                    return cli_usage("render", "--heat-top: '%s' is not a "
-                                     "whole number from 1 to 1000000", v);
-                continue;
-            }
-            if ((r = cli_option("render", argc, argv, &i, "--viewpoint",
-                                &v)) != 0) {
-                if (r < 0)
-                    return CLI_USAGE;
-                if (!cli_parse_ulong(v, 1000000ul, &view))
-                    return cli_usage("render", "--viewpoint: '%s' is not a "
-                                     "whole number from 0 to 1000000", v);
-                continue;
-            }
-            /* -o/--output are build options (saving the BVH) elsewhere;
-             * here they name the picture. */
-            if ((r = cli_option("render", argc, argv, &i, "--output", &v)) !=
-                    0 ||
-                (r = cli_option("render", argc, argv, &i, "-o", &v)) != 0) {
-                if (r < 0)
-                    return CLI_USAGE;
-                if (*v == '\0')
-                    return cli_usage("render", "--output: empty file name");
-                output = v;
-                continue;
-            }
-            if (strcmp(arg, "--json") == 0)
-                return cli_usage("render", "unknown option '%s'", arg);
-            r = cli_build_option("render", argc, argv, &i, &a);
-            if (r < 0)
-                return CLI_USAGE;
-            if (r == 0)
-                return cli_usage("render", "unknown option '%s'", arg);
-            continue;
-        }
-        if (a.scene)
-            return cli_usage("render", "more than one SCENE ('%s', '%s')",
-                             a.scene, arg);
-        a.scene = arg;
-        i++;
-    }
-    if (!a.scene)
-        return cli_usage("render", "no SCENE given");
+    if (cli_build_parse("render", argc, argv, table, RENDER_BUILD_OPTS, &a) !=
+        0)
+        return CLI_USAGE;
+    width = ra.width;
+    height = ra.height;
+    view = ra.view;
+    heat_top = ra.heat_top;
+    heatmap = ra.heatmap;
+    output = ra.output;
     if (!output)
         return cli_usage("render", "no --output FILE.png given");
     if ((size_t)width * height > MAX_PIXELS)
-        return cli_usage("render", "%lux%lu is more than %zu pixels", width,
+        return cli_usage("render", "%ux%u is more than %zu pixels", width,
                          height, MAX_PIXELS);
     if (!cli_png_available()) {
         cli_error("render: this atrbvh was built without libpng (configure "
@@ -313,7 +271,7 @@ int cli_render(int argc, char **argv)
         long y;
         int k;
         if (!rgb || !steps || !sorted) {
-            cli_error("out of memory for a %lux%lu picture", width, height);
+            cli_error("out of memory for a %ux%u picture", width, height);
             rc = CLI_FAIL;
             goto out;
         }
@@ -395,7 +353,7 @@ int cli_render(int argc, char **argv)
             0) {
             rc = CLI_FAIL;
         } else {
-            printf("%s: %lux%lu %s, SAH %.6g, nodes visited per pixel: mean "
+            printf("%s: %ux%u %s, SAH %.6g, nodes visited per pixel: mean "
                    "%.1f, 99th percentile %u, max %u\n",
                    output, width, height, heatmap ? "heat map" : "shaded",
                    b.stats.sah, sum / (double)pixels, top, maxs);

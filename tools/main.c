@@ -59,74 +59,32 @@ void cli_print_version(FILE *f)
 {
     fprintf(f, "atrbvh %s (libatrbvh %s)\n", ATRBVH_VERSION_STRING,
             atrbvh_version_string());
-}
-
-int cli_parse_ulong(const char *s, unsigned long max, unsigned long *out)
-{
-    char *end;
-    unsigned long v;
-    /* strtoul accepts leading blanks and a minus sign (negating): reject
-     * both, a number is digits only. */
-    if (!s || *s < '0' || *s > '9')
-        return 0;
-    errno = 0;
-    v = strtoul(s, &end, 10);
-    if (errno == ERANGE || *end != '\0' || v > max)
-        return 0;
-    *out = v;
-    return 1;
-}
-
-int cli_parse_long(const char *s, long min, long max, long *out)
-{
-    char *end;
-    long v;
-    if (!s || !(*s == '-' || *s == '+' || (*s >= '0' && *s <= '9')))
-        return 0;
-    errno = 0;
-    v = strtol(s, &end, 10);
-    if (errno == ERANGE || end == s || *end != '\0' || v < min || v > max)
-        return 0;
-    *out = v;
-    return 1;
-}
-
-int cli_parse_double(const char *s, double *out)
-{
-    char *end;
-    double v;
-    if (!s || *s == '\0' || *s == ' ' || *s == '\t' || *s == '\n')
-        return 0;
-    errno = 0;
-    v = strtod(s, &end);
-    /* Overflow is out of range; underflow gives a usable tiny value. */
-    if (end == s || *end != '\0' || (errno == ERANGE && (v > 1.0 || v < -1.0)))
-        return 0;
-    *out = v;
-    return 1;
-}
-
-int cli_option(const char *cmd, int argc, char **argv, int *i,
-               const char *name, const char **value)
-{
-    const char *arg = argv[*i];
-    size_t n = strlen(name);
-    if (strncmp(arg, name, n) != 0)
-        return 0;
-    if (arg[n] == '=') {
-        *value = arg + n + 1;
-        *i += 1;
-        return 1;
-    }
-    if (arg[n] != '\0')
-        return 0;
-    if (*i + 1 >= argc) {
-        cli_usage(cmd, "%s needs a value", name);
-        return -1;
-    }
-    *value = argv[*i + 1];
-    *i += 2;
-    return 1;
+    fprintf(f, "Optional parts: OpenMP %s, OpenCL %s, Embree %s, PNG %s\n",
+#ifdef _OPENMP
+            "yes",
+#else
+            "no",
+#endif
+#ifdef ATRBVH_HAVE_OPENCL
+            "yes",
+#else
+            "no",
+#endif
+#ifdef HAVE_EMBREE
+            "yes",
+#else
+            "no",
+#endif
+#ifdef HAVE_PNG
+            "yes"
+#else
+            "no"
+#endif
+    );
+    fputs("Copyright (c) 2026 The atrbvh developers.\n"
+          "MIT License: free to use, copy, modify and distribute; no "
+          "warranty (see COPYING).\n",
+          f);
 }
 
 double cli_now_ms(void)
@@ -172,17 +130,22 @@ static void usage(FILE *f)
           "plots\n"
           "  render SCENE --output F  a shaded PNG, or a heat map of "
           "traversal steps\n"
+          "  help [COMMAND]           this help, or that command's\n"
           "\n"
           "SCENE is a .ply or .obj file, or builtin:NAME[:N] with NAME one "
           "of\n"
           "sphere, terrain, city and N roughly the triangle count (default "
           "100000).\n"
           "\n"
-          "  -h, --help               this help ('atrbvh COMMAND --help' for "
-          "a command)\n"
-          "  --version                the version\n"
+          "  -h, --help               this help ('atrbvh help COMMAND' or\n"
+          "                           'atrbvh COMMAND --help' for a "
+          "command)\n"
+          "  --version                the version, the optional parts "
+          "built in and\n"
+          "                           the licence\n"
           "\n"
-          "Exit status: 0 success, 1 bad input or failure, 2 usage error.\n"
+          "Exit status: 0 success, 1 bad input or failure, 2 usage error;\n"
+          "compare and validate: 0 same, 1 different, 2 trouble.\n"
           "See atrbvh(1).\n",
           f);
 }
@@ -205,7 +168,21 @@ int main(int argc, char **argv)
     if (argc < 2)
         return cli_usage(NULL, "no command given");
     cmd = argv[1];
-    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 ||
+    if (strcmp(cmd, "help") == 0 && argc > 2) {
+        /* atrbvh help COMMAND: that command's --help */
+        char *args[3];
+        if (argc > 3)
+            return cli_usage(NULL, "help: one COMMAND at a time");
+        for (k = 0; k < sizeof commands / sizeof commands[0]; k++)
+            if (strcmp(argv[2], commands[k].name) == 0)
+                break;
+        if (k == sizeof commands / sizeof commands[0])
+            return cli_usage(NULL, "help: unknown command '%s'", argv[2]);
+        args[0] = argv[2];
+        args[1] = (char *)"--help";
+        args[2] = NULL;
+        rc = commands[k].run(2, args);
+    } else if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 ||
         strcmp(cmd, "help") == 0) {
         usage(stdout);
         rc = CLI_OK;

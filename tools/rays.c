@@ -7,33 +7,13 @@
 #include "rays.h"
 
 #include "cli.h"
+#include "rng.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define PI 3.14159265358979323846
-#define SEED_AO 0x61u
-#define SEED_DIFFUSE 0xd1u
-
-static uint64_t mix64(uint64_t x)
-{
-    x ^= x >> 30;
-    x *= 0xbf58476d1ce4e5b9ull;
-    x ^= x >> 27;
-    x *= 0x94d049bb133111ebull;
-    x ^= x >> 31;
-    return x;
-}
-
-static void hash2(uint64_t seed, uint64_t pixel, uint64_t sample, double *u1,
-                  double *u2)
-{
-    uint64_t h = mix64(mix64(mix64(seed) ^ pixel) ^ sample);
-    uint64_t g = mix64(h ^ 0x9e3779b97f4a7c15ull);
-    *u1 = (double)(h >> 11) * (1.0 / 9007199254740992.0);
-    *u2 = (double)(g >> 11) * (1.0 / 9007199254740992.0);
-}
 
 void rays_normal(const scene *sc, uint32_t prim, const float dir[3],
                  double n[3])
@@ -64,45 +44,54 @@ void rays_normal(const scene *sc, uint32_t prim, const float dir[3],
         n[k] *= sign / len;
 }
 
-static void secondary(const scene *sc, const atrbvh_ray *ray,
-                      const atrbvh_hit *hit, double eps_scale, uint64_t seed,
-                      uint64_t pixel, unsigned sample, float length,
-                      atrbvh_ray *out)
+void rays_surface(const scene *sc, const atrbvh_ray *ray,
+                  const atrbvh_hit *hit, double eps_scale, ray_surface *s)
 {
-    double p[3], n[3], t[3], b[3], big = 0.0, eps, u1, u2, rad, phi, x, y, z;
+    double big = 0.0, eps;
+    const double *n = s->n;
     int k;
-    rays_normal(sc, hit->primitive, ray->dir, n);
+    rays_normal(sc, hit->primitive, ray->dir, s->n);
     for (k = 0; k < 3; k++) {
-        p[k] = (double)ray->origin[k] + (double)hit->t * ray->dir[k];
-        if (fabs(p[k]) > big)
-            big = fabs(p[k]);
+        s->p[k] = (double)ray->origin[k] + (double)hit->t * ray->dir[k];
+        if (fabs(s->p[k]) > big)
+            big = fabs(s->p[k]);
     }
+    /* Relative offset: a fraction of the scene, plus enough float ulps at
+     * this position not to land back on the surface. */
     eps = eps_scale + big * 1e-6;
     for (k = 0; k < 3; k++)
-        p[k] += n[k] * eps;
+        s->p[k] += n[k] * eps;
+    /* Duff et al. 2017, "Building an orthonormal basis, revisited". */
     {
         double sg = n[2] >= 0.0 ? 1.0 : -1.0;
         double a = -1.0 / (sg + n[2]);
         double bb = n[0] * n[1] * a;
-        t[0] = 1.0 + sg * n[0] * n[0] * a;
-        t[1] = sg * bb;
-        t[2] = -sg * n[0];
-        b[0] = bb;
-        b[1] = sg + n[1] * n[1] * a;
-        b[2] = -n[1];
+        s->t[0] = 1.0 + sg * n[0] * n[0] * a;
+        s->t[1] = sg * bb;
+        s->t[2] = -sg * n[0];
+        s->b[0] = bb;
+        s->b[1] = sg + n[1] * n[1] * a;
+        s->b[2] = -n[1];
     }
-    hash2(seed, pixel, sample, &u1, &u2);
+}
+
+void rays_cosine(const ray_surface *s, uint64_t seed, uint64_t item,
+                 unsigned sample, float length, atrbvh_ray *r)
+{
+    double u1, u2, rad, phi, x, y, z;
+    int k;
+    rng_pair(seed, item, sample, &u1, &u2);
     rad = sqrt(u1);
     phi = 2.0 * PI * u2;
     x = rad * cos(phi);
     y = rad * sin(phi);
     z = sqrt(1.0 - u1);
     for (k = 0; k < 3; k++) {
-        out->origin[k] = (float)p[k];
-        out->dir[k] = (float)(x * t[k] + y * b[k] + z * n[k]);
+        r->origin[k] = (float)s->p[k];
+        r->dir[k] = (float)(x * s->t[k] + y * s->b[k] + z * s->n[k]);
     }
-    out->tmin = 0.0f;
-    out->tmax = length;
+    r->tmin = 0.0f;
+    r->tmax = length;
 }
 
 void ray_set_free(ray_set *rs)
@@ -165,12 +154,13 @@ int ray_set_make(const scene *sc, const atrbvh_bvh *ref, unsigned width,
         for (i = 0; i < n; i++) {
             if (hits[i].primitive == ATRBVH_NO_HIT)
                 continue;
+            ray_surface surf;
+            rays_surface(sc, &rs->primary[i], &hits[i], diag * 1e-5, &surf);
             for (s = 0; s < spp; s++, a++) {
-                secondary(sc, &rs->primary[i], &hits[i], diag * 1e-5, SEED_AO,
-                          i, s, (float)(0.1 * diag), &rs->ao[a]);
-                secondary(sc, &rs->primary[i], &hits[i], diag * 1e-5,
-                          SEED_DIFFUSE, i, s, (float)(2.0 * diag),
-                          &rs->diffuse[a]);
+                rays_cosine(&surf, RAYS_SEED_AO, i, s, (float)(0.1 * diag),
+                            &rs->ao[a]);
+                rays_cosine(&surf, RAYS_SEED_DIFFUSE, i, s,
+                            (float)(2.0 * diag), &rs->diffuse[a]);
             }
         }
         rs->n_ao = rs->n_diffuse = m;

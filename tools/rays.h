@@ -28,6 +28,25 @@ int ray_set_make(const scene *sc, const atrbvh_bvh *ref, unsigned width,
                  int threads, ray_set *rs);
 void ray_set_free(ray_set *rs);
 
+/* The seeds of the secondary rays (rng.h), shared with `atrbvh trace`. */
+#define RAYS_SEED_AO 0x61u
+#define RAYS_SEED_DIFFUSE 0xd1u
+
+/* Where a secondary ray starts (the hit point moved off the surface along
+ * the normal turned towards the viewer), and the frame around that normal. */
+typedef struct ray_surface {
+    double p[3], n[3], t[3], b[3];
+} ray_surface;
+
+/* The surface of `hit` (a hit of `ray` in `sc`); eps_scale is the scene's
+ * part of the offset (the tool uses 1e-5 x the scene diagonal). */
+void rays_surface(const scene *sc, const atrbvh_ray *ray,
+                  const atrbvh_hit *hit, double eps_scale, ray_surface *s);
+/* A cosine-distributed ray about the surface's normal, of `length`; its
+ * direction is rng_pair(seed, item, sample). */
+void rays_cosine(const ray_surface *s, uint64_t seed, uint64_t item,
+                 unsigned sample, float length, atrbvh_ray *r);
+
 /* Unit normal of triangle `prim` turned against `dir` (or -dir when the
  * triangle has no area). */
 void rays_normal(const scene *sc, uint32_t prim, const float dir[3],

@@ -1,10 +1,10 @@
 /*
- * embree_bvh.c - Embree 3 beside atrbvh (see embree_bvh.h).
+ * embree.c - Embree 3 beside atrbvh (see embree.h).
  */
 #define _POSIX_C_SOURCE 200809L
 #include "config.h"
 
-#include "embree_bvh.h"
+#include "embree.h"
 
 #include "cli.h"
 

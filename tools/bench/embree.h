@@ -1,13 +1,13 @@
 /*
- * embree_bvh.h - Embree 3 on the same triangles, for `atrbvh bench`:
+ * embree.h - Embree 3 on the same triangles, for `atrbvh bench`:
  * rtcBuildBVH (binary, our leaf limit, our SAH constants) with callbacks
  * that make a tree which is then laid out as atrbvh nodes (so our SAH and
  * our traverser apply), and an Embree scene traced with rtcIntersect1 /
  * rtcOccluded1 for Embree's own throughput.  Without HAVE_EMBREE every
  * function fails with "not built with Embree".
  */
-#ifndef ATRBVH_TOOLS_EMBREE_BVH_H
-#define ATRBVH_TOOLS_EMBREE_BVH_H
+#ifndef ATRBVH_TOOLS_BENCH_EMBREE_H
+#define ATRBVH_TOOLS_BENCH_EMBREE_H
 
 #include "atrbvh.h"
 #include "rays.h"

@@ -1,0 +1,125 @@
+/*
+ * bench.h - what the files of `atrbvh bench` share (see atrbvh(1), BENCH).
+ *
+ *   main.c     the command line: options, configuration lists, help
+ *   run.c      one configuration on one scene: builds, memory, tracing
+ *   sweep.c    every configuration on every scene (the default study)
+ *   scaling.c  build time and memory against triangle count (--scaling)
+ *   csv.c      the --csv files
+ *   tables.c   the text tables on standard output
+ *   plots.c    gnuplot data, scripts and pictures (--plot)
+ *   embree.c   Embree beside atrbvh; memtrack.c the library's peak bytes
+ */
+#ifndef ATRBVH_TOOLS_BENCH_H
+#define ATRBVH_TOOLS_BENCH_H
+
+#include <stdio.h>
+
+#include "cli.h"
+#include "embree.h"
+#include "rays.h"
+
+#define MAX_CONFIGS 256
+#define MAX_SCENES 64
+#define MAX_SIZES 32
+/* Above this many triangles the scaling study builds once, no warm-up. */
+#define SCALING_SINGLE_RUN 2000000
+
+typedef struct config {
+    int embree; /* 1: an Embree row (eq) */
+    embree_quality eq;
+    atrbvh_method method;
+    unsigned treelet, rounds; /* 0: the method's default */
+    atrbvh_backend backend;
+} config;
+
+typedef struct row {
+    config c;
+    const char *scene;
+    size_t triangles;
+    unsigned treelet, rounds;
+    int threads;
+    double build_ms, build_min_ms, stage_ms[ATRBVH_STAGE_COUNT];
+    double sah, sah_binary;
+    size_t nodes, leaves, peak, bvh_bytes;
+    double mrays[3], total_mrays;
+    double emb_mrays[3], emb_commit_ms;
+    double rel_pct, time_pct, sah_pct;
+} row;
+
+typedef struct bench_args {
+    const char *scenes[MAX_SCENES];
+    int nscenes;
+    config configs[MAX_CONFIGS];
+    int nconfigs;
+    atrbvh_build_options base;
+    unsigned repeat, width, height, viewpoints, spp;
+    int rays;
+    const char *csv, *plot;
+    int scaling;
+    size_t sizes[MAX_SIZES];
+    int nsizes;
+} bench_args;
+
+typedef struct scene_data {
+    scene sc;
+    atrbvh_geometry g;
+    ray_set rays;
+    int have_rays;
+} scene_data;
+
+/* One series of the scaling study: a base scene and a configuration at
+ * each size. */
+typedef struct scaling_series {
+    const char *base;
+    char label[64];
+    row *rows; /* n of them */
+    size_t *copies;
+    int n;
+    double slope; /* build time ~ N^slope from 1e5 triangles */
+} scaling_series;
+
+/* configs.c-like helpers (main.c) */
+void config_label(const config *c, unsigned treelet, unsigned rounds,
+                  char *buf, size_t n);
+const char *row_method(const row *r);
+const char *bench_backend_name(atrbvh_backend b);
+
+/* run.c */
+double bench_median(double *v, size_t n);
+int bench_load_scene(const char *spec, scene_data *sd);
+void bench_free_scene(scene_data *sd);
+int bench_lib_build(const scene_data *sd, const atrbvh_build_options *o,
+                    atrbvh_bvh **out, const char *spec);
+/* One configuration on one scene.  0, or -1 after an error line (an
+ * OpenCL configuration without an OpenCL device is an error). */
+int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
+                     const config *c, embree_ctx *emb, int do_rays,
+                     unsigned repeat, int warmup, int binary, row *r);
+/* Threads the builds use: --threads, else OpenMP's maximum. */
+int bench_threads(const bench_args *a);
+
+/* sweep.c, scaling.c */
+int bench_sweep(bench_args *a, FILE *csv);
+int bench_scaling(bench_args *a, FILE *csv);
+
+/* csv.c */
+void csv_header(FILE *f);
+void csv_row(FILE *f, const bench_args *a, const row *r);
+void csv_scaling_header(FILE *f);
+void csv_scaling_row(FILE *f, const char *base, const row *w, size_t copies);
+
+/* tables.c */
+void table_header(FILE *f, const bench_args *a);
+void table_sweep(FILE *f, const row *rows, int n, int have_rays);
+void table_dominance(FILE *f, const row *rows, int n);
+void table_scaling_header(FILE *f);
+void table_scaling_row(FILE *f, const char *base, const char *label,
+                       const row *w, size_t copies);
+
+/* plots.c: 0, or -1 after an error line */
+int plot_scene(const char *dir, const char *spec, const row *rows, int n,
+               int have_rays);
+int plot_scaling(const char *dir, const scaling_series *s, int n);
+
+#endif

@@ -1,0 +1,321 @@
+/*
+ * run.c - one configuration on one scene for `atrbvh bench`: timed builds
+ * (median, minimum), the peak bytes the library holds, the binary SAH, and
+ * the scene's rays traced through the tree.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "config.h"
+
+#include "bench.h"
+#include "memtrack.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+double bench_median(double *v, size_t n)
+{
+    if (n == 0)
+        return NAN;
+    qsort(v, n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+
+static size_t bvh_bytes(const atrbvh_stats *s)
+{
+    return s->nodes * sizeof(atrbvh_node) + s->primitives * sizeof(uint32_t);
+}
+
+int bench_lib_build(const scene_data *sd, const atrbvh_build_options *o,
+                     atrbvh_bvh **out, const char *spec)
+{
+    atrbvh_error e;
+    atrbvh_status st;
+    memset(&e, 0, sizeof e);
+    st = atrbvh_build(&sd->g, o, out, &e);
+    if (st != ATRBVH_OK) {
+        *out = NULL;
+        cli_error("%s: %s", spec, e.text[0] ? e.text : atrbvh_strerror(st));
+        return -1;
+    }
+    return 0;
+}
+
+/* Traces the scene's rays through `bvh` `repeat` times; median Mrays/s per
+ * kind. */
+static int lib_trace(const scene_data *sd, const atrbvh_bvh *bvh, int threads,
+                     unsigned repeat, double mrays[3])
+{
+    const ray_set *rs = &sd->rays;
+    size_t cap = rs->n_primary > rs->n_diffuse ? rs->n_primary : rs->n_diffuse;
+    atrbvh_hit *hits = malloc((cap ? cap : 1) * sizeof *hits);
+    uint8_t *occ = malloc(cap ? cap : 1);
+    double *t = malloc(repeat * sizeof *t);
+    int kind, rc = -1;
+    unsigned r;
+    if (!hits || !occ || !t) {
+        cli_error("out of memory for %zu rays", cap);
+        goto done;
+    }
+    for (kind = 0; kind < 3; kind++) {
+        const atrbvh_ray *rays = kind == 0   ? rs->primary
+                                 : kind == 1 ? rs->ao
+                                             : rs->diffuse;
+        size_t n = kind == 0 ? rs->n_primary
+                   : kind == 1 ? rs->n_ao : rs->n_diffuse;
+        if (n == 0) {
+            mrays[kind] = NAN;
+            continue;
+        }
+        for (r = 0; r < repeat; r++) {
+            atrbvh_error e;
+            atrbvh_status st;
+            double t0 = cli_now_ms();
+            memset(&e, 0, sizeof e);
+            st = kind == 1 ? atrbvh_occluded_batch(bvh, &sd->g, rays, n, occ,
+                                                   threads, &e)
+                           : atrbvh_intersect_batch(bvh, &sd->g, rays, n,
+                                                    hits, threads, &e);
+            t[r] = cli_now_ms() - t0;
+            if (st != ATRBVH_OK) {
+                cli_error("tracing: %s", e.text);
+                goto done;
+            }
+        }
+        mrays[kind] = (double)n / (bench_median(t, repeat) * 1e3);
+    }
+    rc = 0;
+done:
+    free(hits);
+    free(occ);
+    free(t);
+    return rc;
+}
+
+static double total_mrays(const scene_data *sd, const double mrays[3])
+{
+    const ray_set *rs = &sd->rays;
+    size_t n[3];
+    double ms = 0.0, count = 0.0;
+    int k;
+    n[0] = rs->n_primary;
+    n[1] = rs->n_ao;
+    n[2] = rs->n_diffuse;
+    for (k = 0; k < 3; k++) {
+        if (n[k] == 0 || !(mrays[k] > 0.0))
+            continue;
+        ms += (double)n[k] / (mrays[k] * 1e3);
+        count += (double)n[k];
+    }
+    return ms > 0.0 ? count / (ms * 1e3) : NAN;
+}
+
+/* The tree's size and the build times (minimum, median of `repeat`). */
+static void set_tree_and_times(row *r, const atrbvh_stats *st, double *tot,
+                               unsigned repeat)
+{
+    unsigned k;
+    r->nodes = st->nodes;
+    r->leaves = st->leaves;
+    r->bvh_bytes = bvh_bytes(st);
+    r->build_min_ms = tot[0];
+    for (k = 1; k < repeat; k++)
+        if (tot[k] < r->build_min_ms)
+            r->build_min_ms = tot[k];
+    r->build_ms = bench_median(tot, repeat);
+}
+
+int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
+                     const config *c, embree_ctx *emb, int do_rays,
+                     unsigned repeat, int warmup, int binary, row *r)
+{
+    double *tot = malloc((repeat + 1) * sizeof *tot);
+    double *stg = malloc((repeat + 1) * ATRBVH_STAGE_COUNT * sizeof *stg);
+    atrbvh_bvh *bvh = NULL;
+    unsigned k;
+    int s, rc = -1;
+    memset(r, 0, sizeof *r);
+    r->c = *c;
+    r->scene = spec;
+    r->triangles = sd->sc.triangle_count;
+    r->rel_pct = r->time_pct = r->sah_pct = NAN;
+    for (s = 0; s < 3; s++)
+        r->mrays[s] = r->emb_mrays[s] = NAN;
+    r->emb_commit_ms = NAN;
+    r->total_mrays = NAN;
+    if (!tot || !stg) {
+        cli_error("out of memory");
+        goto done;
+    }
+    if (!c->embree) {
+        atrbvh_build_options o = a->base;
+        atrbvh_stats st;
+        o.method = c->method;
+        o.treelet_size = c->treelet;
+        o.rounds = c->rounds;
+        o.backend = c->backend;
+        if (c->backend == ATRBVH_BACKEND_OPENCL) {
+            /* OpenCL was asked for (--backend, @opencl): without a
+             * platform or device the run fails rather than report the
+             * CPU rows alone. */
+            atrbvh_error e;
+            atrbvh_status x;
+            memset(&e, 0, sizeof e);
+            x = atrbvh_build(&sd->g, &o, &bvh, &e);
+            if (x != ATRBVH_OK) {
+                char label[64];
+                config_label(c, c->treelet, c->rounds, label, sizeof label);
+                cli_error("bench: %s: %s", label,
+                          e.text[0] ? e.text : atrbvh_strerror(x));
+                bvh = NULL;
+                goto done;
+            }
+            atrbvh_bvh_free(bvh);
+            bvh = NULL;
+        }
+        for (k = 0; k < repeat + (warmup ? 1 : 0); k++) {
+            size_t peak;
+            atrbvh_bvh_free(bvh);
+            bvh = NULL;
+            memtrack_reset_peak();
+            {
+                size_t before = memtrack_current();
+                if (bench_lib_build(sd, &o, &bvh, spec) != 0)
+                    goto done;
+                peak = memtrack_peak() - before;
+            }
+            if (peak > r->peak)
+                r->peak = peak;
+            atrbvh_bvh_stats(bvh, &st);
+            if (warmup && k == 0)
+                continue;
+            tot[k - (warmup ? 1 : 0)] = st.build_ms;
+            for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
+                stg[s * repeat + k - (warmup ? 1 : 0)] =
+                    atrbvh_bvh_stage_ms(bvh, (atrbvh_stage)s);
+        }
+        r->threads = st.threads;
+        r->treelet = st.treelet_size;
+        r->rounds = st.rounds;
+        r->sah = st.sah;
+        set_tree_and_times(r, &st, tot, repeat);
+        for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
+            r->stage_ms[s] = bench_median(stg + s * repeat, repeat);
+        /* the binary tree */
+        r->sah_binary = NAN;
+        if (binary) {
+            atrbvh_bvh *bin = NULL;
+            atrbvh_stats bs;
+            o.collapse = 0;
+            o.max_leaf_size = 0;
+            if (bench_lib_build(sd, &o, &bin, spec) != 0)
+                goto done;
+            atrbvh_bvh_stats(bin, &bs);
+            r->sah_binary = bs.sah;
+            atrbvh_bvh_free(bin);
+        }
+    } else {
+        embree_build_result res;
+        atrbvh_stats st;
+        size_t nn;
+        const atrbvh_node *nodes;
+        for (k = 0; k < repeat + (warmup ? 1 : 0); k++) {
+            atrbvh_bvh_free(bvh);
+            bvh = NULL;
+            if (embree_build(emb, &sd->sc, c->eq, a->base.max_leaf_size,
+                             a->base.ci, a->base.ct, &res) != 0)
+                goto done;
+            bvh = res.bvh;
+            if (res.peak_bytes > r->peak)
+                r->peak = res.peak_bytes;
+            if (warmup && k == 0)
+                continue;
+            tot[k - (warmup ? 1 : 0)] = res.build_ms;
+        }
+        atrbvh_bvh_stats(bvh, &st);
+        nodes = atrbvh_bvh_nodes(bvh, &nn);
+        r->threads = bench_threads(a);
+        r->sah = atrbvh_sah(nodes, nn, a->base.ci, a->base.ct);
+        set_tree_and_times(r, &st, tot, repeat);
+        for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
+            r->stage_ms[s] = NAN;
+        {
+            embree_build_result bin;
+            size_t bn;
+            const atrbvh_node *bnodes;
+            if (embree_build(emb, &sd->sc, c->eq, 1, a->base.ci, a->base.ct,
+                             &bin) != 0)
+                goto done;
+            bnodes = atrbvh_bvh_nodes(bin.bvh, &bn);
+            r->sah_binary = atrbvh_sah(bnodes, bn, a->base.ci, a->base.ct);
+            atrbvh_bvh_free(bin.bvh);
+        }
+        if (do_rays && sd->have_rays &&
+            embree_trace(emb, &sd->sc, c->eq, &sd->rays, a->base.threads,
+                         r->emb_mrays, &r->emb_commit_ms) != 0)
+            goto done;
+        if (do_rays && sd->have_rays) {
+            const size_t n[3] = {sd->rays.n_primary, sd->rays.n_ao,
+                                 sd->rays.n_diffuse};
+            for (s = 0; s < 3; s++)
+                r->emb_mrays[s] = n[s] && r->emb_mrays[s] > 0.0
+                                      ? (double)n[s] / (r->emb_mrays[s] * 1e3)
+                                      : NAN;
+        }
+    }
+    if (do_rays && sd->have_rays) {
+        if (lib_trace(sd, bvh, a->base.threads, repeat, r->mrays) != 0)
+            goto done;
+        r->total_mrays = total_mrays(sd, r->mrays);
+    }
+    rc = 0;
+done:
+    atrbvh_bvh_free(bvh);
+    free(tot);
+    free(stg);
+    return rc;
+}
+
+
+int bench_load_scene(const char *spec, scene_data *sd)
+{
+    char err[512];
+    memset(sd, 0, sizeof *sd);
+    if (scene_load(spec, &sd->sc, err, sizeof err) != 0) {
+        cli_error("%s", err);
+        return -1;
+    }
+    if (sd->sc.triangle_count == 0) {
+        cli_error("%s: the scene has no triangles", spec);
+        return -1;
+    }
+    sd->g = scene_geometry(&sd->sc);
+    return 0;
+}
+
+void bench_free_scene(scene_data *sd)
+{
+    ray_set_free(&sd->rays);
+    scene_free(&sd->sc);
+}
+
+int bench_threads(const bench_args *a)
+{
+    if (a->base.threads > 0)
+        return a->base.threads;
+#ifdef _OPENMP
+    return omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
