@@ -1,0 +1,75 @@
+/*
+ * outfile.h - every file the atrbvh tool writes goes through here, so that
+ * nothing is ever lost or left half written.
+ *
+ * A regular file (or a path that does not exist yet) is written to a
+ * temporary file beside its target (mkstemp in the target's directory),
+ * flushed, fsync'ed and renamed over the target only when complete; on any
+ * failure the temporary file is removed and the target is untouched.  A
+ * symbolic link is followed: the file it names is replaced, the link
+ * stays.  A target that is not a regular file - a device, a FIFO, a
+ * socket, /dev/stdout or /dev/fd/N (anything reached through /proc's magic
+ * links), or a symbolic link to one of those - is written in place and is
+ * never removed or replaced.  A directory is refused.  "-" has no special
+ * meaning (the tool has no such convention): it is a file named "-".
+ *
+ * Typical use:
+ *
+ *     cli_out out;
+ *     FILE *f = cli_out_open(path, &out);
+ *     if (!f)
+ *         return CLI_FAIL;                  (the error line is printed)
+ *     ... fprintf(f, ...) ...
+ *     if (something_failed) {
+ *         cli_out_abort(&out);              (silent; target untouched)
+ *         return CLI_FAIL;
+ *     }
+ *     if (cli_out_commit(&out) != 0)        (prints the error line)
+ *         return CLI_FAIL;
+ *
+ * Every cli_out_open that returned a FILE * must be ended by exactly one
+ * cli_out_commit or cli_out_abort; both close the FILE * and free the
+ * handle's memory, whatever the outcome.
+ */
+#ifndef ATRBVH_TOOLS_OUTFILE_H
+#define ATRBVH_TOOLS_OUTFILE_H
+
+#include <stdio.h>
+
+typedef struct cli_out {
+    FILE *f;
+    char *name;   /* the path as given, for messages */
+    char *target; /* the file replaced on commit (symbolic links followed) */
+    char *tmp;    /* the temporary file; NULL when writing in place */
+} cli_out;
+
+/* Whether `path` can be written, without writing it: 0 when it can, else
+ * -1 with *err (when err is not NULL) set to a short reason such as
+ * strerror's ("No such file or directory" for a missing directory, "Is a
+ * directory", "Permission denied").  For a regular target it creates and
+ * removes a temporary file in the target's directory.  Prints nothing:
+ * call it before a long computation and report with
+ * cli_error("%s: %s", path, err). */
+int cli_out_check(const char *path, const char **err);
+
+/* Starts writing `path`: a FILE * open for binary writing, or NULL after
+ * one error line "atrbvh: PATH: ..." (cli_error).  *h need not be
+ * initialised. */
+FILE *cli_out_open(const char *path, cli_out *h);
+
+/* Finishes: flushes, fsyncs and renames the temporary file over the
+ * target (in place: flushes and closes).  0, or -1 after one error line
+ * naming the path (the temporary file removed, the target untouched). */
+int cli_out_commit(cli_out *h);
+
+/* Gives up: closes and removes the temporary file; the target is
+ * untouched (in place: only closes).  Prints nothing.  Safe on a handle
+ * whose open failed or that was already ended. */
+void cli_out_abort(cli_out *h);
+
+/* 1 when both paths exist and name the same file (same device and inode,
+ * symbolic links followed), else 0.  For refusing an output that would
+ * replace the input. */
+int cli_out_same_file(const char *a, const char *b);
+
+#endif
