@@ -317,7 +317,11 @@ ATRBVH_API atrbvh_status atrbvh_occluded_batch_device(
     const char *device, double *kernel_ms, atrbvh_error *error);
 
 /* ----------------------------------------------------------- save and load */
-/* The file format is documented in atrbvh(5). */
+/* The file format is documented in atrbvh(5).  atrbvh_save writes a
+ * temporary file beside `path` and renames it over `path` only when
+ * complete; on failure `path` is untouched.  A path that is not a regular
+ * file (device, FIFO, /dev/stdout) is written in place and never removed
+ * (atrbvh_save(3)). */
 ATRBVH_API atrbvh_status atrbvh_save(const atrbvh_bvh *bvh, const char *path,
                                      atrbvh_error *error);
 ATRBVH_API atrbvh_status atrbvh_load(const char *path, atrbvh_bvh **out,
