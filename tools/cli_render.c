@@ -13,6 +13,7 @@
 #include "config.h"
 
 #include "cli.h"
+#include "outfile.h"
 #include "rays.h"
 
 #include <float.h>
@@ -297,6 +298,9 @@ int cli_render(int argc, char **argv)
                   "found none), so it cannot write PNG");
         return CLI_FAIL;
     }
+    /* before the build: an unwritable PNG or one naming the scene */
+    if (cli_out_usable(output, a.scene) != 0)
+        return CLI_FAIL;
     rc = cli_load_and_build(&a, &b);
     if (rc == CLI_OK) {
         size_t pixels = (size_t)width * height, p;

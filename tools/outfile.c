@@ -237,8 +237,22 @@ FILE *cli_out_open(const char *path, cli_out *h)
         return NULL;
     }
     if (r.kind == OUT_IN_PLACE) {
-        /* No O_CREAT, no O_TRUNC: it exists and is not a regular file. */
-        fd = open(path, O_WRONLY);
+        /* No O_CREAT, no O_TRUNC: it exists and is not ours to replace.
+         * When it is our stdout (/dev/stdout, or stdout redirected to this
+         * device or FIFO), write through a duplicate of descriptor 1, so
+         * that what the tool prints there and the file share one offset
+         * and come out in order; a regular file reached through /proc (a
+         * redirection) is appended to, never overwritten from byte 0. */
+        struct stat ps, os;
+        fflush(stdout);
+        if (stat(path, &ps) == 0 && fstat(STDOUT_FILENO, &os) == 0 &&
+            ps.st_dev == os.st_dev && ps.st_ino == os.st_ino)
+            fd = dup(STDOUT_FILENO);
+        else
+            fd = open(path, O_WRONLY | (stat(path, &ps) == 0 &&
+                                                S_ISREG(ps.st_mode)
+                                            ? O_APPEND
+                                            : 0));
         if (fd < 0 || !(h->f = fdopen(fd, "wb"))) {
             e = errno;
             if (fd >= 0)
@@ -364,4 +378,20 @@ int cli_out_same_file(const char *a, const char *b)
     if (!a || !b || stat(a, &sa) != 0 || stat(b, &sb) != 0)
         return 0;
     return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+int cli_out_usable(const char *output, const char *input)
+{
+    const char *why = NULL;
+    if (input && cli_out_same_file(output, input)) {
+        cli_error("%s: the output is the input '%s'; refusing to overwrite "
+                  "it",
+                  output, input);
+        return -1;
+    }
+    if (cli_out_check(output, &why) != 0) {
+        cli_error("%s: cannot write: %s", output, why);
+        return -1;
+    }
+    return 0;
 }

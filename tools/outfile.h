@@ -72,4 +72,9 @@ void cli_out_abort(cli_out *h);
  * replace the input. */
 int cli_out_same_file(const char *a, const char *b);
 
+/* Both checks before a long computation: 0 when `output` can be written
+ * and is not the file `input` (NULL: no input to protect); else -1 after
+ * one error line "atrbvh: OUTPUT: ...". */
+int cli_out_usable(const char *output, const char *input);
+
 #endif
