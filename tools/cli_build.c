@@ -163,6 +163,11 @@ int cli_build_option(const char *cmd, int argc, char **argv, int *i,
             cli_usage(cmd, "--threads: '%s' is not a whole number", v);
             return -1;
         }
+        if (l > ATRBVH_MAX_THREADS) {
+            cli_usage(cmd, "--threads: %ld is above the limit of %d", l,
+                      ATRBVH_MAX_THREADS);
+            return -1;
+        }
         a->options.threads = (int)l;
         return 1;
     }

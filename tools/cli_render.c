@@ -78,7 +78,7 @@ static int tri_hit(const scene *sc, uint32_t prim, const atrbvh_ray *r,
     if (v < 0.0 || u + v > 1.0)
         return 0;
     tt = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) * inv;
-    if (!(tt > r->tmin && tt <= *t))
+    if (!(tt >= r->tmin && tt <= *t)) /* [tmin, tmax], as the library */
         return 0;
     *t = (float)tt;
     return 1;
