@@ -2,7 +2,8 @@
 # outputs.sh - nothing the atrbvh tool writes is ever lost or half written:
 #  - a failing write (full file system: a 64 KiB tmpfs when root, a file
 #    size limit for any user) leaves the existing output byte for byte and
-#    no temporary file, with one error line naming the file;
+#    no temporary file, with one error line naming the file; SIGXFSZ ending
+#    the process mid-write leaves no temporary file either;
 #  - devices (a private mknod copy of /dev/full when root, /dev/full through
 #    a symbolic link) and symbolic links to /dev/stdout are written in place
 #    and never removed;
@@ -180,6 +181,22 @@ else
         only small.bvh big.bvh t.bvh l.bvh old.png
         rm -f "$D/old.png"
     fi
+fi
+
+# The same limit without ignoring SIGXFSZ: the signal ends the process in
+# the middle of the write; the temporary file goes with it.
+D=$T/rep
+checks=$((checks + 1))
+(
+    ulimit -f 64 2>/dev/null || exit 77
+    "$TOOL" build $SCENE -o "$D/t.bvh"
+    exit $? # (not the last command: this subshell reports the signal)
+) >"$T/out" 2>"$T/err"
+rc=$?
+if [ "$rc" -ne 77 ]; then
+    [ "$rc" -ne 0 ] || fail "build past a file size limit succeeded"
+    cmp -s "$D/t.bvh" "$D/small.bvh" || fail "SIGXFSZ lost the existing output"
+    only small.bvh big.bvh t.bvh l.bvh
 fi
 
 # A real full file system (root only: a 64 KiB tmpfs).

@@ -12,6 +12,10 @@
  * links), or a symbolic link to one of those - is written in place and is
  * never removed or replaced.  A directory is refused.  "-" has no special
  * meaning (the tool has no such convention): it is a file named "-".
+ * Replacing a file gives the path a new file: other hard links to the old
+ * one keep the old content.  While a temporary file exists, SIGINT,
+ * SIGTERM, SIGHUP, SIGQUIT and SIGXFSZ (unless ignored) remove it before
+ * the process ends (handlers installed at the first cli_out_open).
  *
  * Typical use:
  *
