@@ -962,9 +962,16 @@ START_TEST(save_devices_never_removed)
     char *dir = make_temp_dir(), path[700], link[700], names[1024];
     atrbvh_error e;
     struct stat st;
+    /* (a system without /dev/full or /dev/stdout skips those parts) */
+    int have_full = stat("/dev/full", &st) == 0 && S_ISCHR(st.st_mode);
+    int have_stdout = lstat("/dev/stdout", &st) == 0;
+    if (!have_full || !have_stdout)
+        fprintf(stderr, "save_devices_never_removed: no /dev/%s: skipped "
+                "in part\n", have_full ? "stdout" : "full");
     /* a symbolic link to /dev/full (any user): the write fails, the link
      * and the device stay */
     snprintf(link, sizeof link, "%s/full-link", dir);
+    if (have_full) {
     ck_assert_int_eq(symlink("/dev/full", link), 0);
     ck_assert_int_eq(atrbvh_save(big, link, &e), ATRBVH_ERR_IO);
     ck_assert_msg(strstr(e.text, link) != NULL, "%s", e.text);
@@ -981,9 +988,10 @@ START_TEST(save_devices_never_removed)
         ck_assert_msg(S_ISCHR(st.st_mode), "the device node was replaced");
         remove(path);
     }
+    }
     /* a symbolic link to /dev/stdout, stdout being /dev/full: it fails and
      * the link stays */
-    {
+    if (have_full && have_stdout) {
         int saved = dup(1), full = open("/dev/full", O_WRONLY);
         ck_assert_int_ge(saved, 0);
         ck_assert_int_ge(full, 0);
@@ -1001,7 +1009,7 @@ START_TEST(save_devices_never_removed)
     }
     /* ... stdout being a regular file the caller opened: written in place
      * (appended after what is there), the file and link stay */
-    {
+    if (have_stdout) {
         int saved = dup(1), fd;
         unsigned char *img;
         size_t n;
