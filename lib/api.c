@@ -146,9 +146,12 @@ void *atrbvh_i_alloc_array(size_t count, size_t size)
 int atrbvh_i_resolve_threads(int requested)
 {
 #ifdef _OPENMP
+    int n;
     if (requested > 0)
         return requested;
-    return omp_get_max_threads();
+    /* The default (OMP_NUM_THREADS) is held to the same limit. */
+    n = omp_get_max_threads();
+    return n > ATRBVH_MAX_THREADS ? ATRBVH_MAX_THREADS : n;
 #else
     (void)requested;
     return 1;
@@ -304,6 +307,11 @@ atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
     if (o.threads < 0)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "threads %d is negative", o.threads);
+    if (o.threads > ATRBVH_MAX_THREADS)
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "threads %d is above the limit of %d "
+                             "(ATRBVH_MAX_THREADS)",
+                             o.threads, ATRBVH_MAX_THREADS);
     if (o.max_leaf_size > 0 && !o.collapse)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "max_leaf_size needs collapse (leaves hold one "

@@ -131,6 +131,11 @@ ATRBVH_API atrbvh_geometry atrbvh_geometry_boxes(const float *boxes,
 /* The most primitives one build accepts. */
 #define ATRBVH_MAX_PRIMITIVES ((size_t)1 << 30)
 
+/* The most threads a build (options.threads) or a batch ray query (its
+ * threads argument) accepts: more is ATRBVH_ERR_INVALID_ARGUMENT.  The
+ * OpenMP default (0, e.g. from OMP_NUM_THREADS) is held to it too. */
+#define ATRBVH_MAX_THREADS 1024
+
 /* ----------------------------------------------------------------- options */
 typedef enum atrbvh_method {
     ATRBVH_METHOD_LBVH = 0,   /* Karras 2012 only                        */
@@ -184,7 +189,8 @@ typedef struct atrbvh_build_options {
     double ct;                   /* primitive cost, default 1.0           */
     int collapse;                /* nonzero: multi-primitive leaves by SAH */
     unsigned max_leaf_size;      /* 0 = no limit                          */
-    int threads;                 /* 0 = OpenMP default                    */
+    int threads;                 /* 0 = OpenMP default; at most
+                                    ATRBVH_MAX_THREADS                    */
     int skip_invalid;            /* nonzero: leave out NaN/Inf primitives
                                     (counted) instead of failing          */
     atrbvh_backend backend;      /* used when device is NULL: default CPU;
@@ -320,17 +326,22 @@ typedef struct atrbvh_hit {
     uint32_t primitive; /* ATRBVH_NO_HIT when nothing was hit            */
 } atrbvh_hit;
 
-/* Closest hit in (tmin, tmax]... see atrbvh_intersect(3).  `geometry`
- * must be the one the BVH was built from. Returns nonzero on a hit. */
+/* Closest hit with tmin <= t <= tmax (both ends included, as for
+ * atrbvh_occluded), see atrbvh_intersect(3).  `geometry` must be the one
+ * the BVH was built from: checked as the batch calls check it, and when it
+ * fails (a NULL pointer, an unusable geometry, fewer primitives than the
+ * BVH was built over) the call returns 0 with *hit a miss, reading
+ * nothing.  Returns nonzero on a hit. */
 ATRBVH_API int atrbvh_intersect(const atrbvh_bvh *bvh,
                                 const atrbvh_geometry *geometry,
                                 const atrbvh_ray *ray, atrbvh_hit *hit);
-/* Any hit in [tmin, tmax]: nonzero if anything is hit. */
+/* Any hit with tmin <= t <= tmax: nonzero if anything is hit; 0 when the
+ * arguments fail the batch calls' checks. */
 ATRBVH_API int atrbvh_occluded(const atrbvh_bvh *bvh,
                                const atrbvh_geometry *geometry,
                                const atrbvh_ray *ray);
-/* Batched versions, OpenMP-parallel over rays (threads 0 = default).
- * occluded[i] is set to 0 or 1. */
+/* Batched versions, OpenMP-parallel over rays (threads 0 = default, at
+ * most ATRBVH_MAX_THREADS).  occluded[i] is set to 0 or 1. */
 ATRBVH_API atrbvh_status atrbvh_intersect_batch(
     const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
     const atrbvh_ray *rays, size_t count, atrbvh_hit *hits, int threads,
@@ -364,7 +375,11 @@ ATRBVH_API atrbvh_status atrbvh_occluded_batch_device(
     uint8_t *occluded, double *kernel_ms, atrbvh_error *error);
 
 /* ----------------------------------------------------------- save and load */
-/* The file format is documented in atrbvh(5). */
+/* The file format is documented in atrbvh(5).  atrbvh_save writes a
+ * temporary file beside `path` and renames it over `path` only when
+ * complete; on failure `path` is untouched.  A path that is not a regular
+ * file (device, FIFO, /dev/stdout) is written in place and never removed
+ * (atrbvh_save(3)). */
 ATRBVH_API atrbvh_status atrbvh_save(const atrbvh_bvh *bvh, const char *path,
                                      atrbvh_error *error);
 ATRBVH_API atrbvh_status atrbvh_load(const char *path, atrbvh_bvh **out,

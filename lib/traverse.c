@@ -33,9 +33,10 @@
  *    ray falls through a closed mesh.  A ray lying in a triangle's plane
  *    (determinant 0) does not hit it.
  *
- *  - Closest hit: t in (tmin, tmax], t finite; equal t goes to the lower
- *    primitive index, so the result does not depend on traversal order.
- *    Any hit: t in [tmin, tmax].
+ *  - Both queries accept t in the closed interval [tmin, tmax], t finite
+ *    (a hit exactly at tmin counts, as in Embree).  Closest hit: equal t
+ *    goes to the lower primitive index, so the result does not depend on
+ *    traversal order.
  *
  *  - Box primitives are surfaces: the ray hits a box where it enters it and,
  *    when the origin is inside, where it leaves it (u = v = 0).
@@ -123,6 +124,8 @@ static void closest(const atrbvh_trav_scene *s, const atrbvh_ray *ray,
                         &hit->t, &hit->u, &hit->v, &hit->primitive);
 }
 
+/* The single-ray calls make the batch calls' checks (one ray, the output
+ * pointer, threads 0), with no error to fill: a failed check is a miss. */
 int atrbvh_intersect(const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
                      const atrbvh_ray *ray, atrbvh_hit *hit)
 {
@@ -132,7 +135,9 @@ int atrbvh_intersect(const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
         hit->u = hit->v = 0.0f;
         hit->primitive = ATRBVH_NO_HIT;
     }
-    if (!bvh || !geometry || !ray || !hit ||
+    if (!ray || !hit ||
+        atrbvh_i_trav_check(bvh, geometry, ray, 1, hit, 0,
+                            "atrbvh_intersect", NULL) != ATRBVH_OK ||
         !trav_scene(bvh, geometry, &s))
         return 0;
     closest(&s, ray, hit);
@@ -143,7 +148,9 @@ int atrbvh_occluded(const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
                     const atrbvh_ray *ray)
 {
     atrbvh_trav_scene s;
-    if (!bvh || !geometry || !ray ||
+    if (!ray ||
+        atrbvh_i_trav_check(bvh, geometry, ray, 1, ray, 0, "atrbvh_occluded",
+                            NULL) != ATRBVH_OK ||
         !trav_scene(bvh, geometry, &s))
         return 0;
     return atrbvh_trav_any(&s, ray->origin, ray->dir, ray->tmin, ray->tmax);
@@ -172,6 +179,11 @@ atrbvh_status atrbvh_i_trav_check(const atrbvh_bvh *bvh,
     if (threads < 0)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "%s: threads %d is negative", fn, threads);
+    if (threads > ATRBVH_MAX_THREADS)
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "%s: threads %d is above the limit of %d "
+                             "(ATRBVH_MAX_THREADS)",
+                             fn, threads, ATRBVH_MAX_THREADS);
     if (g->type != ATRBVH_GEOMETRY_TRIANGLES &&
         g->type != ATRBVH_GEOMETRY_BOXES)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,

@@ -5,7 +5,8 @@
  * direction components, axis-aligned rays through vertices, rays aimed at
  * shared vertices and edge midpoints, clipped and degenerate rays, over
  * triangle soups, the builtin sphere and city, strided indexed geometry
- * and boxes, with collapsed and binary trees.  The error paths.  Every
+ * and boxes, with collapsed and binary trees.  One closed interval
+ * [tmin, tmax] for closest and any hit, on both.  The error paths.  Every
  * test skips, saying so, when no OpenCL device (or no OpenCL support) is
  * there.
  */
@@ -417,6 +418,91 @@ START_TEST(boxes)
 }
 END_TEST
 
+/* One interval on both backends: rays from the origin along +z meet a
+ * triangle and a box face at exactly t = 1 (the box is left at t = 2);
+ * tmin and tmax at, and one ulp past, those distances.  The device's
+ * answers equal the CPU's bit for bit and the expected ones: a hit exactly
+ * at tmin or tmax counts for closest and any hit alike. */
+START_TEST(closed_interval)
+{
+    static const float tris[] = {-1, -1, 1, 1, -1, 1, 0, 1, 1,
+                                 5, 5, 5, 6, 5, 5, 5, 6, 5};
+    static const float bxs[] = {-1, -1, 1, 1, 1, 2, 5, 5, 5, 6, 6, 6};
+    const float a1 = nextafterf(1.0f, 2.0f), b1 = nextafterf(1.0f, 0.0f);
+    const float a2 = nextafterf(2.0f, 3.0f);
+    /* tmin, tmax, expected t for the triangle, for the box (-1: miss) */
+    const float cases[][4] = {
+        {1.0f, INFINITY, 1.0f, 1.0f}, {0.0f, 1.0f, 1.0f, 1.0f},
+        {1.0f, 1.0f, 1.0f, 1.0f},     {a1, INFINITY, -1.0f, 2.0f},
+        {0.0f, b1, -1.0f, -1.0f},     {2.0f, INFINITY, -1.0f, 2.0f},
+        {a2, INFINITY, -1.0f, -1.0f}, {0.0f, INFINITY, 1.0f, 1.0f},
+    };
+    enum { N = sizeof cases / sizeof *cases };
+    atrbvh_geometry gs[2];
+    int which;
+    REQUIRE_DEVICE();
+    gs[0] = atrbvh_geometry_triangles(tris, 6, NULL, 2);
+    gs[1] = atrbvh_geometry_boxes(bxs, 2);
+    for (which = 0; which < 2; which++) {
+        atrbvh_bvh *b = build(&gs[which], ATRBVH_METHOD_LBVH, 0,
+                              ATRBVH_BACKEND_CPU);
+        atrbvh_ray rays[N];
+        atrbvh_hit hc[N], hd[N];
+        uint8_t oc[N], od[N];
+        atrbvh_error e;
+        size_t i;
+        for (i = 0; i < N; i++) {
+            atrbvh_ray r = {{0, 0, 0}, {0, 0, 1}, 0, 0};
+            r.tmin = cases[i][0];
+            r.tmax = cases[i][1];
+            rays[i] = r;
+        }
+        ck_assert_int_eq(atrbvh_intersect_batch(b, &gs[which], rays, N, hc, 1,
+                                                &e),
+                         ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_occluded_batch(b, &gs[which], rays, N, oc, 1,
+                                               &e),
+                         ATRBVH_OK);
+        ck_assert_msg(atrbvh_intersect_batch_device(b, &gs[which], rays, N, hd,
+                                                    NULL, NULL, &e) ==
+                          ATRBVH_OK,
+                      "%s", e.text);
+        ck_assert_msg(atrbvh_occluded_batch_device(b, &gs[which], rays, N, od,
+                                                   NULL, NULL, &e) ==
+                          ATRBVH_OK,
+                      "%s", e.text);
+        for (i = 0; i < N; i++) {
+            float want = cases[i][2 + which];
+            ck_assert_msg(hd[i].primitive == hc[i].primitive &&
+                              fbits(hd[i].t) == fbits(hc[i].t) &&
+                              od[i] == oc[i],
+                          "%s case %zu: cpu %lu t %a occ %d, opencl %lu t %a "
+                          "occ %d",
+                          which ? "box" : "triangle", i,
+                          (unsigned long)hc[i].primitive, (double)hc[i].t,
+                          oc[i], (unsigned long)hd[i].primitive,
+                          (double)hd[i].t, od[i]);
+            if (want < 0.0f) {
+                ck_assert_msg(hd[i].primitive == ATRBVH_NO_HIT && od[i] == 0,
+                              "%s case %zu: a hit (t %a) outside [%a, %a]",
+                              which ? "box" : "triangle", i, (double)hd[i].t,
+                              (double)cases[i][0], (double)cases[i][1]);
+            } else {
+                ck_assert_msg(hd[i].primitive == 0 && hd[i].t == want &&
+                                  od[i] == 1,
+                              "%s case %zu: prim %lu t %a occ %d, expected t "
+                              "%a in [%a, %a]",
+                              which ? "box" : "triangle", i,
+                              (unsigned long)hd[i].primitive, (double)hd[i].t,
+                              od[i], (double)want, (double)cases[i][0],
+                              (double)cases[i][1]);
+            }
+        }
+        atrbvh_bvh_free(b);
+    }
+}
+END_TEST
+
 START_TEST(errors)
 {
     static const float box[6] = {0, 0, 0, 1, 1, 1};
@@ -452,6 +538,14 @@ START_TEST(errors)
     ck_assert_int_eq(atrbvh_intersect_batch_device(b, &bad, &r, 1, &h, NULL,
                                                    NULL, &e),
                      ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_int_eq(atrbvh_occluded_batch_device(b, &bad, &r, 1, &o, NULL,
+                                                  NULL, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_msg(strstr(e.text, "primitives"), "%s", e.text);
+    /* the single calls make the same check: a miss, not a read */
+    ck_assert_int_eq(atrbvh_intersect(b, &bad, &r, &h), 0);
+    ck_assert_uint_eq(h.primitive, ATRBVH_NO_HIT);
+    ck_assert_int_eq(atrbvh_occluded(b, &bad, &r), 0);
     st = atrbvh_intersect_batch_device(b, &g, &r, 1, &h, NULL, NULL, &e);
     if (!device_available()) {
         ck_assert_msg(st == ATRBVH_ERR_UNSUPPORTED, "status %d: %s", (int)st,
@@ -491,6 +585,7 @@ static Suite *clrays_suite(void)
     tcase_add_test(tc, strided_and_device_built);
     tcase_add_test(tc, boxes);
     tcase_add_test(tc, large_batch);
+    tcase_add_test(tc, closed_interval);
     tcase_set_timeout(tc, 240);
     suite_add_tcase(s, tc);
     tc = tcase_create("errors");

@@ -15,13 +15,31 @@
  *  - A hand-made tree 1000 levels deep loads, and rays through it (the
  *    traversal's stack overflows into its fallback) give the same hits as
  *    the library's own build of the same triangles.
+ *  - Nothing is lost (atrbvh_save): a failing write (full file system: a
+ *    64 KiB tmpfs when root, RLIMIT_FSIZE for any user; a private copy of
+ *    /dev/full; a symbolic link to /dev/full or /dev/stdout; a failing
+ *    allocation) leaves the existing target byte for byte and no temporary
+ *    file; devices, FIFOs and links to them are written in place and never
+ *    removed; a link to a regular file stays a link; the replaced file
+ *    keeps its mode.
  */
+#define _GNU_SOURCE /* mkdtemp, mknod, mount, setrlimit */
 #include <check.h>
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/types.h>
 #include <unistd.h>
+#ifdef __linux__
+#include <sys/mount.h>
+#endif
 
 #include "testutil.h"
 
@@ -793,6 +811,322 @@ START_TEST(deep_tree_traversal)
 }
 END_TEST
 
+/* ------------------------------------------------------- nothing lost */
+static char *make_temp_dir(void)
+{
+    const char *base = getenv("ATRBVH_BUILDDIR");
+    char *d = malloc(600);
+    ck_assert_ptr_nonnull(d);
+    snprintf(d, 600, "%s/test_io_safe_XXXXXX", base && *base ? base : ".");
+    ck_assert_msg(mkdtemp(d) != NULL, "mkdtemp %s: %s", d, strerror(errno));
+    return d;
+}
+
+/* Every name in `dir` other than . and .., as one string "a b c ". */
+static void list_dir(const char *dir, char *out, size_t len)
+{
+    DIR *dp = opendir(dir);
+    struct dirent *de;
+    size_t used = 0;
+    out[0] = '\0';
+    ck_assert_ptr_nonnull(dp);
+    while ((de = readdir(dp)) != NULL) {
+        if (!strcmp(de->d_name, ".") || !strcmp(de->d_name, ".."))
+            continue;
+        used += (size_t)snprintf(out + used, used < len ? len - used : 0,
+                                 "%s ", de->d_name);
+    }
+    closedir(dp);
+}
+
+static void write_bytes(const char *path, const unsigned char *d, size_t n)
+{
+    FILE *f = fopen(path, "wb");
+    ck_assert_ptr_nonnull(f);
+    ck_assert_uint_eq(fwrite(d, 1, n, f), n);
+    ck_assert_int_eq(fclose(f), 0);
+}
+
+/* 1 when `path` holds exactly n bytes d. */
+static int holds(const char *path, const unsigned char *d, size_t n)
+{
+    FILE *f = fopen(path, "rb");
+    unsigned char *buf;
+    size_t got;
+    int same;
+    if (!f)
+        return 0;
+    buf = malloc(n + 1);
+    ck_assert_ptr_nonnull(buf);
+    got = fread(buf, 1, n + 1, f);
+    fclose(f);
+    same = got == n && memcmp(buf, d, n) == 0;
+    free(buf);
+    return same;
+}
+
+/* A big BVH (over 64 KiB as a file) and a small one's file image. */
+static atrbvh_bvh *big_and_small(float **v, unsigned char **small,
+                                 size_t *small_n)
+{
+    atrbvh_geometry g, g2;
+    float *v2;
+    atrbvh_bvh *big = build_soup(4000, 21, 0, v, &g);
+    atrbvh_bvh *b2 = build_soup(20, 22, 0, &v2, &g2);
+    save_mem(b2, small, small_n);
+    ck_assert_uint_lt(*small_n, 4096);
+    atrbvh_bvh_free(b2);
+    free(v2);
+    return big;
+}
+
+START_TEST(save_full_disk_keeps_target)
+{
+    float *v;
+    unsigned char *small, *bigimg;
+    size_t small_n, big_n;
+    atrbvh_bvh *big = big_and_small(&v, &small, &small_n);
+    char *dir = make_temp_dir(), path[700], names[1024];
+    atrbvh_error e;
+    int mounted = 0;
+    save_mem(big, &bigimg, &big_n);
+    ck_assert_uint_gt(big_n, 64 * 1024);
+#ifdef __linux__
+    mounted = mount("tmpfs", dir, "tmpfs", 0, "size=64k") == 0;
+#endif
+    snprintf(path, sizeof path, "%s/scene.bvh", dir);
+    write_bytes(path, small, small_n);
+    if (mounted) {
+        /* a real full file system; unmounted before asserting, so that a
+         * failure leaves no mount behind */
+        atrbvh_status st = atrbvh_save(big, path, &e);
+        int named = strstr(e.text, path) != NULL;
+        int kept = holds(path, small, small_n);
+        list_dir(dir, names, sizeof names);
+        remove(path);
+#ifdef __linux__
+        ck_assert_int_eq(umount(dir), 0);
+#endif
+        ck_assert_int_eq(st, ATRBVH_ERR_IO);
+        ck_assert_msg(named, "%s", e.text);
+        ck_assert_msg(kept, "the existing file was lost or changed");
+        ck_assert_str_eq(names, "scene.bvh ");
+        write_bytes(path, small, small_n);
+    }
+    {
+        /* a file size limit (any user): writes past 32 KiB fail (EFBIG) */
+        struct rlimit old, lim;
+        void (*prev)(int) = signal(SIGXFSZ, SIG_IGN);
+        ck_assert_int_eq(getrlimit(RLIMIT_FSIZE, &old), 0);
+        lim = old;
+        lim.rlim_cur = 32 * 1024;
+        ck_assert_int_eq(setrlimit(RLIMIT_FSIZE, &lim), 0);
+        ck_assert_int_eq(atrbvh_save(big, path, &e), ATRBVH_ERR_IO);
+        ck_assert_int_eq(setrlimit(RLIMIT_FSIZE, &old), 0);
+        signal(SIGXFSZ, prev);
+        ck_assert_msg(strstr(e.text, path) != NULL, "%s", e.text);
+        ck_assert_msg(holds(path, small, small_n),
+                      "the existing file was lost or changed");
+        list_dir(dir, names, sizeof names);
+        ck_assert_str_eq(names, "scene.bvh ");
+    }
+    remove(path);
+    /* with room, the same save replaces the file whole */
+    write_bytes(path, small, small_n);
+    ck_assert_int_eq(chmod(path, 0640), 0);
+    ck_assert_int_eq(atrbvh_save(big, path, &e), ATRBVH_OK);
+    ck_assert(holds(path, bigimg, big_n));
+    {
+        struct stat st;
+        ck_assert_int_eq(stat(path, &st), 0);
+        ck_assert_uint_eq(st.st_mode & 07777, 0640); /* mode kept */
+    }
+    list_dir(dir, names, sizeof names);
+    ck_assert_str_eq(names, "scene.bvh ");
+    remove(path);
+    ck_assert_int_eq(rmdir(dir), 0);
+    atrbvh_bvh_free(big);
+    free(small);
+    free(bigimg);
+    free(dir);
+    free(v);
+}
+END_TEST
+
+START_TEST(save_devices_never_removed)
+{
+    float *v;
+    unsigned char *small;
+    size_t small_n;
+    atrbvh_bvh *big = big_and_small(&v, &small, &small_n);
+    char *dir = make_temp_dir(), path[700], link[700], names[1024];
+    atrbvh_error e;
+    struct stat st;
+    /* (a system without /dev/full or /dev/stdout skips those parts) */
+    int have_full = stat("/dev/full", &st) == 0 && S_ISCHR(st.st_mode);
+    int have_stdout = lstat("/dev/stdout", &st) == 0;
+    if (!have_full || !have_stdout)
+        fprintf(stderr, "save_devices_never_removed: no /dev/%s: skipped "
+                "in part\n", have_full ? "stdout" : "full");
+    /* a symbolic link to /dev/full (any user): the write fails, the link
+     * and the device stay */
+    snprintf(link, sizeof link, "%s/full-link", dir);
+    if (have_full) {
+    ck_assert_int_eq(symlink("/dev/full", link), 0);
+    ck_assert_int_eq(atrbvh_save(big, link, &e), ATRBVH_ERR_IO);
+    ck_assert_msg(strstr(e.text, link) != NULL, "%s", e.text);
+    ck_assert_int_eq(lstat(link, &st), 0);
+    ck_assert(S_ISLNK(st.st_mode));
+    ck_assert_int_eq(stat("/dev/full", &st), 0);
+    ck_assert(S_ISCHR(st.st_mode));
+    remove(link);
+    /* a private device node (root only): a copy of /dev/full */
+    snprintf(path, sizeof path, "%s/full-node", dir);
+    if (mknod(path, S_IFCHR | 0600, st.st_rdev) == 0) {
+        ck_assert_int_eq(atrbvh_save(big, path, &e), ATRBVH_ERR_IO);
+        ck_assert_int_eq(lstat(path, &st), 0);
+        ck_assert_msg(S_ISCHR(st.st_mode), "the device node was replaced");
+        remove(path);
+    }
+    }
+    /* a symbolic link to /dev/stdout, stdout being /dev/full: it fails and
+     * the link stays */
+    if (have_full && have_stdout) {
+        int saved = dup(1), full = open("/dev/full", O_WRONLY);
+        ck_assert_int_ge(saved, 0);
+        ck_assert_int_ge(full, 0);
+        snprintf(link, sizeof link, "%s/stdout-link", dir);
+        ck_assert_int_eq(symlink("/dev/stdout", link), 0);
+        fflush(stdout);
+        ck_assert_int_eq(dup2(full, 1), 1);
+        ck_assert_int_eq(atrbvh_save(big, link, &e), ATRBVH_ERR_IO);
+        ck_assert_int_eq(dup2(saved, 1), 1);
+        close(saved);
+        close(full);
+        ck_assert_int_eq(lstat(link, &st), 0);
+        ck_assert(S_ISLNK(st.st_mode));
+        ck_assert_int_eq(lstat("/dev/stdout", &st), 0);
+    }
+    /* ... stdout being a regular file the caller opened: written in place
+     * (appended after what is there), the file and link stay */
+    if (have_stdout) {
+        int saved = dup(1), fd;
+        unsigned char *img;
+        size_t n;
+        snprintf(path, sizeof path, "%s/stdout.txt", dir);
+        fd = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        ck_assert_int_ge(fd, 0);
+        ck_assert_int_eq(write(fd, "head", 4), 4);
+        fflush(stdout);
+        ck_assert_int_eq(dup2(fd, 1), 1);
+        ck_assert_int_eq(atrbvh_save(big, link, &e), ATRBVH_OK);
+        ck_assert_int_eq(dup2(saved, 1), 1);
+        close(saved);
+        close(fd);
+        save_mem(big, &img, &n);
+        img = realloc(img, n + 4);
+        memmove(img + 4, img, n);
+        memcpy(img, "head", 4);
+        ck_assert_msg(holds(path, img, n + 4),
+                      "not written in place after the existing bytes");
+        free(img);
+        remove(path);
+        remove(link);
+    }
+    /* a FIFO: written in place, still a FIFO */
+    snprintf(path, sizeof path, "%s/fifo", dir);
+    ck_assert_int_eq(mkfifo(path, 0600), 0);
+    {
+        int rd = open(path, O_RDONLY | O_NONBLOCK);
+        atrbvh_geometry g;
+        float *v3;
+        atrbvh_bvh *tiny = build_soup(20, 22, 0, &v3, &g);
+        unsigned char *img, buf[8192];
+        size_t n;
+        ck_assert_int_ge(rd, 0);
+        save_mem(tiny, &img, &n);
+        ck_assert_uint_lt(n, sizeof buf);
+        ck_assert_int_eq(atrbvh_save(tiny, path, &e), ATRBVH_OK);
+        ck_assert_int_eq(read(rd, buf, sizeof buf), (ssize_t)n);
+        ck_assert(memcmp(buf, img, n) == 0);
+        close(rd);
+        ck_assert_int_eq(lstat(path, &st), 0);
+        ck_assert(S_ISFIFO(st.st_mode));
+        remove(path);
+        atrbvh_bvh_free(tiny);
+        free(img);
+        free(v3);
+    }
+    /* a directory is refused and stays */
+    snprintf(path, sizeof path, "%s/sub", dir);
+    ck_assert_int_eq(mkdir(path, 0700), 0);
+    ck_assert_int_eq(atrbvh_save(big, path, &e), ATRBVH_ERR_IO);
+    ck_assert_int_eq(rmdir(path), 0);
+    list_dir(dir, names, sizeof names);
+    ck_assert_str_eq(names, "");
+    ck_assert_int_eq(rmdir(dir), 0);
+    atrbvh_bvh_free(big);
+    free(small);
+    free(dir);
+    free(v);
+}
+END_TEST
+
+/* Allocation k fails: whatever the outcome, the target holds either its
+ * old bytes or the new ones, and no temporary file is left. */
+static long fail_at, alloc_count;
+static void *failing_malloc(size_t n)
+{
+    if (alloc_count++ == fail_at)
+        return NULL;
+    return malloc(n);
+}
+
+START_TEST(save_allocation_failures)
+{
+    float *v;
+    unsigned char *small, *bigimg;
+    size_t small_n, big_n;
+    atrbvh_bvh *big = big_and_small(&v, &small, &small_n);
+    char *dir = make_temp_dir(), path[700], link[700], names[1024];
+    atrbvh_error e;
+    atrbvh_status s = ATRBVH_ERR_NOMEM;
+    save_mem(big, &bigimg, &big_n);
+    snprintf(path, sizeof path, "%s/t.bvh", dir);
+    snprintf(link, sizeof link, "%s/link.bvh", dir);
+    ck_assert_int_eq(symlink("t.bvh", link), 0);
+    for (fail_at = 0;; fail_at++) {
+        write_bytes(path, small, small_n);
+        alloc_count = 0;
+        atrbvh_set_allocator(failing_malloc, free);
+        s = atrbvh_save(big, link, &e);
+        atrbvh_set_allocator(NULL, NULL);
+        ck_assert_msg(s == ATRBVH_OK || s == ATRBVH_ERR_NOMEM,
+                      "allocation %ld failing: %d %s", fail_at, (int)s,
+                      e.text);
+        ck_assert(holds(path, s == ATRBVH_OK ? bigimg : small,
+                        s == ATRBVH_OK ? big_n : small_n));
+        list_dir(dir, names, sizeof names);
+        ck_assert_msg(!strcmp(names, "t.bvh link.bvh ") ||
+                          !strcmp(names, "link.bvh t.bvh "),
+                      "after allocation %ld failed: %s", fail_at, names);
+        if (alloc_count <= fail_at) { /* none failed: done */
+            ck_assert_int_eq(s, ATRBVH_OK);
+            break;
+        }
+        ck_assert_int_lt(fail_at, 100);
+    }
+    remove(link);
+    remove(path);
+    ck_assert_int_eq(rmdir(dir), 0);
+    atrbvh_bvh_free(big);
+    free(small);
+    free(bigimg);
+    free(dir);
+    free(v);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("io");
@@ -808,6 +1142,12 @@ static Suite *suite(void)
     tcase_add_test(t, huge_counts);
     tcase_add_test(t, structural_errors);
     tcase_set_timeout(t, 300);
+    suite_add_tcase(s, t);
+    t = tcase_create("nothing lost");
+    tcase_add_test(t, save_full_disk_keeps_target);
+    tcase_add_test(t, save_devices_never_removed);
+    tcase_add_test(t, save_allocation_failures);
+    tcase_set_timeout(t, 120);
     suite_add_tcase(s, t);
     t = tcase_create("deep");
     tcase_add_test(t, deep_tree_traversal);

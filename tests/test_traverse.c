@@ -17,6 +17,13 @@
  *    rays onto the vertices and edges of a height field.
  *  - Batches equal single rays, bit for bit, for 1, 2 and 4 threads.
  *  - Box primitives; batch argument errors.
+ *  - One interval for both queries: a hit exactly at tmin or at tmax counts
+ *    for intersect and occluded alike (triangles and boxes; a box entered
+ *    exactly at tmin is hit there, not where the ray leaves it).
+ *  - The single-ray calls check the geometry as the batch calls do: fewer
+ *    primitives than the BVH was built over is a miss, never a wrong hit.
+ *  - threads above ATRBVH_MAX_THREADS: ATRBVH_ERR_INVALID_ARGUMENT from the
+ *    build and from both batch calls.
  */
 #include <check.h>
 #include <math.h>
@@ -1023,6 +1030,162 @@ START_TEST(ties_lower_index)
 }
 END_TEST
 
+/* A triangle in the plane z = 1 and a box [-1,1]^2 x [1,2]; rays from the
+ * origin along +z meet them at exactly t = 1 (and leave the box at 2). */
+static const float interval_tris[] = {-1, -1, 1, 1, -1, 1, 0, 1, 1,
+                                      5, 5, 5, 6, 5, 5, 5, 6, 5};
+static const float interval_boxes[] = {-1, -1, 1, 1, 1, 2,
+                                       5, 5, 5, 6, 6, 6};
+
+/* Both queries on one ray, single and batch: the closest t (or -1 for a
+ * miss) and whether occluded agrees with it. */
+static float interval_query(const atrbvh_bvh *b, const atrbvh_geometry *g,
+                            float tmin, float tmax)
+{
+    atrbvh_ray ray = {{0, 0, 0}, {0, 0, 1}, 0, 0};
+    atrbvh_hit h, hb;
+    uint8_t ob = 7;
+    atrbvh_error e;
+    int hit, occ;
+    ray.tmin = tmin;
+    ray.tmax = tmax;
+    hit = atrbvh_intersect(b, g, &ray, &h);
+    occ = atrbvh_occluded(b, g, &ray);
+    ck_assert_int_eq(atrbvh_intersect_batch(b, g, &ray, 1, &hb, 1, &e),
+                     ATRBVH_OK);
+    ck_assert_int_eq(atrbvh_occluded_batch(b, g, &ray, 1, &ob, 1, &e),
+                     ATRBVH_OK);
+    ck_assert_uint_eq(hb.primitive, h.primitive);
+    ck_assert(hb.t == h.t);
+    ck_assert_int_eq(ob, occ != 0);
+    ck_assert_msg((hit != 0) == (occ != 0),
+                  "[%a, %a]: intersect %d but occluded %d", (double)tmin,
+                  (double)tmax, hit, occ);
+    if (!hit)
+        return -1.0f;
+    ck_assert_uint_eq(h.primitive, 0);
+    return h.t;
+}
+
+START_TEST(closed_interval)
+{
+    atrbvh_geometry tg = atrbvh_geometry_triangles(interval_tris, 6, NULL, 2);
+    atrbvh_geometry bg = atrbvh_geometry_boxes(interval_boxes, 2);
+    config c = {ATRBVH_METHOD_LBVH, 0, 0};
+    atrbvh_bvh *tb = build_config(&tg, &c), *bb = build_config(&bg, &c);
+    const float above1 = nextafterf(1.0f, 2.0f), below1 = nextafterf(1.0f, 0.0f);
+    const float above2 = nextafterf(2.0f, 3.0f);
+    /* triangle at t = 1 */
+    ck_assert(interval_query(tb, &tg, 1.0f, INFINITY) == 1.0f);  /* tmin */
+    ck_assert(interval_query(tb, &tg, 0.0f, 1.0f) == 1.0f);      /* tmax */
+    ck_assert(interval_query(tb, &tg, 1.0f, 1.0f) == 1.0f);      /* both */
+    ck_assert(interval_query(tb, &tg, above1, INFINITY) == -1.0f);
+    ck_assert(interval_query(tb, &tg, 0.0f, below1) == -1.0f);
+    /* box entered at t = 1, left at t = 2 */
+    ck_assert(interval_query(bb, &bg, 0.0f, INFINITY) == 1.0f);
+    ck_assert(interval_query(bb, &bg, 1.0f, INFINITY) == 1.0f); /* entry */
+    ck_assert(interval_query(bb, &bg, above1, INFINITY) == 2.0f); /* exit */
+    ck_assert(interval_query(bb, &bg, 2.0f, INFINITY) == 2.0f);
+    ck_assert(interval_query(bb, &bg, above2, INFINITY) == -1.0f);
+    ck_assert(interval_query(bb, &bg, 0.0f, 1.0f) == 1.0f);
+    ck_assert(interval_query(bb, &bg, 0.0f, below1) == -1.0f);
+    atrbvh_bvh_free(tb);
+    atrbvh_bvh_free(bb);
+}
+END_TEST
+
+/* The geometry has fewer primitives than the BVH was built over: the
+ * batch calls refuse it, the single calls miss (they used to return a hit
+ * on whichever primitive happened to remain). */
+START_TEST(single_call_checks)
+{
+    mesh m = soup(50, 41, 1.0f, 0.0f);
+    atrbvh_geometry g = mesh_geometry(&m), small = g;
+    atrbvh_geometry bg = atrbvh_geometry_boxes(interval_boxes, 2), bsmall;
+    config c = {ATRBVH_METHOD_LBVH, 1, 0};
+    atrbvh_bvh *b = build_config(&g, &c), *bb = build_config(&bg, &c);
+    atrbvh_ray ray;
+    atrbvh_hit h;
+    atrbvh_error e;
+    size_t k, hits_full = 0;
+    small.primitive_count = 49;
+    bsmall = bg;
+    bsmall.primitive_count = 1;
+    /* rays at the centre of each triangle, from below */
+    for (k = 0; k < 50; k++) {
+        const float *v = m.v + 9 * k;
+        int a;
+        for (a = 0; a < 3; a++) {
+            ray.origin[a] = (v[a] + v[3 + a] + v[6 + a]) / 3.0f -
+                            (a == 2 ? 10.0f : 0.0f);
+            ray.dir[a] = a == 2 ? 1.0f : 0.0f;
+        }
+        ray.tmin = 0.0f;
+        ray.tmax = INFINITY;
+        hits_full += atrbvh_intersect(b, &g, &ray, &h) != 0;
+        ck_assert_int_eq(atrbvh_intersect(b, &small, &ray, &h), 0);
+        ck_assert_uint_eq(h.primitive, ATRBVH_NO_HIT);
+        ck_assert(h.t == ray.tmax);
+        ck_assert_int_eq(atrbvh_occluded(b, &small, &ray), 0);
+    }
+    ck_assert_uint_eq(hits_full, 50);
+    ck_assert_int_eq(atrbvh_intersect_batch(b, &small, &ray, 1, &h, 0, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    /* boxes: the remaining box 0 is hit by this ray, but the geometry is
+     * not the one the BVH was built from */
+    {
+        atrbvh_ray r = {{0, 0, 0}, {0, 0, 1}, 0.0f, INFINITY};
+        ck_assert_int_eq(atrbvh_intersect(bb, &bg, &r, &h), 1);
+        ck_assert_int_eq(atrbvh_intersect(bb, &bsmall, &r, &h), 0);
+        ck_assert_int_eq(atrbvh_occluded(bb, &bsmall, &r), 0);
+        /* an unusable geometry: a stride that is not a multiple of 4 */
+        bsmall = bg;
+        bsmall.box_stride = 26;
+        ck_assert_int_eq(atrbvh_intersect(bb, &bsmall, &r, &h), 0);
+        ck_assert_int_eq(atrbvh_occluded(bb, &bsmall, &r), 0);
+    }
+    atrbvh_bvh_free(b);
+    atrbvh_bvh_free(bb);
+    mesh_free(&m);
+}
+END_TEST
+
+START_TEST(threads_limit)
+{
+    atrbvh_geometry bg = atrbvh_geometry_boxes(interval_boxes, 2);
+    atrbvh_build_options o;
+    atrbvh_bvh *b = NULL;
+    atrbvh_ray r = {{0, 0, 0}, {0, 0, 1}, 0.0f, INFINITY};
+    atrbvh_hit h;
+    uint8_t occ;
+    atrbvh_error e;
+    atrbvh_build_options_init(&o);
+    o.threads = ATRBVH_MAX_THREADS + 1;
+    memset(&e, 0, sizeof e);
+    ck_assert_int_eq(atrbvh_build(&bg, &o, &b, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_ptr_null(b);
+    ck_assert_msg(strstr(e.text, "threads") != NULL, "%s", e.text);
+    o.threads = 2147483647;
+    ck_assert_int_eq(atrbvh_build(&bg, &o, &b, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    o.threads = 2;
+    ck_assert_int_eq(atrbvh_build(&bg, &o, &b, &e), ATRBVH_OK);
+    memset(&e, 0, sizeof e);
+    ck_assert_int_eq(atrbvh_intersect_batch(b, &bg, &r, 1, &h,
+                                            ATRBVH_MAX_THREADS + 1, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_msg(strstr(e.text, "threads") != NULL, "%s", e.text);
+    ck_assert_int_eq(atrbvh_occluded_batch(b, &bg, &r, 1, &occ, 2147483647,
+                                           &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_int_eq(atrbvh_occluded_batch(b, &bg, &r, 1, &occ, 2, &e),
+                     ATRBVH_OK);
+    ck_assert_uint_eq(occ, 1);
+    atrbvh_bvh_free(b);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("traverse");
@@ -1041,6 +1204,9 @@ static Suite *suite(void)
     tcase_add_test(t, batch_equals_single);
     tcase_add_test(t, batch_errors);
     tcase_add_test(t, ties_lower_index);
+    tcase_add_test(t, closed_interval);
+    tcase_add_test(t, single_call_checks);
+    tcase_add_test(t, threads_limit);
     tcase_set_timeout(t, 300);
     suite_add_tcase(s, t);
     return s;

@@ -6,7 +6,9 @@
 #include "config.h"
 
 #include "cli.h"
+#include "outfile.h"
 
+#include <errno.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
@@ -273,6 +275,39 @@ static int on_progress(const char *stage, double fraction, void *user)
 }
 
 /* ----------------------------------------------------- load and build */
+/* Through outfile.h (a temporary file renamed over the target when
+ * complete; devices, FIFOs and /dev/stdout written in place). */
+static int save_bvh(const atrbvh_bvh *bvh, const char *path)
+{
+    void *data = NULL;
+    size_t size = 0;
+    atrbvh_error e;
+    atrbvh_status st;
+    cli_out out;
+    FILE *f;
+    memset(&e, 0, sizeof e);
+    st = atrbvh_save_memory(bvh, &data, &size, &e);
+    if (st != ATRBVH_OK) {
+        cli_error("%s: %s", path, e.text[0] ? e.text : atrbvh_strerror(st));
+        return -1;
+    }
+    f = cli_out_open(path, &out);
+    if (!f) {
+        atrbvh_free(data);
+        return -1;
+    }
+    errno = 0;
+    if (fwrite(data, 1, size, f) != size) {
+        int why = errno ? errno : EIO;
+        cli_out_abort(&out);
+        atrbvh_free(data);
+        cli_error("%s: write failed: %s", path, strerror(why));
+        return -1;
+    }
+    atrbvh_free(data);
+    return cli_out_commit(&out);
+}
+
 int cli_load_and_build(const cli_build_args *a, cli_built *b)
 {
     char err[512];
@@ -282,6 +317,8 @@ int cli_load_and_build(const cli_build_args *a, cli_built *b)
     double t0;
     atrbvh_status st;
     memset(b, 0, sizeof *b);
+    if (a->output && cli_out_usable(a->output, a->scene) != 0)
+        return CLI_FAIL;
     t0 = cli_now_ms();
     if (scene_load(a->scene, &b->sc, err, sizeof err) != 0) {
         cli_error("%s", err);
@@ -331,19 +368,8 @@ int cli_load_and_build(const cli_build_args *a, cli_built *b)
         return CLI_FAIL;
     }
     atrbvh_bvh_stats(b->bvh, &b->stats);
-    if (a->output) {
-        memset(&e, 0, sizeof e);
-        st = atrbvh_save(b->bvh, a->output, &e);
-        if (st != ATRBVH_OK) {
-            const char *text = e.text[0] ? e.text : atrbvh_strerror(st);
-            /* Name the file once, whether or not the library did. */
-            if (strstr(text, a->output))
-                cli_error("%s", text);
-            else
-                cli_error("%s: %s", a->output, text);
-            return CLI_FAIL;
-        }
-    }
+    if (a->output && save_bvh(b->bvh, a->output) != 0)
+        return CLI_FAIL;
     return CLI_OK;
 }
 

@@ -13,6 +13,7 @@
 #include "config.h"
 
 #include "cli.h"
+#include "outfile.h"
 #include "rays.h"
 
 #include <float.h>
@@ -77,7 +78,7 @@ static int tri_hit(const scene *sc, uint32_t prim, const atrbvh_ray *r,
     if (v < 0.0 || u + v > 1.0)
         return 0;
     tt = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) * inv;
-    if (!(tt > r->tmin && tt <= *t))
+    if (!(tt >= r->tmin && tt <= *t)) /* [tmin, tmax], as the library */
         return 0;
     *t = (float)tt;
     return 1;
@@ -255,6 +256,9 @@ int cli_render(int argc, char **argv)
                   "found none), so it cannot write PNG");
         return CLI_FAIL;
     }
+    /* before the build: an unwritable PNG or one naming the scene */
+    if (cli_out_usable(output, a.scene) != 0)
+        return CLI_FAIL;
     rc = cli_load_and_build(&a, &b);
     if (rc == CLI_OK) {
         size_t pixels = (size_t)width * height, p;

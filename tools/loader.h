@@ -20,6 +20,13 @@ int scene_parse_ply(const char *path, const unsigned char *data, size_t size,
 int scene_parse_obj(const char *path, const unsigned char *data, size_t size,
                     scene *out, char *err, size_t err_len);
 
+/* Reads a PLY file for scene_parse_ply without trusting it (ply.c): the
+ * header first (bounded), then only as much body as its elements can take;
+ * a regular file whose size cannot match the header is refused before its
+ * body is read.  0 and a malloc'ed *data, or -1 with one line in err. */
+int scene_read_ply(const char *path, unsigned char **data, size_t *size,
+                   char *err, size_t err_len);
+
 /* snprintf into err (when err_len > 0); returns -1 for `return
  * scene_fail(...)`. */
 int scene_fail(char *err, size_t err_len, const char *fmt, ...)
@@ -32,9 +39,10 @@ int scene_fail(char *err, size_t err_len, const char *fmt, ...)
  * growing geometrically; 0 on overflow or out of memory (*p unchanged). */
 int scene_reserve(void **p, size_t *cap, size_t need, size_t elem);
 
-/* A coordinate read as double, as float: values beyond the float range
- * become +-Inf explicitly (a plain conversion would be undefined), NaN stays
- * NaN, so the library reports them as non-finite. */
+/* A coordinate read as double, as float, rounded to nearest: values that
+ * round beyond FLT_MAX become +-Inf explicitly (a plain conversion of an
+ * out-of-range value would be undefined), NaN stays NaN, so the library
+ * reports them as non-finite; values that round to FLT_MAX stay finite. */
 float scene_float(double d);
 
 /* Copies the base name of `path` into name (truncated, always terminated). */

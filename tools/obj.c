@@ -1,8 +1,16 @@
 /*
  * obj.c - Wavefront OBJ reader: `v x y z [w]` and `f a b c ...` with the
  * a, a/b, a/b/c and a//c forms, negative (relative) indices, polygons
- * fan-triangulated.  Every other statement (vn, vt, g, o, s, usemtl, ...) is
- * ignored.  Errors name the file and the line.
+ * fan-triangulated.  The other statements of the OBJ specification (vn,
+ * vt, g, o, s, usemtl, l, p, curves and surfaces, ...) are ignored.  Any
+ * other first word is an error, not ignored: it could be a vertex or face
+ * whose keyword was damaged (a byte-order mark glued to the first "v", say),
+ * and dropping a vertex silently would shift every later index and build
+ * the wrong triangles; with no warning channel, refusing is the only way to
+ * say so.  A UTF-8 byte-order mark at the start of the file is skipped.
+ * Coordinates are rounded to float once, from the decimal (strtof), so
+ * "3.4028235e+38" is FLT_MAX; only values that round to infinity are
+ * infinite.  Errors name the file and the line.
  */
 #include "config.h"
 
@@ -83,10 +91,38 @@ static int parse_float(const char *tok, double *out)
     return end != tok && *end == '\0';
 }
 
+/* A coordinate: rounded to float once, correctly (ERANGE is fine: an
+ * overflow is +-inf, reported by the library as non-finite). */
+static int parse_coordinate(const char *tok, float *out)
+{
+    char *end;
+    *out = strtof(tok, &end);
+    return end != tok && *end == '\0';
+}
+
+/* The statements of the OBJ specification that carry nothing this loader
+ * uses; they are skipped.  Every other keyword but v and f is an error. */
+static const char *const ignored_statements[] = {
+    "vt", "vn", "vp", "cstype", "deg", "bmat", "step", "p", "l", "curv",
+    "curv2", "surf", "parm", "trim", "hole", "scrv", "sp", "end", "con",
+    "g", "s", "mg", "o", "bevel", "c_interp", "d_interp", "lod", "usemtl",
+    "mtllib", "shadow_obj", "trace_obj", "ctech", "stech", "maplib",
+    "usemap", "call", "csh"};
+
+static int ignored_statement(const char *kw)
+{
+    size_t i;
+    for (i = 0; i < sizeof ignored_statements / sizeof *ignored_statements;
+         i++)
+        if (strcmp(kw, ignored_statements[i]) == 0)
+            return 1;
+    return 0;
+}
+
 static int add_vertex(obj *o, const char *s, const char *end)
 {
     char tok[TOKEN_LEN];
-    double c[3];
+    float c[3];
     int k, st;
     float *v;
     for (k = 0; k < 3; k++) {
@@ -94,7 +130,7 @@ static int add_vertex(obj *o, const char *s, const char *end)
             return st ? st
                       : obj_fail(o, "a vertex needs three coordinates, found %d",
                              k);
-        if (!parse_float(tok, &c[k]))
+        if (!parse_coordinate(tok, &c[k]))
             return obj_fail(o, "vertex coordinate \"%s\" is not a number", tok);
     }
     /* An optional w, or the common r g b extension: numbers, ignored. */
@@ -112,7 +148,7 @@ static int add_vertex(obj *o, const char *s, const char *end)
         return obj_fail(o, "out of memory at %zu vertices", o->vertex_count);
     v = o->vertices + o->vertex_count * 3;
     for (k = 0; k < 3; k++)
-        v[k] = scene_float(c[k]);
+        v[k] = c[k];
     o->vertex_count++;
     return 0;
 }
@@ -209,6 +245,8 @@ int scene_parse_obj(const char *path, const unsigned char *data, size_t size,
     o.path = path;
     o.err = err;
     o.err_len = err_len;
+    if (size >= 3 && memcmp(p, "\xef\xbb\xbf", 3) == 0)
+        p += 3; /* a UTF-8 byte-order mark */
     while (p < stop) {
         const char *nl = memchr(p, '\n', (size_t)(stop - p));
         const char *end = nl ? nl : stop, *hash, *s = p;
@@ -223,6 +261,11 @@ int scene_parse_obj(const char *path, const unsigned char *data, size_t size,
                 rc = add_vertex(&o, s, end);
             else if (strcmp(kw, "f") == 0)
                 rc = add_face(&o, s, end);
+            else if (!ignored_statement(kw))
+                rc = obj_fail(&o, "unknown statement \"%.40s\" (not an OBJ "
+                              "keyword; refused rather than skipped, as it "
+                              "could be a damaged vertex or face)",
+                              kw);
         } else {
             rc = st;
         }

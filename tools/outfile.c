@@ -10,6 +10,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -20,6 +21,71 @@
 /* How much of the target's name the temporary file's name repeats (the
  * whole name could exceed NAME_MAX once decorated). */
 #define TMP_BASE_MAX 64
+
+/* ------------------------------------------- cleanup on a fatal signal */
+/* The temporary files being written, so that a signal that ends the
+ * process (Ctrl-C, kill, SIGXFSZ past a file size limit, a lost terminal)
+ * removes them rather than leaving a partial file behind: the handler
+ * unlinks each (async-signal-safe), restores the default action and
+ * raises the signal again. */
+#define MAX_ACTIVE 16
+static char *volatile active[MAX_ACTIVE];
+static int handlers_installed;
+static const int fatal_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT,
+                                    SIGXFSZ};
+
+static void on_fatal_signal(int sig)
+{
+    int i;
+    for (i = 0; i < MAX_ACTIVE; i++) {
+        char *t = active[i];
+        if (t)
+            unlink(t);
+    }
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void install_handlers(void)
+{
+    size_t i;
+    if (handlers_installed)
+        return;
+    handlers_installed = 1;
+    for (i = 0; i < sizeof fatal_signals / sizeof *fatal_signals; i++) {
+        struct sigaction sa, old;
+        /* A signal the caller ignores (trap '' XFSZ: writes then fail with
+         * EFBIG instead) stays ignored. */
+        if (sigaction(fatal_signals[i], NULL, &old) != 0 ||
+            old.sa_handler == SIG_IGN)
+            continue;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_fatal_signal;
+        sigemptyset(&sa.sa_mask);
+        sigaction(fatal_signals[i], &sa, NULL);
+    }
+}
+
+static void track(char *tmp)
+{
+    int i;
+    install_handlers();
+    for (i = 0; i < MAX_ACTIVE; i++)
+        if (!active[i]) {
+            active[i] = tmp;
+            return;
+        }
+    /* more than MAX_ACTIVE at once: still written, just not cleaned up on
+     * a signal */
+}
+
+static void untrack(const char *tmp)
+{
+    int i;
+    for (i = 0; tmp && i < MAX_ACTIVE; i++)
+        if (active[i] == tmp)
+            active[i] = NULL;
+}
 
 static char *dup_str(const char *s)
 {
@@ -237,8 +303,22 @@ FILE *cli_out_open(const char *path, cli_out *h)
         return NULL;
     }
     if (r.kind == OUT_IN_PLACE) {
-        /* No O_CREAT, no O_TRUNC: it exists and is not a regular file. */
-        fd = open(path, O_WRONLY);
+        /* No O_CREAT, no O_TRUNC: it exists and is not ours to replace.
+         * When it is our stdout (/dev/stdout, or stdout redirected to this
+         * device or FIFO), write through a duplicate of descriptor 1, so
+         * that what the tool prints there and the file share one offset
+         * and come out in order; a regular file reached through /proc (a
+         * redirection) is appended to, never overwritten from byte 0. */
+        struct stat ps, os;
+        fflush(stdout);
+        if (stat(path, &ps) == 0 && fstat(STDOUT_FILENO, &os) == 0 &&
+            ps.st_dev == os.st_dev && ps.st_ino == os.st_ino)
+            fd = dup(STDOUT_FILENO);
+        else
+            fd = open(path, O_WRONLY | (stat(path, &ps) == 0 &&
+                                                S_ISREG(ps.st_mode)
+                                            ? O_APPEND
+                                            : 0));
         if (fd < 0 || !(h->f = fdopen(fd, "wb"))) {
             e = errno;
             if (fd >= 0)
@@ -263,6 +343,7 @@ FILE *cli_out_open(const char *path, cli_out *h)
         cli_out_abort(h);
         return NULL;
     }
+    track(h->tmp);
     /* mkstemp makes 0600: give the file the mode (and, when permitted, the
      * owner) the target has, or a new file's mode. */
     if (r.kind == OUT_REPLACE) {
@@ -285,6 +366,7 @@ FILE *cli_out_open(const char *path, cli_out *h)
 
 static void release(cli_out *h)
 {
+    untrack(h->tmp);
     free(h->name);
     free(h->target);
     free(h->tmp);
@@ -297,6 +379,7 @@ void cli_out_abort(cli_out *h)
         return;
     if (h->f)
         fclose(h->f);
+    untrack(h->tmp);
     if (h->tmp)
         unlink(h->tmp); /* ours: mkstemp made it */
     release(h);
@@ -345,8 +428,13 @@ int cli_out_commit(cli_out *h)
         e = errno;
     if (fclose(f) != 0 && e == 0)
         e = errno ? errno : EIO;
-    if (e == 0 && h->tmp && rename(h->tmp, h->target) != 0)
-        e = errno;
+    if (e == 0 && h->tmp) {
+        /* From here the temporary name is the target's: no longer ours to
+         * remove on a signal. */
+        untrack(h->tmp);
+        if (rename(h->tmp, h->target) != 0)
+            e = errno;
+    }
     if (e != 0) {
         cli_error("%s: write failed: %s", h->name, strerror(e));
         cli_out_abort(h);
@@ -364,4 +452,20 @@ int cli_out_same_file(const char *a, const char *b)
     if (!a || !b || stat(a, &sa) != 0 || stat(b, &sb) != 0)
         return 0;
     return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+int cli_out_usable(const char *output, const char *input)
+{
+    const char *why = NULL;
+    if (input && cli_out_same_file(output, input)) {
+        cli_error("%s: the output is the input '%s'; refusing to overwrite "
+                  "it",
+                  output, input);
+        return -1;
+    }
+    if (cli_out_check(output, &why) != 0) {
+        cli_error("%s: cannot write: %s", output, why);
+        return -1;
+    }
+    return 0;
 }

@@ -12,6 +12,10 @@
  * links), or a symbolic link to one of those - is written in place and is
  * never removed or replaced.  A directory is refused.  "-" has no special
  * meaning (the tool has no such convention): it is a file named "-".
+ * Replacing a file gives the path a new file: other hard links to the old
+ * one keep the old content.  While a temporary file exists, SIGINT,
+ * SIGTERM, SIGHUP, SIGQUIT and SIGXFSZ (unless ignored) remove it before
+ * the process ends (handlers installed at the first cli_out_open).
  *
  * Typical use:
  *
@@ -71,5 +75,10 @@ void cli_out_abort(cli_out *h);
  * symbolic links followed), else 0.  For refusing an output that would
  * replace the input. */
 int cli_out_same_file(const char *a, const char *b);
+
+/* Both checks before a long computation: 0 when `output` can be written
+ * and is not the file `input` (NULL: no input to protect); else -1 after
+ * one error line "atrbvh: OUTPUT: ...". */
+int cli_out_usable(const char *output, const char *input);
 
 #endif

@@ -11,6 +11,26 @@
  * for it, list lengths are checked against the bytes left before they are
  * walked, and every index against the vertex count.  Errors name the file
  * and the header or ASCII line, or the byte offset in binary data.
+ *
+ * Reading (scene_read_ply) is bounded too, so that /dev/zero or a huge
+ * sparse file is refused without being read whole: the header is read
+ * first, at most PLY_HEADER_MAX bytes (a first line that is not "ply" is
+ * refused at once); then the sizes its elements can take, fewest and most,
+ * are computed, a regular file whose size lies outside them is refused
+ * before its body is read (a file too short, only above PLY_SMALL_FILE
+ * bytes: a smaller one is parsed, for an error that names the line or
+ * byte where the data runs out), and no more body than the most (plus
+ * PLY_TRAILING_MAX) is ever read from a stream.  For the most to exist in
+ * ASCII, an item (its line, with any blank lines before it) may hold at
+ * most PLY_ASCII_VALUE_MAX bytes per value plus PLY_ASCII_ITEM_EXTRA.
+ *
+ * A UTF-8 byte-order mark before "ply" is skipped.  Coordinates are
+ * rounded to float correctly (strtof for ASCII float properties, a
+ * correctly rounded conversion for doubles): a value that rounds to
+ * FLT_MAX is finite.  Text after the last element of an ASCII file is an
+ * error rather than ignored (it is most likely data the header's counts
+ * leave out); up to PLY_TRAILING_MAX bytes after the last element of a
+ * binary file are ignored (padding some writers add).
  */
 #include "config.h"
 
@@ -22,6 +42,18 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+
+/* Reading bounds (see the top of the file). */
+#define PLY_HEADER_MAX ((size_t)1 << 20)
+#define PLY_TRAILING_MAX ((uint64_t)65536)
+#define PLY_ASCII_VALUE_MAX ((uint64_t)256)
+#define PLY_ASCII_ITEM_EXTRA ((uint64_t)1024)
+#define PLY_READ_CHUNK ((size_t)65536)
+/* A file at most this large is read even when too short for its header:
+ * the parser then names the line or byte offset where it runs out. */
+#define PLY_SMALL_FILE ((uint64_t)16 << 20)
 
 #define MAX_ELEMENTS 64
 #define MAX_PROPERTIES 256
@@ -74,6 +106,7 @@ typedef struct ply {
     ply_element *elements;
     char *err;
     size_t err_len;
+    int need_more; /* parse_header failed only for want of more bytes */
     /* output */
     float *vertices;
     size_t vertex_count;
@@ -210,20 +243,34 @@ static int parse_header(ply *p)
     int have_format = 0;
     ply_element *cur = NULL;
     p->line = 0;
+    p->need_more = 0;
+    if (p->size >= 3 && memcmp(p->data, "\xef\xbb\xbf", 3) == 0)
+        p->pos = 3; /* a UTF-8 byte-order mark */
+    {
+        /* Whatever has arrived of the first line must begin "ply" (so that
+         * /dev/zero is refused after its first bytes). */
+        size_t have = p->size - p->pos < 3 ? p->size - p->pos : 3;
+        if (have > 0 && memcmp(p->data + p->pos, "ply", have) != 0)
+            return fail_line(p, 1, "not a PLY file (the first line is not "
+                             "\"ply\")");
+    }
     for (;;) {
         size_t start = p->pos, end, len, n;
         const unsigned char *nl;
         p->line++;
         if (start >= p->size) {
+            p->need_more = 1;
             if (p->size == 0)
                 return fail_line(p, 1, "empty file (not a PLY file)");
             return fail_line(p, p->line, "the header ends without "
                              "end_header");
         }
         nl = memchr(p->data + start, '\n', p->size - start);
-        if (!nl)
+        if (!nl) {
+            p->need_more = 1;
             return fail_line(p, p->line, "the header ends without "
                              "end_header");
+        }
         end = (size_t)(nl - p->data);
         p->pos = end + 1;
         len = end - start;
@@ -465,9 +512,16 @@ static int ascii_read(ply *p, ply_type t, ply_value *v)
         v->is_float = 0;
         v->i = (int64_t)x;
     } else {
-        double d = strtod(tok, &end);
         /* ERANGE is fine: overflow gives +-HUGE_VAL (reported later as
-         * non-finite by the library), underflow a tiny value. */
+         * non-finite by the library), underflow a tiny value.  A float
+         * property is rounded to float once, from the decimal (strtof:
+         * "3.4028235e+38" is FLT_MAX, not infinity); a double one to
+         * double, then (scene_float) to float, as in binary files. */
+        double d;
+        if (t == T_F32)
+            d = (double)strtof(tok, &end);
+        else
+            d = strtod(tok, &end);
         if (*end != '\0' || end == tok)
             return fail_at(p, p->pos, "\"%s\" is not a number", tok);
         v->is_float = 1;
@@ -499,6 +553,71 @@ static uint64_t min_item_bytes(const ply *p, const ply_element *e)
     return n;
 }
 
+/* The most items a list with this count type can hold. */
+static uint64_t list_max(ply_type count_type)
+{
+    switch (count_type) {
+    case T_I8: return 127u;
+    case T_U8: return 255u;
+    case T_I16: return 32767u;
+    case T_U16: return 65535u;
+    case T_I32: return 2147483647u;
+    default: return 4294967295u;
+    }
+}
+
+/* a + b and a * b, saturating at UINT64_MAX ("no bound"). */
+static uint64_t sat_add(uint64_t a, uint64_t b)
+{
+    return a > UINT64_MAX - b ? UINT64_MAX : a + b;
+}
+
+static uint64_t sat_mul(uint64_t a, uint64_t b)
+{
+    return a != 0 && b > UINT64_MAX / a ? UINT64_MAX : a * b;
+}
+
+/* The most bytes one item of `e` can take: binary, every list full;
+ * ASCII, PLY_ASCII_VALUE_MAX per value plus PLY_ASCII_ITEM_EXTRA (the
+ * parser enforces it, see read_element). */
+static uint64_t max_item_bytes(const ply *p, const ply_element *e)
+{
+    uint64_t n = 0;
+    size_t k;
+    for (k = 0; k < e->nprops; k++) {
+        const ply_prop *pr = &e->props[k];
+        if (pr->count_type == T_NONE)
+            n = sat_add(n, p->format == F_ASCII ? PLY_ASCII_VALUE_MAX
+                                                : type_size(pr->type));
+        else if (p->format == F_ASCII)
+            n = sat_add(n, sat_mul(sat_add(list_max(pr->count_type), 1),
+                                   PLY_ASCII_VALUE_MAX));
+        else
+            n = sat_add(n, sat_add(type_size(pr->count_type),
+                                   sat_mul(list_max(pr->count_type),
+                                           type_size(pr->type))));
+    }
+    return p->format == F_ASCII ? sat_add(n, PLY_ASCII_ITEM_EXTRA) : n;
+}
+
+/* The fewest and the most bytes the body (after end_header) can take. */
+static void body_bounds(const ply *p, uint64_t *min, uint64_t *max)
+{
+    size_t e;
+    *min = 0;
+    *max = 0;
+    for (e = 0; e < p->nelements; e++) {
+        const ply_element *el = &p->elements[e];
+        if (el->count == 0 || el->nprops == 0)
+            continue;
+        *min = sat_add(*min, sat_mul(el->count, min_item_bytes(p, el)));
+        *max = sat_add(*max, sat_mul(el->count, max_item_bytes(p, el)));
+    }
+    /* ASCII: the last value of the file needs no separator. */
+    if (p->format == F_ASCII && *min > 0)
+        (*min)--;
+}
+
 static int push_triangle(ply *p, size_t at, uint32_t a, uint32_t b,
                          uint32_t c)
 {
@@ -521,7 +640,7 @@ enum { ROLE_SKIP = 0, ROLE_X, ROLE_Y, ROLE_Z, ROLE_INDICES };
 static int read_element(ply *p, const ply_element *e, int is_vertex,
                         int is_face, const int *role)
 {
-    uint64_t i, min = min_item_bytes(p, e);
+    uint64_t i, min = min_item_bytes(p, e), max = max_item_bytes(p, e);
     size_t left = p->size - p->pos;
     if (e->count == 0 || e->nprops == 0)
         return 0;
@@ -545,7 +664,7 @@ static int read_element(ply *p, const ply_element *e, int is_vertex,
         p->vertex_count = (size_t)e->count;
     }
     for (i = 0; i < e->count; i++) {
-        size_t k;
+        size_t k, item_start = p->pos;
         if (p->format == F_ASCII && !ascii_next_line(p))
             return fail_at(p, p->pos, "the file ends at %s item %llu of "
                            "%llu (truncated)", e->name,
@@ -607,6 +726,12 @@ static int read_element(ply *p, const ply_element *e, int is_vertex,
         }
         if (p->format == F_ASCII && ascii_end_line(p) != 0)
             return -1;
+        if (p->format == F_ASCII && (uint64_t)(p->pos - item_start) > max)
+            return fail_at(p, item_start, "%s item %llu takes %zu bytes, "
+                           "more than the %llu its values may (blank lines "
+                           "and padding included)",
+                           e->name, (unsigned long long)i,
+                           p->pos - item_start, (unsigned long long)max);
     }
     return 0;
 }
@@ -703,6 +828,20 @@ int scene_parse_ply(const char *path, const unsigned char *data, size_t size,
                          e == vertex_el ? vrole : frole) != 0)
             goto done;
     }
+    /* Text after the last element could be data the header's counts leave
+     * out (a face more than declared): say so rather than drop it. */
+    if (p.format == F_ASCII && ascii_next_line(&p)) {
+        fail_at(&p, p.pos, "text after the last element (the header "
+                "declares fewer items than the file holds?)");
+        goto done;
+    }
+    if (p.format != F_ASCII && (uint64_t)(p.size - p.pos) > PLY_TRAILING_MAX) {
+        fail_at(&p, p.pos, "%zu bytes after the last element (more than "
+                "the %llu tolerated: the header declares fewer items than "
+                "the file holds?)",
+                p.size - p.pos, (unsigned long long)PLY_TRAILING_MAX);
+        goto done;
+    }
     out->vertices = p.vertices;
     out->vertex_count = p.vertex_count;
     out->indices = p.indices;
@@ -715,4 +854,149 @@ done:
     free(p.indices);
     free(p.elements);
     return rc;
+}
+
+/* -------------------------------------------------------------- reading */
+static int read_more(FILE *f, unsigned char **buf, size_t *cap, size_t *len,
+                     size_t want, size_t *got)
+{
+    if (!scene_reserve((void **)buf, cap, *len + want, 1))
+        return 0;
+    *got = fread(*buf + *len, 1, want, f);
+    *len += *got;
+    return 1;
+}
+
+int scene_read_ply(const char *path, unsigned char **data, size_t *size,
+                   char *err, size_t err_len)
+{
+    FILE *f;
+    struct stat st;
+    int regular;
+    unsigned char *buf = NULL;
+    size_t cap = 0, len = 0, got = 0, header_end;
+    uint64_t min, max, limit;
+    ply p;
+    int eof = 0;
+    f = fopen(path, "rb");
+    if (!f)
+        return scene_fail(err, err_len, "%s: cannot open: %s", path,
+                          strerror(errno));
+    regular = fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode);
+    memset(&p, 0, sizeof p);
+    p.path = path;
+    p.err = err;
+    p.err_len = err_len;
+    p.elements = calloc(MAX_ELEMENTS, sizeof *p.elements);
+    if (!p.elements) {
+        fclose(f);
+        return scene_fail(err, err_len, "%s: out of memory", path);
+    }
+    /* The header, a chunk at a time, parsed as it arrives. */
+    for (;;) {
+        size_t want = PLY_HEADER_MAX + 3 - len; /* 3: a byte-order mark */
+        if (want > 4096)
+            want = 4096;
+        if (!eof && want > 0) {
+            if (!read_more(f, &buf, &cap, &len, want, &got)) {
+                scene_fail(err, err_len, "%s: out of memory", path);
+                goto fail;
+            }
+            eof = got < want;
+        }
+        p.data = buf;
+        p.size = len;
+        p.pos = 0;
+        p.nelements = 0;
+        p.format = F_ASCII;
+        if (parse_header(&p) == 0)
+            break;
+        if (!p.need_more || eof)
+            goto fail; /* parse_header's message */
+        if (len >= PLY_HEADER_MAX + 3) {
+            scene_fail(err, err_len, "%s: no end_header in the first %zu "
+                       "bytes (a PLY header is at most that long)",
+                       path, PLY_HEADER_MAX);
+            goto fail;
+        }
+    }
+    if (ferror(f)) {
+        scene_fail(err, err_len, "%s: read error: %s", path, strerror(errno));
+        goto fail;
+    }
+    header_end = p.pos;
+    body_bounds(&p, &min, &max);
+    limit = sat_add(max, PLY_TRAILING_MAX);
+    if (regular) {
+        uint64_t fsize = st.st_size > 0 ? (uint64_t)st.st_size : 0;
+        uint64_t body = fsize > header_end ? fsize - header_end : 0;
+        /* A small file is read anyway, for the parser's message, which
+         * names the line or byte where the data runs out. */
+        if (body < min && fsize > PLY_SMALL_FILE) {
+            scene_fail(err, err_len, "%s: truncated: the header declares "
+                       "at least %llu bytes of data, the file has %llu after "
+                       "the header", path, (unsigned long long)min,
+                       (unsigned long long)body);
+            goto fail;
+        }
+        if (body > limit) {
+            scene_fail(err, err_len, "%s: %llu bytes after the header, more "
+                       "than the elements it declares can take (at most "
+                       "%llu): corrupt header or not a PLY file", path,
+                       (unsigned long long)body, (unsigned long long)max);
+            goto fail;
+        }
+        if (body > (uint64_t)(SIZE_MAX - len)) {
+            scene_fail(err, err_len, "%s: too large to read", path);
+            goto fail;
+        }
+        /* One allocation of the file's size (plus the check byte). */
+        if (!scene_reserve((void **)&buf, &cap, (size_t)fsize + 1, 1)) {
+            scene_fail(err, err_len, "%s: out of memory reading %llu bytes",
+                       path, (unsigned long long)fsize);
+            goto fail;
+        }
+    }
+    /* The body: never more than the elements can take, plus the slack. */
+    while (!eof) {
+        uint64_t body = len - header_end;
+        size_t want = PLY_READ_CHUNK;
+        if (body > limit) {
+            scene_fail(err, err_len, "%s: more than %llu bytes after the "
+                       "header, more than the elements it declares can take "
+                       "(at most %llu)", path, (unsigned long long)limit,
+                       (unsigned long long)max);
+            goto fail;
+        }
+        if (limit != UINT64_MAX && (uint64_t)want > limit + 1 - body)
+            want = (size_t)(limit + 1 - body);
+        if (!read_more(f, &buf, &cap, &len, want, &got)) {
+            scene_fail(err, err_len, "%s: out of memory reading %zu bytes",
+                       path, len);
+            goto fail;
+        }
+        eof = got < want;
+    }
+    if ((uint64_t)(len - header_end) > limit) {
+        scene_fail(err, err_len, "%s: more than %llu bytes after the header, "
+                   "more than the elements it declares can take (at most "
+                   "%llu)", path, (unsigned long long)limit,
+                   (unsigned long long)max);
+        goto fail;
+    }
+    if (ferror(f)) {
+        scene_fail(err, err_len, "%s: read error after %zu bytes: %s", path,
+                   len, strerror(errno));
+        goto fail;
+    }
+    fclose(f);
+    free(p.elements);
+    *data = buf;
+    *size = len;
+    return 0;
+fail:
+    fclose(f);
+    free(p.elements);
+    free(buf);
+    return -1;
 }

@@ -57,11 +57,14 @@ int scene_reserve(void **p, size_t *cap, size_t need, size_t elem)
 
 float scene_float(double d)
 {
+    /* Round to nearest: below FLT_MAX + half an ulp (0x1.ffffffp+127, the
+     * tie going to even, i.e. up) a value rounds to FLT_MAX, a finite
+     * float; only from there on is it infinite. */
     if (d != d)
         return (float)d;
-    if (d > FLT_MAX)
+    if (d >= 0x1.ffffffp+127)
         return HUGE_VALF;
-    if (d < -FLT_MAX)
+    if (d <= -0x1.ffffffp+127)
         return -HUGE_VALF;
     return (float)d;
 }
@@ -174,7 +177,9 @@ int scene_load(const char *spec, scene *out, char *err, size_t err_len)
     if (!ends_with_ci(spec, ".ply") && !ends_with_ci(spec, ".obj"))
         return scene_fail(err, err_len, "%s: unknown scene type (expected a "
                           ".ply or .obj file, or builtin:NAME[:N])", spec);
-    if (read_file(spec, &data, &size, err, err_len) != 0)
+    if ((ends_with_ci(spec, ".ply")
+             ? scene_read_ply(spec, &data, &size, err, err_len)
+             : read_file(spec, &data, &size, err, err_len)) != 0)
         return -1;
     memset(&s, 0, sizeof s);
     if (ends_with_ci(spec, ".ply"))

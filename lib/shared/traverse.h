@@ -357,11 +357,13 @@ ATRBVH_FN int atrbvh_trav_leaf(const atrbvh_trav_scene *s,
                     return 1;
                 continue;
             }
-            t = t0 > r->tmin ? t0 : t1;
+            t = t0 >= r->tmin ? t0 : t1;
             if (!(atrbvh_trav_absf(t) <= ATRBVH_TRAV_FLT_MAX))
                 continue;
         }
-        if (t > r->tmin &&
+        /* Both queries accept t in the closed [tmin, tmax] (the upper end
+         * through best->t starting at tmax with no primitive). */
+        if (t >= r->tmin &&
             (t < best->t || (t == best->t && prim < best->prim))) {
             best->t = t;
             best->u = u;
@@ -472,8 +474,9 @@ ATRBVH_FN int atrbvh_trav_run(const atrbvh_trav_scene *s,
     }
 }
 
-/* Closest hit of one ray: hit->primitive ATRBVH_NO_HIT (t = tmax, u = v =
- * 0) when nothing is hit.  Returns 1 on a hit. */
+/* Closest hit of one ray with t in [tmin, tmax]: hit->primitive
+ * ATRBVH_NO_HIT (t = tmax, u = v = 0) when nothing is hit.  Returns 1 on a
+ * hit. */
 ATRBVH_FN int atrbvh_trav_closest(const atrbvh_trav_scene *s,
                                   const float *origin, const float *dir,
                                   float tmin, float tmax, float *t, float *u,

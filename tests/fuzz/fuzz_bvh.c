@@ -1,4 +1,4 @@
-/* fuzz_bvh.c - libFuzzer harness for atrbvh_load_memory (lib/io.c).
+/* fuzz_bvh.c - libFuzzer harness for atrbvh_load_memory (lib/load.c).
  * Arbitrary bytes either load into a BVH that passes the structural
  * checks, saves back to the same bytes and answers ray queries without
  * reading out of bounds, or fail with ATRBVH_ERR_FORMAT (or NOMEM) and a
