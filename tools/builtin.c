@@ -9,6 +9,7 @@
 #include "config.h"
 
 #include "loader.h"
+#include "rng.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -17,23 +18,11 @@
 
 #define PI 3.14159265358979323846
 
-/* splitmix64's finaliser: a strong 64-bit mix, so hash(seed, i) and
- * hash(seed, i + 1) are unrelated. */
-static uint64_t mix64(uint64_t x)
-{
-    x ^= x >> 30;
-    x *= 0xbf58476d1ce4e5b9ull;
-    x ^= x >> 27;
-    x *= 0x94d049bb133111ebull;
-    x ^= x >> 31;
-    return x;
-}
-
-/* Uniform in [0, 1), 53 bits. */
+/* Uniform in [0, 1), 53 bits: hash(seed, i) and hash(seed, i + 1) are
+ * unrelated (rng.h's splitmix64 finaliser). */
 static double hash01(uint64_t seed, uint64_t i)
 {
-    uint64_t h = mix64(mix64(seed * 0x9e3779b97f4a7c15ull) + i);
-    return (double)(h >> 11) * (1.0 / 9007199254740992.0);
+    return rng_unit(rng_mix64(rng_mix64(seed * 0x9e3779b97f4a7c15ull) + i));
 }
 
 static size_t round_size(double x)
