@@ -232,6 +232,8 @@ void atrbvh_build_options_init(atrbvh_build_options *o)
     o->progress = NULL;
     o->progress_user = NULL;
     o->device = NULL;
+    o->capture = NULL;
+    o->capture_user = NULL;
 }
 
 atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
@@ -331,5 +333,7 @@ atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
     r->progress = o.progress;
     r->progress_user = o.progress_user;
     r->device = o.device;
+    r->capture = o.capture;
+    r->capture_user = o.capture_user;
     return ATRBVH_OK;
 }

@@ -175,6 +175,58 @@ ATRBVH_API atrbvh_backend atrbvh_device_backend(const atrbvh_device *device);
 typedef int (*atrbvh_progress_fn)(const char *stage, double fraction,
                                   void *user);
 
+/* ------------------------------------------------------------------ stages */
+typedef enum atrbvh_stage {
+    ATRBVH_STAGE_BOUNDS = 0,
+    ATRBVH_STAGE_MORTON,
+    ATRBVH_STAGE_SORT,
+    ATRBVH_STAGE_HIERARCHY,
+    ATRBVH_STAGE_REFIT,
+    ATRBVH_STAGE_OPTIMISE,
+    ATRBVH_STAGE_COLLAPSE,
+    ATRBVH_STAGE_LAYOUT,
+    ATRBVH_STAGE_COUNT
+} atrbvh_stage;
+
+/* "bounds", "morton", ...; NULL when out of range. */
+ATRBVH_API const char *atrbvh_stage_name(atrbvh_stage stage);
+
+/* ---------------------------------------------------------- stage capture */
+/* Every stage's output, handed to a callback as it is produced, so that a
+ * test harness can compare its own builder with this one in memory
+ * (docs/stages.md and atrbvh-stages(7) say what each array holds). */
+typedef enum atrbvh_dtype {
+    ATRBVH_DTYPE_U32 = 0,
+    ATRBVH_DTYPE_U64 = 1,
+    ATRBVH_DTYPE_F32 = 2,
+    ATRBVH_DTYPE_F64 = 3
+} atrbvh_dtype;
+
+/* A row-major array of rows x cols elements (cols 1 for a vector). */
+typedef struct atrbvh_array {
+    const char *name; /* "prim_boxes", "keys", "left", ... */
+    atrbvh_dtype dtype;
+    size_t rows, cols;
+    const void *data; /* valid during the callback only */
+} atrbvh_array;
+
+typedef struct atrbvh_stage_output {
+    size_t size;        /* sizeof(atrbvh_stage_output): it can grow      */
+    atrbvh_stage stage;
+    unsigned round;     /* optimise: 1, 2, ... after each round, 0 for the
+                           stage's final output; 0 for other stages      */
+    const char *name;   /* "bounds", ..., "optimise_round1", "optimise",
+                           ..., "layout": unique within a build          */
+    size_t array_count;
+    const atrbvh_array *arrays;
+} atrbvh_stage_output;
+
+/* Called from the thread that called atrbvh_build after each stage (and
+ * each optimise round); return 0 to go on, nonzero to cancel the build
+ * (ATRBVH_ERR_CANCELLED).  Capturing never changes the tree. */
+typedef int (*atrbvh_capture_fn)(const atrbvh_stage_output *output,
+                                 void *user);
+
 /* Set `size` to sizeof(atrbvh_build_options) (atrbvh_build_options_init
  * does); fields beyond the size the caller was compiled with take their
  * defaults, so the struct can grow without breaking old callers. */
@@ -204,25 +256,12 @@ typedef struct atrbvh_build_options {
     atrbvh_device *device;       /* an open device (atrbvh_device_open),
                                     reused build after build; NULL: as
                                     `backend` says                       */
+    atrbvh_capture_fn capture;   /* every stage's output; may be NULL    */
+    void *capture_user;
 } atrbvh_build_options;
 
 ATRBVH_API void atrbvh_build_options_init(atrbvh_build_options *options);
 
-/* ------------------------------------------------------------------ stages */
-typedef enum atrbvh_stage {
-    ATRBVH_STAGE_BOUNDS = 0,
-    ATRBVH_STAGE_MORTON,
-    ATRBVH_STAGE_SORT,
-    ATRBVH_STAGE_HIERARCHY,
-    ATRBVH_STAGE_REFIT,
-    ATRBVH_STAGE_OPTIMISE,
-    ATRBVH_STAGE_COLLAPSE,
-    ATRBVH_STAGE_LAYOUT,
-    ATRBVH_STAGE_COUNT
-} atrbvh_stage;
-
-/* "bounds", "morton", ...; NULL when out of range. */
-ATRBVH_API const char *atrbvh_stage_name(atrbvh_stage stage);
 
 /* -------------------------------------------------------------------- BVH */
 /* A node of the output, in depth-first order; the root is node 0.

@@ -84,6 +84,13 @@ typedef struct atrbvh_i_run atrbvh_i_run;
  * frees the rest. */
 int atrbvh_i_stage_progress(atrbvh_i_run *run, uint64_t done, uint64_t total);
 
+/* Called by a backend's optimise stage after each round (round 1, 2, ...),
+ * from the thread that runs the stage, with the tree consistent: the
+ * pipeline may capture it (backend->capture of ATRBVH_STAGE_OPTIMISE).
+ * Nonzero: stop the stage and return ATRBVH_ERR_CANCELLED (the pipeline
+ * reports the real error). */
+int atrbvh_i_stage_round(atrbvh_i_run *run, unsigned round);
+
 /* One build, shared by the pipeline and the backend.  Fields are written by
  * the stage named beside them and read by later ones. */
 struct atrbvh_i_run {

@@ -39,6 +39,8 @@ typedef struct atrbvh_i_request {
     const char *opencl_device;
     atrbvh_progress_fn progress;
     void *progress_user;
+    atrbvh_capture_fn capture;
+    void *capture_user;
 } atrbvh_i_request;
 
 atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *options,
@@ -74,6 +76,15 @@ void atrbvh_i_morton_frame(const atrbvh_box *centroids, double lo[3],
 
 /* ------------------------------------------------------------- the tree */
 void atrbvh_i_capture_free(atrbvh_i_capture *c);
+/* Hands the output of `stage` (a backend's copy in `c`; round: the
+ * optimise round just done, else 0) to the public capture callback, as
+ * docs/stages.md describes it; ATRBVH_ERR_CANCELLED when it returns
+ * nonzero. */
+atrbvh_status atrbvh_i_capture_emit(atrbvh_capture_fn fn, void *user,
+                                    atrbvh_stage stage, unsigned round,
+                                    const atrbvh_i_capture *c,
+                                    const atrbvh_i_run *run,
+                                    atrbvh_error *error);
 /* A deep copy of a tree (every array). */
 atrbvh_status atrbvh_i_tree_copy(atrbvh_i_tree *dst, const atrbvh_i_tree *src);
 

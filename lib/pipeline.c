@@ -33,7 +33,43 @@ typedef struct progress_state {
     atrbvh_stage stage;
     double base, span, last;
     int cancelled;
+    /* the public capture callback, and what a round's capture needs */
+    atrbvh_capture_fn capture;
+    void *capture_user;
+    atrbvh_device *dev;
+    atrbvh_status failed; /* a round's capture failed: this, with `why` */
+    atrbvh_error why;
 } progress_state;
+
+/* The output of `stage` (round: the optimise round just done, else 0)
+ * through the public capture callback. */
+static atrbvh_status emit(progress_state *p, atrbvh_i_run *run,
+                          atrbvh_stage stage, unsigned round,
+                          atrbvh_error *error)
+{
+    atrbvh_i_capture c;
+    atrbvh_status st;
+    memset(&c, 0, sizeof c);
+    c.n = run->n;
+    st = p->dev->backend->capture(p->dev, run, stage, &c, error);
+    if (st == ATRBVH_OK)
+        st = atrbvh_i_capture_emit(p->capture, p->capture_user, stage, round,
+                                   &c, run, error);
+    atrbvh_i_capture_free(&c);
+    return st;
+}
+
+int atrbvh_i_stage_round(atrbvh_i_run *run, unsigned round)
+{
+    progress_state *p = run->pipeline;
+    atrbvh_status st;
+    if (!p || !p->capture || p->failed != ATRBVH_OK)
+        return p && p->failed != ATRBVH_OK;
+    st = emit(p, run, ATRBVH_STAGE_OPTIMISE, round, &p->why);
+    if (st != ATRBVH_OK)
+        p->failed = st;
+    return st != ATRBVH_OK;
+}
 
 int atrbvh_i_stage_progress(atrbvh_i_run *run, uint64_t done, uint64_t total)
 {
@@ -190,8 +226,16 @@ static atrbvh_status run_stages(atrbvh_device *dev, atrbvh_i_run *run,
                                       run->morton_scale);
         }
         ms[s] = runs ? atrbvh_i_now_ms() - t : 0.0;
+        if (prog->failed != ATRBVH_OK) {
+            /* a round's capture failed inside the stage: its error */
+            st = prog->failed;
+            if (error)
+                *error = prog->why;
+        }
         if (st == ATRBVH_OK && cap)
             st = be->capture(dev, run, stage, cap, error);
+        if (st == ATRBVH_OK && prog->capture)
+            st = emit(prog, run, stage, 0, error);
         if (st != ATRBVH_OK)
             break;
         prog->base += prog->span;
@@ -241,6 +285,8 @@ atrbvh_status atrbvh_i_build_run(const atrbvh_geometry *geometry,
     memset(&prog, 0, sizeof prog);
     prog.fn = req.progress;
     prog.user = req.progress_user;
+    prog.capture = req.capture;
+    prog.capture_user = req.capture_user;
     run.pipeline = &prog;
 
     dev = req.device;
@@ -259,6 +305,7 @@ atrbvh_status atrbvh_i_build_run(const atrbvh_geometry *geometry,
         atrbvh_i_device_cpu_temp(&temp);
         dev = &temp;
     }
+    prog.dev = dev;
     atrbvh_i_device_lock(dev);
     st = run_stages(dev, &run, &prog, cap, out, t0, error);
     atrbvh_i_device_unlock(dev);

@@ -416,6 +416,111 @@ START_TEST(geometry_size_field)
 }
 END_TEST
 
+/* ------------------------------------------------------ stage capture */
+typedef struct cap_log {
+    int calls;
+    char names[16][32];
+    uint64_t sum[16]; /* FNV-1a over every array's name, shape and bytes */
+    int sorted_ok, layout_ok;
+    const atrbvh_node *nodes; /* to compare the layout arrays with */
+    int stop_at;              /* cancel at this call (0: never) */
+} cap_log;
+
+static size_t dtype_size(atrbvh_dtype d)
+{
+    return d == ATRBVH_DTYPE_U32 || d == ATRBVH_DTYPE_F32 ? 4 : 8;
+}
+
+static int on_capture(const atrbvh_stage_output *out, void *user)
+{
+    cap_log *c = user;
+    uint64_t h = 1469598103934665603ull;
+    size_t a, i;
+    ck_assert_uint_eq(out->size, sizeof *out);
+    if (c->calls < 16)
+        snprintf(c->names[c->calls], sizeof c->names[0], "%s", out->name);
+    for (a = 0; a < out->array_count; a++) {
+        const atrbvh_array *x = &out->arrays[a];
+        const unsigned char *b = x->data;
+        size_t bytes = x->rows * x->cols * dtype_size(x->dtype);
+        for (i = 0; x->name[i]; i++)
+            h = (h ^ (unsigned char)x->name[i]) * 1099511628211ull;
+        h = (h ^ x->rows) * 1099511628211ull;
+        h = (h ^ x->cols) * 1099511628211ull;
+        for (i = 0; i < bytes; i++)
+            h = (h ^ b[i]) * 1099511628211ull;
+        if (strcmp(x->name, "sorted_keys") == 0) {
+            const uint64_t *k = x->data;
+            c->sorted_ok = 1;
+            for (i = 1; i < x->rows; i++)
+                if (k[i - 1] > k[i])
+                    c->sorted_ok = 0;
+        }
+    }
+    if (c->calls < 16)
+        c->sum[c->calls] = h;
+    c->calls++;
+    return c->stop_at && c->calls == c->stop_at;
+}
+
+START_TEST(capture_every_stage)
+{
+    static const char *const expect[] = {
+        "bounds",   "morton",   "sort",
+        "hierarchy", "refit",   "optimise_round1",
+        "optimise_round2", "optimise", "collapse",
+        "layout"};
+    float *v;
+    atrbvh_geometry g = soup(&v, 5000, 21);
+    atrbvh_build_options o;
+    atrbvh_bvh *b, *ref;
+    atrbvh_error e;
+    cap_log c1, c2;
+    char msg[256];
+    size_t i;
+    atrbvh_build_options_init(&o);
+    o.max_leaf_size = 8;
+    ref = tu_build(&g, &o);
+    memset(&c1, 0, sizeof c1);
+    memset(&c2, 0, sizeof c2);
+    o.capture = on_capture;
+    o.capture_user = &c1;
+    o.threads = 1;
+    ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_OK);
+    ck_assert_msg(tu_same_bvh(ref, b, msg, sizeof msg), "%s", msg);
+    atrbvh_bvh_free(b);
+    ck_assert_int_eq(c1.calls, (int)(sizeof expect / sizeof *expect));
+    for (i = 0; i < sizeof expect / sizeof *expect; i++)
+        ck_assert_str_eq(c1.names[i], expect[i]);
+    ck_assert(c1.sorted_ok);
+    /* The same bytes for another thread count. */
+    o.capture_user = &c2;
+    o.threads = 2;
+    ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_OK);
+    atrbvh_bvh_free(b);
+    ck_assert_int_eq(c2.calls, c1.calls);
+    for (i = 0; i < (size_t)c1.calls; i++)
+        ck_assert_msg(c1.sum[i] == c2.sum[i], "stage %s differs with 2 threads",
+                      c1.names[i]);
+    /* The callback can cancel, after any stage; nothing leaks. */
+    atrbvh_set_allocator(count_malloc, count_free);
+    for (i = 1; i <= sizeof expect / sizeof *expect; i++) {
+        cap_log c3;
+        memset(&c3, 0, sizeof c3);
+        c3.stop_at = (int)i;
+        o.capture_user = &c3;
+        outstanding = 0;
+        ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_ERR_CANCELLED);
+        ck_assert_ptr_null(b);
+        ck_assert_msg(strstr(e.text, expect[i - 1]), "%s", e.text);
+        ck_assert_int_eq(outstanding, 0);
+    }
+    atrbvh_set_allocator(NULL, NULL);
+    atrbvh_bvh_free(ref);
+    free(v);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("device");
@@ -429,6 +534,7 @@ static Suite *suite(void)
     tcase_add_test(t, cancel_everywhere);
     tcase_add_test(t, stats_by_size);
     tcase_add_test(t, geometry_size_field);
+    tcase_add_test(t, capture_every_stage);
     suite_add_tcase(s, t);
     return s;
 }

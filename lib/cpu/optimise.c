@@ -296,7 +296,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         } else {
             walk_serial(&c, 0);
         }
-        if (c.cancel) {
+        if (c.cancel || (run && atrbvh_i_stage_round(run, round + 1))) {
             if (scratch == &own)
                 atrbvh_i_scratch_free(&own);
             return atrbvh_i_fail(error, ATRBVH_ERR_CANCELLED, (uint64_t)-1,
