@@ -2,8 +2,9 @@
 # Debian packages from the release tarball: atrbvh-VERSION.tar.gz (left in
 # _build/ by 40-distcheck, else made here) becomes atrbvh_VERSION.orig.tar.gz,
 # packaging/debian/ (shipped in the tarball) becomes debian/, and
-# `dpkg-buildpackage -us -uc -b` builds libatrbvh0, libatrbvh-dev and
-# atrbvh in _build/deb/.  lintian then checks them: errors fail the stage,
+# `dpkg-buildpackage -us -uc -b` builds the packages of debian/control
+# (libatrbvhN, named after the soname, libatrbvh-dev, atrbvh, ...) in
+# _build/deb/.  lintian then checks them: errors fail the stage,
 # warnings and the rest are shown.
 #
 # DEB_BUILD_OPTIONS=nocheck by default: the same tests already ran in this
@@ -49,7 +50,7 @@ echo "debian: built in $(( $(date +%s) - start )) s"
 grep -E '^dpkg-shlibdeps: warning|^dh_[a-z_]+: warning' build.log
 passed=1
 failed=0
-for p in libatrbvh0 libatrbvh-dev atrbvh; do
+for p in $(sed -n 's/^Package: *//p' "$src/debian/control"); do
     deb=$(ls ${p}_"$version"-*_*.deb 2>/dev/null | head -n 1)
     if [ -z "$deb" ]; then echo "debian: FAILED: no $p package"; failed=$((failed + 1)); continue; fi
     printf 'debian: %-40s %7s bytes, installed %s KiB\n' "$deb" "$(stat -c %s "$deb")" \
