@@ -66,8 +66,8 @@ config() {
     cd "$top" || exit 1
 }
 
-no_gomp='! readelf -d lib/.libs/libatrbvh.so | grep -q libgomp && ! grep -q "^OPENMP_CFLAGS = ." Makefile'
-no_cl='! grep -q "define ATRBVH_HAVE_OPENCL" config.h && ! grep -q -- -lOpenCL atrbvh.pc'
+no_gomp='! readelf -d lib/.libs/libatrbvh.so | grep -q libgomp && ! grep -q "^OPENMP_CFLAGS = ." Makefile && ! grep -q -e -lgomp -e -fopenmp atrbvh.pc'
+no_cl='! grep -q "define ATRBVH_HAVE_OPENCL" config.h && ! grep -q OpenCL atrbvh.pc'
 no_embree='! grep -q "define HAVE_EMBREE" config.h && ! readelf -d tools/.libs/atrbvh tools/atrbvh 2>/dev/null | grep -q libembree'
 no_png='! grep -q "define HAVE_PNG" config.h && ! readelf -d tools/.libs/atrbvh tools/atrbvh 2>/dev/null | grep -q libpng'
 
