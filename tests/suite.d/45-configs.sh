@@ -17,6 +17,8 @@
 # Contract: print '=== stage ok' as the last line on success.
 cd "$(dirname "$0")/../.." || exit 1
 top=$(pwd)
+sh setup.sh --packages check opencl bench ||
+    { echo "configs: 0 passed, 1 failed (installing packages failed)"; exit 1; }
 [ -x configure ] || { echo "configs: run setup.sh first (no ./configure)"; exit 1; }
 jobs=$(nproc 2>/dev/null || echo 2)
 quick_lib="tests/symbols.sh tests/consumer.sh tests/manpages.sh"

@@ -14,6 +14,8 @@
 # Contract: print '=== stage ok' as the last line on success.
 cd "$(dirname "$0")/../.." || exit 1
 top=$(pwd)
+sh setup.sh --packages packaging ||
+    { echo "debian: 0 passed, 1 failed (installing packages failed)"; exit 1; }
 for tool in dpkg-buildpackage dh lintian; do
     command -v $tool >/dev/null 2>&1 ||
         { echo "debian: $tool not installed (setup.sh installs it)"; echo "debian: 0 passed, 1 failed"; exit 1; }
