@@ -36,6 +36,7 @@ install_lists() {
             missing="$missing $p"
     done
     [ -n "$missing" ] || return 0
+    installed=yes
     sudo=""
     [ "$(id -u)" -eq 0 ] || sudo="sudo"
     echo "setup.sh: installing$missing"
@@ -57,6 +58,7 @@ all_lists() {
     done
 }
 
+installed=no
 case "${1:-}" in
     --packages)
         shift
@@ -80,5 +82,11 @@ mkdir -p m4
 autoreconf -fi
 mkdir -p _build
 cd _build
-[ -f Makefile ] || ../configure
+if [ ! -f Makefile ]; then
+    ../configure
+elif [ "$installed" = yes ]; then
+    # configured before these packages were there: look again (same
+    # arguments), so that the build finds them
+    ./config.status --recheck && ./config.status
+fi
 make -j"$(nproc)"

@@ -3,7 +3,7 @@
 # order (10-check: `make check`; later stages: sanitizers, fuzzing,
 # distcheck, packaging).  Run after setup.sh, which installs only what the
 # build needs: each stage installs the packages it uses itself (`sh
-# setup.sh --packages ...`, the lists in .ci/packages.d/).  About 30 minutes
+# setup.sh --packages ...`, the lists in .ci/packages.d/).  About 35 minutes
 # on two cores.  Runs every stage, exits non-zero if any failed.  A stage may print lines "WORD: N passed, M
 # failed"; the closing line adds them up (a stage that prints none counts as
 # one check).
