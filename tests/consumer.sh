@@ -73,10 +73,13 @@ done
 if [ -n "$bad" ]; then ko "atrbvh.pc: Libs/Libs.private hold non-library flags:$bad"
 else ok "atrbvh.pc: Libs.private '$(field Libs.private)' (libraries only)"; fi
 reqp=$(field Requires.private)
-if [ "$build_opencl" = yes ]; then
-    if [ -z "$opencl_pcdir" ]; then
-        echo "consumer: the build has OpenCL but no OpenCL.pc is installed (ocl-icd-opencl-dev): the .pc cannot be used here"
-    fi
+if [ "$build_opencl" = yes ] && [ -z "$opencl_pcdir" ]; then
+    # configure found libOpenCL without OpenCL.pc: then, and only then, the
+    # .pc names -lOpenCL itself (configure.ac, atrbvh.pc)
+    if printf '%s\n' "$reqp" | grep -qw OpenCL; then ko "atrbvh.pc: requires OpenCL.pc, which is not installed"
+    elif ! field Libs.private | grep -q -- -lOpenCL; then ko "atrbvh.pc: no OpenCL.pc and no -lOpenCL in Libs.private"
+    else ok "atrbvh.pc: -lOpenCL in Libs.private (no OpenCL.pc on this system)"; fi
+elif [ "$build_opencl" = yes ]; then
     if ! printf '%s\n' "$reqp" | grep -qw OpenCL; then ko "atrbvh.pc: OpenCL not in Requires.private ('$reqp')"
     elif field Libs.private | grep -q -- -lOpenCL; then ko "atrbvh.pc: -lOpenCL in Libs.private besides Requires.private"
     else ok "atrbvh.pc: Requires.private: $reqp"; fi
