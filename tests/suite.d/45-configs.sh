@@ -17,6 +17,8 @@
 # Contract: print '=== stage ok' as the last line on success.
 cd "$(dirname "$0")/../.." || exit 1
 top=$(pwd)
+sh setup.sh --packages check opencl bench ||
+    { echo "configs: 0 passed, 1 failed (installing packages failed)"; exit 1; }
 [ -x configure ] || { echo "configs: run setup.sh first (no ./configure)"; exit 1; }
 jobs=$(nproc 2>/dev/null || echo 2)
 quick_lib="tests/symbols.sh tests/consumer.sh tests/manpages.sh"
@@ -66,8 +68,8 @@ config() {
     cd "$top" || exit 1
 }
 
-no_gomp='! readelf -d lib/.libs/libatrbvh.so | grep -q libgomp && ! grep -q "^OPENMP_CFLAGS = ." Makefile'
-no_cl='! grep -q "define ATRBVH_HAVE_OPENCL" config.h && ! grep -q -- -lOpenCL atrbvh.pc'
+no_gomp='! readelf -d lib/.libs/libatrbvh.so | grep -q libgomp && ! grep -q "^OPENMP_CFLAGS = ." Makefile && ! grep -q -e -lgomp -e -fopenmp atrbvh.pc'
+no_cl='! grep -q "define ATRBVH_HAVE_OPENCL" config.h && ! grep -q OpenCL atrbvh.pc'
 no_embree='! grep -q "define HAVE_EMBREE" config.h && ! readelf -d tools/.libs/atrbvh tools/atrbvh 2>/dev/null | grep -q libembree'
 no_png='! grep -q "define HAVE_PNG" config.h && ! readelf -d tools/.libs/atrbvh tools/atrbvh 2>/dev/null | grep -q libpng'
 
