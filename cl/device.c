@@ -6,9 +6,10 @@
  * Thread safety.  PoCL (and other ICDs) are not safe when several threads
  * discover platforms, create contexts or build programs at once, first use
  * in the process included: every open and close runs under one
- * process-wide mutex.  After that, a handle's own mutex
- * (atrbvh_cl_device.lock) lets one build or ray batch at a time use its
- * queue and buffers; different handles run concurrently.
+ * process-wide mutex.  After that, the pipeline's per-handle lock
+ * (atrbvh_device.lock, held around every build and ray batch) lets one
+ * call at a time use a handle's queue and buffers; different handles run
+ * concurrently.
  */
 #include "config.h"
 
@@ -276,11 +277,6 @@ atrbvh_status atrbvh_i_cl_open(atrbvh_device *dev, const char *spec,
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, ATRBVH_CL_NO_INDEX,
                              "cannot allocate the OpenCL device state");
     memset(c, 0, sizeof *c);
-    if (pthread_mutex_init(&c->lock, NULL) != 0) {
-        atrbvh_i_free(c);
-        return atrbvh_i_fail(error, ATRBVH_ERR_BACKEND, ATRBVH_CL_NO_INDEX,
-                             "cannot create the OpenCL device's lock");
-    }
     c->times = &c->build_times;
     pthread_mutex_lock(&cl_global_lock);
     st = open_locked(c, spec, dev->name, sizeof dev->name, error);
@@ -288,7 +284,6 @@ atrbvh_status atrbvh_i_cl_open(atrbvh_device *dev, const char *spec,
         release_all(c);
     pthread_mutex_unlock(&cl_global_lock);
     if (st != ATRBVH_OK) {
-        pthread_mutex_destroy(&c->lock);
         atrbvh_i_free(c);
         return st;
     }
@@ -304,7 +299,6 @@ void atrbvh_i_cl_close(atrbvh_device *dev)
     pthread_mutex_lock(&cl_global_lock);
     release_all(c);
     pthread_mutex_unlock(&cl_global_lock);
-    pthread_mutex_destroy(&c->lock);
     atrbvh_i_free(c);
     dev->impl = NULL;
 }

@@ -105,9 +105,6 @@ typedef struct atrbvh_cl_times {
 
 /* The backend's part of an atrbvh_device (dev->impl). */
 typedef struct atrbvh_cl_device {
-    /* One build or ray batch at a time on this handle (begin .. end,
-     * trace). */
-    pthread_mutex_t lock;
     cl_device_id device;
     cl_context ctx;
     cl_command_queue queue;

@@ -8,8 +8,8 @@
  * (lib/pipeline.c).
  *
  * Buffers live on the device handle (cl/memory.c) and stay there between
- * builds; between begin and end the handle's lock is held, so one build
- * at a time uses them.
+ * builds; the pipeline holds the handle's lock around every build, so one
+ * build at a time uses them.
  */
 #include "config.h"
 
@@ -59,7 +59,6 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,
                              "OpenCL: %lu primitives (1 to 2^31-1 supported)",
                              (unsigned long)n);
-    pthread_mutex_lock(&c->lock);
     memset(&c->build_times, 0, sizeof c->build_times);
     c->times = &c->build_times;
     c->has_ids = 0;
@@ -76,7 +75,6 @@ static void cl_end(atrbvh_device *dev, atrbvh_i_run *run)
     if (c->event_count)
         (void)atrbvh_i_cl_finish(c, &ignored);
     run->state = NULL;
-    pthread_mutex_unlock(&c->lock);
 }
 
 /* --------------------------------------------------------------- bounds */

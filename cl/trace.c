@@ -74,7 +74,7 @@ static atrbvh_status upload_scene(atrbvh_cl_device *c,
     return ATRBVH_OK;
 }
 
-static atrbvh_status trace_locked(atrbvh_cl_device *c,
+static atrbvh_status trace_batch(atrbvh_cl_device *c,
                                   const atrbvh_node *nodes, size_t node_count,
                                   const uint32_t *prim_indices,
                                   size_t prim_count, const atrbvh_i_input *in,
@@ -150,16 +150,14 @@ atrbvh_status atrbvh_i_cl_rays(atrbvh_device *dev, const atrbvh_node *nodes,
     if (kernel_ms)
         *kernel_ms = 0.0;
     memset(&times, 0, sizeof times);
-    pthread_mutex_lock(&c->lock);
-    c->times = &times;
-    st = trace_locked(c, nodes, node_count, prim_indices, prim_count, in, rays,
+    c->times = &times; /* the pipeline holds the handle's lock */
+    st = trace_batch(c, nodes, node_count, prim_indices, prim_count, in, rays,
                       count, hits, occluded, error);
     if (c->event_count) {
         atrbvh_error ignored;
         (void)atrbvh_i_cl_finish(c, &ignored);
     }
     c->times = &c->build_times;
-    pthread_mutex_unlock(&c->lock);
     if (kernel_ms)
         for (i = 0; i < times.count; i++)
             *kernel_ms += times.ms[i];

@@ -186,6 +186,7 @@ atrbvh_geometry atrbvh_geometry_triangles(const float *vertices,
 {
     atrbvh_geometry g;
     memset(&g, 0, sizeof g);
+    g.size = sizeof g;
     g.type = ATRBVH_GEOMETRY_TRIANGLES;
     g.vertices = vertices;
     g.vertex_count = vertex_count;
@@ -198,6 +199,7 @@ atrbvh_geometry atrbvh_geometry_boxes(const float *boxes, size_t box_count)
 {
     atrbvh_geometry g;
     memset(&g, 0, sizeof g);
+    g.size = sizeof g;
     g.type = ATRBVH_GEOMETRY_BOXES;
     g.boxes = boxes;
     g.primitive_count = box_count;
@@ -225,6 +227,7 @@ void atrbvh_build_options_init(atrbvh_build_options *o)
     o->opencl_device = NULL;
     o->progress = NULL;
     o->progress_user = NULL;
+    o->device = NULL;
 }
 
 /* Treelet sizes each optimiser supports (issue 3). */
@@ -235,10 +238,11 @@ void atrbvh_build_options_init(atrbvh_build_options *o)
 #define MAX_ROUNDS 64u
 
 atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
-                                       atrbvh_i_config *c,
+                                       atrbvh_i_request *r,
                                        atrbvh_error *error)
 {
     atrbvh_build_options o;
+    atrbvh_i_config *c = &r->cfg;
     atrbvh_build_options_init(&o);
     if (user) {
         if (user->size < offsetof(atrbvh_build_options, method) +
@@ -252,7 +256,7 @@ atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
         memcpy(&o, user, user->size);
         o.size = sizeof o;
     }
-    memset(c, 0, sizeof *c);
+    memset(r, 0, sizeof *r);
     if ((int)o.method < ATRBVH_METHOD_LBVH || o.method > ATRBVH_METHOD_ATRBVH)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "options.method %d is not lbvh, trbvh or atrbvh",
@@ -314,9 +318,10 @@ atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
     c->cost.max_leaf = o.max_leaf_size;
     c->threads = atrbvh_i_resolve_threads(o.threads);
     c->skip_invalid = o.skip_invalid != 0;
-    c->backend = o.backend;
-    c->opencl_device = o.opencl_device;
-    c->progress = o.progress;
-    c->progress_user = o.progress_user;
+    r->backend = o.backend;
+    r->opencl_device = o.opencl_device;
+    r->progress = o.progress;
+    r->progress_user = o.progress_user;
+    r->device = o.device;
     return ATRBVH_OK;
 }

@@ -106,6 +106,9 @@ typedef enum atrbvh_geometry_type {
  * i * box_stride (0 means 24, packed); min must not exceed max.
  */
 typedef struct atrbvh_geometry {
+    size_t size; /* sizeof(atrbvh_geometry): the initialisers below set it;
+                    fields past the caller's size take their defaults, so
+                    the struct can grow without breaking old callers     */
     atrbvh_geometry_type type;
     size_t primitive_count;
     const float *vertices;
@@ -158,9 +161,14 @@ ATRBVH_API void atrbvh_device_close(atrbvh_device *device);
 ATRBVH_API const char *atrbvh_device_name(const atrbvh_device *device);
 ATRBVH_API atrbvh_backend atrbvh_device_backend(const atrbvh_device *device);
 
-/* Called from the thread that called atrbvh_build, between stages. */
-typedef void (*atrbvh_progress_fn)(const char *stage, double fraction,
-                                   void *user);
+/* Called from the thread that called atrbvh_build: at every stage's start
+ * and, inside the long stages, as work is done (fraction of the whole
+ * build, from 0 to 1, never decreasing; 1 once the build is complete).
+ * Return 0 to go on; a nonzero return cancels the build, which then
+ * returns ATRBVH_ERR_CANCELLED with everything freed.  Progress never
+ * changes the tree. */
+typedef int (*atrbvh_progress_fn)(const char *stage, double fraction,
+                                  void *user);
 
 /* Set `size` to sizeof(atrbvh_build_options) (atrbvh_build_options_init
  * does); fields beyond the size the caller was compiled with take their
@@ -179,10 +187,17 @@ typedef struct atrbvh_build_options {
     int threads;                 /* 0 = OpenMP default                    */
     int skip_invalid;            /* nonzero: leave out NaN/Inf primitives
                                     (counted) instead of failing          */
-    atrbvh_backend backend;      /* default ATRBVH_BACKEND_CPU            */
-    const char *opencl_device;   /* NULL: $ATRBVH_OPENCL_DEVICE or first  */
+    atrbvh_backend backend;      /* used when device is NULL: default CPU;
+                                    OPENCL opens a device for this one
+                                    build (prefer atrbvh_device_open)    */
+    const char *opencl_device;   /* with backend OPENCL and no device: the
+                                    device spec after "opencl:" (NULL:
+                                    the first device)                    */
     atrbvh_progress_fn progress; /* may be NULL                           */
     void *progress_user;
+    atrbvh_device *device;       /* an open device (atrbvh_device_open),
+                                    reused build after build; NULL: as
+                                    `backend` says                       */
 } atrbvh_build_options;
 
 ATRBVH_API void atrbvh_build_options_init(atrbvh_build_options *options);
@@ -217,6 +232,8 @@ typedef struct atrbvh_node {
 
 typedef struct atrbvh_bvh atrbvh_bvh;
 
+/* Statistics of a BVH.  The struct can grow: atrbvh_bvh_stats passes the
+ * caller's sizeof(atrbvh_stats), and the library fills only that much. */
 typedef struct atrbvh_stats {
     size_t primitives;       /* primitives in the tree                   */
     size_t invalid_skipped;  /* primitives left out (skip_invalid)       */
@@ -232,7 +249,6 @@ typedef struct atrbvh_stats {
     atrbvh_backend backend;
     int threads;             /* threads the build ran with              */
     double build_ms;         /* whole build, wall clock                 */
-    double stage_ms[ATRBVH_STAGE_COUNT];
 } atrbvh_stats;
 
 /* Build a BVH over `geometry`. `options` may be NULL (defaults). On
@@ -248,7 +264,19 @@ ATRBVH_API const atrbvh_node *atrbvh_bvh_nodes(const atrbvh_bvh *bvh,
                                                size_t *count);
 ATRBVH_API const uint32_t *atrbvh_bvh_primitive_indices(const atrbvh_bvh *bvh,
                                                         size_t *count);
-ATRBVH_API void atrbvh_bvh_stats(const atrbvh_bvh *bvh, atrbvh_stats *stats);
+/* Fills the first `size` bytes of *stats (size: the caller's
+ * sizeof(atrbvh_stats); the atrbvh_bvh_stats macro passes it).  Returns
+ * ATRBVH_ERR_INVALID_ARGUMENT, *stats untouched, when a pointer is NULL or
+ * size is below the first version's struct or above this version's. */
+ATRBVH_API atrbvh_status atrbvh_bvh_stats_sized(const atrbvh_bvh *bvh,
+                                                atrbvh_stats *stats,
+                                                size_t size);
+#define atrbvh_bvh_stats(bvh, stats)                                           \
+    atrbvh_bvh_stats_sized((bvh), (stats), sizeof *(stats))
+/* Wall-clock milliseconds of one stage of the build (0 for a loaded BVH,
+ * a stage that did not run, or a stage out of range). */
+ATRBVH_API double atrbvh_bvh_stage_ms(const atrbvh_bvh *bvh,
+                                      atrbvh_stage stage);
 
 /* The device a BVH was built on: "cpu", or the OpenCL device's name. */
 ATRBVH_API const char *atrbvh_bvh_device(const atrbvh_bvh *bvh);
@@ -312,28 +340,28 @@ ATRBVH_API atrbvh_status atrbvh_occluded_batch(
     const atrbvh_ray *rays, size_t count, uint8_t *occluded, int threads,
     atrbvh_error *error);
 
-/* The same queries on an OpenCL device, one work-item per ray, for
- * measuring rays per second on a device and checking a device against the
- * CPU.  The kernels run the very functions the CPU queries run (one source
- * compiled as C99 and OpenCL C), so every result is bit for bit the one
- * atrbvh_intersect/atrbvh_occluded give (primitive, t, u, v).  The BVH may
- * have been built on either backend or loaded.  `device` as
- * options.opencl_device (NULL: $ATRBVH_OPENCL_DEVICE, else the first
- * device).  Each call sets up the device (context, program), uploads the
- * tree and the geometry, then the rays in chunks; *kernel_ms (may be NULL)
- * receives the kernels' device time from profiling events, without the
- * setup and transfers.  count 0 returns ATRBVH_OK at once.  Errors: as the
- * CPU batch functions for the arguments; ATRBVH_ERR_UNSUPPORTED when the
- * library has no OpenCL backend or no device exists; ATRBVH_ERR_BACKEND or
- * ATRBVH_ERR_NOMEM when the device fails. */
+/* The same queries on an open device (atrbvh_device_open): on an OpenCL
+ * device one work-item per ray, for measuring rays per second on a device
+ * and checking a device against the CPU; on a "cpu" device the OpenMP
+ * batches above with the default thread count.  The kernels run the very
+ * functions the CPU queries run (one source compiled as C99 and OpenCL C),
+ * so every result is bit for bit the one atrbvh_intersect/atrbvh_occluded
+ * give (primitive, t, u, v).  The BVH may have been built on either
+ * backend or loaded.  Each call uploads the tree and the geometry, then
+ * the rays in chunks (the device's program and context are the handle's,
+ * made once); *kernel_ms (may be NULL) receives the kernels' device time
+ * from profiling events, without the transfers (0 on the CPU).  count 0
+ * returns ATRBVH_OK at once.  Errors: as the CPU batch functions for the
+ * arguments (a NULL device is ATRBVH_ERR_INVALID_ARGUMENT);
+ * ATRBVH_ERR_BACKEND or ATRBVH_ERR_NOMEM when the device fails. */
 ATRBVH_API atrbvh_status atrbvh_intersect_batch_device(
-    const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
-    const atrbvh_ray *rays, size_t count, atrbvh_hit *hits,
-    const char *device, double *kernel_ms, atrbvh_error *error);
+    atrbvh_device *device, const atrbvh_bvh *bvh,
+    const atrbvh_geometry *geometry, const atrbvh_ray *rays, size_t count,
+    atrbvh_hit *hits, double *kernel_ms, atrbvh_error *error);
 ATRBVH_API atrbvh_status atrbvh_occluded_batch_device(
-    const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
-    const atrbvh_ray *rays, size_t count, uint8_t *occluded,
-    const char *device, double *kernel_ms, atrbvh_error *error);
+    atrbvh_device *device, const atrbvh_bvh *bvh,
+    const atrbvh_geometry *geometry, const atrbvh_ray *rays, size_t count,
+    uint8_t *occluded, double *kernel_ms, atrbvh_error *error);
 
 /* ----------------------------------------------------------- save and load */
 /* The file format is documented in atrbvh(5). */

@@ -21,6 +21,7 @@
 #include "shared/arith.h"
 #include "shared/stages.h"
 
+#include <pthread.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -61,6 +62,12 @@ typedef struct atrbvh_i_input {
     const atrbvh_geometry *g;
     size_t vstride, istride, bstride;
 } atrbvh_i_input;
+
+/* Box of primitive i of the input; returns an ATRBVH_PRIM_* code
+ * (shared/stages.h), *bad_value the offending vertex index for
+ * ATRBVH_PRIM_BAD_INDEX. */
+int atrbvh_i_prim_box(const atrbvh_i_input *in, size_t i, atrbvh_box *out,
+                      uint32_t *bad_value);
 
 /* Options after validation and default resolution. */
 typedef struct atrbvh_i_config {
@@ -140,8 +147,8 @@ typedef struct atrbvh_i_capture {
     uint32_t *collapse_size;  /* collapse: output nodes per subtree    */
 } atrbvh_i_capture;
 
-/* Allocates the capture's arrays for `what` (tree_alloc: every array of a
- * tree of n leaves; values = 0 leaves box and cost NULL). */
+/* Allocates every array of a tree of n leaves (values = 0: box and cost
+ * stay NULL), with the library's allocator; tree_free releases them. */
 atrbvh_status atrbvh_i_tree_alloc(atrbvh_i_tree *t, uint32_t n, int values);
 void atrbvh_i_tree_free(atrbvh_i_tree *t);
 
@@ -155,6 +162,10 @@ struct atrbvh_device {
     char name[128];
     atrbvh_i_scratch scratch; /* host scratch kept between builds */
     void *impl;
+    /* Held by the pipeline around every build and ray batch on this
+     * handle: a backend never sees two calls on one device at once. */
+    pthread_mutex_t lock;
+    int temporary; /* a handle made for one call (no lock taken) */
 };
 
 typedef atrbvh_status (*atrbvh_i_stage_fn)(atrbvh_device *dev,

@@ -265,59 +265,67 @@ trav_scene(bvh, geometry, &s); /* checked */
     return ATRBVH_OK;
 }
 
-/* The device versions: the same checks, then cl/backend.c. */
-static atrbvh_status device_batch(const atrbvh_bvh *bvh,
+/* The device versions: the same checks, then the device's backend (the
+ * CPU's is the OpenMP batch above). */
+static atrbvh_status device_batch(atrbvh_device *dev, const atrbvh_bvh *bvh,
                                   const atrbvh_geometry *geometry,
                                   const atrbvh_ray *rays, size_t count,
                                   atrbvh_hit *hits, uint8_t *occluded,
-                                  int any, const char *device,
-                                  double *kernel_ms, const char *fn,
+                                  int any, double *kernel_ms, const char *fn,
                                   atrbvh_error *error)
 {
+    atrbvh_i_input in;
     atrbvh_status st;
     if (kernel_ms)
         *kernel_ms = 0.0;
+    if (!dev)
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "%s: the device is NULL", fn);
     st = atrbvh_i_trav_check(bvh, geometry, rays, count,
                              any ? (const void *)occluded
                                  : (const void *)hits,
                              0, fn, error);
     if (st != ATRBVH_OK)
         return st;
-#ifdef ATRBVH_HAVE_OPENCL
     atrbvh_i_clear_error(error);
     if (count == 0)
         return ATRBVH_OK;
-    return atrbvh_i_cl_trace(bvh, geometry, rays, count, hits, occluded,
-                             device, kernel_ms, error);
-#else
-    (void)device;
-    return atrbvh_i_fail(error, ATRBVH_ERR_UNSUPPORTED, (uint64_t)-1,
-                         "%s: this build has no OpenCL backend "
-                         "(configure --enable-opencl)",
-                         fn);
-#endif
+    if (!dev->backend->trace)
+        return any ? atrbvh_occluded_batch(bvh, geometry, rays, count,
+                                           occluded, 0, error)
+                   : atrbvh_intersect_batch(bvh, geometry, rays, count, hits,
+                                            0, error);
+    st = atrbvh_i_check_geometry(geometry, &in, error);
+    if (st != ATRBVH_OK)
+        return st;
+    atrbvh_i_device_lock(dev);
+    st = dev->backend->trace(dev, bvh->nodes, bvh->node_count,
+                             bvh->prim_indices, bvh->prim_count, &in, rays,
+                             count, hits, occluded, 0, kernel_ms, error);
+    atrbvh_i_device_unlock(dev);
+    return st;
 }
 
-atrbvh_status atrbvh_intersect_batch_device(const atrbvh_bvh *bvh,
+atrbvh_status atrbvh_intersect_batch_device(atrbvh_device *device,
+                                            const atrbvh_bvh *bvh,
                                             const atrbvh_geometry *geometry,
                                             const atrbvh_ray *rays,
                                             size_t count, atrbvh_hit *hits,
-                                            const char *device,
                                             double *kernel_ms,
                                             atrbvh_error *error)
 {
-    return device_batch(bvh, geometry, rays, count, hits, NULL, 0, device,
+    return device_batch(device, bvh, geometry, rays, count, hits, NULL, 0,
                         kernel_ms, "atrbvh_intersect_batch_device", error);
 }
 
-atrbvh_status atrbvh_occluded_batch_device(const atrbvh_bvh *bvh,
+atrbvh_status atrbvh_occluded_batch_device(atrbvh_device *device,
+                                           const atrbvh_bvh *bvh,
                                            const atrbvh_geometry *geometry,
                                            const atrbvh_ray *rays,
                                            size_t count, uint8_t *occluded,
-                                           const char *device,
                                            double *kernel_ms,
                                            atrbvh_error *error)
 {
-    return device_batch(bvh, geometry, rays, count, NULL, occluded, 1, device,
+    return device_batch(device, bvh, geometry, rays, count, NULL, occluded, 1,
                         kernel_ms, "atrbvh_occluded_batch_device", error);
 }

@@ -1,6 +1,7 @@
 /*
- * validate.c - stage capture and atrbvh_validate_backends: build on the CPU
- * and on OpenCL, compare every stage's output, name the first difference.
+ * validate.c - atrbvh_validate_backends: build on the CPU and on OpenCL
+ * with the pipeline's stage capture, compare every stage's output, name
+ * the first difference.
  */
 #include "config.h"
 
@@ -8,34 +9,6 @@
 
 #include <stdio.h>
 #include <string.h>
-
-void atrbvh_i_capture_free(atrbvh_i_capture *c)
-{
-    atrbvh_i_free(c->prim_boxes);
-    atrbvh_i_free(c->keys);
-    atrbvh_i_free(c->sorted_keys);
-    atrbvh_i_free(c->order);
-    atrbvh_i_free(c->collapse_size);
-    atrbvh_i_tree_free(&c->hierarchy);
-    atrbvh_i_tree_free(&c->refit);
-    atrbvh_i_tree_free(&c->optimise);
-    memset(c, 0, sizeof *c);
-}
-
-atrbvh_status atrbvh_i_tree_copy(atrbvh_i_tree *dst, const atrbvh_i_tree *src)
-{
-    size_t n = src->n, nodes = 2 * n - 1, inner = n > 1 ? n - 1 : 1;
-    if (atrbvh_i_tree_alloc(dst, src->n) != ATRBVH_OK)
-        return ATRBVH_ERR_NOMEM;
-    memcpy(dst->left, src->left, inner * sizeof *dst->left);
-    memcpy(dst->right, src->right, inner * sizeof *dst->right);
-    memcpy(dst->parent, src->parent, nodes * sizeof *dst->parent);
-    memcpy(dst->count, src->count, nodes * sizeof *dst->count);
-    memcpy(dst->box, src->box, nodes * sizeof *dst->box);
-    memcpy(dst->cost, src->cost, nodes * sizeof *dst->cost);
-    memcpy(dst->leaf_prim, src->leaf_prim, n * sizeof *dst->leaf_prim);
-    return ATRBVH_OK;
-}
 
 #ifdef ATRBVH_HAVE_OPENCL
 static void box_text(char *buf, size_t size, const atrbvh_box *b)
@@ -201,11 +174,19 @@ atrbvh_status atrbvh_validate_backends(const atrbvh_geometry *geometry,
 #else
     memset(&ca, 0, sizeof ca);
     memset(&cb, 0, sizeof cb);
-    o.backend = ATRBVH_BACKEND_CPU;
-    st = atrbvh_i_build_run(geometry, &o, &ba, &ca, error);
-    if (st == ATRBVH_OK) {
-        o.backend = ATRBVH_BACKEND_OPENCL;
-        st = atrbvh_i_build_run(geometry, &o, &bb, &cb, error);
+    /* The OpenCL side on the caller's device when it is an OpenCL one,
+     * else on a device opened for this build; the CPU side on the CPU. */
+    {
+        atrbvh_device *dev = o.device;
+        o.device = NULL;
+        o.backend = ATRBVH_BACKEND_CPU;
+        st = atrbvh_i_build_run(geometry, &o, &ba, &ca, error);
+        if (st == ATRBVH_OK) {
+            if (dev && atrbvh_device_backend(dev) == ATRBVH_BACKEND_OPENCL)
+                o.device = dev;
+            o.backend = ATRBVH_BACKEND_OPENCL;
+            st = atrbvh_i_build_run(geometry, &o, &bb, &cb, error);
+        }
     }
     if (st == ATRBVH_OK) {
         atrbvh_i_clear_error(error);

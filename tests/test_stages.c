@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "internal.h"
+#include "cpu/cpu.h"
 #include "testutil.h"
 
 typedef struct pair {

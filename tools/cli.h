@@ -78,6 +78,8 @@ typedef struct cli_built {
     atrbvh_bvh *bvh;
     atrbvh_stats stats;
     double load_ms;
+    atrbvh_device *device; /* opened once for --backend opencl (builds and
+                              device ray batches), else NULL */
 } cli_built;
 
 /* Loads the scene, builds, saves when asked; CLI_OK, or CLI_FAIL after an

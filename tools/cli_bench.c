@@ -482,7 +482,8 @@ static int run_config(const bench_args *a, scene_data *sd, const char *spec,
                 continue;
             tot[k - (warmup ? 1 : 0)] = st.build_ms;
             for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
-                stg[s * repeat + k - (warmup ? 1 : 0)] = st.stage_ms[s];
+                stg[s * repeat + k - (warmup ? 1 : 0)] =
+                    atrbvh_bvh_stage_ms(bvh, (atrbvh_stage)s);
         }
         r->threads = st.threads;
         r->treelet = st.treelet_size;

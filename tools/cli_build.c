@@ -208,11 +208,11 @@ typedef struct progress {
     int shown;
 } progress;
 
-static void on_progress(const char *stage, double fraction, void *user)
+static int on_progress(const char *stage, double fraction, void *user)
 {
     progress *p = user;
     if (!p->shown && cli_now_ms() - p->start_ms < PROGRESS_AFTER_MS)
-        return;
+        return 0;
     if (!(fraction >= 0.0))
         fraction = 0.0;
     if (fraction > 1.0)
@@ -221,6 +221,7 @@ static void on_progress(const char *stage, double fraction, void *user)
             stage ? stage : "", (int)(fraction * 100.0 + 0.5));
     fflush(stderr);
     p->shown = 1;
+    return 0;
 }
 
 /* ----------------------------------------------------- load and build */
@@ -244,6 +245,22 @@ int cli_load_and_build(const cli_build_args *a, cli_built *b)
         return CLI_FAIL;
     }
     b->geometry = scene_geometry(&b->sc);
+    if (o.backend == ATRBVH_BACKEND_OPENCL) {
+        /* One device handle for the build and any ray batches after it;
+         * the library reads no environment, the tool does. */
+        const char *name = o.opencl_device ? o.opencl_device
+                                           : getenv("ATRBVH_OPENCL_DEVICE");
+        char spec[512];
+        snprintf(spec, sizeof spec, "opencl%s%s", name && *name ? ":" : "",
+                 name && *name ? name : "");
+        memset(&e, 0, sizeof e);
+        st = atrbvh_device_open(spec, &b->device, &e);
+        if (st != ATRBVH_OK) {
+            cli_error("%s", e.text[0] ? e.text : atrbvh_strerror(st));
+            return CLI_FAIL;
+        }
+        o.device = b->device;
+    }
     prog.start_ms = cli_now_ms();
     prog.shown = 0;
     if (isatty(STDERR_FILENO)) {
@@ -280,6 +297,7 @@ int cli_load_and_build(const cli_build_args *a, cli_built *b)
 void cli_built_free(cli_built *b)
 {
     atrbvh_bvh_free(b->bvh);
+    atrbvh_device_close(b->device);
     scene_free(&b->sc);
     memset(b, 0, sizeof *b);
 }
@@ -320,7 +338,7 @@ void cli_build_json(json_writer *w, const cli_build_args *a,
     json_begin_object(w);
     for (k = 0; k < ATRBVH_STAGE_COUNT; k++)
         json_kv_double(w, atrbvh_stage_name((atrbvh_stage)k),
-                       s->stage_ms[k]);
+                       atrbvh_bvh_stage_ms(b->bvh, (atrbvh_stage)k));
     json_end_object(w);
     if (s->backend == ATRBVH_BACKEND_OPENCL) {
         /* Device time per kernel (OpenCL profiling events, summed over
@@ -368,7 +386,7 @@ void cli_build_text(FILE *f, const cli_build_args *a, const cli_built *b)
     fprintf(f, "build            %.3f ms\n", s->build_ms);
     for (k = 0; k < ATRBVH_STAGE_COUNT; k++)
         fprintf(f, "  %-14s %.3f ms\n", atrbvh_stage_name((atrbvh_stage)k),
-                s->stage_ms[k]);
+                atrbvh_bvh_stage_ms(b->bvh, (atrbvh_stage)k));
     if (a->output)
         fprintf(f, "saved to         %s\n", a->output);
 }

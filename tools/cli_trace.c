@@ -141,7 +141,6 @@ typedef struct tracer {
     const cli_built *b;
     int threads;
     int device;              /* trace with the OpenCL kernels */
-    const char *device_spec; /* --device */
     atrbvh_ray *rays;
     atrbvh_hit *hits;
     uint8_t *occluded;
@@ -158,13 +157,13 @@ static int run_batch(tracer *tr, size_t n, int any_hit, ray_stats *rs)
     if (tr->device) {
         double kms = 0.0;
         if (any_hit)
-            st = atrbvh_occluded_batch_device(tr->b->bvh, &tr->b->geometry,
-                                              tr->rays, n, tr->occluded,
-                                              tr->device_spec, &kms, &e);
+            st = atrbvh_occluded_batch_device(tr->b->device, tr->b->bvh,
+                                              &tr->b->geometry, tr->rays, n,
+                                              tr->occluded, &kms, &e);
         else
-            st = atrbvh_intersect_batch_device(tr->b->bvh, &tr->b->geometry,
-                                               tr->rays, n, tr->hits,
-                                               tr->device_spec, &kms, &e);
+            st = atrbvh_intersect_batch_device(tr->b->device, tr->b->bvh,
+                                               &tr->b->geometry, tr->rays, n,
+                                               tr->hits, &kms, &e);
         rs->kernel_ms += kms;
     } else if (any_hit) {
         st = atrbvh_occluded_batch(tr->b->bvh, &tr->b->geometry, tr->rays, n,
@@ -276,7 +275,6 @@ static int trace(const cli_build_args *a, const cli_built *b,
     tr.b = b;
     tr.threads = a->options.threads;
     tr.device = a->options.backend == ATRBVH_BACKEND_OPENCL;
-    tr.device_spec = a->options.opencl_device;
     n = pixels > CHUNK ? pixels : CHUNK;
     tr.rays = malloc(n * sizeof *tr.rays);
     tr.hits = malloc(n * sizeof *tr.hits);

@@ -1,41 +1,35 @@
 /*
- * morton.c - stage "morton": a 63-bit Morton key (21 bits per axis, x the
- * most significant of each triplet) for the centre of each primitive box,
- * normalised to the centroid box (Lauterbach et al. 2009; Karras 2012).
- *
- * The per-axis scale is computed once here, on the host, and is the only
- * input besides the boxes, so every backend quantises identically.  A
- * zero-extent axis gets scale 0: all its coordinates quantise to 0 rather
- * than to 0/0.
+ * cpu/morton.c - stage "morton": a 63-bit Morton key (21 bits per axis, x
+ * the most significant of each triplet) for the centre of each primitive
+ * box, normalised to the centroid box (Lauterbach et al. 2009; Karras
+ * 2012).  The frame (lo, scale) is the pipeline's, computed once on the
+ * host for every backend; the per-item rule is shared/arith.h's.
  */
 #include "config.h"
 
-#include "internal.h"
+#include "cpu.h"
 
-void atrbvh_i_morton_frame(const atrbvh_box *centroids, double lo[3],
-                           double scale[3])
+atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *dev, atrbvh_i_run *run,
+                                  atrbvh_error *error)
 {
-    int k;
-    for (k = 0; k < 3; k++) {
-        double extent = (double)centroids->max[k] - (double)centroids->min[k];
-        lo[k] = (double)centroids->min[k];
-        scale[k] = extent > 0.0 ? (double)(1u << ATRBVH_MORTON_BITS) / extent
-                                : 0.0;
-    }
-}
-
-void atrbvh_i_morton(const atrbvh_i_prims *p, uint64_t *keys, int threads)
-{
-    double lo[3], scale[3];
+    atrbvh_i_cpu_run *c = run->state;
+    const atrbvh_box *boxes = c->boxes;
+    const double *lo = run->morton_lo, *scale = run->morton_scale;
+    const int64_t n = run->n;
+    uint64_t *keys;
     int64_t i;
-    atrbvh_i_morton_frame(&p->centroids, lo, scale);
+    (void)dev;
+    keys = c->keys = atrbvh_i_scratch_get(c->scratch, CPU_KEYS, run->n,
+                                          sizeof *c->keys);
+    if (!keys)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                             "cannot allocate Morton keys for %lu primitives",
+                             (unsigned long)run->n);
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) schedule(static)
-#else
-    (void)threads;
+#pragma omp parallel for num_threads(run->cfg->threads) schedule(static)
 #endif
-    for (i = 0; i < (int64_t)p->count; i++) {
-        const atrbvh_box b = p->boxes[i];
+    for (i = 0; i < n; i++) {
+        const atrbvh_box b = boxes[i];
         atrbvh_u32 q[3];
         int a;
         for (a = 0; a < 3; a++)
@@ -43,4 +37,5 @@ void atrbvh_i_morton(const atrbvh_i_prims *p, uint64_t *keys, int threads)
                                           scale[a]);
         keys[i] = atrbvh_morton_key(q[0], q[1], q[2]);
     }
+    return ATRBVH_OK;
 }

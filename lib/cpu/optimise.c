@@ -23,7 +23,7 @@
  * treelet root keeps its id and parent, so the walk's way up stays valid.
  * Scratch is per thread, allocated once per build.
  */
-#include "internal.h"
+#include "cpu.h"
 #include "shared/treelet.h"
 
 /* One thread's scratch, allocated once per build (never per treelet). */
@@ -143,11 +143,13 @@ static void walk_tasks(const walk_ctx *c, uint32_t node, int depth)
 #define ALIGN64(x) (((x) + 63u) & ~(size_t)63u)
 
 atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
+                                atrbvh_i_scratch *scratch, atrbvh_i_run *run,
                                 atrbvh_error *error)
 {
+    atrbvh_i_scratch own;
     walk_ctx c;
     opt_worker *workers = NULL;
-    unsigned char *block = NULL;
+    unsigned char *block;
     size_t subsets = 0, pairs = 0, stride = 0, off_cost, off_count,
            off_split, off_dist, total;
     unsigned round, n = cfg->treelet_size;
@@ -187,11 +189,16 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     if (!atrbvh_i_mul_size((size_t)threads, stride, &total))
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
                              "optimise: scratch size overflows");
-    workers = atrbvh_i_alloc_array((size_t)threads, sizeof *workers);
-    block = atrbvh_i_alloc_array(total, 1);
+    if (!scratch) {
+        memset(&own, 0, sizeof own);
+        scratch = &own;
+    }
+    workers = atrbvh_i_scratch_get(scratch, CPU_WORKERS, (size_t)threads,
+                                   sizeof *workers);
+    block = atrbvh_i_scratch_get(scratch, CPU_OPTIMISE, total, 1);
     if (!workers || !block) {
-        atrbvh_i_free(workers);
-        atrbvh_i_free(block);
+        if (scratch == &own)
+            atrbvh_i_scratch_free(&own);
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "optimise: out of memory for %d x %lu bytes of "
                              "treelet scratch",
@@ -224,6 +231,13 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         if (g > t->count[0])
             break; /* no crown left: later rounds would do nothing */
         c.gamma = (uint32_t)g;
+        if (run && atrbvh_i_stage_progress(run, round, cfg->rounds)) {
+            if (scratch == &own)
+                atrbvh_i_scratch_free(&own);
+            return atrbvh_i_fail(error, ATRBVH_ERR_CANCELLED, (uint64_t)-1,
+                                 "cancelled in the optimise stage, round %u",
+                                 round + 1);
+        }
         if (threads > 1 && t->count[0] >= TASK_CUTOFF) {
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads)
@@ -235,7 +249,16 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         }
     }
 
-    atrbvh_i_free(block);
-    atrbvh_i_free(workers);
+    if (scratch == &own)
+        atrbvh_i_scratch_free(&own);
     return ATRBVH_OK;
+}
+
+/* The stage. */
+atrbvh_status atrbvh_i_cpu_optimise(atrbvh_device *dev, atrbvh_i_run *run,
+                                    atrbvh_error *error)
+{
+    atrbvh_i_cpu_run *c = run->state;
+    (void)dev;
+    return atrbvh_i_optimise(&c->tree, run->cfg, c->scratch, run, error);
 }

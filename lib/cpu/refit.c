@@ -9,7 +9,7 @@
  */
 #include "config.h"
 
-#include "internal.h"
+#include "cpu.h"
 
 /* Subtrees smaller than this are refitted by one task, serially. */
 #define TASK_CUTOFF 4096u
@@ -66,4 +66,16 @@ void atrbvh_i_refit(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
 #endif
         refit_node(t, 0, p);
     }
+}
+
+/* The stage: boxes, counts and costs of the tree. */
+atrbvh_status atrbvh_i_cpu_refit(atrbvh_device *dev, atrbvh_i_run *run,
+                                 atrbvh_error *error)
+{
+    atrbvh_i_cpu_run *c = run->state;
+    (void)dev;
+    (void)error;
+    atrbvh_i_refit(&c->tree, c->boxes, c->order, &run->cfg->cost,
+                   run->cfg->threads);
+    return ATRBVH_OK;
 }

@@ -22,7 +22,7 @@
  */
 #include "config.h"
 
-#include "internal.h"
+#include "cpu.h"
 
 #include <string.h>
 
@@ -219,5 +219,35 @@ atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
     }
     atrbvh_i_free(counts);
     atrbvh_i_free(start);
+    return ATRBVH_OK;
+}
+
+/* The stage: keys (morton) sorted with their build indices. */
+atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
+                                atrbvh_error *error)
+{
+    atrbvh_i_cpu_run *c = run->state;
+    const uint32_t n = run->n;
+    uint64_t *tmp_keys;
+    uint32_t *tmp_order, i;
+    (void)dev;
+    c->order = atrbvh_i_scratch_get(c->scratch, CPU_ORDER, n, sizeof *c->order);
+    tmp_keys = atrbvh_i_scratch_get(c->scratch, CPU_TMP_KEYS, n,
+                                    sizeof *tmp_keys);
+    tmp_order = atrbvh_i_scratch_get(c->scratch, CPU_TMP_ORDER, n,
+                                     sizeof *tmp_order);
+    if (!c->order || !tmp_keys || !tmp_order)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                             "cannot allocate sort buffers for %lu "
+                             "primitives",
+                             (unsigned long)n);
+    for (i = 0; i < n; i++)
+        c->order[i] = i;
+    if (atrbvh_i_radix_sort(c->keys, c->order, tmp_keys, tmp_order, n,
+                            run->cfg->threads) != ATRBVH_OK)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                             "cannot allocate sort counters for %lu "
+                             "primitives",
+                             (unsigned long)n);
     return ATRBVH_OK;
 }

@@ -1,7 +1,7 @@
 /*
- * measure.c - the BVH object: accessors, statistics measured on the node
- * array actually built (never an estimate), and the structural check used on
- * load and, with --enable-debug-checks, after every build.
+ * check.c - the structural walk of a node array: the check used on load
+ * and, with --enable-debug-checks, after every build; and the statistics
+ * measured on the array built (depth, leaves, SAH).
  */
 #include "config.h"
 
@@ -9,93 +9,6 @@
 
 #include <math.h>
 #include <string.h>
-
-atrbvh_bvh *atrbvh_i_bvh_alloc(size_t node_count, size_t prim_count)
-{
-    atrbvh_bvh *b = atrbvh_i_malloc(sizeof *b);
-    if (!b)
-        return NULL;
-    memset(b, 0, sizeof *b);
-    if (node_count) {
-        b->nodes = atrbvh_i_alloc_array(node_count, sizeof *b->nodes);
-        b->prim_indices = atrbvh_i_alloc_array(prim_count, sizeof *b->prim_indices);
-        if (!b->nodes || !b->prim_indices) {
-            atrbvh_bvh_free(b);
-            return NULL;
-        }
-        b->node_count = node_count;
-        b->prim_count = prim_count;
-    }
-    return b;
-}
-
-void atrbvh_bvh_free(atrbvh_bvh *bvh)
-{
-    if (!bvh)
-        return;
-    atrbvh_i_free(bvh->nodes);
-    atrbvh_i_free(bvh->prim_indices);
-    atrbvh_i_free(bvh->device);
-    atrbvh_i_free(bvh);
-}
-
-const atrbvh_node *atrbvh_bvh_nodes(const atrbvh_bvh *bvh, size_t *count)
-{
-    if (count)
-        *count = bvh ? bvh->node_count : 0;
-    return bvh ? bvh->nodes : NULL;
-}
-
-const uint32_t *atrbvh_bvh_primitive_indices(const atrbvh_bvh *bvh,
-                                             size_t *count)
-{
-    if (count)
-        *count = bvh ? bvh->prim_count : 0;
-    return bvh ? bvh->prim_indices : NULL;
-}
-
-void atrbvh_bvh_stats(const atrbvh_bvh *bvh, atrbvh_stats *stats)
-{
-    if (!stats)
-        return;
-    if (!bvh) {
-        memset(stats, 0, sizeof *stats);
-        return;
-    }
-    *stats = bvh->stats;
-}
-
-static atrbvh_box node_box(const atrbvh_node *n)
-{
-    atrbvh_box b;
-    int k;
-    for (k = 0; k < 3; k++) {
-        b.min[k] = n->min[k];
-        b.max[k] = n->max[k];
-    }
-    return b;
-}
-
-double atrbvh_sah(const atrbvh_node *nodes, size_t node_count, double ci,
-                  double ct)
-{
-    /* Summed in node order, serially: the same bits on every run. */
-    double inner = 0.0, leaves = 0.0, root;
-    size_t i;
-    if (!nodes || node_count == 0)
-        return 0.0;
-    root = atrbvh_box_area(node_box(&nodes[0]));
-    if (!(root > 0.0))
-        return 0.0;
-    for (i = 0; i < node_count; i++) {
-        double a = atrbvh_box_area(node_box(&nodes[i]));
-        if (nodes[i].count)
-            leaves += a * (double)nodes[i].count;
-        else
-            inner += a;
-    }
-    return (ci * inner + ct * leaves) / root;
-}
 
 /* Walks the depth-first array with an explicit stack of pending right
  * children; in a valid array the walk visits 0, 1, 2, ... in order.

@@ -1,0 +1,96 @@
+/*
+ * cpu/cpu.h - the CPU backend: what its stage files share.  Each stage
+ * file holds only the OpenMP mapping of its stage; the per-item
+ * arithmetic is lib/shared/'s.  Like every backend it sees lib/ through
+ * backend.h alone.
+ */
+#ifndef ATRBVH_CPU_H
+#define ATRBVH_CPU_H
+
+#include "backend.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+/* Internal nodes 0 .. n-2, leaves n-1 .. 2n-2 (atrbvh_i_tree). */
+static inline int atrbvh_i_is_leaf(const atrbvh_i_tree *t, uint32_t node)
+{
+    return node >= t->n - 1;
+}
+
+/* Scratch slots of the device (atrbvh_i_scratch_get) a build uses. */
+enum {
+    CPU_BOXES,     /* n primitive boxes, build order        */
+    CPU_IDS,       /* n kept primitive ids (skip_invalid)    */
+    CPU_KEYS,      /* n Morton keys                          */
+    CPU_ORDER,     /* n build indices, sorted with the keys  */
+    CPU_TMP_KEYS,  /* sort scratch                           */
+    CPU_TMP_ORDER,
+    CPU_LEFT,      /* the tree (atrbvh_i_tree)               */
+    CPU_RIGHT,
+    CPU_PARENT,
+    CPU_COUNT,
+    CPU_BOX,
+    CPU_COST,
+    CPU_LEAF_PRIM,
+    CPU_SIZE,      /* collapse: output nodes per subtree     */
+    CPU_OPTIMISE,  /* treelet scratch, per thread            */
+    CPU_WORKERS,   /* per-thread treelet counters            */
+    CPU_SLOTS
+};
+
+/* One build on the CPU (run->state). */
+typedef struct atrbvh_i_cpu_run {
+    atrbvh_i_scratch *scratch;
+    atrbvh_box *boxes;  /* bounds (or set_prims)             */
+    uint32_t *ids;      /* NULL: every input primitive kept  */
+    uint64_t *keys;     /* morton, sorted by sort            */
+    uint32_t *order;    /* sort: build index of position p   */
+    atrbvh_i_tree tree; /* hierarchy ... optimise            */
+    uint32_t *size;     /* collapse                          */
+} atrbvh_i_cpu_run;
+
+/* The stages (backend.h's atrbvh_i_stage_fn). */
+atrbvh_status atrbvh_i_cpu_bounds(atrbvh_device *, atrbvh_i_run *,
+                                  atrbvh_error *);
+atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *, atrbvh_i_run *,
+                                  atrbvh_error *);
+atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *, atrbvh_i_run *,
+                                atrbvh_error *);
+atrbvh_status atrbvh_i_cpu_hierarchy(atrbvh_device *, atrbvh_i_run *,
+                                     atrbvh_error *);
+atrbvh_status atrbvh_i_cpu_refit(atrbvh_device *, atrbvh_i_run *,
+                                 atrbvh_error *);
+atrbvh_status atrbvh_i_cpu_optimise(atrbvh_device *, atrbvh_i_run *,
+                                    atrbvh_error *);
+atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *, atrbvh_i_run *,
+                                    atrbvh_error *);
+atrbvh_status atrbvh_i_cpu_layout(atrbvh_device *, atrbvh_i_run *,
+                                  atrbvh_error *);
+
+/* The stages' algorithms, callable on plain arrays (tests use them). */
+/* Stable LSD radix sort of (keys, values) pairs; tmp_* are scratch of the
+ * same length; the result ends in keys/values.  Passes whose digit is the
+ * same for every key are skipped.  ATRBVH_ERR_NOMEM (nothing else) when
+ * its counters cannot be had. */
+atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
+                                  uint64_t *tmp_keys, uint32_t *tmp_values,
+                                  uint32_t n, int threads);
+/* Karras 2012: topology from sorted keys (left, right, parent, and count
+ * of internal nodes). */
+void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
+                        int threads);
+/* Leaf n-1+p gets prim_boxes[order[p]], then boxes, counts and costs
+ * bottom-up.  Sets every field but left/right/parent/leaf_prim. */
+void atrbvh_i_refit(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
+                    const uint32_t *order, const atrbvh_cost_params *cost,
+                    int threads);
+/* TRBVH or ATRBVH treelet restructuring in place; per-thread scratch from
+ * slot CPU_OPTIMISE of `scratch`.  Progress by round through `run` (may
+ * be NULL). */
+atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
+                                atrbvh_i_scratch *scratch, atrbvh_i_run *run,
+                                atrbvh_error *error);
+
+#endif

@@ -1,0 +1,273 @@
+/*
+ * pipeline.c - atrbvh_build: the one sequencer.
+ *
+ *   bounds -> morton -> sort -> hierarchy -> refit -> optimise -> collapse
+ *   -> layout
+ *
+ * It runs the stages of a backend's table (backend.h) in this order on a
+ * device, and owns what is not per-item work: the options and the
+ * geometry's metadata, the exact error for an invalid primitive (found on
+ * the host, the same way for every backend), the Morton frame (host
+ * constants that steer decisions), timing, progress and cancellation,
+ * stage capture, and the output object.  Scratch memory is the device's:
+ * a handle opened once keeps it between builds; a build without one gets
+ * a temporary device freed when it ends.
+ */
+#include "config.h"
+
+#include "internal.h"
+
+#include <string.h>
+
+#define NO_INDEX ((uint64_t)-1)
+
+/* Share of the whole build each stage reports under (the optimise stage
+ * only when it runs): rough typical times, so the fraction moves with the
+ * work; progress never changes the tree. */
+static const double stage_weight[ATRBVH_STAGE_COUNT] = {
+    5.0, 3.0, 10.0, 7.0, 8.0, 50.0, 4.0, 5.0};
+
+typedef struct progress_state {
+    atrbvh_progress_fn fn;
+    void *user;
+    atrbvh_stage stage;
+    double base, span, last;
+    int cancelled;
+} progress_state;
+
+int atrbvh_i_stage_progress(atrbvh_i_run *run, uint64_t done, uint64_t total)
+{
+    progress_state *p = run->pipeline;
+    double f;
+    if (!p || !p->fn)
+        return 0;
+    if (p->cancelled)
+        return 1;
+    f = p->base + (total ? p->span * (double)done / (double)total : 0.0);
+    if (f < p->last)
+        f = p->last;
+    if (f > 1.0)
+        f = 1.0;
+    p->last = f;
+    if (p->fn(atrbvh_stage_name(p->stage), f, p->user) != 0)
+        p->cancelled = 1;
+    return p->cancelled;
+}
+
+static atrbvh_status cancelled(atrbvh_error *error, atrbvh_stage stage)
+{
+    return atrbvh_i_fail(error, ATRBVH_ERR_CANCELLED, NO_INDEX,
+                         "cancelled by the progress callback before the %s "
+                         "stage",
+                         atrbvh_stage_name(stage));
+}
+
+/* After bounds found an invalid primitive: the exact error, or (with
+ * skip_invalid) the compacted primitives for the backend. */
+static atrbvh_status invalid_prims(atrbvh_device *dev, atrbvh_i_run *run,
+                                   atrbvh_error *error)
+{
+    atrbvh_box *boxes = NULL;
+    uint32_t *ids = NULL, kept = 0;
+    atrbvh_status st = atrbvh_i_scan_prims(&run->in, run->cfg, &boxes, &ids,
+                                           &kept, &run->scene,
+                                           &run->centroids, &run->invalid,
+                                           error);
+    if (st == ATRBVH_OK) {
+        run->n = kept;
+        run->bad = 0;
+        st = dev->backend->set_prims(dev, run, boxes, ids, error);
+    }
+    atrbvh_i_free(boxes);
+    atrbvh_i_free(ids);
+    return st;
+}
+
+/* Statistics of the tree built, the device record, stage times. */
+static atrbvh_status finish(atrbvh_bvh *bvh, atrbvh_device *dev,
+                            const atrbvh_i_run *run, const double *stage_ms,
+                            double t0, atrbvh_error *error)
+{
+    const atrbvh_i_config *cfg = run->cfg;
+    atrbvh_status st;
+    int s;
+    bvh->stats.invalid_skipped = run->invalid;
+    bvh->stats.ci = cfg->cost.ci;
+    bvh->stats.ct = cfg->cost.ct;
+    bvh->stats.method = cfg->method;
+    bvh->stats.treelet_size = cfg->treelet_size;
+    bvh->stats.rounds = cfg->rounds;
+    bvh->stats.backend = dev->backend->kind;
+    bvh->stats.threads = cfg->threads;
+    st = atrbvh_i_bvh_measure(bvh);
+    if (st != ATRBVH_OK)
+        return st == ATRBVH_ERR_NOMEM
+                   ? atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                                   "cannot allocate statistics scratch for "
+                                   "%lu nodes",
+                                   (unsigned long)bvh->node_count)
+                   : atrbvh_i_fail(error, ATRBVH_ERR_BACKEND, NO_INDEX,
+                                   "internal error: the built tree is "
+                                   "invalid");
+#ifdef ATRBVH_DEBUG_CHECKS
+    st = atrbvh_i_bvh_check(bvh, 1, error);
+    if (st != ATRBVH_OK)
+        return st;
+#endif
+    if (dev->backend->kind != ATRBVH_BACKEND_CPU) {
+        const char *name;
+        double ms;
+        size_t k;
+        bvh->device = atrbvh_i_malloc(sizeof *bvh->device);
+        if (!bvh->device)
+            return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                                 "cannot allocate the device information");
+        memset(bvh->device, 0, sizeof *bvh->device);
+        memcpy(bvh->device->name, dev->name, sizeof bvh->device->name);
+        for (k = 0; dev->backend->kernel_time &&
+                    dev->backend->kernel_time(dev, k, &name, &ms);
+             k++)
+            atrbvh_i_bvh_add_kernel_time(bvh, name, ms);
+    }
+    for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
+        bvh->stage_ms[s] = stage_ms[s];
+    bvh->stats.build_ms = atrbvh_i_now_ms() - t0;
+    return ATRBVH_OK;
+}
+
+/* The stages on an open device, locked. */
+static atrbvh_status run_stages(atrbvh_device *dev, atrbvh_i_run *run,
+                                progress_state *prog, atrbvh_i_capture *cap,
+                                atrbvh_bvh **out, double t0,
+                                atrbvh_error *error)
+{
+    const atrbvh_i_backend *be = dev->backend;
+    double ms[ATRBVH_STAGE_COUNT], total = 0.0;
+    atrbvh_bvh *bvh = NULL;
+    atrbvh_status st;
+    int s;
+
+    memset(ms, 0, sizeof ms);
+    for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
+        if (s != ATRBVH_STAGE_OPTIMISE || run->cfg->method != ATRBVH_METHOD_LBVH)
+            total += stage_weight[s];
+
+    st = be->begin(dev, run, error);
+    if (st != ATRBVH_OK)
+        return st;
+    for (s = 0; s < ATRBVH_STAGE_COUNT; s++) {
+        const atrbvh_stage stage = (atrbvh_stage)s;
+        const int runs = stage != ATRBVH_STAGE_OPTIMISE ||
+                         run->cfg->method != ATRBVH_METHOD_LBVH;
+        double t;
+        prog->stage = stage;
+        prog->span = runs ? stage_weight[s] / total : 0.0;
+        if (atrbvh_i_stage_progress(run, 0, 1)) {
+            st = cancelled(error, stage);
+            break;
+        }
+        t = atrbvh_i_now_ms();
+        if (stage == ATRBVH_STAGE_LAYOUT) {
+            /* The output object, sized by the collapse stage. */
+            bvh = atrbvh_i_bvh_alloc(run->node_count, run->n);
+            if (!bvh) {
+                st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                                   "cannot allocate the output (%lu nodes)",
+                                   (unsigned long)run->node_count);
+                break;
+            }
+            run->nodes = bvh->nodes;
+            run->prim_indices = bvh->prim_indices;
+        }
+        st = runs ? be->stage[s](dev, run, error) : ATRBVH_OK;
+        if (st == ATRBVH_OK && stage == ATRBVH_STAGE_BOUNDS) {
+            if (run->bad)
+                st = invalid_prims(dev, run, error);
+            if (st == ATRBVH_OK)
+                atrbvh_i_morton_frame(&run->centroids, run->morton_lo,
+                                      run->morton_scale);
+        }
+        ms[s] = atrbvh_i_now_ms() - t;
+        if (st == ATRBVH_OK && cap)
+            st = be->capture(dev, run, stage, cap, error);
+        if (st != ATRBVH_OK)
+            break;
+        prog->base += prog->span;
+    }
+    if (st == ATRBVH_OK)
+        st = finish(bvh, dev, run, ms, t0, error);
+    be->end(dev, run);
+    if (st == ATRBVH_OK && prog->fn) {
+        prog->stage = ATRBVH_STAGE_LAYOUT;
+        prog->base = 1.0;
+        prog->span = 0.0;
+        (void)atrbvh_i_stage_progress(run, 1, 1); /* done: no cancelling */
+    }
+    if (st != ATRBVH_OK) {
+        atrbvh_bvh_free(bvh);
+        return st;
+    }
+    *out = bvh;
+    return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_build_run(const atrbvh_geometry *geometry,
+                                 const atrbvh_build_options *options,
+                                 atrbvh_bvh **out, atrbvh_i_capture *cap,
+                                 atrbvh_error *error)
+{
+    atrbvh_i_request req;
+    atrbvh_i_run run;
+    progress_state prog;
+    atrbvh_device temp, *dev;
+    atrbvh_status st;
+    double t0 = atrbvh_i_now_ms();
+
+    atrbvh_i_clear_error(error);
+    if (!out)
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
+                             "the output pointer is NULL");
+    *out = NULL;
+    st = atrbvh_i_resolve_options(options, &req, error);
+    if (st != ATRBVH_OK)
+        return st;
+    memset(&run, 0, sizeof run);
+    run.cfg = &req.cfg;
+    st = atrbvh_i_check_geometry(geometry, &run.in, error);
+    if (st != ATRBVH_OK)
+        return st;
+    memset(&prog, 0, sizeof prog);
+    prog.fn = req.progress;
+    prog.user = req.progress_user;
+    run.pipeline = &prog;
+
+    dev = req.device;
+    if (!dev && req.backend == ATRBVH_BACKEND_OPENCL) {
+#ifdef ATRBVH_HAVE_OPENCL
+        st = atrbvh_i_device_open_backend(&atrbvh_i_cl_backend,
+                                          req.opencl_device, &dev, error);
+        if (st != ATRBVH_OK)
+            return st;
+#else
+        return atrbvh_i_fail(error, ATRBVH_ERR_UNSUPPORTED, NO_INDEX,
+                             "this build of atrbvh has no OpenCL backend "
+                             "(configure --enable-opencl)");
+#endif
+    } else if (!dev) {
+        atrbvh_i_device_cpu_temp(&temp);
+        dev = &temp;
+    }
+    atrbvh_i_device_lock(dev);
+    st = run_stages(dev, &run, &prog, cap, out, t0, error);
+    atrbvh_i_device_unlock(dev);
+    if (dev != req.device)
+        atrbvh_device_close(dev); /* a temporary one */
+    return st;
+}
+
+atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
+                           const atrbvh_build_options *options,
+                           atrbvh_bvh **out, atrbvh_error *error)
+{
+    return atrbvh_i_build_run(geometry, options, out, NULL, error);
+}

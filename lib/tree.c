@@ -1,0 +1,99 @@
+/*
+ * tree.c - the binary tree's arrays outside a build (stage capture): alloc,
+ * copy, free; and the capture's release.
+ */
+#include "config.h"
+
+#include "internal.h"
+
+#include <string.h>
+
+atrbvh_status atrbvh_i_tree_alloc(atrbvh_i_tree *t, uint32_t n, int values)
+{
+    size_t nodes = 2 * (size_t)n - 1, inner = n > 1 ? (size_t)n - 1 : 1;
+    memset(t, 0, sizeof *t);
+    t->n = n;
+    t->left = atrbvh_i_alloc_array(inner, sizeof *t->left);
+    t->right = atrbvh_i_alloc_array(inner, sizeof *t->right);
+    t->parent = atrbvh_i_alloc_array(nodes, sizeof *t->parent);
+    t->count = atrbvh_i_alloc_array(nodes, sizeof *t->count);
+    t->leaf_prim = atrbvh_i_alloc_array(n, sizeof *t->leaf_prim);
+    if (values) {
+        t->box = atrbvh_i_alloc_array(nodes, sizeof *t->box);
+        t->cost = atrbvh_i_alloc_array(nodes, sizeof *t->cost);
+    }
+    if (!t->left || !t->right || !t->parent || !t->count || !t->leaf_prim ||
+        (values && (!t->box || !t->cost))) {
+        atrbvh_i_tree_free(t);
+        return ATRBVH_ERR_NOMEM;
+    }
+    return ATRBVH_OK;
+}
+
+void atrbvh_i_tree_free(atrbvh_i_tree *t)
+{
+    atrbvh_i_free(t->left);
+    atrbvh_i_free(t->right);
+    atrbvh_i_free(t->parent);
+    atrbvh_i_free(t->count);
+    atrbvh_i_free(t->box);
+    atrbvh_i_free(t->cost);
+    atrbvh_i_free(t->leaf_prim);
+    memset(t, 0, sizeof *t);
+}
+
+atrbvh_status atrbvh_i_tree_copy(atrbvh_i_tree *dst, const atrbvh_i_tree *src)
+{
+    size_t n = src->n, nodes = 2 * n - 1, inner = n > 1 ? n - 1 : 1;
+    int values = src->box != NULL;
+    if (atrbvh_i_tree_alloc(dst, src->n, values) != ATRBVH_OK)
+        return ATRBVH_ERR_NOMEM;
+    memcpy(dst->left, src->left, inner * sizeof *dst->left);
+    memcpy(dst->right, src->right, inner * sizeof *dst->right);
+    memcpy(dst->parent, src->parent, nodes * sizeof *dst->parent);
+    memcpy(dst->count, src->count, nodes * sizeof *dst->count);
+    memcpy(dst->leaf_prim, src->leaf_prim, n * sizeof *dst->leaf_prim);
+    if (values) {
+        memcpy(dst->box, src->box, nodes * sizeof *dst->box);
+        memcpy(dst->cost, src->cost, nodes * sizeof *dst->cost);
+    }
+    return ATRBVH_OK;
+}
+
+void atrbvh_i_capture_free(atrbvh_i_capture *c)
+{
+    atrbvh_i_free(c->prim_boxes);
+    atrbvh_i_free(c->keys);
+    atrbvh_i_free(c->sorted_keys);
+    atrbvh_i_free(c->order);
+    atrbvh_i_free(c->collapse_size);
+    atrbvh_i_tree_free(&c->hierarchy);
+    atrbvh_i_tree_free(&c->refit);
+    atrbvh_i_tree_free(&c->optimise);
+    memset(c, 0, sizeof *c);
+}
+
+/* ------------------------------------------------------------ scratch */
+void *atrbvh_i_scratch_get(atrbvh_i_scratch *s, unsigned slot, size_t count,
+                           size_t size)
+{
+    size_t bytes;
+    if (slot >= ATRBVH_I_SCRATCH_SLOTS || !atrbvh_i_mul_size(count, size, &bytes))
+        return NULL;
+    if (bytes == 0)
+        bytes = 1;
+    if (s->ptr[slot] && s->bytes[slot] >= bytes)
+        return s->ptr[slot];
+    atrbvh_i_free(s->ptr[slot]);
+    s->ptr[slot] = atrbvh_i_malloc(bytes);
+    s->bytes[slot] = s->ptr[slot] ? bytes : 0;
+    return s->ptr[slot];
+}
+
+void atrbvh_i_scratch_free(atrbvh_i_scratch *s)
+{
+    unsigned k;
+    for (k = 0; k < ATRBVH_I_SCRATCH_SLOTS; k++)
+        atrbvh_i_free(s->ptr[k]);
+    memset(s, 0, sizeof *s);
+}
