@@ -1,10 +1,10 @@
 /*
  * cl/kernels.cl - the OpenCL backend's kernels, one (or a short fixed
  * sequence) per stage, with the same names as the CPU stages.  OpenCL C
- * 1.2.  The host prepends lib/shared/*.h (the per-item arithmetic the CPU
- * backend compiles as C99, and the argument structs of kargs.h), so the
- * two backends run the same code per item; only the parallel mapping
- * differs.  Every kernel is a thin wrapper: it reads its item, calls the
+ * 1.2.  The host prepends the lib/shared headers (the per-item
+ * arithmetic the CPU backend compiles as C99, and the argument structs of
+ * kargs.h), so the two backends run the same code per item; only the
+ * parallel mapping differs.  Every kernel is a thin wrapper: it reads its item, calls the
  * shared function, writes the result.  Scalars come in one struct per
  * stage (shared/kargs.h), by value.
  *
