@@ -47,6 +47,7 @@ atrbvh_status atrbvh_i_cl_buffer(atrbvh_cl_device *c, int slot, size_t count,
     if (!c->buf[slot])
         return atrbvh_i_cl_error(error, err, "clCreateBuffer", what);
     c->buf_bytes[slot] = bytes;
+    c->buffers_created++;
     return ATRBVH_OK;
 }
 

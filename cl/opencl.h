@@ -114,6 +114,7 @@ typedef struct atrbvh_cl_device {
     cl_uint compute_units;
     cl_mem buf[B_SLOTS];
     size_t buf_bytes[B_SLOTS];
+    unsigned long buffers_created; /* clCreateBuffer calls (tests) */
     cl_event events[ATRBVH_CL_MAX_EVENTS];
     int event_kernel[ATRBVH_CL_MAX_EVENTS];
     int event_count;
