@@ -5,6 +5,7 @@
 #include "config.h"
 
 #include "internal.h"
+#include "shared/treelet.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -230,13 +231,6 @@ void atrbvh_build_options_init(atrbvh_build_options *o)
     o->device = NULL;
 }
 
-/* Treelet sizes each optimiser supports (issue 3). */
-#define TRBVH_MIN_N 3u
-#define TRBVH_MAX_N 10u
-#define ATRBVH_MIN_N 3u
-#define ATRBVH_MAX_N 32u
-#define MAX_ROUNDS 64u
-
 atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
                                        atrbvh_i_request *r,
                                        atrbvh_error *error)
@@ -267,24 +261,30 @@ atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
         c->rounds = 0;
         c->gamma = 0;
     } else {
-        unsigned lo = o.method == ATRBVH_METHOD_TRBVH ? TRBVH_MIN_N : ATRBVH_MIN_N;
-        unsigned hi = o.method == ATRBVH_METHOD_TRBVH ? TRBVH_MAX_N : ATRBVH_MAX_N;
+        unsigned lo = o.method == ATRBVH_METHOD_TRBVH ? ATRBVH_TRBVH_MIN
+                                                      : ATRBVH_ATRBVH_MIN;
+        unsigned hi = o.method == ATRBVH_METHOD_TRBVH ? ATRBVH_TRBVH_MAX
+                                                      : ATRBVH_ATRBVH_MAX;
         const char *name = o.method == ATRBVH_METHOD_TRBVH ? "trbvh" : "atrbvh";
         c->treelet_size = o.treelet_size ? o.treelet_size
-                          : o.method == ATRBVH_METHOD_TRBVH ? 7u : 9u;
+                          : o.method == ATRBVH_METHOD_TRBVH
+                              ? ATRBVH_TRBVH_DEFAULT
+                              : ATRBVH_ATRBVH_DEFAULT;
         c->rounds = o.rounds ? o.rounds
-                    : o.method == ATRBVH_METHOD_TRBVH ? 3u : 2u;
+                    : o.method == ATRBVH_METHOD_TRBVH
+                        ? ATRBVH_TRBVH_ROUNDS_DEFAULT
+                        : ATRBVH_ATRBVH_ROUNDS_DEFAULT;
         if (c->treelet_size < lo || c->treelet_size > hi)
             return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                  (uint64_t)-1,
                                  "treelet size %u is out of range for %s "
                                  "(%u to %u)",
                                  c->treelet_size, name, lo, hi);
-        if (c->rounds > MAX_ROUNDS)
+        if (c->rounds > ATRBVH_ROUNDS_MAX)
             return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                  (uint64_t)-1,
                                  "rounds %u is out of range (1 to %u)",
-                                 c->rounds, MAX_ROUNDS);
+                                 c->rounds, ATRBVH_ROUNDS_MAX);
         c->gamma = o.gamma ? o.gamma : c->treelet_size;
         if (c->gamma < c->treelet_size)
             return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,

@@ -63,12 +63,6 @@ typedef struct atrbvh_i_input {
     size_t vstride, istride, bstride;
 } atrbvh_i_input;
 
-/* Box of primitive i of the input; returns an ATRBVH_PRIM_* code
- * (shared/stages.h), *bad_value the offending vertex index for
- * ATRBVH_PRIM_BAD_INDEX. */
-int atrbvh_i_prim_box(const atrbvh_i_input *in, size_t i, atrbvh_box *out,
-                      uint32_t *bad_value);
-
 /* Options after validation and default resolution. */
 typedef struct atrbvh_i_config {
     atrbvh_method method;

@@ -43,6 +43,8 @@ int atrbvh_i_stage_progress(atrbvh_i_run *run, uint64_t done, uint64_t total)
         return 0;
     if (p->cancelled)
         return 1;
+    if (done > total)
+        done = total;
     f = p->base + (total ? p->span * (double)done / (double)total : 0.0);
     if (f < p->last)
         f = p->last;
@@ -187,7 +189,7 @@ static atrbvh_status run_stages(atrbvh_device *dev, atrbvh_i_run *run,
                 atrbvh_i_morton_frame(&run->centroids, run->morton_lo,
                                       run->morton_scale);
         }
-        ms[s] = atrbvh_i_now_ms() - t;
+        ms[s] = runs ? atrbvh_i_now_ms() - t : 0.0;
         if (st == ATRBVH_OK && cap)
             st = be->capture(dev, run, stage, cap, error);
         if (st != ATRBVH_OK)

@@ -18,12 +18,6 @@
 
 #define NO_INDEX UINT64_MAX
 
-static const float *vertex_at(const atrbvh_geometry *g, size_t stride,
-                              size_t v)
-{
-    return (const float *)((const char *)g->vertices + v * stride);
-}
-
 atrbvh_status atrbvh_i_check_geometry(const atrbvh_geometry *g,
                                       atrbvh_i_input *in, atrbvh_error *error)
 {
@@ -124,36 +118,20 @@ atrbvh_status atrbvh_i_check_geometry(const atrbvh_geometry *g,
 #define PRIM_BAD_INDEX ATRBVH_PRIM_BAD_INDEX
 #define PRIM_INVERTED ATRBVH_PRIM_INVERTED
 
-int atrbvh_i_prim_box(const atrbvh_i_input *in, size_t i, atrbvh_box *out,
-                      uint32_t *bad_value)
+/* Box of primitive i: an ATRBVH_PRIM_* code, *bad_value the offending
+ * vertex index for ATRBVH_PRIM_BAD_INDEX (the rule every backend's bounds
+ * stage applies). */
+static int prim_box(const atrbvh_i_input *in, size_t i, atrbvh_box *out,
+                    uint32_t *bad_value)
 {
     const atrbvh_geometry *g = in->g;
-    const size_t vstride = in->vstride, istride = in->istride,
-                 bstride = in->bstride;
-    int c;
     if (g->type == ATRBVH_GEOMETRY_BOXES)
-        return atrbvh_prim_box_from_box(
-            (const float *)((const char *)g->boxes + i * bstride), out);
-    *out = atrbvh_box_empty();
-    for (c = 0; c < 3; c++) {
-        size_t v;
-        const float *p;
-        if (g->indices) {
-            const uint32_t *tri =
-                (const uint32_t *)((const char *)g->indices + i * istride);
-            v = tri[c];
-            if (v >= g->vertex_count) {
-                *bad_value = tri[c];
-                return PRIM_BAD_INDEX;
-            }
-        } else {
-            v = 3 * i + (size_t)c;
-        }
-        p = vertex_at(g, vstride, v);
-        if (!atrbvh_box_grow(out, p[0], p[1], p[2]))
-            return PRIM_NONFINITE;
-    }
-    return PRIM_OK;
+        return atrbvh_prim_box_box(g->boxes, in->bstride / sizeof(float), i,
+                                   out);
+    return atrbvh_prim_box_triangle(
+        g->vertices, in->vstride / sizeof(float), g->vertex_count, g->indices,
+        in->istride / sizeof(uint32_t), g->indices != NULL, i, out,
+        bad_value);
 }
 
 atrbvh_status atrbvh_i_scan_prims(const atrbvh_i_input *in,
@@ -200,7 +178,7 @@ atrbvh_status atrbvh_i_scan_prims(const atrbvh_i_input *in,
 #endif
         for (j = 0; j < (int64_t)n; j++) {
             uint32_t value = 0;
-            int r = atrbvh_i_prim_box(in, (size_t)j, &boxes[j], &value);
+            int r = prim_box(in, (size_t)j, &boxes[j], &value);
             if (r == PRIM_NONFINITE) {
                 my_invalid++;
                 boxes[j].min[0] = NAN; /* marks it for compaction */

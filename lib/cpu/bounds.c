@@ -16,7 +16,12 @@ atrbvh_status atrbvh_i_cpu_bounds(atrbvh_device *dev, atrbvh_i_run *run,
                                   atrbvh_error *error)
 {
     atrbvh_i_cpu_run *c = run->state;
-    const int64_t n = (int64_t)run->in.g->primitive_count;
+    const atrbvh_geometry *g = run->in.g;
+    const int64_t n = (int64_t)g->primitive_count;
+    /* Strides in elements, as the shared fetch takes them. */
+    const atrbvh_u64 vstride = run->in.vstride / sizeof(float),
+                     istride = run->in.istride / sizeof(uint32_t),
+                     bstride = run->in.bstride / sizeof(float);
     atrbvh_box *boxes;
     float smin0, smin1, smin2, smax0, smax1, smax2;
     float cmin0, cmin1, cmin2, cmax0, cmax1, cmax2;
@@ -42,8 +47,14 @@ atrbvh_status atrbvh_i_cpu_bounds(atrbvh_device *dev, atrbvh_i_run *run,
         atrbvh_box b;
         uint32_t value;
         float c0, c1, c2;
-        if (atrbvh_i_prim_box(&run->in, (size_t)j, &b, &value) !=
-            ATRBVH_PRIM_OK) {
+        const int r =
+            g->type == ATRBVH_GEOMETRY_BOXES
+                ? atrbvh_prim_box_box(g->boxes, bstride, (atrbvh_u64)j, &b)
+                : atrbvh_prim_box_triangle(g->vertices, vstride,
+                                           g->vertex_count, g->indices,
+                                           istride, g->indices != NULL,
+                                           (atrbvh_u64)j, &b, &value);
+        if (r != ATRBVH_PRIM_OK) {
             bad = 1;
             continue;
         }

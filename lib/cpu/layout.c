@@ -42,27 +42,24 @@ static void gather(const atrbvh_i_tree *t, uint32_t node, uint32_t *out)
     }
 }
 
+/* Writes `node` at output position `at` with its primitives from
+ * `prim_at` (shared/stages.h's placement rule), then its children. */
 static void emit(layout_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at)
 {
     const atrbvh_i_tree *t = c->t;
-    atrbvh_node *out = &c->nodes[at];
-    int k;
-    for (k = 0; k < 3; k++) {
-        out->min[k] = t->box[node].min[k];
-        out->max[k] = t->box[node].max[k];
-    }
-    if (c->size[node] & ATRBVH_SIZE_LEAF) {
-        out->index = prim_at;
-        out->count = t->count[node];
+    const int leaf = (c->size[node] & ATRBVH_SIZE_LEAF) != 0;
+    const uint32_t l = leaf ? 0 : t->left[node], r = leaf ? 0 : t->right[node];
+    c->nodes[at] = atrbvh_layout_node(t->box[node], c->size[node],
+                                      t->count[node], at, prim_at,
+                                      leaf ? 0 : c->size[l]);
+    if (leaf) {
         gather(t, node, c->prims + prim_at);
         return;
     }
     {
-        const uint32_t l = t->left[node], r = t->right[node];
-        const uint32_t right_at = at + 1 + (c->size[l] & ~ATRBVH_SIZE_LEAF);
-        const uint32_t right_prim = prim_at + t->count[l];
-        out->index = right_at;
-        out->count = 0;
+        const uint32_t right_at = atrbvh_layout_right_pos(at, c->size[l]);
+        const uint32_t right_prim =
+            atrbvh_layout_right_prim(prim_at, t->count[l]);
         if (t->count[node] > TASK_CUTOFF) {
 #ifdef _OPENMP
 #pragma omp task default(shared) firstprivate(l, at, prim_at)

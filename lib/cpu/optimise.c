@@ -36,10 +36,6 @@ typedef struct opt_worker {
 
 #include <string.h>
 
-#if ATRBVH_TREELET_MAX < 32 || ATRBVH_TRBVH_MAX < 10
-#error "treelet maxima below the ranges api.c accepts"
-#endif
-
 /* Subtrees smaller than this are walked serially inside one task. */
 #define TASK_CUTOFF 2048u
 /* Deeper task recursion falls back to the serial walk (bounds the stack
@@ -53,16 +49,57 @@ typedef struct walk_ctx {
     unsigned n;
     uint32_t gamma;
     opt_worker *workers;
+    /* Progress inside a round: treelets done of about `crown`; only the
+     * calling thread (OpenMP thread 0) reports, every `step` treelets.
+     * Progress and cancellation never change what a treelet computes. */
+    atrbvh_i_run *run;
+    uint64_t done, crown, step, next, round, rounds;
+    int cancel; /* set by thread 0 when the user cancels: skip the rest */
 } walk_ctx;
+
+/* Counts a treelet done; thread 0 reports progress now and then. */
+static void progress(walk_ctx *c)
+{
+    uint64_t done;
+    int cancel;
+#ifdef _OPENMP
+#pragma omp atomic capture
+#endif
+    done = ++c->done;
+    if (!c->run)
+        return;
+#ifdef _OPENMP
+    if (omp_get_thread_num() != 0)
+        return;
+#endif
+    if (done < c->next)
+        return;
+    c->next = done + c->step;
+    cancel = atrbvh_i_stage_progress(c->run, c->round * c->crown + done,
+                                     c->rounds * c->crown);
+    if (cancel) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+        c->cancel = 1;
+    }
+}
 
 static int in_crown(const walk_ctx *c, uint32_t node)
 {
     return node < c->t.n_internal && c->t.count[node] >= c->gamma;
 }
 
-static void process(const walk_ctx *c, uint32_t node)
+static void process(walk_ctx *c, uint32_t node)
 {
     opt_worker *w = c->workers;
+    int cancel;
+#ifdef _OPENMP
+#pragma omp atomic read
+#endif
+    cancel = c->cancel;
+    if (cancel)
+        return; /* the build is being cancelled: its tree is dropped */
 #ifdef _OPENMP
     w += omp_get_thread_num();
 #endif
@@ -76,12 +113,13 @@ static void process(const walk_ctx *c, uint32_t node)
                                          w->trbvh, w->dist);
     w->treelets++;
     w->applied += (uint64_t)applied;
+    progress(c);
 }
 
 /* Post-order over the crown below (and including) crown node s, without a
  * stack: descend to the first crown node with no crown child, process,
  * then go to the right sibling's subtree or up to the parent. */
-static void walk_serial(const walk_ctx *c, uint32_t s)
+static void walk_serial(walk_ctx *c, uint32_t s)
 {
     const atrbvh_treelet_tree *t = &c->t;
     uint32_t x = s;
@@ -109,7 +147,7 @@ static void walk_serial(const walk_ctx *c, uint32_t s)
     }
 }
 
-static void walk_tasks(const walk_ctx *c, uint32_t node, int depth)
+static void walk_tasks(walk_ctx *c, uint32_t node, int depth)
 {
     const atrbvh_treelet_tree *t = &c->t;
     uint32_t l, r;
@@ -225,13 +263,24 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     c.method = cfg->method;
     c.n = n;
     c.workers = workers;
+    c.run = run;
+    c.rounds = cfg->rounds;
+    c.cancel = 0;
 
     for (round = 0; round < cfg->rounds; round++) {
         uint64_t g = (uint64_t)cfg->gamma << (round < 40u ? round : 40u);
         if (g > t->count[0])
             break; /* no crown left: later rounds would do nothing */
         c.gamma = (uint32_t)g;
-        if (run && atrbvh_i_stage_progress(run, round, cfg->rounds)) {
+        /* About as many treelets as internal nodes holding >= gamma
+         * primitives: at most n / gamma * 2 (a progress scale only). */
+        c.crown = 2u * (uint64_t)t->count[0] / c.gamma + 1u;
+        c.step = c.crown / 64u + 1u;
+        c.done = 0;
+        c.next = c.step;
+        c.round = round;
+        if (run && atrbvh_i_stage_progress(run, round * c.crown,
+                                           c.rounds * c.crown)) {
             if (scratch == &own)
                 atrbvh_i_scratch_free(&own);
             return atrbvh_i_fail(error, ATRBVH_ERR_CANCELLED, (uint64_t)-1,
@@ -246,6 +295,13 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
             walk_tasks(&c, 0, 0);
         } else {
             walk_serial(&c, 0);
+        }
+        if (c.cancel) {
+            if (scratch == &own)
+                atrbvh_i_scratch_free(&own);
+            return atrbvh_i_fail(error, ATRBVH_ERR_CANCELLED, (uint64_t)-1,
+                                 "cancelled in the optimise stage, round %u",
+                                 round + 1);
         }
     }
 

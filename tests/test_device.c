@@ -1,0 +1,444 @@
+/*
+ * test_device.c - the pipeline's public surface beyond one build: device
+ * handles (open, reuse, close, threads), scratch reuse on an open handle,
+ * allocation failure through open/build/build/close, progress and
+ * cancellation, and the structs that can grow (stats by size, geometry
+ * size field).  CPU devices here; tests/test_opencl.c covers OpenCL ones.
+ */
+#include <check.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "atrbvh.h"
+#include "testutil.h"
+
+/* ------------------------------------------------- counting allocator */
+static long outstanding, countdown = -1;
+static size_t largest, total_bytes;
+static void *count_malloc(size_t n)
+{
+    void *p;
+    if (countdown == 0)
+        return NULL;
+    if (countdown > 0)
+        countdown--;
+    if (n > largest)
+        largest = n;
+    total_bytes += n;
+    p = malloc(n);
+    if (p)
+        outstanding++;
+    return p;
+}
+static void count_free(void *p)
+{
+    if (p)
+        outstanding--;
+    free(p);
+}
+
+enum { T = 4000 };
+
+static atrbvh_geometry soup(float **v, size_t n, uint64_t seed)
+{
+    *v = tu_random_triangles(n, seed, 1.0f, 0.0f);
+    return atrbvh_geometry_triangles(*v, 3 * n, NULL, n);
+}
+
+START_TEST(open_specs)
+{
+    atrbvh_device *d = NULL;
+    atrbvh_error e;
+    ck_assert_int_eq(atrbvh_device_open("cpu", &d, &e), ATRBVH_OK);
+    ck_assert_ptr_nonnull(d);
+    ck_assert_str_eq(atrbvh_device_name(d), "cpu");
+    ck_assert_int_eq(atrbvh_device_backend(d), ATRBVH_BACKEND_CPU);
+    atrbvh_device_close(d);
+    ck_assert_int_eq(atrbvh_device_open(NULL, &d, &e), ATRBVH_OK);
+    ck_assert_str_eq(atrbvh_device_name(d), "cpu");
+    atrbvh_device_close(d);
+    atrbvh_device_close(NULL);
+
+    d = (atrbvh_device *)&e; /* must be reset to NULL on failure */
+    ck_assert_int_eq(atrbvh_device_open("gpu", &d, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_ptr_null(d);
+    ck_assert_msg(strstr(e.text, "\"gpu\""), "%s", e.text);
+    ck_assert_int_eq(atrbvh_device_open("openclx", &d, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_int_eq(atrbvh_device_open("cpu", NULL, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    /* A name that matches nothing: no such device (or no OpenCL). */
+    {
+        atrbvh_status st = atrbvh_device_open(
+            "opencl:no such device, surely", &d, &e);
+        ck_assert_msg(st == ATRBVH_ERR_INVALID_ARGUMENT ||
+                          st == ATRBVH_ERR_UNSUPPORTED,
+                      "%s", e.text);
+        ck_assert_ptr_null(d);
+    }
+}
+END_TEST
+
+/* Builds on one open device give the trees builds without one give, and a
+ * second build of the same size allocates no scratch: only the output
+ * (node and index arrays, the object) and the statistics walk's stacks
+ * (three 32-bit arrays per node), plus small fixed-size state. */
+START_TEST(reuse_allocates_no_scratch)
+{
+    float *v;
+    atrbvh_geometry g = soup(&v, T, 3);
+    atrbvh_build_options o;
+    atrbvh_device *d;
+    atrbvh_bvh *ref, *a, *b;
+    atrbvh_error e;
+    char msg[256];
+    size_t nodes, prims, first_bytes, output;
+    atrbvh_build_options_init(&o);
+    o.max_leaf_size = 8;
+    o.threads = 2;
+    ref = tu_build(&g, &o);
+    ck_assert_int_eq(atrbvh_device_open("cpu", &d, &e), ATRBVH_OK);
+    o.device = d;
+    atrbvh_set_allocator(count_malloc, count_free);
+    total_bytes = 0;
+    ck_assert_int_eq(atrbvh_build(&g, &o, &a, &e), ATRBVH_OK);
+    first_bytes = total_bytes;
+    total_bytes = 0;
+    ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_OK);
+    atrbvh_set_allocator(NULL, NULL);
+    ck_assert_msg(tu_same_bvh(ref, a, msg, sizeof msg), "%s", msg);
+    ck_assert_msg(tu_same_bvh(ref, b, msg, sizeof msg), "%s", msg);
+    atrbvh_bvh_nodes(b, &nodes);
+    atrbvh_bvh_primitive_indices(b, &prims);
+    output = nodes * (sizeof(atrbvh_node) + 12) + prims * 4 + 4096;
+    /* The first build made the scratch: keys, boxes, the binary tree. */
+    ck_assert_uint_gt(first_bytes, output + (size_t)T * 60);
+    ck_assert_msg(total_bytes <= output,
+                  "second build allocated %lu bytes (output and walk %lu)",
+                  (unsigned long)total_bytes, (unsigned long)output);
+    atrbvh_bvh_free(a);
+    atrbvh_bvh_free(b);
+    atrbvh_bvh_free(ref);
+    atrbvh_device_close(d);
+    free(v);
+}
+END_TEST
+
+/* Every allocation of open, build, build (larger), close fails in turn:
+ * each failure is ATRBVH_ERR_NOMEM, and nothing leaks once the handle is
+ * closed. */
+START_TEST(allocation_failure_open_build_close)
+{
+    float *v1, *v2;
+    atrbvh_geometry g1 = soup(&v1, 500, 5), g2 = soup(&v2, 2000, 6);
+    atrbvh_build_options o;
+    long k;
+    int done = 0;
+    atrbvh_build_options_init(&o);
+    o.threads = 2;
+    atrbvh_set_allocator(count_malloc, count_free);
+    for (k = 0; !done; k++) {
+        atrbvh_device *d = NULL;
+        atrbvh_bvh *b = NULL;
+        atrbvh_error e;
+        atrbvh_status st;
+        outstanding = 0;
+        countdown = k;
+        st = atrbvh_device_open("cpu", &d, &e);
+        if (st == ATRBVH_OK) {
+            o.device = d;
+            st = atrbvh_build(&g1, &o, &b, &e);
+            atrbvh_bvh_free(b);
+            b = NULL;
+            if (st == ATRBVH_OK) /* larger: the scratch grows */
+                st = atrbvh_build(&g2, &o, &b, &e);
+            atrbvh_bvh_free(b);
+            b = NULL;
+            if (st == ATRBVH_OK) /* smaller again: reuses it */
+                st = atrbvh_build(&g1, &o, &b, &e);
+            atrbvh_bvh_free(b);
+            atrbvh_device_close(d);
+        } else {
+            ck_assert_ptr_null(d);
+        }
+        countdown = -1;
+        ck_assert_msg(outstanding == 0, "allocation %ld: %ld blocks leaked",
+                      k, outstanding);
+        if (st == ATRBVH_OK)
+            done = 1;
+        else
+            ck_assert_msg(st == ATRBVH_ERR_NOMEM, "allocation %ld: %s", k,
+                          atrbvh_strerror(st));
+    }
+    ck_assert_int_gt(k, 10);
+    atrbvh_set_allocator(NULL, NULL);
+    free(v1);
+    free(v2);
+}
+END_TEST
+
+/* ------------------------------------------------------------- threads */
+typedef struct job {
+    const atrbvh_geometry *g;
+    atrbvh_device *shared; /* NULL: open one's own */
+    const atrbvh_bvh *ref;
+    int ok;
+    char msg[512];
+} job;
+
+static void *worker(void *arg)
+{
+    job *j = arg;
+    atrbvh_build_options o;
+    atrbvh_device *d = j->shared;
+    atrbvh_error e;
+    int r;
+    j->ok = 0;
+    if (!d && atrbvh_device_open("cpu", &d, &e) != ATRBVH_OK) {
+        snprintf(j->msg, sizeof j->msg, "open: %s", e.text);
+        return NULL;
+    }
+    atrbvh_build_options_init(&o);
+    o.device = d;
+    o.threads = 1;
+    for (r = 0; r < 3; r++) {
+        atrbvh_bvh *b;
+        if (atrbvh_build(j->g, &o, &b, &e) != ATRBVH_OK) {
+            snprintf(j->msg, sizeof j->msg, "build: %s", e.text);
+            break;
+        }
+        j->ok = tu_same_bvh(j->ref, b, j->msg, sizeof j->msg);
+        atrbvh_bvh_free(b);
+        if (!j->ok)
+            break;
+    }
+    if (!j->shared)
+        atrbvh_device_close(d);
+    return NULL;
+}
+
+START_TEST(threads_own_and_shared_devices)
+{
+    float *v;
+    atrbvh_geometry g = soup(&v, T, 9);
+    atrbvh_build_options o;
+    atrbvh_bvh *ref;
+    atrbvh_device *shared;
+    atrbvh_error e;
+    job jobs[8];
+    pthread_t th[8];
+    int i;
+    atrbvh_build_options_init(&o);
+    ref = tu_build(&g, &o);
+    ck_assert_int_eq(atrbvh_device_open("cpu", &shared, &e), ATRBVH_OK);
+    for (i = 0; i < 8; i++) {
+        jobs[i].g = &g;
+        jobs[i].ref = ref;
+        jobs[i].shared = i % 2 ? shared : NULL;
+        jobs[i].msg[0] = '\0';
+        ck_assert_int_eq(pthread_create(&th[i], NULL, worker, &jobs[i]), 0);
+    }
+    for (i = 0; i < 8; i++) {
+        pthread_join(th[i], NULL);
+        ck_assert_msg(jobs[i].ok, "thread %d: %s", i, jobs[i].msg);
+    }
+    atrbvh_device_close(shared);
+    atrbvh_bvh_free(ref);
+    free(v);
+}
+END_TEST
+
+/* ------------------------------------------------------------ progress */
+typedef struct prog_log {
+    int n;
+    double f[4096];
+    int optimise; /* values reported by the optimise stage */
+    double opt_first, opt_last;
+    const char *cancel_at; /* stage name to cancel at, or NULL */
+    double cancel_after;   /* or cancel when the fraction passes this */
+    int cancels;
+} prog_log;
+
+static int on_progress(const char *stage, double fraction, void *user)
+{
+    prog_log *p = user;
+    if (p->n < 4096)
+        p->f[p->n++] = fraction;
+    if (stage && strcmp(stage, "optimise") == 0) {
+        if (!p->optimise++)
+            p->opt_first = fraction;
+        p->opt_last = fraction;
+    }
+    if ((p->cancel_at && stage && strcmp(stage, p->cancel_at) == 0) ||
+        (p->cancel_after > 0.0 && fraction > p->cancel_after)) {
+        p->cancels++;
+        return 1;
+    }
+    return 0;
+}
+
+START_TEST(progress_monotone_to_one)
+{
+    float *v;
+    atrbvh_geometry g = soup(&v, 60000, 12);
+    atrbvh_build_options o;
+    atrbvh_bvh *b, *ref;
+    atrbvh_error e;
+    prog_log p;
+    char msg[256];
+    int i, inside = 0;
+    atrbvh_build_options_init(&o);
+    o.threads = _i + 1; /* 1 and 2 threads */
+    o.rounds = 3;
+    ref = tu_build(&g, &o);
+    memset(&p, 0, sizeof p);
+    o.progress = on_progress;
+    o.progress_user = &p;
+    ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_OK);
+    ck_assert_msg(tu_same_bvh(ref, b, msg, sizeof msg), "%s", msg);
+    ck_assert_int_gt(p.n, 8);
+    ck_assert(p.f[0] >= 0.0);
+    for (i = 1; i < p.n; i++)
+        ck_assert_msg(p.f[i] >= p.f[i - 1], "fraction %d went from %g to %g",
+                      i, p.f[i - 1], p.f[i]);
+    ck_assert(p.f[p.n - 1] == 1.0);
+    /* Several distinct values strictly inside the optimise stage. */
+    for (i = 1; i < p.n; i++)
+        if (p.f[i] > p.opt_first && p.f[i] < p.opt_last &&
+            p.f[i] != p.f[i - 1])
+            inside++;
+    ck_assert_msg(inside >= 3, "%d values inside the optimise stage (%d calls)",
+                  inside, p.optimise);
+    atrbvh_bvh_free(b);
+    atrbvh_bvh_free(ref);
+    free(v);
+}
+END_TEST
+
+START_TEST(cancel_everywhere)
+{
+    static const char *const stages[] = {"bounds",   "morton",  "sort",
+                                         "hierarchy", "refit", "optimise",
+                                         "collapse", "layout"};
+    float *v;
+    atrbvh_geometry g = soup(&v, 20000, 13);
+    atrbvh_build_options o;
+    size_t s;
+    atrbvh_build_options_init(&o);
+    o.threads = 2;
+    atrbvh_set_allocator(count_malloc, count_free);
+    for (s = 0; s <= sizeof stages / sizeof *stages; s++) {
+        atrbvh_bvh *b = (atrbvh_bvh *)&o;
+        atrbvh_error e;
+        prog_log p;
+        memset(&p, 0, sizeof p);
+        if (s < sizeof stages / sizeof *stages)
+            p.cancel_at = stages[s];
+        else
+            p.cancel_after = 0.5; /* inside the optimise stage */
+        o.progress = on_progress;
+        o.progress_user = &p;
+        outstanding = 0;
+        ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_ERR_CANCELLED);
+        ck_assert_ptr_null(b);
+        ck_assert_int_eq(p.cancels, 1);
+        ck_assert_int_eq(e.status, ATRBVH_ERR_CANCELLED);
+        ck_assert_msg(strstr(e.text, "cancel"), "%s", e.text);
+        ck_assert_msg(outstanding == 0, "cancel at %s: %ld leaked",
+                      p.cancel_at ? p.cancel_at : "0.5", outstanding);
+    }
+    atrbvh_set_allocator(NULL, NULL);
+    free(v);
+}
+END_TEST
+
+/* -------------------------------------------------- structs that grow */
+START_TEST(stats_by_size)
+{
+    float *v;
+    atrbvh_geometry g = soup(&v, 300, 14);
+    atrbvh_build_options o;
+    atrbvh_stats st, st2;
+    atrbvh_bvh *b;
+    int k;
+    atrbvh_build_options_init(&o);
+    o.method = ATRBVH_METHOD_LBVH;
+    b = tu_build(&g, &o);
+    ck_assert_int_eq(atrbvh_bvh_stats(b, &st), ATRBVH_OK);
+    ck_assert_uint_eq(st.primitives, 300);
+    memset(&st2, 0xab, sizeof st2);
+    ck_assert_int_eq(atrbvh_bvh_stats_sized(b, &st2, sizeof st2), ATRBVH_OK);
+    ck_assert(memcmp(&st, &st2, sizeof st) == 0);
+    /* Smaller than the first version, larger than this one, NULL:
+     * refused, untouched. */
+    memset(&st2, 0xab, sizeof st2);
+    ck_assert_int_eq(atrbvh_bvh_stats_sized(b, &st2, sizeof st2 - 1),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_int_eq(atrbvh_bvh_stats_sized(b, &st2, 8),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_int_eq(atrbvh_bvh_stats_sized(b, &st2, sizeof st2 + 8),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_int_eq(((unsigned char *)&st2)[0], 0xab);
+    ck_assert_int_eq(atrbvh_bvh_stats(NULL, &st2),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    /* Stage times by accessor: LBVH runs no optimise stage. */
+    ck_assert(atrbvh_bvh_stage_ms(b, ATRBVH_STAGE_OPTIMISE) == 0.0);
+    for (k = 0; k < ATRBVH_STAGE_COUNT; k++)
+        ck_assert(atrbvh_bvh_stage_ms(b, (atrbvh_stage)k) >= 0.0);
+    ck_assert(atrbvh_bvh_stage_ms(b, ATRBVH_STAGE_COUNT) == 0.0);
+    ck_assert(atrbvh_bvh_stage_ms(NULL, ATRBVH_STAGE_SORT) == 0.0);
+    atrbvh_bvh_free(b);
+    free(v);
+}
+END_TEST
+
+START_TEST(geometry_size_field)
+{
+    float *v;
+    atrbvh_geometry g = soup(&v, 10, 15), h;
+    atrbvh_bvh *b;
+    atrbvh_error e;
+    ck_assert_uint_eq(g.size, sizeof g);
+    h = g;
+    h.size = 0; /* a hand-made struct that forgot it */
+    ck_assert_int_eq(atrbvh_build(&h, NULL, &b, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_msg(strstr(e.text, "geometry.size"), "%s", e.text);
+    h.size = sizeof h + 4;
+    ck_assert_int_eq(atrbvh_build(&h, NULL, &b, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_int_eq(atrbvh_build(&g, NULL, &b, &e), ATRBVH_OK);
+    atrbvh_bvh_free(b);
+    free(v);
+}
+END_TEST
+
+static Suite *suite(void)
+{
+    Suite *s = suite_create("device");
+    TCase *t = tcase_create("device");
+    tcase_set_timeout(t, 600);
+    tcase_add_test(t, open_specs);
+    tcase_add_test(t, reuse_allocates_no_scratch);
+    tcase_add_test(t, allocation_failure_open_build_close);
+    tcase_add_test(t, threads_own_and_shared_devices);
+    tcase_add_loop_test(t, progress_monotone_to_one, 0, 2);
+    tcase_add_test(t, cancel_everywhere);
+    tcase_add_test(t, stats_by_size);
+    tcase_add_test(t, geometry_size_field);
+    suite_add_tcase(s, t);
+    return s;
+}
+
+int main(void)
+{
+    SRunner *r = srunner_create(suite());
+    int failed;
+    srunner_run_all(r, CK_NORMAL);
+    failed = srunner_ntests_failed(r);
+    srunner_free(r);
+    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+}
