@@ -340,17 +340,30 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
         count[a] = lv->count[a];
         code[a] = a;
     }
+    /* The matrix row by row, each row's minimum found on the way (strict
+     * <: the lowest column among equals, as atrbvh_row_min). */
     for (a = 1; a < n; a++) {
-        atrbvh_u32 row = a * (a - 1u) / 2u;
-        for (b = 0; b < a; b++)
-            dist[row + b] = atrbvh_box_area(atrbvh_box_union(box[a], box[b]));
+        ATRBVH_GLOBAL double *row = dist + a * (a - 1u) / 2u;
+        atrbvh_box ba = box[a];
+        double bv = atrbvh_box_area(atrbvh_box_union(ba, box[0]));
+        atrbvh_u32 bc = 0;
+        row[0] = bv;
+        for (b = 1; b < a; b++) {
+            double d = atrbvh_box_area(atrbvh_box_union(ba, box[b]));
+            row[b] = d;
+            if (d < bv) {
+                bv = d;
+                bc = b;
+            }
+        }
+        rmin[a] = bv;
+        rcol[a] = bc;
     }
-    for (a = 1; a < n; a++)
-        atrbvh_row_min(dist, a, &rmin[a], &rcol[a]);
     for (m = n; m > 1; m--) {
         atrbvh_u32 i = 1, j, last = m - 1u, r;
         double best = rmin[1], area;
         atrbvh_box merged;
+        ATRBVH_GLOBAL double *jrow;
         int collapsed;
         /* Rows in order, strict <: the lowest row among equal minima, and
          * within it (atrbvh_row_min) the lowest column: the lowest linear
@@ -372,43 +385,55 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
         cost[j] = root_cost;
         count[j] += count[i];
         code[j] = n + q;
+        /* The merge's box, count and cost: exactly what
+         * atrbvh_treelet_evaluate computes for local node q (the same
+         * union of the same children, left first). */
+        topo->box[q] = merged;
+        topo->count[q] = count[j];
+        topo->cost[q] = root_cost;
         q++;
         if (last == 1u)
             break;
-        /* (a) the last cluster moves into slot i. */
+        /* (a) the last cluster moves into slot i: row i (columns < i) and
+         * column i (rows i+1 .. last-1) take row `last`'s entries. */
         if (i != last) {
+            ATRBVH_GLOBAL double *irow = dist + i * (i - 1u) / 2u;
+            ATRBVH_GLOBAL double *lrow = dist + last * (last - 1u) / 2u;
             box[i] = box[last];
             cost[i] = cost[last];
             count[i] = count[last];
             code[i] = code[last];
-            for (a = 0; a < last; a++)
-                if (a != i)
-                    dist[atrbvh_tri_index(i, a)] =
-                        dist[atrbvh_tri_index(last, a)];
+            for (a = 0; a < i; a++)
+                irow[a] = lrow[a];
+            for (a = i + 1u; a < last; a++)
+                dist[a * (a - 1u) / 2u + i] = lrow[a];
         }
         /* (b) distances to the merged cluster in slot j (after (a), so
-         * the (i, j) entry gets the new value). */
-        for (a = 0; a < last; a++)
-            if (a != j)
-                dist[atrbvh_tri_index(j, a)] =
-                    atrbvh_box_area(atrbvh_box_union(box[j], box[a]));
-        /* Row minima of the rows 1..last-1 that remain.  Rows i and j
+         * the (i, j) entry gets the new value): row j here, column j
+         * (rows r > j) in the loop below, each row's entry written before
+         * that row's minimum is looked at.
+         * (c) Row minima of the rows 1..last-1 that remain.  Rows i and j
          * changed entirely; a row r > j changed in column j, and a row
          * r > i in column i: rescan it if its minimum sat in a changed
          * column (the value may have grown), else a changed entry can only
          * take over the minimum (lower column first among equals).  Rows
          * below j hold neither column. */
+        jrow = dist + j * (j - 1u) / 2u;
+        for (a = 0; a < j; a++)
+            jrow[a] = atrbvh_box_area(atrbvh_box_union(merged, box[a]));
         for (r = j + 1u; r < last; r++) {
+            ATRBVH_GLOBAL double *row = dist + r * (r - 1u) / 2u;
+            double v = atrbvh_box_area(atrbvh_box_union(merged, box[r]));
+            row[j] = v;
             if (r == i || rcol[r] == j || (r > i && rcol[r] == i)) {
                 atrbvh_row_min(dist, r, &rmin[r], &rcol[r]);
             } else {
-                double v = dist[r * (r - 1u) / 2u + j];
                 if (v < rmin[r] || (v == rmin[r] && j < rcol[r])) {
                     rmin[r] = v;
                     rcol[r] = j;
                 }
                 if (r > i) {
-                    v = dist[r * (r - 1u) / 2u + i];
+                    v = row[i];
                     if (v < rmin[r] || (v == rmin[r] && i < rcol[r])) {
                         rmin[r] = v;
                         rcol[r] = i;
@@ -424,16 +449,12 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
 }
 
 /* ------------------------------------------------------ evaluate, write */
-/* Fills topo->order (pre-order from the root, explicit stack) and, bottom
- * up, the box, count and cost of every local node.  Returns the root's
- * cost: exactly what a refit of the written-back treelet computes. */
-ATRBVH_FN double atrbvh_treelet_evaluate(const atrbvh_cost_params *p,
-                                         atrbvh_u32 n,
-                                         const atrbvh_treelet_leaves *lv,
-                                         atrbvh_treelet_topo *topo)
+/* Fills topo->order: the local nodes in pre-order from the root (explicit
+ * stack), left subtree first. */
+ATRBVH_FN void atrbvh_treelet_preorder(atrbvh_u32 n, atrbvh_treelet_topo *topo)
 {
     atrbvh_u32 stack[ATRBVH_TREELET_MAX];
-    atrbvh_u32 sp = 0, q = 0, k;
+    atrbvh_u32 sp = 0, q = 0;
     stack[sp++] = topo->root;
     while (sp > 0) {
         atrbvh_u32 node = stack[--sp];
@@ -444,6 +465,18 @@ ATRBVH_FN double atrbvh_treelet_evaluate(const atrbvh_cost_params *p,
         if (topo->left[node] >= n)
             stack[sp++] = topo->left[node] - n;
     }
+}
+
+/* Fills topo->order (pre-order from the root, explicit stack) and, bottom
+ * up, the box, count and cost of every local node.  Returns the root's
+ * cost: exactly what a refit of the written-back treelet computes. */
+ATRBVH_FN double atrbvh_treelet_evaluate(const atrbvh_cost_params *p,
+                                         atrbvh_u32 n,
+                                         const atrbvh_treelet_leaves *lv,
+                                         atrbvh_treelet_topo *topo)
+{
+    atrbvh_u32 k;
+    atrbvh_treelet_preorder(n, topo);
     for (k = n - 1u; k-- > 0u;) {
         atrbvh_u32 node = topo->order[k];
         atrbvh_u32 l = topo->left[node], r = topo->right[node];
@@ -542,13 +575,20 @@ ATRBVH_FN int atrbvh_treelet_process(const atrbvh_treelet_tree *t,
     /* A quick reject: the DP's optimum (and the agglomerative root merge)
      * is what evaluate recomputes (the same sums in the same order), so
      * nothing strictly cheaper exists when it finds none. */
-    if (agglomerative)
+    if (agglomerative) {
         found = atrbvh_agglomerate(p, tl.n, &lv, dist, &topo);
-    else
+        if (!(found < t->cost[root]))
+            return 0;
+        /* The merges already hold evaluate's boxes, counts and costs (the
+         * root's is `found`); only the pre-order is missing. */
+        atrbvh_treelet_preorder(tl.n, &topo);
+        cost = found;
+    } else {
         found = atrbvh_trbvh_dp(p, tl.n, &lv, s, &topo);
-    if (!(found < t->cost[root]))
-        return 0;
-    cost = atrbvh_treelet_evaluate(p, tl.n, &lv, &topo);
+        if (!(found < t->cost[root]))
+            return 0;
+        cost = atrbvh_treelet_evaluate(p, tl.n, &lv, &topo);
+    }
     if (!(cost < t->cost[root]))
         return 0;
     atrbvh_treelet_write(t, &tl, &topo);
