@@ -1,7 +1,8 @@
 /*
  * test_stages.c - internal stages checked on their own (links the static
- * core): the radix sort against an independent stable reference, and the
- * Morton key properties.
+ * core): the radix sort against an independent stable reference, the
+ * hierarchy against the per-node Karras search, and the Morton key
+ * properties.
  */
 #include <check.h>
 #include <stdlib.h>
@@ -22,6 +23,12 @@ static int cmp_pair(const void *a, const void *b)
     if (x->k != y->k)
         return x->k < y->k ? -1 : 1;
     return x->v < y->v ? -1 : x->v > y->v;
+}
+
+static int cmp_u64(const void *a, const void *b)
+{
+    const uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
 }
 
 /* kind 0: random 63-bit; 1: few distinct keys (long runs of equal keys);
@@ -82,6 +89,60 @@ START_TEST(radix_sort_is_stable_and_sorted)
 }
 END_TEST
 
+/* The hierarchy stage against atrbvh_karras_node (the OpenCL backend's
+ * per-node search, and the definition of the numbering): every child,
+ * parent and count, for every block split of the CPU's stack passes,
+ * over keys with long runs of equal keys (the position tie rule), few
+ * distinct bits, and random keys. */
+START_TEST(hierarchy_is_karras)
+{
+    static const uint32_t sizes[] = {1, 2, 3, 4, 5, 17, 64, 1000, 65537};
+    static const int threads[] = {1, 2, 3, 7, 16, 40};
+    size_t si, ti;
+    int kind;
+    tu_rng r;
+    tu_rng_seed(&r, 99);
+    for (si = 0; si < sizeof sizes / sizeof *sizes; si++)
+        for (kind = 0; kind < 4; kind++) {
+            const uint32_t n = sizes[si];
+            uint64_t *k = malloc(n * sizeof *k);
+            uint32_t i;
+            for (i = 0; i < n; i++) {
+                uint64_t x = tu_rng_next(&r) >> 1;
+                k[i] = kind == 0   ? x
+                       : kind == 1 ? (x % 5) << 30 /* long equal runs */
+                       : kind == 2 ? x & 0x7 /* few bits, many equal */
+                                   : 42; /* all equal */
+            }
+            qsort(k, n, sizeof *k, cmp_u64);
+            for (ti = 0; ti < sizeof threads / sizeof *threads; ti++) {
+                atrbvh_i_tree t;
+                ck_assert_int_eq(atrbvh_i_tree_alloc(&t, n), ATRBVH_OK);
+                memset(t.parent, 0xab, (2 * (size_t)n - 1) * sizeof *t.parent);
+                memset(t.count, 0xab, (2 * (size_t)n - 1) * sizeof *t.count);
+                atrbvh_i_hierarchy(k, &t, threads[ti]);
+                ck_assert_uint_eq(t.parent[0], ATRBVH_NONE);
+                for (i = 0; i + 1 < n; i++) {
+                    atrbvh_u32 l, rr, c;
+                    atrbvh_karras_node(k, n, i, &l, &rr, &c);
+                    ck_assert_msg(t.left[i] == l && t.right[i] == rr &&
+                                      t.count[i] == c,
+                                  "n %u kind %d threads %d node %u: (%u, %u, "
+                                  "%u) vs Karras (%u, %u, %u)",
+                                  n, kind, threads[ti], i, t.left[i],
+                                  t.right[i], t.count[i], l, rr, c);
+                    ck_assert_uint_eq(t.parent[l], i);
+                    ck_assert_uint_eq(t.parent[rr], i);
+                }
+                for (i = n - 1; i < 2 * n - 1; i++)
+                    ck_assert_uint_eq(t.count[i], 1);
+                atrbvh_i_tree_free(&t);
+            }
+            free(k);
+        }
+}
+END_TEST
+
 START_TEST(morton_keys)
 {
     /* Spreading and interleaving: x is the top bit of every triplet. */
@@ -122,6 +183,7 @@ int main(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, radix_sort_is_stable_and_sorted);
     tcase_add_test(tc, morton_keys);
+    tcase_add_test(tc, hierarchy_is_karras);
     suite_add_tcase(s, tc);
     sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);
