@@ -33,7 +33,9 @@ static int cmp_u64(const void *a, const void *b)
 
 /* kind 0: random 63-bit; 1: few distinct keys (long runs of equal keys);
  * 2: skewed (most keys in one top bucket); 3: only low bits vary;
- * 4: already sorted descending. */
+ * 4: already sorted descending; 5: all keys equal; 6: random but with
+ * constant middle bits (digits no key changes between varying ones);
+ * 7: random full 64-bit keys. */
 static void fill(uint64_t *k, uint32_t n, int kind, tu_rng *r)
 {
     uint32_t i;
@@ -44,6 +46,9 @@ static void fill(uint64_t *k, uint32_t n, int kind, tu_rng *r)
         case 2: x = (i % 10) ? (x & 0xfffff) : x; break;
         case 3: x = 0x5555000000000000ull | (x & 0x3ff); break;
         case 4: x = (uint64_t)(n - i) << 20; break;
+        case 5: x = 0x123456789abcull; break;
+        case 6: x = (x & 0x7ff00000000000ffull) | 0x0000abcdef000000ull; break;
+        case 7: x = tu_rng_next(r); break;
         default: break;
         }
         k[i] = x;
@@ -52,14 +57,15 @@ static void fill(uint64_t *k, uint32_t n, int kind, tu_rng *r)
 
 START_TEST(radix_sort_is_stable_and_sorted)
 {
-    static const uint32_t sizes[] = {2, 3, 47, 48, 49, 1000, 4099, 70001, 300000};
+    static const uint32_t sizes[] = {1,  2,    3,    31,    32,    33,   47,
+                                     48, 49,   1000, 4099,  70001, 300000};
     size_t si;
     int kind, threads;
     tu_rng r;
     tu_rng_seed(&r, 1234);
     for (si = 0; si < sizeof sizes / sizeof *sizes; si++)
-        for (kind = 0; kind < 5; kind++)
-            for (threads = 1; threads <= 4; threads += 3) {
+        for (kind = 0; kind < 8; kind++)
+            for (threads = 1; threads <= 4; threads *= 2) {
                 const uint32_t n = sizes[si];
                 uint64_t *k = malloc(n * sizeof *k), *tk = malloc(n * sizeof *k);
                 uint32_t *v = malloc(n * sizeof *v), *tv = malloc(n * sizeof *v);
