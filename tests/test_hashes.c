@@ -361,6 +361,51 @@ static int scene_known(const char *name)
     return -1;
 }
 
+/* Writes the comment lines of the current table, then written[], to
+ * write_path through a temporary file beside it; NULL, or why not. */
+static const char *write_table(void)
+{
+    static char why[4400];
+    char tmp[4200], buf[1024];
+    FILE *in, *out;
+    int k, ok;
+    if ((size_t)snprintf(tmp, sizeof tmp, "%s.tmp", write_path) >= sizeof tmp)
+        return "ATRBVH_WRITE_HASHES: name too long";
+    out = fopen(tmp, "w");
+    if (!out) {
+        snprintf(why, sizeof why, "%s: %s", tmp, strerror(errno));
+        return why;
+    }
+    in = fopen(table_path, "r");
+    if (!in)
+        fprintf(stderr, "test_hashes: %s: %s; the table is written without "
+                "its header\n", table_path, strerror(errno));
+    while (in && fgets(buf, sizeof buf, in))
+        if (buf[0] == '#')
+            fputs(buf, out);
+    if (in)
+        fclose(in);
+    for (k = 0; k < nwritten; k++)
+        fprintf(out, "%s %s %s %s %llu\n", written[k].scene,
+                written[k].config, written[k].hash, written[k].sah,
+                written[k].nodes);
+    ok = fflush(out) == 0 && !ferror(out);
+    if (fclose(out) != 0)
+        ok = 0;
+    if (!ok) {
+        snprintf(why, sizeof why, "%s: write error", tmp);
+        remove(tmp); /* ours */
+        return why;
+    }
+    if (rename(tmp, write_path) != 0) {
+        snprintf(why, sizeof why, "%s -> %s: %s", tmp, write_path,
+                 strerror(errno));
+        remove(tmp);
+        return why;
+    }
+    return NULL;
+}
+
 /* Every line of the table was compared, or belongs to a scene skipped
  * here (absent file, sanitizer); or, in the writing mode, the table is
  * written. */
@@ -368,9 +413,7 @@ START_TEST(table_complete)
 {
     int k, stale = 0, skipped = 0;
     if (write_path) {
-        char tmp[4200];
-        FILE *in = fopen(table_path, "r"), *out;
-        char buf[1024];
+        const char *why;
         int scenes_run = 0;
         ck_assert_msg(sha256_ok, "SHA-256 failed its known answers: no "
                       "table written");
@@ -380,27 +423,19 @@ START_TEST(table_complete)
                       "ATRBVH_WRITE_HASHES wants every scene: set "
                       "ATRBVH_SCENES to the scene folder and do not set "
                       "ATRBVH_TEST_SANITIZER");
+        /* A scene of the current table that is not here would lose its
+         * lines: removing a scene is an edit by hand. */
+        for (k = 0; k < nlines; k++)
+            ck_assert_msg(scene_known(table[k].scene) >= 0,
+                          "%s:%d: scene %s is not in $ATRBVH_SCENES: no "
+                          "table written (remove its lines by hand if it "
+                          "is gone for good)", table_path, table[k].lineno,
+                          table[k].scene);
         ck_assert_msg(nwritten == nscenes * (int)NCONFIGS,
                       "%d of %d trees hashed (a scene failed above)",
                       nwritten, nscenes * (int)NCONFIGS);
-        snprintf(tmp, sizeof tmp, "%s.tmp", write_path);
-        out = fopen(tmp, "w");
-        ck_assert_msg(out != NULL, "%s: %s", tmp, strerror(errno));
-        /* The comment lines of the current table, as they are. */
-        while (in && fgets(buf, sizeof buf, in))
-            if (buf[0] == '#')
-                fputs(buf, out);
-        if (in)
-            fclose(in);
-        for (k = 0; k < nwritten; k++)
-            fprintf(out, "%s %s %s %s %llu\n", written[k].scene,
-                    written[k].config, written[k].hash, written[k].sah,
-                    written[k].nodes);
-        ck_assert_msg(fflush(out) == 0 && !ferror(out), "%s: write error",
-                      tmp);
-        ck_assert_msg(fclose(out) == 0, "%s: %s", tmp, strerror(errno));
-        ck_assert_msg(rename(tmp, write_path) == 0, "%s -> %s: %s", tmp,
-                      write_path, strerror(errno));
+        why = write_table();
+        ck_assert_msg(why == NULL, "%s", why);
         fprintf(stderr, "test_hashes: wrote %d lines to %s (comments from "
                 "%s)\n", nwritten, write_path, table_path);
         return;
