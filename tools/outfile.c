@@ -65,6 +65,7 @@ static void install_handlers(void)
 static void track(char *tmp)
 {
     int i;
+    install_handlers();
     for (i = 0; i < MAX_ACTIVE; i++)
         if (!active[i]) {
             active[i] = tmp;
@@ -132,7 +133,6 @@ FILE *cli_out_open(const char *path, cli_out *h)
         cli_error("%s: out of memory", path);
         return NULL;
     }
-    install_handlers();
     e = atomicfile_begin(&h->af, path, h, &out_alloc);
     if (e != 0) {
         cli_error("%s: cannot write: %s", path, strerror(e));
