@@ -36,7 +36,7 @@ static size_t dir_len(const char *p)
     return slash ? (size_t)(slash - p) + 1 : 0;
 }
 
-static char *copy_string(const char *s, const atomicfile_alloc *a)
+static char *copy_string(const char *s, const atrbvh_i_atomicfile_alloc *a)
 {
     size_t n = strlen(s) + 1;
     char *d = (char *)a->malloc_fn(n);
@@ -49,7 +49,7 @@ static char *copy_string(const char *s, const atomicfile_alloc *a)
  * relative to the link's directory): 0 and *next (allocated), or an
  * errno value.  `size` is lstat's st_size, a hint only. */
 static int follow_link(const char *cur, off_t size, char **next,
-                       const atomicfile_alloc *a)
+                       const atrbvh_i_atomicfile_alloc *a)
 {
     size_t cap = size > 0 && (uintmax_t)size < 65536u ? (size_t)size + 1 : 256;
     size_t dl;
@@ -92,7 +92,7 @@ static int follow_link(const char *cur, off_t size, char **next,
  * allocated, for TARGET_NEW and TARGET_REPLACE; *st the existing file for
  * TARGET_REPLACE), or an errno value. */
 static int resolve(const char *path, enum target_kind *kind, char **target,
-                   struct stat *st, const atomicfile_alloc *a)
+                   struct stat *st, const atrbvh_i_atomicfile_alloc *a)
 {
     struct stat proc_st;
     int have_proc = stat("/proc", &proc_st) == 0;
@@ -155,7 +155,7 @@ static int resolve(const char *path, enum target_kind *kind, char **target,
  * exists is ever opened; mode 0666 less the umask): its descriptor and
  * *name, or -1 with errno set. */
 static int create_temp(const char *target, const void *salt, char **name,
-                       const atomicfile_alloc *a)
+                       const atrbvh_i_atomicfile_alloc *a)
 {
     size_t dl = dir_len(target), bl = strlen(target) - dl, cap;
     unsigned long pid = (unsigned long)getpid();
@@ -197,7 +197,7 @@ static int create_temp(const char *target, const void *salt, char **name,
     return -1;
 }
 
-static void release(atomicfile *af, const atomicfile_alloc *a)
+static void release(atomicfile *af, const atrbvh_i_atomicfile_alloc *a)
 {
     if (af->target)
         a->free_fn(af->target);
@@ -208,8 +208,8 @@ static void release(atomicfile *af, const atomicfile_alloc *a)
     af->fd = -1;
 }
 
-int atomicfile_begin(atomicfile *af, const char *path, const void *salt,
-                     const atomicfile_alloc *alloc)
+int atrbvh_i_atomicfile_begin(atomicfile *af, const char *path, const void *salt,
+                     const atrbvh_i_atomicfile_alloc *alloc)
 {
     enum target_kind kind = TARGET_NEW;
     struct stat old;
@@ -238,14 +238,14 @@ int atomicfile_begin(atomicfile *af, const char *path, const void *salt,
         }
         if (fchmod(af->fd, old.st_mode & 07777) != 0) {
             e = errno;
-            atomicfile_abort(af, alloc);
+            atrbvh_i_atomicfile_abort(af, alloc);
             return e;
         }
     }
     return 0;
 }
 
-int atomicfile_open_in_place(const char *path)
+int atrbvh_i_atomicfile_open_in_place(const char *path)
 {
     struct stat st;
     int flags = O_WRONLY;
@@ -254,7 +254,7 @@ int atomicfile_open_in_place(const char *path)
     return open(path, flags);
 }
 
-int atomicfile_write_all(int fd, const void *p, size_t n, size_t *done)
+int atrbvh_i_atomicfile_write_all(int fd, const void *p, size_t n, size_t *done)
 {
     const unsigned char *b = (const unsigned char *)p;
     *done = 0;
@@ -275,7 +275,7 @@ int atomicfile_write_all(int fd, const void *p, size_t n, size_t *done)
 
 /* fsync of the directory holding `path` so that the rename lasts; best
  * effort (some file systems refuse it; the rename is atomic anyway). */
-static void sync_dir(const char *path, const atomicfile_alloc *a)
+static void sync_dir(const char *path, const atrbvh_i_atomicfile_alloc *a)
 {
     size_t dl = dir_len(path);
     char *dir = (char *)a->malloc_fn(dl + 2);
@@ -298,7 +298,7 @@ static void sync_dir(const char *path, const atomicfile_alloc *a)
     a->free_fn(dir);
 }
 
-int atomicfile_commit(atomicfile *af, const atomicfile_alloc *alloc)
+int atrbvh_i_atomicfile_commit(atomicfile *af, const atrbvh_i_atomicfile_alloc *alloc)
 {
     int e = 0;
     if (!af->tmp) { /* in place: nothing to rename */
@@ -307,7 +307,7 @@ int atomicfile_commit(atomicfile *af, const atomicfile_alloc *alloc)
     }
     if (rename(af->tmp, af->target) != 0) {
         e = errno;
-        atomicfile_abort(af, alloc);
+        atrbvh_i_atomicfile_abort(af, alloc);
         return e;
     }
     sync_dir(af->target, alloc);
@@ -315,7 +315,7 @@ int atomicfile_commit(atomicfile *af, const atomicfile_alloc *alloc)
     return 0;
 }
 
-void atomicfile_abort(atomicfile *af, const atomicfile_alloc *alloc)
+void atrbvh_i_atomicfile_abort(atomicfile *af, const atrbvh_i_atomicfile_alloc *alloc)
 {
     if (!af)
         return;

@@ -32,16 +32,16 @@
 
 #include <stddef.h>
 
-typedef struct atomicfile_alloc {
+typedef struct atrbvh_i_atomicfile_alloc {
     void *(*malloc_fn)(size_t size);
     void (*free_fn)(void *p);
-} atomicfile_alloc;
+} atrbvh_i_atomicfile_alloc;
 
 typedef struct atomicfile {
-    /* The temporary file's descriptor after atomicfile_begin (mode and
+    /* The temporary file's descriptor after atrbvh_i_atomicfile_begin (mode and
      * owner already set), -1 when writing in place.  The caller writes it
      * and closes it (directly or through a FILE *) before
-     * atomicfile_commit; it sets fd to -1 once it no longer owns it. */
+     * atrbvh_i_atomicfile_commit; it sets fd to -1 once it no longer owns it. */
     int fd;
     char *target; /* the file renamed over (symbolic links followed) */
     char *tmp;    /* the temporary file; NULL: the target is written in place */
@@ -49,30 +49,30 @@ typedef struct atomicfile {
 
 /* Starts writing `path`.  0 with either af->tmp set (a temporary file
  * created beside af->target, open as af->fd) or af->tmp NULL (write
- * `path` in place: see atomicfile_open_in_place); or an errno value with
+ * `path` in place: see atrbvh_i_atomicfile_open_in_place); or an errno value with
  * nothing created and nothing to release.  `salt` varies the temporary
  * file's name (any pointer of the caller's). */
-int atomicfile_begin(atomicfile *af, const char *path, const void *salt,
-                     const atomicfile_alloc *alloc);
+int atrbvh_i_atomicfile_begin(atomicfile *af, const char *path, const void *salt,
+                     const atrbvh_i_atomicfile_alloc *alloc);
 
 /* Opens `path` for writing in place: no O_CREAT (it exists and is not
  * ours to create), no O_TRUNC (a device or FIFO has nothing to truncate;
  * a regular file reached through /proc is appended to, as the shell
  * opened it).  A descriptor, or -1 with errno set. */
-int atomicfile_open_in_place(const char *path);
+int atrbvh_i_atomicfile_open_in_place(const char *path);
 
 /* Writes n bytes to fd, retrying after EINTR and short writes; 0, or an
  * errno value with *done the bytes written. */
-int atomicfile_write_all(int fd, const void *p, size_t n, size_t *done);
+int atrbvh_i_atomicfile_write_all(int fd, const void *p, size_t n, size_t *done);
 
 /* Ends a write whose descriptor the caller has fsync'ed and closed:
  * renames the temporary file over the target and fsyncs the directory so
  * that the rename lasts.  0, or an errno value after removing the
  * temporary file (the target untouched).  Releases af either way. */
-int atomicfile_commit(atomicfile *af, const atomicfile_alloc *alloc);
+int atrbvh_i_atomicfile_commit(atomicfile *af, const atrbvh_i_atomicfile_alloc *alloc);
 
 /* Gives up: closes af->fd when not -1, removes the temporary file (ours:
  * created with O_EXCL) and releases af.  Safe on a released af. */
-void atomicfile_abort(atomicfile *af, const atomicfile_alloc *alloc);
+void atrbvh_i_atomicfile_abort(atomicfile *af, const atrbvh_i_atomicfile_alloc *alloc);
 
 #endif

@@ -111,7 +111,7 @@ atrbvh_status atrbvh_save_memory(const atrbvh_bvh *bvh, void **data,
 
 /* Every allocation of the library goes through its replaceable allocator
  * (the allocation-failure tests count them). */
-static const atomicfile_alloc save_alloc = {atrbvh_i_malloc, atrbvh_i_free};
+static const atrbvh_i_atomicfile_alloc save_alloc = {atrbvh_i_malloc, atrbvh_i_free};
 
 static atrbvh_status io_fail(atrbvh_error *error, const char *path,
                              size_t written, size_t total, int e)
@@ -133,29 +133,29 @@ static atrbvh_status write_file(const char *path, const unsigned char *buf,
 {
     atomicfile af;
     size_t done = 0;
-    int e = atomicfile_begin(&af, path, buf, &save_alloc);
+    int e = atrbvh_i_atomicfile_begin(&af, path, buf, &save_alloc);
     if (e != 0)
         return io_fail(error, path, 0, 0, e);
     if (!af.tmp) { /* in place: not a regular file of ours to replace */
-        int fd = atomicfile_open_in_place(path);
-        atomicfile_abort(&af, &save_alloc); /* nothing to remove */
+        int fd = atrbvh_i_atomicfile_open_in_place(path);
+        atrbvh_i_atomicfile_abort(&af, &save_alloc); /* nothing to remove */
         if (fd < 0)
             return io_fail(error, path, 0, 0, errno);
-        e = atomicfile_write_all(fd, buf, n, &done);
+        e = atrbvh_i_atomicfile_write_all(fd, buf, n, &done);
         if (close(fd) != 0 && e == 0)
             e = errno;
         return e != 0 ? io_fail(error, path, done, n, e) : ATRBVH_OK;
     }
-    e = atomicfile_write_all(af.fd, buf, n, &done);
+    e = atrbvh_i_atomicfile_write_all(af.fd, buf, n, &done);
     if (e == 0 && fsync(af.fd) != 0)
         e = errno;
     if (close(af.fd) != 0 && e == 0)
         e = errno;
     af.fd = -1;
     if (e == 0)
-        e = atomicfile_commit(&af, &save_alloc);
+        e = atrbvh_i_atomicfile_commit(&af, &save_alloc);
     else
-        atomicfile_abort(&af, &save_alloc);
+        atrbvh_i_atomicfile_abort(&af, &save_alloc);
     return e != 0 ? io_fail(error, path, done, n, e) : ATRBVH_OK;
 }
 

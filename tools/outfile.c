@@ -84,7 +84,7 @@ static void untrack(const char *tmp)
 }
 
 /* The tool's memory is plain malloc's. */
-static const atomicfile_alloc out_alloc = {malloc, free};
+static const atrbvh_i_atomicfile_alloc out_alloc = {malloc, free};
 
 static char *dup_str(const char *s)
 {
@@ -106,11 +106,11 @@ int cli_out_check(const char *path, const char **err)
     }
     /* For a regular target this creates the temporary file and removes it
      * again: the directory is writable and has room for a name. */
-    e = atomicfile_begin(&af, path, path, &out_alloc);
+    e = atrbvh_i_atomicfile_begin(&af, path, path, &out_alloc);
     if (e == 0 && !af.tmp && access(path, W_OK) != 0)
         e = errno; /* in place */
     if (e == 0)
-        atomicfile_abort(&af, &out_alloc);
+        atrbvh_i_atomicfile_abort(&af, &out_alloc);
     if (e != 0) {
         if (err)
             *err = strerror(e);
@@ -133,7 +133,7 @@ FILE *cli_out_open(const char *path, cli_out *h)
         cli_error("%s: out of memory", path);
         return NULL;
     }
-    e = atomicfile_begin(&h->af, path, h, &out_alloc);
+    e = atrbvh_i_atomicfile_begin(&h->af, path, h, &out_alloc);
     if (e != 0) {
         cli_error("%s: cannot write: %s", path, strerror(e));
         cli_out_abort(h);
@@ -150,7 +150,7 @@ FILE *cli_out_open(const char *path, cli_out *h)
             ps.st_dev == os.st_dev && ps.st_ino == os.st_ino)
             fd = dup(STDOUT_FILENO);
         else
-            fd = atomicfile_open_in_place(path);
+            fd = atrbvh_i_atomicfile_open_in_place(path);
         if (fd < 0 || !(h->f = fdopen(fd, "wb"))) {
             e = errno;
             if (fd >= 0)
@@ -179,7 +179,7 @@ void cli_out_abort(cli_out *h)
     if (h->f)
         fclose(h->f);
     untrack(h->af.tmp);
-    atomicfile_abort(&h->af, &out_alloc); /* removes only our temporary */
+    atrbvh_i_atomicfile_abort(&h->af, &out_alloc); /* removes only our temporary */
     free(h->name);
     memset(h, 0, sizeof *h);
     h->af.fd = -1;
@@ -207,7 +207,7 @@ int cli_out_commit(cli_out *h)
         /* From here the temporary name is the target's: no longer ours to
          * remove on a signal. */
         untrack(h->af.tmp);
-        e = atomicfile_commit(&h->af, &out_alloc);
+        e = atrbvh_i_atomicfile_commit(&h->af, &out_alloc);
     }
     if (e != 0) {
         cli_error("%s: write failed: %s", h->name, strerror(e));
