@@ -9,9 +9,11 @@
 #include "outfile.h"
 
 #include <errno.h>
+#include <pthread.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 static const char *const method_names[] = {"lbvh", "trbvh", "atrbvh", NULL};
@@ -254,16 +256,23 @@ int cli_bad_device(const cli_build_args *a, atrbvh_status st,
 
 /* ------------------------------------------------------------ progress */
 /* Shown only on a terminal (and not with --quiet), and only once loading
- * or building has run for a second, so short runs and logs stay clean;
- * then redrawn at most every PROGRESS_EVERY_MS as the library and the
- * loader report work done. */
+ * or building has run for a second, so short runs and logs stay clean.
+ * The library and the loader report work done (stage, fraction) from the
+ * working thread; a drawing thread redraws the line every
+ * PROGRESS_EVERY_MS with that and the seconds elapsed, so the line moves
+ * even through a long stage that reports only at its start. */
 #define PROGRESS_AFTER_MS 1000.0
-#define PROGRESS_EVERY_MS 100.0
+#define PROGRESS_EVERY_MS 250
 
 typedef struct progress {
-    double start_ms, last_ms;
-    int shown;
-    const char *what; /* "loading", "building" */
+    pthread_mutex_t lock;
+    pthread_cond_t wake;
+    pthread_t thread;
+    int running, stop, shown;
+    double start_ms;
+    const char *what;  /* "loading", "building" */
+    char stage[16];
+    double fraction;
 } progress;
 
 /* The delay before the first line: PROGRESS_AFTER_MS, or
@@ -279,40 +288,101 @@ static double progress_after_ms(void)
     return *end == '\0' && d >= 0.0 ? d : PROGRESS_AFTER_MS;
 }
 
-static void show_progress(progress *p, const char *stage, double fraction)
+/* Draws the line (the lock held). */
+static void draw(progress *p)
 {
-    double now = cli_now_ms();
-    if (!p->shown && now - p->start_ms < progress_after_ms())
+    double f = p->fraction, now = cli_now_ms();
+    if (now - p->start_ms < progress_after_ms())
         return;
-    if (p->shown && now - p->last_ms < PROGRESS_EVERY_MS && fraction < 1.0)
-        return;
-    if (!(fraction >= 0.0))
-        fraction = 0.0;
-    if (fraction > 1.0)
-        fraction = 1.0;
-    fprintf(stderr, "\ratrbvh: %s: %-10.10s %3d%%", p->what,
-            stage ? stage : "", (int)(fraction * 100.0 + 0.5));
+    if (!(f >= 0.0))
+        f = 0.0;
+    if (f > 1.0)
+        f = 1.0;
+    fprintf(stderr, "\ratrbvh: %s: %-10.10s %3d%%  %.1f s ", p->what,
+            p->stage, (int)(f * 100.0 + 0.5), (now - p->start_ms) / 1000.0);
     fflush(stderr);
     p->shown = 1;
-    p->last_ms = now;
+}
+
+static void *drawing(void *arg)
+{
+    progress *p = arg;
+    pthread_mutex_lock(&p->lock);
+    while (!p->stop) {
+        struct timespec until;
+        clock_gettime(CLOCK_REALTIME, &until);
+        until.tv_nsec += (long)PROGRESS_EVERY_MS * 1000000L;
+        if (until.tv_nsec >= 1000000000L) {
+            until.tv_sec++;
+            until.tv_nsec -= 1000000000L;
+        }
+        pthread_cond_timedwait(&p->wake, &p->lock, &until);
+        if (!p->stop)
+            draw(p);
+    }
+    pthread_mutex_unlock(&p->lock);
+    return NULL;
+}
+
+/* Starts the display for `what` when stderr is a terminal and not quiet;
+ * without a thread (none could be made) nothing is shown. */
+static void begin_progress(progress *p, const char *what, int quiet)
+{
+    memset(p, 0, sizeof *p);
+    p->start_ms = cli_now_ms();
+    p->what = what;
+    if (quiet || !isatty(STDERR_FILENO))
+        return;
+    if (pthread_mutex_init(&p->lock, NULL) != 0)
+        return;
+    if (pthread_cond_init(&p->wake, NULL) != 0) {
+        pthread_mutex_destroy(&p->lock);
+        return;
+    }
+    if (pthread_create(&p->thread, NULL, drawing, p) != 0) {
+        pthread_cond_destroy(&p->wake);
+        pthread_mutex_destroy(&p->lock);
+        return;
+    }
+    p->running = 1;
+}
+
+static void report(progress *p, const char *stage, double fraction)
+{
+    if (!p->running)
+        return;
+    pthread_mutex_lock(&p->lock);
+    snprintf(p->stage, sizeof p->stage, "%s", stage ? stage : "");
+    p->fraction = fraction;
+    pthread_mutex_unlock(&p->lock);
 }
 
 static int on_progress(const char *stage, double fraction, void *user)
 {
-    show_progress(user, stage, fraction);
+    report(user, stage, fraction);
     return 0;
 }
 
 static void on_load_progress(double fraction, void *user)
 {
-    show_progress(user, "", fraction);
+    report(user, "", fraction);
 }
 
+/* Stops the drawing thread and clears the line. */
 static void end_progress(progress *p)
 {
+    if (!p->running)
+        return;
+    pthread_mutex_lock(&p->lock);
+    p->stop = 1;
+    pthread_cond_signal(&p->wake);
+    pthread_mutex_unlock(&p->lock);
+    pthread_join(p->thread, NULL);
     if (p->shown)
-        fprintf(stderr, "\r%50s\r", "");
-    p->shown = 0;
+        fprintf(stderr, "\r%60s\r", "");
+    pthread_cond_destroy(&p->wake);
+    pthread_mutex_destroy(&p->lock);
+    p->running = 0;
 }
 
 /* ----------------------------------------------------- load and build */
@@ -361,11 +431,8 @@ int cli_load_and_build(const cli_build_args *a, cli_built *b)
     if (a->output && cli_out_usable(a->output, a->scene) != 0)
         return CLI_FAIL;
     t0 = cli_now_ms();
-    memset(&prog, 0, sizeof prog);
-    prog.start_ms = t0;
-    prog.what = "loading";
-    if (!a->quiet && isatty(STDERR_FILENO))
-        scene_set_progress(on_load_progress, &prog);
+    begin_progress(&prog, "loading", a->quiet);
+    scene_set_progress(on_load_progress, &prog);
     if (scene_load(a->scene, &b->sc, err, sizeof err) != 0) {
         scene_set_progress(NULL, NULL);
         end_progress(&prog);
@@ -397,10 +464,8 @@ int cli_load_and_build(const cli_build_args *a, cli_built *b)
         }
         o.device = b->device;
     }
-    memset(&prog, 0, sizeof prog);
-    prog.start_ms = cli_now_ms();
-    prog.what = "building";
-    if (!a->quiet && isatty(STDERR_FILENO)) {
+    begin_progress(&prog, "building", a->quiet);
+    if (prog.running) {
         o.progress = on_progress;
         o.progress_user = &prog;
     }
