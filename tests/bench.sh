@@ -63,7 +63,8 @@ import csv, json, math, subprocess, sys
 path, tool, scenes = sys.argv[1], sys.argv[2], sys.argv[3:]
 need = ("scene method treelet_size rounds backend threads build_ms sah "
         "sah_binary nodes leaves peak_bytes primary_mrays ao_mrays "
-        "diffuse_mrays relative_pct").split()
+        "diffuse_mrays relative_pct box_tests_per_ray tri_tests_per_ray "
+        "ray_cost_pct").split()
 with open(path, newline="") as f:
     rows = list(csv.reader(f))
 head, body = rows[0], rows[1:]
@@ -107,6 +108,33 @@ for r in lib:
 for r in emb:
     assert int(r["treelet_size"]) == 0 and r["backend"] == "embree"
     assert float(r["embree_primary_mrays"]) > 0
+PY
+
+# Exact ray cost: the CSV's per-ray counts are those `atrbvh trace --json`
+# reports for the same tree and rays (viewpoint 0, same size and spp), and
+# ray_cost_pct is 100 for the reference TRBVH(7,3).
+checks=$((checks + 1))
+run 0 bench builtin:sphere:3000 --configs lbvh --repeat 1 --width 24 \
+    --height 16 --viewpoints 1 --spp 1 --csv "$T/cost.csv" &&
+    run 0 trace builtin:sphere:3000 --method lbvh --max-leaf 8 --width 24 \
+    --height 16 --spp 1 --json &&
+    python3 - "$T/cost.csv" "$T/out" <<'PY' || fail "bench ray cost check failed"
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1], newline="")))
+js = json.load(open(sys.argv[2]))
+lb = [r for r in rows if r["method"] == "lbvh"][0]
+ref = [r for r in rows if r["method"] == "trbvh"][0]
+assert float(ref["ray_cost_pct"]) == 100.0, ref["ray_cost_pct"]
+for kind, col in (("primary", "primary_"), ("ao", "ao_"),
+                  ("diffuse", "diffuse_"), ("all", "")):
+    for what in ("box", "tri"):
+        a = float(lb[col + what + "_tests_per_ray"])
+        b = js["rays"][kind][what + "_tests_per_ray"]
+        assert a > 0 and repr(a) == repr(b), (kind, what, a, b)
+assert repr(float(lb["ray_cost"])) == repr(js["ray_cost"]), \
+    (lb["ray_cost"], js["ray_cost"])
+assert abs(float(lb["ray_cost_pct"]) -
+           100 * float(lb["ray_cost"]) / float(ref["ray_cost"])) < 1e-9
 PY
 
 # --methods x --treelet x --rounds, no rays

@@ -94,6 +94,9 @@ int bench_sweep(bench_args *a, FILE *csv)
             if (sd.have_rays)
                 rows[i].rel_pct =
                     rows[i].total_mrays / rows[ref].total_mrays * 100.0;
+            if (sd.have_rays)
+                rows[i].cost_pct =
+                    rows[i].ray_cost / rows[ref].ray_cost * 100.0;
         }
         table_sweep(stdout, rows, n, sd.have_rays);
         table_dominance(stdout, rows, n);
