@@ -234,5 +234,53 @@ else
         case "$err_line" in *libpng*) ;; *) fail "render without libpng: $err_line" ;; esac
 fi
 
+# ---------------------------------------------------------------- cameras
+# A closed cube is a room (every face of its box covered): viewpoint 0 is
+# inside it, so every primary ray hits; from --eye outside, looking at it,
+# some rays miss.  The camera options' usage errors.
+{
+    echo "v 0 0 0"; echo "v 1 0 0"; echo "v 1 1 0"; echo "v 0 1 0"
+    echo "v 0 0 1"; echo "v 1 0 1"; echo "v 1 1 1"; echo "v 0 1 1"
+    for f in "1 2 3" "1 3 4" "5 7 6" "5 8 7" "1 5 6" "1 6 2" \
+             "4 3 7" "4 7 8" "1 4 8" "1 8 5" "2 6 7" "2 7 3"; do
+        echo "f $f"
+    done
+} >"$T/cube.obj"
+checks=$((checks + 1))
+run 0 trace "$T/cube.obj" --width 16 --height 12 --spp 0 --json &&
+    python3 - "$T/out" <<'PY' || fail "trace in a room: the camera is not inside"
+import json, sys
+p = json.load(open(sys.argv[1]))["rays"]["primary"]
+assert p["count"] == 192 and p["hits"] == 192, p
+PY
+checks=$((checks + 1))
+run 0 trace "$T/cube.obj" --width 16 --height 12 --spp 0 --json \
+    --eye 3,2,4 --look-at 0.5,0.5,0.5 --fov 60 &&
+    python3 - "$T/out" <<'PY' || fail "trace --eye outside the cube"
+import json, sys
+p = json.load(open(sys.argv[1]))["rays"]["primary"]
+assert 0 < p["hits"] < p["count"] == 192, p
+PY
+# bench with --eye traces that camera's rays: the same counts as trace
+checks=$((checks + 1))
+run 0 bench builtin:city:2000 --configs lbvh --repeat 1 --width 20 \
+    --height 10 --spp 1 --eye 0,50,300 --look-at 10,0,0 --csv "$T/eye.csv" &&
+    run 0 trace builtin:city:2000 --method lbvh --max-leaf 8 --width 20 \
+    --height 10 --spp 1 --eye 0,50,300 --look-at 10,0,0 --json &&
+    python3 - "$T/eye.csv" "$T/out" <<'PY' || fail "bench --eye and trace --eye differ"
+import csv, json, sys
+lb = [r for r in csv.DictReader(open(sys.argv[1], newline=""))
+      if r["method"] == "lbvh"][0]
+js = json.load(open(sys.argv[2]))
+assert repr(float(lb["box_tests_per_ray"])) == \
+    repr(js["rays"]["all"]["box_tests_per_ray"]), (lb, js["rays"])
+assert js["rays"]["primary"]["count"] == 200
+PY
+run 2 trace builtin:city:2000 --look-at 1,2,3
+run 2 trace builtin:city:2000 --eye 1,2
+run 2 trace builtin:city:2000 --eye 1,2,x
+run 2 render builtin:city:2000 -o "$T/x.png" --eye 1,2,3 --look-at 1,2,3
+run 2 bench builtin:city:2000 --fov 0
+
 echo "bench.sh: $checks runs, $failures failures"
 [ "$failures" -eq 0 ]

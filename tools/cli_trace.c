@@ -144,10 +144,11 @@ static void text_rays(FILE *f, const char *name, const ray_stats *rs,
     fputc('\n', f);
 }
 
-#define TRACE_OPTS 4
+#define TRACE_OPTS (4 + RAYS_CAMERA_OPTS)
 
 typedef struct trace_args {
     unsigned width, height, spp;
+    camera_view view;
 } trace_args;
 
 static void trace_opts(trace_args *t, cli_opt *table)
@@ -164,7 +165,10 @@ static void trace_opts(trace_args *t, cli_opt *table)
          .help = "occlusion and diffuse rays per primary hit (default 4,\n"
                  "0 to 1024)"},
         {.name = NULL}};
-    CLI_OPTS_COPY(table, opts, TRACE_OPTS);
+    CLI_OPTS_COPY(table, opts, TRACE_OPTS - RAYS_CAMERA_OPTS);
+    /* the camera options before the terminator */
+    rays_camera_opts(&t->view, table + 3);
+    table[TRACE_OPTS - 1] = opts[3];
 }
 
 static void trace_help(FILE *f)
@@ -175,7 +179,9 @@ static void trace_help(FILE *f)
     cli_build_help(f,
                    "Usage: atrbvh trace SCENE [OPTIONS]\n"
                    "Build a BVH over SCENE, then trace primary rays from "
-                   "camera viewpoint 0,\n"
+                   "camera viewpoint 0\n"
+                   "(inside the scene for rooms; see CAMERAS in atrbvh(1)) "
+                   "or --eye,\n"
                    "ambient-occlusion rays (any hit) and diffuse rays "
                    "(closest hit) from\n"
                    "the primary hits, and report rays per second for each "
@@ -186,7 +192,8 @@ static void trace_help(FILE *f)
 }
 
 static int trace(const cli_build_args *a, const cli_built *b,
-                 unsigned width, unsigned height, unsigned spp)
+                 unsigned width, unsigned height, unsigned spp,
+                 const camera_view *view)
 {
     tracer tr;
     camera cam;
@@ -219,7 +226,11 @@ static int trace(const cli_build_args *a, const cli_built *b,
         diag += ((double)hi[k] - lo[k]) * ((double)hi[k] - lo[k]);
     diag = sqrt(diag);
     eps_scale = diag * 1e-5;
-    camera_frame(lo, hi, 0, (float)width / (float)height, &cam);
+    if (rays_camera(&b->sc, 0, view, (float)width / (float)height,
+                    &cam) != 0) {
+        cli_error("the camera's eye is its look-at point");
+        goto done;
+    }
 
     for (y = 0, i = 0; y < height; y++)
         for (x = 0; x < width; x++, i++)
@@ -348,16 +359,19 @@ int cli_trace(int argc, char **argv)
     t.width = 512;
     t.height = 384;
     t.spp = 4;
+    memset(&t.view, 0, sizeof t.view);
     trace_opts(&t, table);
     cli_build_args_init(&a);
     if (cli_build_parse("trace", argc, argv, table, CLI_BUILD_ALL, &a) != 0)
+        return CLI_USAGE;
+    if (rays_camera_check("trace", &t.view) != 0)
         return CLI_USAGE;
     if ((size_t)t.width * t.height > MAX_PIXELS)
         return cli_usage("trace", "%ux%u is more than %zu pixels", t.width,
                          t.height, MAX_PIXELS);
     rc = cli_load_and_build(&a, &b);
     if (rc == CLI_OK)
-        rc = trace(&a, &b, t.width, t.height, t.spp);
+        rc = trace(&a, &b, t.width, t.height, t.spp, &t.view);
     cli_built_free(&b);
     return rc;
 }

@@ -64,6 +64,7 @@ typedef struct bench_args {
     int scaling;
     size_t sizes[MAX_SIZES];
     int nsizes;
+    camera_view view; /* --eye, --look-at, --fov */
 } bench_args;
 
 typedef struct scene_data {
