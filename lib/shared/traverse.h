@@ -71,6 +71,9 @@ typedef struct atrbvh_trav_ray {
     double orgd[3];  /* the slab tests run in double: see node_hit */
     double idird[3];
     int sign[3]; /* 1 when idird[k] < 0 (direction -0 included) */
+    /* Where a node's near and far planes are among its first six floats
+     * (min x, y, z, max x, y, z): k or 3 + k by the sign. */
+    int near_at[3], far_at[3];
     float tmin, tmax;
     /* watertight triangle test, in double */
     double o[3];
@@ -129,6 +132,8 @@ ATRBVH_FN int atrbvh_trav_setup(const float *origin, const float *dir,
          * reciprocal overflows to inf below 2^-128); +-inf for +-0 */
         r->idird[k] = 1.0 / (double)dir[k];
         r->sign[k] = r->idird[k] < 0.0;
+        r->near_at[k] = r->sign[k] ? 3 + k : k;
+        r->far_at[k] = r->sign[k] ? k : 3 + k;
         r->o[k] = (double)origin[k];
         ad[k] = atrbvh_trav_abs((double)dir[k]);
     }
@@ -182,12 +187,12 @@ ATRBVH_FN int atrbvh_trav_node_hit(ATRBVH_CONST_GLOBAL atrbvh_node *n,
                                    float thi, float *tnear)
 {
     double lo = -ATRBVH_TRAV_INF, hi = ATRBVH_TRAV_INF;
+    /* the node's box as six floats: min x, y, z, max x, y, z */
+    ATRBVH_CONST_GLOBAL float *b = (ATRBVH_CONST_GLOBAL float *)n;
     int k;
     for (k = 0; k < 3; k++) {
-        float bn = r->sign[k] ? n->max[k] : n->min[k];
-        float bf = r->sign[k] ? n->min[k] : n->max[k];
-        double tn = atrbvh_trav_slab_t(bn, r, k);
-        double tf = atrbvh_trav_slab_t(bf, r, k);
+        double tn = atrbvh_trav_slab_t(b[r->near_at[k]], r, k);
+        double tf = atrbvh_trav_slab_t(b[r->far_at[k]], r, k);
         /* NaN (0 * inf) fails the comparison and is dropped. */
         lo = tn > lo ? tn : lo;
         hi = tf < hi ? tf : hi;
