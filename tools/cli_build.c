@@ -354,6 +354,8 @@ static void report(progress *p, const char *stage, double fraction)
     pthread_mutex_lock(&p->lock);
     snprintf(p->stage, sizeof p->stage, "%s", stage ? stage : "");
     p->fraction = fraction;
+    if (!p->shown)
+        draw(p); /* the first line as soon as the delay is over */
     pthread_mutex_unlock(&p->lock);
 }
 
