@@ -1,8 +1,10 @@
 #!/bin/sh
 # tests/suite.sh - the whole test suite: every stage in tests/suite.d/, in
 # order (10-check: `make check`; later stages: sanitizers, fuzzing,
-# distcheck, packaging).  Run after setup.sh.  Runs every stage, exits
-# non-zero if any failed.  A stage may print lines "WORD: N passed, M
+# distcheck, packaging).  Run after setup.sh, which installs only what the
+# build needs: each stage installs the packages it uses itself (`sh
+# setup.sh --packages ...`, the lists in .ci/packages.d/).  About 35 minutes
+# on two cores.  Runs every stage, exits non-zero if any failed.  A stage may print lines "WORD: N passed, M
 # failed"; the closing line adds them up (a stage that prints none counts as
 # one check).
 cd "$(dirname "$0")/.." || exit 1

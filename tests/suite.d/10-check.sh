@@ -1,6 +1,18 @@
 #!/bin/sh
 # make check in _build/, then each Check suite's counts.
 # Contract for every stage: print '=== stage ok' as the last line on success.
+# Each stage installs the packages it needs itself (setup.sh installs only
+# the build's): here Check, python3, groff/mandoc, PoCL, Embree, gnuplot,
+# libpng.  Then _build/ is configured again with its own arguments, so that
+# it finds what was just installed (config.h is left alone, and nothing is
+# rebuilt, when nothing changed).
+cd "$(dirname "$0")/../.." || exit 1
+sh setup.sh --packages check opencl bench ||
+    { echo "checks: 0 passed, 1 failed (installing packages failed)"; exit 1; }
+[ -f _build/config.status ] || { echo "checks: run setup.sh first (no _build/config.status)"; exit 1; }
+(cd _build && ./config.status --recheck >recheck.out 2>&1 && ./config.status >/dev/null) ||
+    { tail -n 30 _build/recheck.out; echo "checks: 0 passed, 1 failed (configure failed)"; exit 1; }
+sed -n '/^  Found:/,/^    Check/p' _build/recheck.out
 make -C _build check
 rc=$?
 for f in _build/tests/*.log; do

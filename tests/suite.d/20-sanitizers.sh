@@ -4,6 +4,8 @@
 # report fails the stage (-fno-sanitize-recover=all, halt_on_error).
 # The only suppressions (tests/lsan.supp) are for libgomp's thread pool.
 # Contract: print '=== stage ok' as the last line on success.
+cd "$(dirname "$0")/../.." || exit 1
+sh setup.sh --packages check opencl bench || exit 1
 top=$(pwd)
 SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
 mkdir -p _build-asan || exit 1

@@ -5,6 +5,8 @@
 # The tarball is left in _build/ (the Debian stage builds from it).
 # Contract: print '=== stage ok' as the last line on success.
 cd "$(dirname "$0")/../.." || exit 1
+sh setup.sh --packages check opencl bench ||
+    { echo "distcheck: 0 passed, 1 failed (installing packages failed)"; exit 1; }
 [ -f _build/Makefile ] || { echo "distcheck: run setup.sh first (no _build/Makefile)"; exit 1; }
 jobs=$(nproc 2>/dev/null || echo 2)
 start=$(date +%s)

@@ -17,6 +17,8 @@
 # Contract: print '=== stage ok' as the last line on success.
 cd "$(dirname "$0")/../.." || exit 1
 top=$(pwd)
+sh setup.sh --packages check opencl bench ||
+    { echo "configs: 0 passed, 1 failed (installing packages failed)"; exit 1; }
 [ -x configure ] || { echo "configs: run setup.sh first (no ./configure)"; exit 1; }
 jobs=$(nproc 2>/dev/null || echo 2)
 quick_lib="tests/symbols.sh tests/consumer.sh tests/manpages.sh"
@@ -66,8 +68,8 @@ config() {
     cd "$top" || exit 1
 }
 
-no_gomp='! readelf -d lib/.libs/libatrbvh.so | grep -q libgomp && ! grep -q "^OPENMP_CFLAGS = ." Makefile'
-no_cl='! grep -q "define ATRBVH_HAVE_OPENCL" config.h && ! grep -q -- -lOpenCL atrbvh.pc'
+no_gomp='! readelf -d lib/.libs/libatrbvh.so | grep -q libgomp && ! grep -q "^OPENMP_CFLAGS = ." Makefile && ! grep -q -e -lgomp -e -fopenmp atrbvh.pc'
+no_cl='! grep -q "define ATRBVH_HAVE_OPENCL" config.h && ! grep -q OpenCL atrbvh.pc'
 no_embree='! grep -q "define HAVE_EMBREE" config.h && ! readelf -d tools/.libs/atrbvh tools/atrbvh 2>/dev/null | grep -q libembree'
 no_png='! grep -q "define HAVE_PNG" config.h && ! readelf -d tools/.libs/atrbvh tools/atrbvh 2>/dev/null | grep -q libpng'
 
@@ -77,6 +79,7 @@ config no-openmp "$no_gomp" lib --disable-openmp
 config no-opencl "$no_cl" lib --disable-opencl
 config no-embree "$no_embree" tool --without-embree
 config no-png "$no_png" tool --without-png
+config kernel-source-override 'grep -q "define ATRBVH_KERNEL_SOURCE_OVERRIDE" config.h && make check TESTS=tests/test_opencl check_PROGRAMS=tests/test_opencl' lib --enable-kernel-source-override
 
 # The configure summary of the all-off build, for the log.
 sed -n '/^  atrbvh /,/^    make check:/p' "$top/_build/configs/all-off/config.out"
