@@ -460,7 +460,8 @@ static int on_capture(const atrbvh_stage_output *o, void *user)
             d->failed = 1;
             return 1;
         }
-        memcpy(e->data, a->data, bytes);
+        if (bytes)
+            memcpy(e->data, a->data, bytes);
     }
     return 0;
 }
