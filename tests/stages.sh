@@ -82,6 +82,26 @@ run 0 check "$T/atrbvh" --against "$T/atrbvh"
 # options given to check replace the manifest's: a different tree
 run 1 check "$T/atrbvh" --method lbvh
 
+# one triangle: empty left/right arrays, shape (0,)
+cat >"$T/one.ply" <<'PLY'
+ply
+format ascii 1.0
+element vertex 3
+property float x
+property float y
+property float z
+element face 1
+property list uchar int vertex_indices
+end_header
+0 0 0
+1 0 0
+0 1 0
+3 0 1 2
+PLY
+run 0 stages "$T/one.ply" --dump "$T/one"
+run 0 check "$T/one"
+[ "$($EDIT "$T/one/hierarchy-left.npy" info)" = "<u4 0" ] || fail "one triangle: left is not empty"
+
 # ------------------------------------------- the same bytes everywhere
 for th in 1 2 3; do
     run 0 stages "$SCENE" --threads "$th" --dump "$T/t$th"

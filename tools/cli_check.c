@@ -1341,9 +1341,10 @@ int cli_check(int argc, char **argv)
             continue;
         }
         if (!f.differing) {
-            printf("%-18s same (%zu array%s, %zu items)\n", mine.s[i].name,
-                   mine.s[i].count, mine.s[i].count == 1 ? "" : "s",
-                   f.items);
+            printf("%-18s same (%zu array%s, %zu item%s)\n",
+                   mine.s[i].name, mine.s[i].count,
+                   mine.s[i].count == 1 ? "" : "s", f.items,
+                   f.items == 1 ? "" : "s");
             continue;
         }
         {

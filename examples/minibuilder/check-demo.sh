@@ -2,11 +2,14 @@
 # check-demo.sh - `atrbvh check` against an independent builder.
 #
 # Builds examples/minibuilder/minibuilder.c (plain C, no libatrbvh),
-# writes a test scene with equal Morton keys, dumps the minibuilder's
-# stages and checks them with `atrbvh check`: the same at every stage it
-# implements.  Then builds it again with -DPLANTED_BUG (a sort that puts
-# equal keys in the wrong order) and shows `atrbvh check` naming the sort
-# stage and the first wrong item.  Exits 0 when both go as described.
+# writes a test scene with equal Morton keys and equal boxes, dumps the
+# minibuilder's stages (LBVH, then ATRBVH with collapsing) and checks them
+# with `atrbvh check`: the same at every stage.  Then builds it with each
+# planted bug and shows `atrbvh check` naming the stage and the first
+# wrong item:
+#   -DPLANTED_BUG=1  an unstable sort      -> stage sort, order[0]
+#   -DPLANTED_BUG=2  a wrong ATRBVH tie    -> stage optimise_round1
+# Exits 0 when everything goes as described.
 #
 #   sh check-demo.sh [ATRBVH]    (default: $ATRBVH, atrbvh in the build
 #                                 tree $ATRBVH_BUILDDIR, or on PATH)
@@ -23,39 +26,57 @@ CFLAGS="-std=c99 -ffp-contract=off -O2 -Wall -Wextra"
 W=$(mktemp -d "${TMPDIR:-/tmp}/minibuilder.XXXXXX") || exit 99
 trap 'rm -rf "$W"' EXIT INT TERM
 
-$CC $CFLAGS -o "$W/minibuilder" "$HERE/minibuilder.c" || exit 99
-$CC $CFLAGS -DPLANTED_BUG -o "$W/minibuilder-bug" "$HERE/minibuilder.c" || exit 99
+$CC $CFLAGS -o "$W/mb" "$HERE/minibuilder.c" || exit 99
+$CC $CFLAGS -DPLANTED_BUG=1 -o "$W/mb-bug1" "$HERE/minibuilder.c" || exit 99
+$CC $CFLAGS -DPLANTED_BUG=2 -o "$W/mb-bug2" "$HERE/minibuilder.c" || exit 99
+"$W/mb" --scene "$W/grid.obj" 24 || exit 99
 
-"$W/minibuilder" --scene "$W/grid.obj" 24 || exit 99
-mkdir "$W/good" "$W/bug"
-
-echo "== the minibuilder, as written"
-"$W/minibuilder" "$W/grid.obj" "$W/good" || exit 99
-"$TOOL" check "$W/good"
-rc=$?
-if [ "$rc" -ne 0 ]; then
-    echo "check-demo: expected the minibuilder's stages to match (exit $rc)" >&2
+# dump NAME BUILDER OPTIONS...: the builder's dumps in $W/NAME, then
+# `atrbvh check` on them (its report in $W/NAME.out); returns its status
+dump() {
+    name=$1
+    builder=$2
+    shift 2
+    mkdir "$W/$name" || exit 99
+    "$W/$builder" "$@" "$W/grid.obj" "$W/$name" || exit 99
+    "$TOOL" check "$W/$name" >"$W/$name.out"
+    rc=$?
+    cat "$W/$name.out"
+    return $rc
+}
+bad() {
+    echo "check-demo: $*" >&2
     exit 1
-fi
+}
+
+echo "== the minibuilder, LBVH"
+dump lbvh mb || bad "expected the LBVH stages to match"
+echo
+echo "== the minibuilder, ATRBVH with collapsing"
+dump atrbvh mb --atrbvh --collapse || bad "expected the ATRBVH stages to match"
+grep -q '^optimise_round2 .*same' "$W/atrbvh.out" || bad "no second round compared"
+grep -q '^layout .*same' "$W/atrbvh.out" || bad "layout not compared"
 
 echo
-echo "== the minibuilder with a planted bug (equal keys sorted by descending index)"
-"$W/minibuilder-bug" "$W/grid.obj" "$W/bug" || exit 99
-"$TOOL" check "$W/bug" >"$W/out"
-rc=$?
-cat "$W/out"
-if [ "$rc" -ne 1 ]; then
-    echo "check-demo: expected exit 1 for the planted bug, got $rc" >&2
-    exit 1
-fi
+echo "== planted bug 1: equal keys sorted by descending index"
+dump bug1 mb-bug1
+[ $? -eq 1 ] || bad "expected exit 1 for planted bug 1"
 # bounds and morton the same; sort different, first at order[0]: the two
 # copies of triangle 0 have equal keys, and the bug puts the copy
-# (primitive 1152 = 2 * 24 * 24 / 2) first.
-if ! grep -q '^morton .*same' "$W/out" ||
-   ! grep -q '^sort .*DIFFERENT' "$W/out" ||
-   ! grep -q 'first: order\[0\] in sort-order.npy: 1152, reference 0' "$W/out"; then
-    echo "check-demo: the report does not name the sort stage and order[0]" >&2
-    exit 1
-fi
+# (primitive 1152 = 24 * 24 * 2) first.
+grep -q '^morton .*same' "$W/bug1.out" &&
+    grep -q '^sort .*DIFFERENT' "$W/bug1.out" &&
+    grep -q 'first: order\[0\] in sort-order.npy: 1152, reference 0' "$W/bug1.out" ||
+    bad "the report does not name stage sort and order[0]"
+
 echo
-echo "check-demo: atrbvh check found the planted bug at stage sort, item order[0]"
+echo "== planted bug 2: ATRBVH clustering takes the last of equal distances"
+dump bug2 mb-bug2 --atrbvh --collapse
+[ $? -eq 1 ] || bad "expected exit 1 for planted bug 2"
+grep -q '^refit .*same' "$W/bug2.out" &&
+    grep -q '^optimise_round1 .*DIFFERENT' "$W/bug2.out" &&
+    grep -q 'first: left\[[0-9]*\] in optimise_round1-left.npy' "$W/bug2.out" ||
+    bad "the report does not name stage optimise_round1 and an item of left"
+
+echo
+echo "check-demo: atrbvh check matched the minibuilder and found both planted bugs"

@@ -1,23 +1,30 @@
 /*
- * minibuilder.c - a small, independent LBVH builder in plain C99 that
+ * minibuilder.c - a small, independent BVH builder in plain C99 that
  * writes its stage outputs in the format of atrbvh-stages(7), so that
  * `atrbvh check` can compare it with the reference stage by stage.
  *
  * It does not link libatrbvh: every rule below is written from
- * docs/stages.md (bounds, Morton keys in the host frame, a stable sort,
- * Karras' hierarchy with the index tie rule, refit with SAH costs).
- * Only LBVH without collapsing: the stages bounds, morton, sort,
- * hierarchy and refit.
+ * docs/stages.md - bounds, Morton keys in the host frame, a stable sort,
+ * Karras' hierarchy with the index tie rule, refit with SAH costs, ATRBVH
+ * treelet rounds (formation by largest area, agglomerative clustering,
+ * the id renumbering), the collapse decision and the depth-first layout.
+ * Plain and slow on purpose (recursion, O(m^3) clustering): it is a
+ * readable second implementation, not a fast one.  No TRBVH.
  *
  *   minibuilder --scene FILE.obj [N]   writes a test scene: an N x N grid
  *                                      of quads, each triangle twice (equal
- *                                      Morton keys on purpose)
- *   minibuilder FILE.obj DIR           builds and dumps to DIR
+ *                                      Morton keys and equal boxes on
+ *                                      purpose)
+ *   minibuilder [--atrbvh] [--collapse] FILE.obj DIR
+ *                                      builds (LBVH by default; ATRBVH
+ *                                      with treelet 9, 2 rounds) and dumps
+ *                                      every stage to DIR
  *
- * Built with -DPLANTED_BUG, the sort breaks ties between equal keys by
- * the larger primitive index first (an unstable GPU radix sort does
- * this): `atrbvh check` then names the sort stage and the first wrong
- * item.
+ * Planted bugs, for the demonstration (check-demo.sh):
+ *   -DPLANTED_BUG=1  the sort puts equal keys in descending index order
+ *                    (what an unstable GPU radix sort does)
+ *   -DPLANTED_BUG=2  ATRBVH clustering lets the last of equal distances
+ *                    win instead of the first
  */
 #include <errno.h>
 #include <float.h>
@@ -177,7 +184,7 @@ static int before(uint32_t a, uint32_t b)
 {
     if (sort_keys[a] != sort_keys[b])
         return sort_keys[a] < sort_keys[b];
-#ifdef PLANTED_BUG
+#if defined(PLANTED_BUG) && PLANTED_BUG == 1
     return a > b; /* the bug: equal keys, larger index first */
 #else
     return a < b;
@@ -306,30 +313,314 @@ static void stage_end(void)
     fprintf(manifest, "]}");
 }
 
+/* ------------------------------------------------------------ the tree */
+static double ci = 1.2, ct = 1.0;
+static int collapse;            /* --collapse: multi-primitive leaves   */
+
+typedef struct tree {
+    size_t n;                   /* primitives; nodes 0 .. 2n-2          */
+    uint32_t *left, *right;     /* n-1 internal nodes, root 0           */
+    uint32_t *parent, *count;   /* 2n-1                                  */
+    uint32_t *leaf_prim;        /* n                                     */
+    box *box;                   /* 2n-1                                  */
+    double *cost;               /* 2n-1                                  */
+} tree;
+
+/* The node cost: ci*A + left + right, or ct*A*N when collapsing is on
+ * and that is strictly cheaper. */
+static double node_cost(double a, uint32_t cnt, double cl, double cr,
+                        int *flat)
+{
+    double binary = ci * a;
+    binary = binary + cl;
+    binary = binary + cr;
+    *flat = 0;
+    if (collapse) {
+        double f = ct * a;
+        f = f * (double)cnt;
+        if (f < binary) {
+            *flat = 1;
+            return f;
+        }
+    }
+    return binary;
+}
+
+static int is_leaf(const tree *t, uint32_t node)
+{
+    return node >= t->n - 1;
+}
+
+/* refit of one internal node from its children */
+static void refit_node(tree *t, uint32_t node)
+{
+    uint32_t l = t->left[node], r = t->right[node];
+    int flat;
+    t->box[node] = merge(t->box[l], t->box[r]);
+    t->count[node] = t->count[l] + t->count[r];
+    t->cost[node] = node_cost(area(t->box[node]), t->count[node],
+                              t->cost[l], t->cost[r], &flat);
+}
+
+static void refit(tree *t, uint32_t node)
+{
+    if (is_leaf(t, node))
+        return;
+    refit(t, t->left[node]);
+    refit(t, t->right[node]);
+    refit_node(t, node);
+}
+
+/* ------------------------------------------------ ATRBVH treelets */
+#define MAXT 32
+
+/* One treelet at root R with (at most) tn leaves: formation by largest
+ * area, agglomerative clustering, write-back when strictly cheaper. */
+static void treelet(tree *t, uint32_t R, unsigned tn)
+{
+    uint32_t leaf[MAXT], internal[MAXT], code[MAXT], lc[MAXT], rc[MAXT];
+    uint32_t cnt[MAXT], order[MAXT], id_of[MAXT], ids[MAXT], stack[MAXT];
+    uint32_t ncnt[MAXT];
+    double ar[MAXT], cst[MAXT], ncost[MAXT];
+    box bx[MAXT], nbox[MAXT];
+    unsigned m = 2, live, k, q, sp, i, j;
+    int flat;
+    /* refresh the root's cost (its subtree may be cheaper now) */
+    t->cost[R] = node_cost(area(t->box[R]), t->count[R],
+                           t->cost[t->left[R]], t->cost[t->right[R]], &flat);
+    /* formation */
+    internal[0] = R;
+    leaf[0] = t->left[R];
+    leaf[1] = t->right[R];
+    ar[0] = area(t->box[leaf[0]]);
+    ar[1] = area(t->box[leaf[1]]);
+    while (m < tn) {
+        int best = -1;
+        uint32_t node;
+        for (k = 0; k < m; k++)
+            if (!is_leaf(t, leaf[k]) && (best < 0 || ar[k] > ar[best]))
+                best = (int)k;
+        if (best < 0)
+            break;
+        node = leaf[best];
+        internal[m - 1] = node;
+        leaf[best] = t->left[node];
+        ar[best] = area(t->box[leaf[best]]);
+        leaf[m] = t->right[node];
+        ar[m] = area(t->box[leaf[m]]);
+        m++;
+    }
+    if (m < 3)
+        return;
+    /* agglomerative clustering: slots 0 .. live-1 */
+    for (k = 0; k < m; k++) {
+        bx[k] = t->box[leaf[k]];
+        cst[k] = t->cost[leaf[k]];
+        cnt[k] = t->count[leaf[k]];
+        code[k] = k;
+    }
+    for (live = m, q = 0; live > 1; live--, q++) {
+        double best = 0.0;
+        unsigned bi = 0, bj = 0, last = live - 1;
+        box u;
+        for (i = 1; i < live; i++)
+            for (j = 0; j < i; j++) {
+                double d = area(merge(bx[j], bx[i]));
+#if defined(PLANTED_BUG) && PLANTED_BUG == 2
+                /* the bug: among equal distances the last pair wins */
+                if ((i == 1 && j == 0) || d <= best) {
+#else
+                if ((i == 1 && j == 0) || d < best) {
+#endif
+                    best = d;
+                    bi = i;
+                    bj = j;
+                }
+            }
+        lc[q] = code[bj];
+        rc[q] = code[bi];
+        u = merge(bx[bj], bx[bi]);
+        cst[bj] = node_cost(area(u), cnt[bj] + cnt[bi], cst[bj], cst[bi],
+                            &flat);
+        bx[bj] = u;
+        cnt[bj] += cnt[bi];
+        code[bj] = m + q;
+        if (bi != last) {
+            bx[bi] = bx[last];
+            cst[bi] = cst[last];
+            cnt[bi] = cnt[last];
+            code[bi] = code[last];
+        }
+    }
+    /* pre-order of the local nodes (root m-2), then bottom-up values */
+    sp = 0;
+    k = 0;
+    stack[sp++] = m - 2;
+    while (sp) {
+        uint32_t node = stack[--sp];
+        order[k++] = node;
+        if (rc[node] >= m)
+            stack[sp++] = rc[node] - m;
+        if (lc[node] >= m)
+            stack[sp++] = lc[node] - m;
+    }
+    for (k = m - 1; k-- > 0;) {
+        uint32_t node = order[k], l = lc[node], r = rc[node];
+        box bl = l < m ? t->box[leaf[l]] : nbox[l - m];
+        box br = r < m ? t->box[leaf[r]] : nbox[r - m];
+        uint32_t nl = l < m ? t->count[leaf[l]] : ncnt[l - m];
+        uint32_t nr = r < m ? t->count[leaf[r]] : ncnt[r - m];
+        double cl = l < m ? t->cost[leaf[l]] : ncost[l - m];
+        double cr = r < m ? t->cost[leaf[r]] : ncost[r - m];
+        nbox[node] = merge(bl, br);
+        ncnt[node] = nl + nr;
+        ncost[node] = node_cost(area(nbox[node]), nl + nr, cl, cr, &flat);
+    }
+    if (!(ncost[m - 2] < t->cost[R]))
+        return;
+    /* write back: R keeps its id; the other ids, ascending, in pre-order */
+    for (k = 0; k + 2 < m; k++)
+        ids[k] = internal[k + 1];
+    for (k = 1; k + 2 < m; k++) /* insertion sort */
+        for (j = k; j > 0 && ids[j - 1] > ids[j]; j--) {
+            uint32_t x = ids[j];
+            ids[j] = ids[j - 1];
+            ids[j - 1] = x;
+        }
+    id_of[order[0]] = R;
+    for (k = 1; k + 1 < m; k++)
+        id_of[order[k]] = ids[k - 1];
+    for (k = 0; k + 1 < m; k++) {
+        uint32_t id = id_of[k];
+        uint32_t l = lc[k] < m ? leaf[lc[k]] : id_of[lc[k] - m];
+        uint32_t r = rc[k] < m ? leaf[rc[k]] : id_of[rc[k] - m];
+        t->left[id] = l;
+        t->right[id] = r;
+        t->parent[l] = id;
+        t->parent[r] = id;
+        t->box[id] = nbox[k];
+        t->count[id] = ncnt[k];
+        t->cost[id] = ncost[k];
+    }
+}
+
+/* post-order over the crown: internal nodes holding >= g primitives */
+static void crown(tree *t, uint32_t node, uint64_t g, unsigned tn)
+{
+    if (is_leaf(t, node) || t->count[node] < g)
+        return;
+    crown(t, t->left[node], g, tn);
+    crown(t, t->right[node], g, tn);
+    treelet(t, node, tn);
+}
+
+/* ------------------------------------------------- collapse, layout */
+#define LEAF_FLAG 0x80000000u
+
+static void decide(const tree *t, uint32_t node, uint32_t *size)
+{
+    uint32_t l, r;
+    int flat;
+    if (is_leaf(t, node)) {
+        size[node] = 1u | LEAF_FLAG;
+        return;
+    }
+    l = t->left[node];
+    r = t->right[node];
+    decide(t, l, size);
+    decide(t, r, size);
+    (void)node_cost(area(t->box[node]), t->count[node], t->cost[l],
+                    t->cost[r], &flat);
+    size[node] = flat ? 1u | LEAF_FLAG
+                      : 1u + (size[l] & ~LEAF_FLAG) + (size[r] & ~LEAF_FLAG);
+}
+
+static void gather(const tree *t, uint32_t node, uint32_t *out, size_t *k)
+{
+    if (is_leaf(t, node)) {
+        out[(*k)++] = t->leaf_prim[node - (t->n - 1)];
+        return;
+    }
+    gather(t, t->left[node], out, k);
+    gather(t, t->right[node], out, k);
+}
+
+static void emit(const tree *t, const uint32_t *size, uint32_t node,
+                 uint32_t pos, uint32_t prim, float *nb, uint32_t *ic,
+                 uint32_t *prims)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        nb[6 * pos + k] = t->box[node].lo[k];
+        nb[6 * pos + 3 + k] = t->box[node].hi[k];
+    }
+    if (size[node] & LEAF_FLAG) {
+        size_t at = prim;
+        ic[2 * pos] = prim;
+        ic[2 * pos + 1] = t->count[node];
+        gather(t, node, prims, &at);
+    } else {
+        uint32_t l = t->left[node];
+        uint32_t rpos = pos + 1 + (size[l] & ~LEAF_FLAG);
+        ic[2 * pos] = rpos;
+        ic[2 * pos + 1] = 0;
+        emit(t, size, l, pos + 1, prim, nb, ic, prims);
+        emit(t, size, t->right[node], rpos, prim + t->count[l], nb, ic,
+             prims);
+    }
+}
+
+static void dump_tree(const char *stage, const tree *t, int values)
+{
+    size_t n = t->n;
+    stage_begin(stage, 0);
+    npy(stage, "left", "<u4", n - 1, 0, t->left, 4);
+    npy(stage, "right", "<u4", n - 1, 0, t->right, 4);
+    npy(stage, "parent", "<u4", 2 * n - 1, 0, t->parent, 4);
+    npy(stage, "count", "<u4", 2 * n - 1, 0, t->count, 4);
+    npy(stage, "leaf_prim", "<u4", n, 0, t->leaf_prim, 4);
+    if (values) {
+        npy(stage, "box", "<f4", 2 * n - 1, 6, t->box, 4);
+        npy(stage, "cost", "<f8", 2 * n - 1, 0, t->cost, 8);
+    }
+    stage_end();
+}
+
 int main(int argc, char **argv)
 {
-    const double ci = 1.2, ct = 1.0;
     float *v;
-    uint32_t *tri, *order, *tmp, *left, *right, *parent, *count, *leaf;
+    uint32_t *tri, *order, *tmp, *size, *ic, *prims;
     size_t nv, nt, i;
     int64_t n;
-    box *prim, scene = empty_box(), cent = empty_box(), *nb;
+    box *prim, scene = empty_box(), cent = empty_box();
     uint64_t *keys, *sorted;
-    double frame[6], *cost;
-    int k;
+    double frame[6];
+    float *nb;
+    tree t;
+    int k, agglomerative = 0, a = 1;
+    unsigned tn = 9, rounds = 2, r;
     char path[1024];
 
     if (argc >= 3 && strcmp(argv[1], "--scene") == 0) {
         write_scene(argv[2], argc > 3 ? atoi(argv[3]) : 24);
         return 0;
     }
-    if (argc != 3)
-        die("usage: minibuilder FILE.obj DIR | --scene FILE.obj [N]");
-    read_obj(argv[1], &v, &nv, &tri, &nt);
-    if (nt == 0)
-        die("no triangles");
+    for (; a < argc && argv[a][0] == '-'; a++) {
+        if (strcmp(argv[a], "--atrbvh") == 0)
+            agglomerative = 1;
+        else if (strcmp(argv[a], "--collapse") == 0)
+            collapse = 1;
+        else
+            die("unknown option");
+    }
+    if (argc - a != 2)
+        die("usage: minibuilder [--atrbvh] [--collapse] FILE.obj DIR | "
+            "--scene FILE.obj [N]");
+    read_obj(argv[a], &v, &nv, &tri, &nt);
+    if (nt < 2)
+        die("fewer than two triangles");
     n = (int64_t)nt;
-    outdir = argv[2];
+    outdir = argv[a + 1];
 
     /* bounds */
     prim = xmalloc(nt * sizeof *prim);
@@ -376,62 +667,6 @@ int main(int argc, char **argv)
     merge_sort(order, tmp, nt);
     for (i = 0; i < nt; i++)
         sorted[i] = keys[order[i]];
-    /* hierarchy: internal 0 .. n-2 (root 0), leaves n-1 .. 2n-2 */
-    left = xmalloc(nt * sizeof *left);
-    right = xmalloc(nt * sizeof *right);
-    parent = xmalloc(2 * nt * sizeof *parent);
-    count = xmalloc(2 * nt * sizeof *count);
-    leaf = xmalloc(nt * sizeof *leaf);
-    parent[0] = 0xffffffffu;
-    for (i = 0; i + 1 < nt; i++) {
-        karras(sorted, n, (int64_t)i, &left[i], &right[i]);
-        parent[left[i]] = parent[right[i]] = (uint32_t)i;
-    }
-    for (i = 0; i < nt; i++)
-        leaf[i] = order[i];
-    /* refit: bottom-up in post-order (a child's index may be larger or
-     * smaller than its parent's), children before their parent */
-    nb = xmalloc(2 * nt * sizeof *nb);
-    cost = xmalloc(2 * nt * sizeof *cost);
-    for (i = 0; i < nt; i++) {
-        size_t node = (size_t)n - 1 + i;
-        nb[node] = prim[order[i]];
-        count[node] = 1;
-        cost[node] = ct * area(nb[node]);
-    }
-    if (nt > 1) {
-        uint32_t *stack = xmalloc(2 * nt * sizeof *stack);
-        unsigned char *done = calloc(nt, 1);
-        size_t sp = 0;
-        if (!done)
-            die("out of memory");
-        stack[sp++] = 0;
-        while (sp) {
-            uint32_t node = stack[sp - 1], l = left[node], r = right[node];
-            int ready = 1;
-            if (!done[node]) {
-                if (l < nt - 1 && !done[l]) {
-                    stack[sp++] = l;
-                    ready = 0;
-                }
-                if (r < nt - 1 && !done[r]) {
-                    stack[sp++] = r;
-                    ready = 0;
-                }
-                if (!ready)
-                    continue;
-                nb[node] = merge(nb[l], nb[r]);
-                count[node] = count[l] + count[r];
-                cost[node] = ci * area(nb[node]);
-                cost[node] = cost[node] + cost[l];
-                cost[node] = cost[node] + cost[r];
-                done[node] = 1;
-            }
-            sp--;
-        }
-        free(stack);
-        free(done);
-    }
 
     snprintf(path, sizeof path, "%s/manifest.json", outdir);
     manifest = fopen(path, "w");
@@ -440,10 +675,13 @@ int main(int argc, char **argv)
     fprintf(manifest,
             "{\n  \"format\": \"atrbvh-stages\",\n  \"version\": 1,\n"
             "  \"scene\": {\"name\": \"%s\", \"triangles\": %lu},\n"
-            "  \"options\": {\"method\": \"lbvh\", \"ci\": 1.2, \"ct\": 1,"
-            " \"collapse\": false, \"max_leaf_size\": 0},\n"
+            "  \"options\": {\"method\": \"%s\", \"treelet_size\": %u, "
+            "\"rounds\": %u, \"gamma\": %u, \"ci\": 1.2, \"ct\": 1, "
+            "\"collapse\": %s, \"max_leaf_size\": 0},\n"
             "  \"stages\": [",
-            argv[1], (unsigned long)nt);
+            argv[a], (unsigned long)nt, agglomerative ? "atrbvh" : "lbvh",
+            agglomerative ? tn : 0, agglomerative ? rounds : 0,
+            agglomerative ? tn : 0, collapse ? "true" : "false");
     stage_begin("bounds", 1);
     npy("bounds", "prim_boxes", "<f4", nt, 6, prim, sizeof(float));
     npy("bounds", "scene_box", "<f4", 1, 6, &scene, sizeof(float));
@@ -457,41 +695,68 @@ int main(int argc, char **argv)
     npy("sort", "sorted_keys", "<u8", nt, 0, sorted, sizeof(uint64_t));
     npy("sort", "order", "<u4", nt, 0, order, sizeof(uint32_t));
     stage_end();
-    {
-        static const char *const names[2] = {"hierarchy", "refit"};
-        int s;
-        for (s = 0; s < 2; s++) {
-            stage_begin(names[s], 0);
-            npy(names[s], "left", "<u4", nt - 1, 0, left, 4);
-            npy(names[s], "right", "<u4", nt - 1, 0, right, 4);
-            npy(names[s], "parent", "<u4", 2 * nt - 1, 0, parent, 4);
-            npy(names[s], "count", "<u4", 2 * nt - 1, 0, count, 4);
-            npy(names[s], "leaf_prim", "<u4", nt, 0, leaf, 4);
-            if (s == 1) {
-                npy(names[s], "box", "<f4", 2 * nt - 1, 6, nb, 4);
-                npy(names[s], "cost", "<f8", 2 * nt - 1, 0, cost, 8);
-            }
-            stage_end();
+
+    /* hierarchy: internal 0 .. n-2 (root 0), leaves n-1 .. 2n-2 */
+    t.n = nt;
+    t.left = xmalloc(nt * sizeof *t.left);
+    t.right = xmalloc(nt * sizeof *t.right);
+    t.parent = xmalloc(2 * nt * sizeof *t.parent);
+    t.count = xmalloc(2 * nt * sizeof *t.count);
+    t.leaf_prim = xmalloc(nt * sizeof *t.leaf_prim);
+    t.box = xmalloc(2 * nt * sizeof *t.box);
+    t.cost = xmalloc(2 * nt * sizeof *t.cost);
+    t.parent[0] = 0xffffffffu;
+    for (i = 0; i + 1 < nt; i++) {
+        karras(sorted, n, (int64_t)i, &t.left[i], &t.right[i]);
+        t.parent[t.left[i]] = t.parent[t.right[i]] = (uint32_t)i;
+    }
+    for (i = 0; i < nt; i++) {
+        size_t node = nt - 1 + i;
+        t.leaf_prim[i] = order[i];
+        t.box[node] = prim[order[i]];
+        t.count[node] = 1;
+        t.cost[node] = ct * area(t.box[node]);
+    }
+    refit(&t, 0); /* the counts, for the hierarchy dump too */
+    dump_tree("hierarchy", &t, 0);
+    dump_tree("refit", &t, 1);
+
+    /* optimise: rounds with gamma * 2^r, the crown in post-order */
+    if (agglomerative)
+        for (r = 0; r < rounds; r++) {
+            uint64_t g = (uint64_t)tn << (r < 40 ? r : 40);
+            char name[32];
+            if (g > t.count[0])
+                break;
+            crown(&t, 0, g, tn);
+            snprintf(name, sizeof name, "optimise_round%u", r + 1);
+            dump_tree(name, &t, 1);
         }
+    dump_tree("optimise", &t, 1);
+
+    /* collapse, layout */
+    size = xmalloc((2 * nt - 1) * sizeof *size);
+    decide(&t, 0, size);
+    stage_begin("collapse", 0);
+    npy("collapse", "collapse_size", "<u4", 2 * nt - 1, 0, size, 4);
+    stage_end();
+    {
+        size_t m = size[0] & ~LEAF_FLAG;
+        nb = xmalloc(m * 6 * sizeof *nb);
+        ic = xmalloc(m * 2 * sizeof *ic);
+        prims = xmalloc(nt * sizeof *prims);
+        emit(&t, size, 0, 0, 0, nb, ic, prims);
+        stage_begin("layout", 0);
+        npy("layout", "node_boxes", "<f4", m, 6, nb, 4);
+        npy("layout", "node_index_count", "<u4", m, 2, ic, 4);
+        npy("layout", "prim_indices", "<u4", nt, 0, prims, 4);
+        stage_end();
     }
     fprintf(manifest, "\n  ]\n}\n");
     if (fclose(manifest) != 0)
         die("cannot write the manifest");
-    printf("minibuilder: %lu triangles, 5 stages written to %s\n",
-           (unsigned long)nt, outdir);
-    free(v);
-    free(tri);
-    free(prim);
-    free(keys);
-    free(order);
-    free(tmp);
-    free(sorted);
-    free(left);
-    free(right);
-    free(parent);
-    free(count);
-    free(leaf);
-    free(nb);
-    free(cost);
+    printf("minibuilder: %lu triangles (%s%s), stages written to %s\n",
+           (unsigned long)nt, agglomerative ? "ATRBVH" : "LBVH",
+           collapse ? ", collapsed" : "", outdir);
     return 0;
 }
