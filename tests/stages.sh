@@ -239,16 +239,19 @@ D=$T/safe
 mkdir "$D"
 printf 'precious\n' >"$D/manifest.json"
 chmod 444 "$D/manifest.json"
+printf 'old dump\n' >"$D/sort-order.npy"
 printf 'keep me\n' >"$D/notes.txt"
-mkdir "$D/bounds-prim_boxes.npy" # the first file cannot be written
+mkdir "$D/layout-prim_indices.npy" # the last file cannot be written
 run 1 stages "$SCENE" --dump "$D"
 [ "$(cat "$D/manifest.json")" = precious ] || fail "manifest.json touched on failure"
+[ "$(cat "$D/sort-order.npy")" = "old dump" ] || fail "an earlier stage's file replaced by a failed run"
 have=$(cd "$D" && ls -A | sort | tr '\n' ' ')
-[ "$have" = "bounds-prim_boxes.npy manifest.json notes.txt " ] || fail "left behind in $D: $have"
-rmdir "$D/bounds-prim_boxes.npy"
+[ "$have" = "layout-prim_indices.npy manifest.json notes.txt sort-order.npy " ] || fail "left behind in $D: $have"
+rmdir "$D/layout-prim_indices.npy"
 run 0 stages "$SCENE" --dump "$D"
 [ "$(cat "$D/notes.txt")" = "keep me" ] || fail "another file of DIR touched"
 cmp -s "$D/manifest.json" "$T/atrbvh/manifest.json" || fail "manifest not replaced"
+cmp -s "$D/sort-order.npy" "$T/atrbvh/sort-order.npy" || fail "sort-order.npy not replaced"
 run 0 check "$D"
 # a missing DIR is created (its parent must exist)
 run 0 stages "$SCENE" --method lbvh --dump "$T/new"

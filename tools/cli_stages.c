@@ -3,8 +3,10 @@
  * stage's output (and each optimise round's) as NumPy .npy files named
  * STAGE-ARRAY.npy, and manifest.json naming them with the options and the
  * host-computed constants (docs/stages.md, atrbvh-stages(7)).  Every file
- * goes through tools/outfile (a temporary file renamed into place); the
- * other files of DIR are left alone.
+ * goes through tools/outfile (a temporary file beside it); the temporary
+ * files are renamed into place only after the build succeeded, the
+ * manifest last, so a failed run leaves DIR as it was; the other files of
+ * DIR are left alone.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "config.h"
@@ -19,8 +21,9 @@
 #include <sys/stat.h>
 #include <sys/types.h>
 
-#define MAX_STAGES 64
+#define MAX_STAGES 80 /* 8 stages and at most ~32 optimise rounds */
 #define MAX_ARRAYS 12
+#define MAX_FILES (MAX_STAGES * MAX_ARRAYS)
 
 typedef struct dumped_array {
     char name[32];
@@ -41,6 +44,11 @@ typedef struct dump_state {
     size_t count;
     double morton[6]; /* lo, scale */
     int failed;       /* a file could not be written (message printed) */
+    /* The written files, each still a temporary file: all of them are
+     * renamed into place only once the build has succeeded, the manifest
+     * last, so a failed run leaves DIR as it was. */
+    cli_out out[MAX_FILES];
+    size_t files;
 } dump_state;
 
 static char *join(const char *dir, const char *name)
@@ -52,34 +60,64 @@ static char *join(const char *dir, const char *name)
     return p;
 }
 
-static int write_array(const char *dir, const char *stage,
+static int write_array(dump_state *s, const char *stage,
                        const atrbvh_array *a, int ndim)
 {
     char name[96];
     char *path;
-    cli_out out;
+    cli_out *out = &s->out[s->files];
     FILE *f;
-    snprintf(name, sizeof name, "%s-%s.npy", stage, a->name);
-    path = join(dir, name);
-    if (!path) {
-        cli_error("%s: out of memory", dir);
+    if (s->files == MAX_FILES) {
+        cli_error("%s: too many files to dump", s->dir);
         return -1;
     }
-    f = cli_out_open(path, &out);
+    snprintf(name, sizeof name, "%s-%s.npy", stage, a->name);
+    path = join(s->dir, name);
+    if (!path) {
+        cli_error("%s: out of memory", s->dir);
+        return -1;
+    }
+    f = cli_out_open(path, out);
     if (!f) {
         free(path);
         return -1;
     }
     errno = 0;
-    if (npy_write(f, a->dtype, ndim, a->rows, a->cols, a->data) != 0) {
+    if (npy_write(f, a->dtype, ndim, a->rows, a->cols, a->data) != 0 ||
+        fflush(f) != 0) {
         int why = errno ? errno : EIO;
-        cli_out_abort(&out);
+        cli_out_abort(out);
         cli_error("%s: write failed: %s", path, strerror(why));
         free(path);
         return -1;
     }
     free(path);
-    return cli_out_commit(&out);
+    s->files++;
+    return 0;
+}
+
+/* Renames every written file into place (0), or, after one that fails,
+ * removes the rest (-1). */
+static int commit_all(dump_state *s)
+{
+    size_t i;
+    int rc = 0;
+    for (i = 0; i < s->files; i++) {
+        if (rc == 0 && cli_out_commit(&s->out[i]) != 0)
+            rc = -1;
+        else if (rc != 0)
+            cli_out_abort(&s->out[i]);
+    }
+    s->files = 0;
+    return rc;
+}
+
+static void abort_all(dump_state *s)
+{
+    size_t i;
+    for (i = 0; i < s->files; i++)
+        cli_out_abort(&s->out[i]);
+    s->files = 0;
 }
 
 static int on_capture(const atrbvh_stage_output *o, void *user)
@@ -111,7 +149,7 @@ static int on_capture(const atrbvh_stage_output *o, void *user)
         if (strcmp(a->name, "morton_frame") == 0 &&
             a->dtype == ATRBVH_DTYPE_F64 && a->rows * a->cols == 6)
             memcpy(s->morton, a->data, sizeof s->morton);
-        if (write_array(s->dir, o->name, a, ndim) != 0) {
+        if (write_array(s, o->name, a, ndim) != 0) {
             s->failed = 1;
             return 1;
         }
@@ -278,7 +316,7 @@ static void stages_help(FILE *f)
 int cli_stages(int argc, char **argv)
 {
     cli_build_args a;
-    dump_state *s;
+    dump_state *s = NULL;
     scene sc;
     atrbvh_geometry g;
     atrbvh_device *dev = NULL;
@@ -288,6 +326,7 @@ int cli_stages(int argc, char **argv)
     atrbvh_error e;
     atrbvh_status rs;
     char err[512], *probe;
+    size_t files = 0;
     const char *why = NULL;
     int rc;
 
@@ -363,18 +402,20 @@ int cli_stages(int argc, char **argv)
         goto done;
     }
     atrbvh_bvh_stats(bvh, &st);
-    if (write_manifest(s, &a, &sc, &st) != 0) {
+    if (commit_all(s) != 0 || write_manifest(s, &a, &sc, &st) != 0) {
         rc = CLI_FAIL;
         goto done;
     }
     {
-        size_t i, files = 1;
+        size_t i;
         for (i = 0; i < s->count; i++)
             files += s->stages[i].count;
-        printf("%zu stages, %zu files written to %s\n", s->count, files,
+        printf("%zu stages, %zu files written to %s\n", s->count, files + 1,
                dump_dir);
     }
 done:
+    if (s)
+        abort_all(s);
     atrbvh_bvh_free(bvh);
     atrbvh_device_close(dev);
     scene_free(&sc);
