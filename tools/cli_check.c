@@ -1159,20 +1159,26 @@ int cli_check(int argc, char **argv)
             o.max_leaf_size = m.max_leaf;
             o.skip_invalid = m.skip_invalid;
         }
+        /* a method given here: its own defaults, not the manifest's
+         * treelet size, rounds and gamma */
+        for (s = 0; table[s].name; s++)
+            if (seen[s] && (!strcmp(table[s].name, "--method") ||
+                            !strcmp(table[s].name, "--quality"))) {
+                o.method = methods[cl.method];
+                o.treelet_size = cl.options.treelet_size;
+                o.rounds = cl.options.rounds;
+                o.gamma = 0;
+            }
         for (s = 0; table[s].name; s++) {
             const char *nm = table[s].name;
             if (!seen[s])
                 continue;
-            if (!strcmp(nm, "--method") || !strcmp(nm, "--quality"))
-                o.method = methods[cl.method];
-            if (!strcmp(nm, "--treelet") || !strcmp(nm, "--quality")) {
+            if (!strcmp(nm, "--treelet")) {
                 o.treelet_size = cl.options.treelet_size;
                 o.gamma = 0;
             }
-            if (!strcmp(nm, "--rounds") || !strcmp(nm, "--quality"))
+            if (!strcmp(nm, "--rounds"))
                 o.rounds = cl.options.rounds;
-            if (!strcmp(nm, "--method") && o.method == ATRBVH_METHOD_LBVH)
-                o.gamma = 0;
             if (!strcmp(nm, "--no-collapse"))
                 o.collapse = 0;
             if (!strcmp(nm, "--max-leaf"))
