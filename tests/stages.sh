@@ -102,6 +102,26 @@ run 0 stages "$T/one.ply" --dump "$T/one"
 run 0 check "$T/one"
 [ "$($EDIT "$T/one/hierarchy-left.npy" info)" = "<u4 0" ] || fail "one triangle: left is not empty"
 
+# NumPy (when installed) reads every file, and numpy.save writes the same
+# bytes back
+if python3 -c 'import numpy' 2>/dev/null; then
+    python3 - "$T/trbvh" <<'PY' || fail "numpy round trip"
+import glob, json, os, sys, numpy as np
+d = sys.argv[1]
+m = json.load(open(os.path.join(d, "manifest.json")))
+for st in m["stages"]:
+    for f in st["files"]:
+        path = os.path.join(d, f["file"])
+        a = np.load(path)
+        assert a.dtype.str == f["dtype"] and list(a.shape) == f["shape"], f
+        raw = open(path, "rb").read()
+        np.save(path, a)
+        assert open(path, "rb").read() == raw, path
+PY
+else
+    echo "stages.sh: no numpy, the NumPy round trip skipped" >&2
+fi
+
 # ------------------------------------------- the same bytes everywhere
 for th in 1 2 3; do
     run 0 stages "$SCENE" --threads "$th" --dump "$T/t$th"
