@@ -3,12 +3,13 @@
 #
 # Builds examples/minibuilder/minibuilder.c (plain C, no libatrbvh),
 # writes a test scene with equal Morton keys and equal boxes, dumps the
-# minibuilder's stages (LBVH, then ATRBVH with collapsing) and checks them
+# minibuilder's stages (LBVH, TRBVH and ATRBVH with collapsing) and checks them
 # with `atrbvh check`: the same at every stage.  Then builds it with each
 # planted bug and shows `atrbvh check` naming the stage and the first
 # wrong item:
 #   -DPLANTED_BUG=1  an unstable sort      -> stage sort, order[0]
 #   -DPLANTED_BUG=2  a wrong ATRBVH tie    -> stage optimise_round1
+#   -DPLANTED_BUG=3  a wrong TRBVH tie     -> stage optimise_round1
 # Exits 0 when everything goes as described.
 #
 #   sh check-demo.sh [ATRBVH]    (default: $ATRBVH, atrbvh in the build
@@ -29,6 +30,7 @@ trap 'rm -rf "$W"' EXIT INT TERM
 $CC $CFLAGS -o "$W/mb" "$HERE/minibuilder.c" || exit 99
 $CC $CFLAGS -DPLANTED_BUG=1 -o "$W/mb-bug1" "$HERE/minibuilder.c" || exit 99
 $CC $CFLAGS -DPLANTED_BUG=2 -o "$W/mb-bug2" "$HERE/minibuilder.c" || exit 99
+$CC $CFLAGS -DPLANTED_BUG=3 -o "$W/mb-bug3" "$HERE/minibuilder.c" || exit 99
 "$W/mb" --scene "$W/grid.obj" 24 || exit 99
 
 # dump NAME BUILDER OPTIONS...: the builder's dumps in $W/NAME, then
@@ -51,6 +53,10 @@ bad() {
 
 echo "== the minibuilder, LBVH"
 dump lbvh mb || bad "expected the LBVH stages to match"
+echo
+echo "== the minibuilder, TRBVH with collapsing"
+dump trbvh mb --trbvh --collapse || bad "expected the TRBVH stages to match"
+grep -q '^optimise_round3 .*same' "$W/trbvh.out" || bad "no third round compared"
 echo
 echo "== the minibuilder, ATRBVH with collapsing"
 dump atrbvh mb --atrbvh --collapse || bad "expected the ATRBVH stages to match"
@@ -79,4 +85,12 @@ grep -q '^refit .*same' "$W/bug2.out" &&
     bad "the report does not name stage optimise_round1 and an item of left"
 
 echo
-echo "check-demo: atrbvh check matched the minibuilder and found both planted bugs"
+echo "== planted bug 3: the TRBVH subset DP takes the last of equal splits"
+dump bug3 mb-bug3 --trbvh
+[ $? -eq 1 ] || bad "expected exit 1 for planted bug 3"
+grep -q '^refit .*same' "$W/bug3.out" &&
+    grep -q '^optimise_round1 .*DIFFERENT' "$W/bug3.out" ||
+    bad "the report does not name stage optimise_round1"
+
+echo
+echo "check-demo: atrbvh check matched the minibuilder and found every planted bug"

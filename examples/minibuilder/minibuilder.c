@@ -5,19 +5,21 @@
  *
  * It does not link libatrbvh: every rule below is written from
  * docs/stages.md - bounds, Morton keys in the host frame, a stable sort,
- * Karras' hierarchy with the index tie rule, refit with SAH costs, ATRBVH
- * treelet rounds (formation by largest area, agglomerative clustering,
- * the id renumbering), the collapse decision and the depth-first layout.
- * Plain and slow on purpose (recursion, O(m^3) clustering): it is a
- * readable second implementation, not a fast one.  No TRBVH.
+ * Karras' hierarchy with the index tie rule, refit with SAH costs, the
+ * treelet rounds (formation by largest area; TRBVH's subset DP or
+ * ATRBVH's agglomerative clustering; the id renumbering), the collapse
+ * decision and the depth-first layout.  Plain and slow on purpose
+ * (recursion, O(m^3) clustering): it is a readable second
+ * implementation, not a fast one.
  *
  *   minibuilder --scene FILE.obj [N]   writes a test scene: an N x N grid
  *                                      of quads, each triangle twice (equal
  *                                      Morton keys and equal boxes on
  *                                      purpose)
- *   minibuilder [--atrbvh] [--collapse] FILE.obj DIR
+ *   minibuilder [--atrbvh|--trbvh] [--collapse] FILE.obj DIR
  *                                      builds (LBVH by default; ATRBVH
- *                                      with treelet 9, 2 rounds) and dumps
+ *                                      with treelet 9, 2 rounds; TRBVH
+ *                                      with treelet 7, 3 rounds) and dumps
  *                                      every stage to DIR
  *
  * Planted bugs, for the demonstration (check-demo.sh):
@@ -25,6 +27,7 @@
  *                    (what an unstable GPU radix sort does)
  *   -DPLANTED_BUG=2  ATRBVH clustering lets the last of equal distances
  *                    win instead of the first
+ *   -DPLANTED_BUG=3  the TRBVH DP lets the last of equal splits win
  */
 #include <errno.h>
 #include <float.h>
@@ -376,6 +379,22 @@ static void refit(tree *t, uint32_t node)
 
 /* One treelet at root R with (at most) tn leaves: formation by largest
  * area, agglomerative clustering, write-back when strictly cheaper. */
+/* TRBVH: the subset DP's tables (treelets of at most 10 leaves) */
+static box dp_box[1 << 10];
+static uint32_t dp_count[1 << 10], dp_split[1 << 10];
+static double dp_cost[1 << 10];
+static int trbvh;
+
+static unsigned low_bit(uint32_t x)
+{
+    unsigned k = 0;
+    while (!(x & 1u)) {
+        x >>= 1;
+        k++;
+    }
+    return k;
+}
+
 static void treelet(tree *t, uint32_t R, unsigned tn)
 {
     uint32_t leaf[MAXT], internal[MAXT], code[MAXT], lc[MAXT], rc[MAXT];
@@ -383,7 +402,7 @@ static void treelet(tree *t, uint32_t R, unsigned tn)
     uint32_t ncnt[MAXT];
     double ar[MAXT], cst[MAXT], ncost[MAXT];
     box bx[MAXT], nbox[MAXT];
-    unsigned m = 2, live, k, q, sp, i, j;
+    unsigned m = 2, live, k, q, sp, i, j, root;
     int flat;
     /* refresh the root's cost (its subtree may be cheaper now) */
     t->cost[R] = node_cost(area(t->box[R]), t->count[R],
@@ -412,50 +431,119 @@ static void treelet(tree *t, uint32_t R, unsigned tn)
     }
     if (m < 3)
         return;
-    /* agglomerative clustering: slots 0 .. live-1 */
-    for (k = 0; k < m; k++) {
-        bx[k] = t->box[leaf[k]];
-        cst[k] = t->cost[leaf[k]];
-        cnt[k] = t->count[leaf[k]];
-        code[k] = k;
-    }
-    for (live = m, q = 0; live > 1; live--, q++) {
-        double best = 0.0;
-        unsigned bi = 0, bj = 0, last = live - 1;
-        box u;
-        for (i = 1; i < live; i++)
-            for (j = 0; j < i; j++) {
-                double d = area(merge(bx[j], bx[i]));
-#if defined(PLANTED_BUG) && PLANTED_BUG == 2
-                /* the bug: among equal distances the last pair wins */
-                if ((i == 1 && j == 0) || d <= best) {
+    if (trbvh) {
+        /* subset DP: S = 2^k | rest, every proper subset done before S */
+        uint32_t full = (1u << m) - 1u, mask[MAXT], node[MAXT];
+        unsigned next = 1;
+        for (k = 0; k < m; k++) {
+            uint32_t bit = 1u << k, rest;
+            dp_box[bit] = t->box[leaf[k]];
+            dp_count[bit] = t->count[leaf[k]];
+            dp_cost[bit] = t->cost[leaf[k]];
+            for (rest = 1; rest < bit; rest++) {
+                uint32_t S = bit | rest, delta = (S - 1u) & S;
+                uint32_t P = (0u - delta) & S, bestp = P;
+                box b = merge(dp_box[rest], t->box[leaf[k]]);
+                uint32_t c = dp_count[rest] + t->count[leaf[k]];
+                double a = area(b), base = ci * a, best, x;
+                best = base + dp_cost[P];
+                best = best + dp_cost[S ^ P];
+                for (P = (P - delta) & S; P; P = (P - delta) & S) {
+                    x = base + dp_cost[P];
+                    x = x + dp_cost[S ^ P];
+#if defined(PLANTED_BUG) && PLANTED_BUG == 3
+                    if (x <= best) { /* the bug: the last of equal splits */
 #else
-                if ((i == 1 && j == 0) || d < best) {
+                    if (x < best) {
 #endif
-                    best = d;
-                    bi = i;
-                    bj = j;
+                        best = x;
+                        bestp = P;
+                    }
                 }
+                if (collapse) {
+                    x = ct * a;
+                    x = x * (double)c;
+                    if (x < best)
+                        best = x;
+                }
+                dp_box[S] = b;
+                dp_count[S] = c;
+                dp_cost[S] = best;
+                dp_split[S] = bestp;
             }
-        lc[q] = code[bj];
-        rc[q] = code[bi];
-        u = merge(bx[bj], bx[bi]);
-        cst[bj] = node_cost(area(u), cnt[bj] + cnt[bi], cst[bj], cst[bi],
-                            &flat);
-        bx[bj] = u;
-        cnt[bj] += cnt[bi];
-        code[bj] = m + q;
-        if (bi != last) {
-            bx[bi] = bx[last];
-            cst[bi] = cst[last];
-            cnt[bi] = cnt[last];
-            code[bi] = code[last];
         }
+        /* the topology, top-down: P is the left child */
+        root = 0;
+        sp = 0;
+        mask[sp] = full;
+        node[sp++] = 0;
+        while (sp) {
+            uint32_t S = mask[--sp], nd = node[sp], P = dp_split[S];
+            uint32_t side[2];
+            side[0] = P;
+            side[1] = S ^ P;
+            for (k = 0; k < 2; k++) {
+                uint32_t code;
+                if (!(side[k] & (side[k] - 1u))) {
+                    code = low_bit(side[k]);
+                } else {
+                    code = m + next;
+                    mask[sp] = side[k];
+                    node[sp++] = next++;
+                }
+                if (k == 0)
+                    lc[nd] = code;
+                else
+                    rc[nd] = code;
+            }
+        }
+    } else {
+    /* agglomerative clustering: slots 0 .. live-1 */
+        for (k = 0; k < m; k++) {
+            bx[k] = t->box[leaf[k]];
+            cst[k] = t->cost[leaf[k]];
+            cnt[k] = t->count[leaf[k]];
+            code[k] = k;
+        }
+        for (live = m, q = 0; live > 1; live--, q++) {
+            double best = 0.0;
+            unsigned bi = 0, bj = 0, last = live - 1;
+            box u;
+            for (i = 1; i < live; i++)
+                for (j = 0; j < i; j++) {
+                    double d = area(merge(bx[j], bx[i]));
+#if defined(PLANTED_BUG) && PLANTED_BUG == 2
+                    /* the bug: among equal distances the last pair wins */
+                    if ((i == 1 && j == 0) || d <= best) {
+#else
+                    if ((i == 1 && j == 0) || d < best) {
+#endif
+                        best = d;
+                        bi = i;
+                        bj = j;
+                    }
+                }
+            lc[q] = code[bj];
+            rc[q] = code[bi];
+            u = merge(bx[bj], bx[bi]);
+            cst[bj] = node_cost(area(u), cnt[bj] + cnt[bi], cst[bj], cst[bi],
+                                &flat);
+            bx[bj] = u;
+            cnt[bj] += cnt[bi];
+            code[bj] = m + q;
+            if (bi != last) {
+                bx[bi] = bx[last];
+                cst[bi] = cst[last];
+                cnt[bi] = cnt[last];
+                code[bi] = code[last];
+            }
+        }
+        root = m - 2;
     }
     /* pre-order of the local nodes (root m-2), then bottom-up values */
     sp = 0;
     k = 0;
-    stack[sp++] = m - 2;
+    stack[sp++] = root;
     while (sp) {
         uint32_t node = stack[--sp];
         order[k++] = node;
@@ -476,7 +564,7 @@ static void treelet(tree *t, uint32_t R, unsigned tn)
         ncnt[node] = nl + nr;
         ncost[node] = node_cost(area(nbox[node]), nl + nr, cl, cr, &flat);
     }
-    if (!(ncost[m - 2] < t->cost[R]))
+    if (!(ncost[root] < t->cost[R]))
         return;
     /* write back: R keeps its id; the other ids, ascending, in pre-order */
     for (k = 0; k + 2 < m; k++)
@@ -608,14 +696,20 @@ int main(int argc, char **argv)
     for (; a < argc && argv[a][0] == '-'; a++) {
         if (strcmp(argv[a], "--atrbvh") == 0)
             agglomerative = 1;
+        else if (strcmp(argv[a], "--trbvh") == 0)
+            trbvh = 1;
         else if (strcmp(argv[a], "--collapse") == 0)
             collapse = 1;
         else
             die("unknown option");
     }
-    if (argc - a != 2)
-        die("usage: minibuilder [--atrbvh] [--collapse] FILE.obj DIR | "
-            "--scene FILE.obj [N]");
+    if (argc - a != 2 || (trbvh && agglomerative))
+        die("usage: minibuilder [--atrbvh|--trbvh] [--collapse] FILE.obj "
+            "DIR | --scene FILE.obj [N]");
+    if (trbvh) {
+        tn = 7;
+        rounds = 3;
+    }
     read_obj(argv[a], &v, &nv, &tri, &nt);
     if (nt < 2)
         die("fewer than two triangles");
@@ -679,9 +773,11 @@ int main(int argc, char **argv)
             "\"rounds\": %u, \"gamma\": %u, \"ci\": 1.2, \"ct\": 1, "
             "\"collapse\": %s, \"max_leaf_size\": 0},\n"
             "  \"stages\": [",
-            argv[a], (unsigned long)nt, agglomerative ? "atrbvh" : "lbvh",
-            agglomerative ? tn : 0, agglomerative ? rounds : 0,
-            agglomerative ? tn : 0, collapse ? "true" : "false");
+            argv[a], (unsigned long)nt,
+            agglomerative ? "atrbvh" : trbvh ? "trbvh" : "lbvh",
+            agglomerative || trbvh ? tn : 0,
+            agglomerative || trbvh ? rounds : 0,
+            agglomerative || trbvh ? tn : 0, collapse ? "true" : "false");
     stage_begin("bounds", 1);
     npy("bounds", "prim_boxes", "<f4", nt, 6, prim, sizeof(float));
     npy("bounds", "scene_box", "<f4", 1, 6, &scene, sizeof(float));
@@ -722,7 +818,7 @@ int main(int argc, char **argv)
     dump_tree("refit", &t, 1);
 
     /* optimise: rounds with gamma * 2^r, the crown in post-order */
-    if (agglomerative)
+    if (agglomerative || trbvh)
         for (r = 0; r < rounds; r++) {
             uint64_t g = (uint64_t)tn << (r < 40 ? r : 40);
             char name[32];
@@ -756,7 +852,8 @@ int main(int argc, char **argv)
     if (fclose(manifest) != 0)
         die("cannot write the manifest");
     printf("minibuilder: %lu triangles (%s%s), stages written to %s\n",
-           (unsigned long)nt, agglomerative ? "ATRBVH" : "LBVH",
+           (unsigned long)nt,
+           agglomerative ? "ATRBVH" : trbvh ? "TRBVH" : "LBVH",
            collapse ? ", collapsed" : "", outdir);
     return 0;
 }
