@@ -122,6 +122,14 @@ else
     echo "stages.sh: no numpy, the NumPy round trip skipped" >&2
 fi
 
+# an invalid primitive: an error, or left out with --skip-invalid (the
+# manifest says so, and check's reference build does the same)
+run 1 stages "$SRCDIR/data/nan.obj" --dump "$T/nan"
+[ -e "$T/nan/manifest.json" ] && fail "a manifest after a failed build"
+run 0 stages "$SRCDIR/data/nan.obj" --skip-invalid --dump "$T/nan"
+run 0 check "$T/nan"
+[ "$($EDIT "$T/nan/bounds-prim_boxes.npy" info)" = "<f4 12" ] || fail "skip-invalid: not 2 boxes"
+
 # ------------------------------------------- the same bytes everywhere
 for th in 1 2 3; do
     run 0 stages "$SCENE" --threads "$th" --dump "$T/t$th"
