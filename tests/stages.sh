@@ -250,6 +250,8 @@ mani stagename 'm["stages"][0]["name"] = "nonsense"'
 run 2 check "$T/m"
 mani path 'm["stages"][0]["files"][0]["file"] = "../x.npy"'
 run 2 check "$T/m"
+mani empty 'm["stages"] = []'
+run 2 check "$T/m"
 mani nothing 'pass'
 printf '{"version": 1, "stages": [' >"$T/m/manifest.json"
 run 2 check "$T/m"

@@ -1224,7 +1224,8 @@ int cli_check(int argc, char **argv)
                 }
         }
 
-    qsort(mine.s, mine.count, sizeof *mine.s, stage_cmp);
+    if (mine.count)
+        qsort(mine.s, mine.count, sizeof *mine.s, stage_cmp);
     found = calloc(mine.count ? mine.count : 1, sizeof *found);
     if (!found) {
         trouble("out of memory");
@@ -1249,6 +1250,19 @@ int cli_check(int argc, char **argv)
         }
     }
     rc = first == (size_t)-1 ? CHECK_SAME : CHECK_DIFFER;
+    if (rc == CHECK_SAME) {
+        /* "same" must mean something was compared */
+        size_t compared = 0;
+        for (i = 0; i < mine.count; i++)
+            compared += found[i].items;
+        if (compared == 0) {
+            trouble("%s: nothing to compare: no array of its manifest is in "
+                    "the reference%s", dir,
+                    mine.count ? "" : " (the manifest lists no stage)");
+            rc = CHECK_TROUBLE;
+            goto done;
+        }
+    }
 
     if (as_json) {
         json_writer w;
