@@ -415,19 +415,24 @@ __kernel void intersect_closest(__global const atrbvh_node *nodes,
                                 __global const float *box_data,
                                 __global const atrbvh_ray *rays,
                                 __global atrbvh_hit *hits,
-                                atrbvh_kargs_trace a)
+                                __global uint *cost, atrbvh_kargs_trace a)
 {
     ulong i = get_global_id(0);
     atrbvh_trav_scene s;
     atrbvh_ray ray;
     atrbvh_hit h;
+    uint nb, np;
     if (i >= a.ray_count)
         return;
     s = trav_scene(nodes, prim_indices, vertices, indices, box_data, a);
     ray = rays[i];
-    atrbvh_trav_closest(&s, ray.origin, ray.dir, ray.tmin, ray.tmax, &h.t,
-                        &h.u, &h.v, &h.primitive);
+    atrbvh_trav_closest_cost(&s, ray.origin, ray.dir, ray.tmin, ray.tmax,
+                             &h.t, &h.u, &h.v, &h.primitive, &nb, &np);
     hits[i] = h;
+    if (a.count_cost) {
+        cost[2 * i] = nb;
+        cost[2 * i + 1] = np;
+    }
 }
 
 __kernel void intersect_any(__global const atrbvh_node *nodes,
@@ -436,15 +441,22 @@ __kernel void intersect_any(__global const atrbvh_node *nodes,
                             __global const uint *indices,
                             __global const float *box_data,
                             __global const atrbvh_ray *rays,
-                            __global uchar *occluded, atrbvh_kargs_trace a)
+                            __global uchar *occluded, __global uint *cost,
+                            atrbvh_kargs_trace a)
 {
     ulong i = get_global_id(0);
     atrbvh_trav_scene s;
     atrbvh_ray ray;
+    uint nb, np;
     if (i >= a.ray_count)
         return;
     s = trav_scene(nodes, prim_indices, vertices, indices, box_data, a);
     ray = rays[i];
-    occluded[i] = (uchar)(atrbvh_trav_any(&s, ray.origin, ray.dir, ray.tmin,
-                                          ray.tmax) != 0);
+    occluded[i] = (uchar)(atrbvh_trav_any_cost(&s, ray.origin, ray.dir,
+                                               ray.tmin, ray.tmax, &nb,
+                                               &np) != 0);
+    if (a.count_cost) {
+        cost[2 * i] = nb;
+        cost[2 * i + 1] = np;
+    }
 }

@@ -90,6 +90,7 @@ enum {
     B_T_BOXES,
     B_T_RAYS,
     B_T_OUT,
+    B_T_COST,     /* per-ray box and primitive tests      */
     B_SLOTS
 };
 
@@ -147,8 +148,8 @@ atrbvh_status atrbvh_i_cl_rays(atrbvh_device *dev, const atrbvh_node *nodes,
                                 size_t prim_count, const atrbvh_i_input *in,
                                 const atrbvh_ray *rays, size_t count,
                                 atrbvh_hit *hits, uint8_t *occluded,
-                                int threads, double *kernel_ms,
-                                atrbvh_error *error);
+                                atrbvh_ray_cost *cost, int threads,
+                                double *kernel_ms, atrbvh_error *error);
 
 /* memory.c */
 /* Buffer `slot` with at least count * item bytes (kept, grown only when

@@ -80,7 +80,7 @@ static atrbvh_status trace_batch(atrbvh_cl_device *c,
                                   size_t prim_count, const atrbvh_i_input *in,
                                   const atrbvh_ray *rays, size_t count,
                                   atrbvh_hit *hits, uint8_t *occluded,
-                                  atrbvh_error *error)
+                                  atrbvh_ray_cost *cost, atrbvh_error *error)
 {
     atrbvh_kargs_trace a;
     int k = occluded ? K_INTERSECT_ANY : K_INTERSECT_CLOSEST;
@@ -90,6 +90,7 @@ static atrbvh_status trace_batch(atrbvh_cl_device *c,
     memset(&a, 0, sizeof a);
     a.node_count = node_count;
     a.prim_count = prim_count;
+    a.count_cost = cost != NULL;
     CL_CHECK(atrbvh_i_cl_buffer(c, B_T_NODES, node_count, sizeof(atrbvh_node),
                                 "BVH nodes", error));
     CL_CHECK(atrbvh_i_cl_upload(c, B_T_NODES, nodes,
@@ -113,6 +114,10 @@ static atrbvh_status trace_batch(atrbvh_cl_device *c,
     CL_CHECK(atrbvh_i_cl_buffer(c, B_T_OUT, (size_t)chunk, out_item,
                                 occluded ? "occlusion results" : "hits",
                                 error));
+    /* two u32 per ray (atrbvh_ray_cost), or a one-word dummy */
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_T_COST, cost ? (size_t)chunk : 1,
+                                cost ? sizeof(atrbvh_ray_cost) : 4,
+                                "ray costs", error));
     for (done = 0; done < count; done += (size_t)chunk) {
         size_t n = count - done < chunk ? count - done : (size_t)chunk;
         a.ray_count = n;
@@ -120,7 +125,12 @@ static atrbvh_status trace_batch(atrbvh_cl_device *c,
                                     n * sizeof(atrbvh_ray), "rays", error));
         CL_RUN(c, k, n, error, CL_BUF(B_T_NODES), CL_BUF(B_T_PRIMS),
                CL_BUF(B_T_VERTICES), CL_BUF(B_T_INDICES), CL_BUF(B_T_BOXES),
-               CL_BUF(B_T_RAYS), CL_BUF(B_T_OUT), CL_VAL(a));
+               CL_BUF(B_T_RAYS), CL_BUF(B_T_OUT), CL_BUF(B_T_COST),
+               CL_VAL(a));
+        if (cost)
+            CL_CHECK(atrbvh_i_cl_download(c, B_T_COST, cost + done,
+                                          n * sizeof(atrbvh_ray_cost),
+                                          "ray costs", error));
         if (occluded)
             CL_CHECK(atrbvh_i_cl_download(c, B_T_OUT, occluded + done, n,
                                           "occlusion results", error));
@@ -139,8 +149,8 @@ atrbvh_status atrbvh_i_cl_rays(atrbvh_device *dev, const atrbvh_node *nodes,
                                 size_t prim_count, const atrbvh_i_input *in,
                                 const atrbvh_ray *rays, size_t count,
                                 atrbvh_hit *hits, uint8_t *occluded,
-                                int threads, double *kernel_ms,
-                                atrbvh_error *error)
+                                atrbvh_ray_cost *cost, int threads,
+                                double *kernel_ms, atrbvh_error *error)
 {
     atrbvh_cl_device *c = (atrbvh_cl_device *)dev->impl;
     atrbvh_cl_times times;
@@ -152,7 +162,7 @@ atrbvh_status atrbvh_i_cl_rays(atrbvh_device *dev, const atrbvh_node *nodes,
     memset(&times, 0, sizeof times);
     c->times = &times; /* the pipeline holds the handle's lock */
     st = trace_batch(c, nodes, node_count, prim_indices, prim_count, in, rays,
-                      count, hits, occluded, error);
+                      count, hits, occluded, cost, error);
     if (c->event_count) {
         atrbvh_error ignored;
         (void)atrbvh_i_cl_finish(c, &ignored);

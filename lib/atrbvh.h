@@ -413,6 +413,52 @@ ATRBVH_API atrbvh_status atrbvh_occluded_batch_device(
     const atrbvh_geometry *geometry, const atrbvh_ray *rays, size_t count,
     uint8_t *occluded, double *kernel_ms, atrbvh_error *error);
 
+/* The exact cost of ray queries: how many node boxes and how many
+ * primitives (triangles or boxes) each ray tested.  The counts come from
+ * the traversal itself (the same code on every backend), so they are the
+ * same for every run, thread count and backend: a measure of a tree's
+ * quality for rays that timing noise does not touch.  A ray that can hit
+ * nothing (NaN or infinite origin or direction, zero direction, NaN or
+ * reversed interval) costs 0; a ray missing the root box costs 1 box and
+ * 0 primitives.  An any-hit query stops at its first hit, so it counts
+ * up to there.  See atrbvh_intersect_batch_stats(3). */
+typedef struct atrbvh_ray_cost {
+    uint32_t box_tests;  /* nodes whose box the ray was tested against  */
+    uint32_t prim_tests; /* primitives the ray was tested against       */
+} atrbvh_ray_cost;
+
+/* In and out of the _stats batch calls.  Set `size` to
+ * sizeof(atrbvh_trace_stats) (atrbvh_trace_stats_init does): the struct
+ * can grow, fields past the caller's size are neither read nor written. */
+typedef struct atrbvh_trace_stats {
+    size_t size;
+    atrbvh_ray_cost *per_ray; /* in: NULL, or `count` entries that receive
+                                 each ray's cost                          */
+    uint64_t rays;            /* out: rays in the batch                   */
+    uint64_t box_tests;       /* out: sums over the batch's rays          */
+    uint64_t prim_tests;
+    double kernel_ms;         /* out: device batches, the kernels' device
+                                 time (0 on the CPU)                      */
+} atrbvh_trace_stats;
+
+ATRBVH_API void atrbvh_trace_stats_init(atrbvh_trace_stats *stats);
+
+/* atrbvh_intersect_batch and atrbvh_occluded_batch (device NULL: OpenMP
+ * over `threads`) or their _device versions (device non-NULL, threads
+ * must be 0), giving the same results bit for bit, and also filling
+ * *stats (may be NULL).  ATRBVH_ERR_INVALID_ARGUMENT when stats->size is
+ * below the first version's struct. */
+ATRBVH_API atrbvh_status atrbvh_intersect_batch_stats(
+    atrbvh_device *device, const atrbvh_bvh *bvh,
+    const atrbvh_geometry *geometry, const atrbvh_ray *rays, size_t count,
+    atrbvh_hit *hits, int threads, atrbvh_trace_stats *stats,
+    atrbvh_error *error);
+ATRBVH_API atrbvh_status atrbvh_occluded_batch_stats(
+    atrbvh_device *device, const atrbvh_bvh *bvh,
+    const atrbvh_geometry *geometry, const atrbvh_ray *rays, size_t count,
+    uint8_t *occluded, int threads, atrbvh_trace_stats *stats,
+    atrbvh_error *error);
+
 /* ----------------------------------------------------------- save and load */
 /* The file format is documented in atrbvh(5).  atrbvh_save writes a
  * temporary file beside `path` and renames it over `path` only when

@@ -152,6 +152,10 @@ typedef struct atrbvh_i_capture {
  * stay NULL), with the library's allocator; tree_free releases them. */
 atrbvh_status atrbvh_i_tree_alloc(atrbvh_i_tree *t, uint32_t n, int values);
 void atrbvh_i_tree_free(atrbvh_i_tree *t);
+/* A deep copy of src's arrays (box and cost only with values, when src
+ * has them); ATRBVH_ERR_NOMEM with dst empty on failure. */
+atrbvh_status atrbvh_i_tree_copy(atrbvh_i_tree *dst, const atrbvh_i_tree *src,
+                                 int values);
 
 /* ---------------------------------------------------------- the backend */
 typedef struct atrbvh_i_backend atrbvh_i_backend;
@@ -204,12 +208,15 @@ struct atrbvh_i_backend {
                              atrbvh_error *error);
     /* Ray queries over a built tree (arguments checked by the caller):
      * closest hits into `hits`, or any hits into `occluded` when it is
-     * non-NULL.  *kernel_ms (may be NULL): device time, when known. */
+     * non-NULL.  cost (may be NULL): each ray's box and primitive tests
+     * (shared/traverse.h's _cost queries).  *kernel_ms (may be NULL):
+     * device time, when known. */
     atrbvh_status (*trace)(atrbvh_device *dev, const atrbvh_node *nodes,
                            size_t node_count, const uint32_t *prim_indices,
                            size_t prim_count, const atrbvh_i_input *in,
                            const atrbvh_ray *rays, size_t count,
-                           atrbvh_hit *hits, uint8_t *occluded, int threads,
+                           atrbvh_hit *hits, uint8_t *occluded,
+                           atrbvh_ray_cost *cost, int threads,
                            double *kernel_ms, atrbvh_error *error);
     /* Per-kernel device times of the last build (i-th; 0 past the last). */
     int (*kernel_time)(atrbvh_device *dev, size_t i, const char **name,

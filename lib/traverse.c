@@ -66,6 +66,8 @@
 #include "internal.h"
 #include "shared/traverse.h"
 
+#include <stddef.h>
+#include <stdint.h>
 #include <string.h>
 
 /* The shared header's view of a BVH and its geometry; 0 when the geometry
@@ -215,32 +217,77 @@ atrbvh_status atrbvh_i_trav_check(const atrbvh_bvh *bvh,
     return ATRBVH_OK;
 }
 
+/* One batch on the CPU: closest hits into `hits` or any hits into
+ * `occluded`; with `cost` each ray's counts, and the sums into *boxes and
+ * *prims (integer sums: the same for every thread count). */
+static void cpu_batch(const atrbvh_trav_scene *s, const atrbvh_ray *rays,
+                      size_t count, atrbvh_hit *hits, uint8_t *occluded,
+                      atrbvh_ray_cost *cost, int threads, uint64_t *boxes,
+                      uint64_t *prims)
+{
+    long long i, n = (long long)count;
+    uint64_t nb = 0, np = 0;
+#ifdef _OPENMP
+    int nt = atrbvh_i_resolve_threads(threads);
+#else
+    (void)threads;
+#endif
+    if (!boxes) {
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 64) num_threads(nt)
+#endif
+        for (i = 0; i < n; i++) {
+            const atrbvh_ray *r = &rays[i];
+            if (hits)
+                closest(s, r, &hits[i]);
+            else
+                occluded[i] = (uint8_t)(atrbvh_trav_any(s, r->origin, r->dir,
+                                                        r->tmin,
+                                                        r->tmax) != 0);
+        }
+        return;
+    }
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 64) num_threads(nt)                \
+    reduction(+ : nb, np)
+#endif
+    for (i = 0; i < n; i++) {
+        const atrbvh_ray *r = &rays[i];
+        atrbvh_u32 b, p;
+        if (hits)
+            atrbvh_trav_closest_cost(s, r->origin, r->dir, r->tmin, r->tmax,
+                                     &hits[i].t, &hits[i].u, &hits[i].v,
+                                     &hits[i].primitive, &b, &p);
+        else
+            occluded[i] = (uint8_t)(atrbvh_trav_any_cost(
+                                        s, r->origin, r->dir, r->tmin,
+                                        r->tmax, &b, &p) != 0);
+        if (cost) {
+            cost[i].box_tests = b;
+            cost[i].prim_tests = p;
+        }
+        nb += b;
+        np += p;
+    }
+    *boxes = nb;
+    *prims = np;
+}
+
 atrbvh_status atrbvh_intersect_batch(const atrbvh_bvh *bvh,
                                      const atrbvh_geometry *geometry,
                                      const atrbvh_ray *rays, size_t count,
                                      atrbvh_hit *hits, int threads,
                                      atrbvh_error *error)
 {
-    long long i, n = (long long)count;
     atrbvh_trav_scene s;
     atrbvh_status st;
     st = atrbvh_i_trav_check(bvh, geometry, rays, count, hits, threads,
-                     "atrbvh_intersect_batch", error);
+                             "atrbvh_intersect_batch", error);
     if (st != ATRBVH_OK)
         return st;
     atrbvh_i_clear_error(error);
-trav_scene(bvh, geometry, &s); /* checked */
-#ifdef _OPENMP
-    {
-        int nt = atrbvh_i_resolve_threads(threads);
-#pragma omp parallel for schedule(dynamic, 64) num_threads(nt)
-        for (i = 0; i < n; i++)
-            closest(&s, &rays[i], &hits[i]);
-    }
-#else
-    for (i = 0; i < n; i++)
-        closest(&s, &rays[i], &hits[i]);
-#endif
+    trav_scene(bvh, geometry, &s); /* checked */
+    cpu_batch(&s, rays, count, hits, NULL, NULL, threads, NULL, NULL);
     return ATRBVH_OK;
 }
 
@@ -250,72 +297,136 @@ atrbvh_status atrbvh_occluded_batch(const atrbvh_bvh *bvh,
                                     uint8_t *occluded, int threads,
                                     atrbvh_error *error)
 {
-    long long i, n = (long long)count;
     atrbvh_trav_scene s;
     atrbvh_status st;
     st = atrbvh_i_trav_check(bvh, geometry, rays, count, occluded, threads,
-                     "atrbvh_occluded_batch", error);
+                             "atrbvh_occluded_batch", error);
     if (st != ATRBVH_OK)
         return st;
     atrbvh_i_clear_error(error);
-trav_scene(bvh, geometry, &s); /* checked */
-#ifdef _OPENMP
-    {
-        int nt = atrbvh_i_resolve_threads(threads);
-#pragma omp parallel for schedule(dynamic, 64) num_threads(nt)
-        for (i = 0; i < n; i++)
-            occluded[i] = (uint8_t)(atrbvh_trav_any(&s, rays[i].origin,
-                                                    rays[i].dir, rays[i].tmin,
-                                                    rays[i].tmax) != 0);
-    }
-#else
-    for (i = 0; i < n; i++)
-        occluded[i] = (uint8_t)(atrbvh_trav_any(&s, rays[i].origin,
-                                                rays[i].dir, rays[i].tmin,
-                                                rays[i].tmax) != 0);
-#endif
+    trav_scene(bvh, geometry, &s); /* checked */
+    cpu_batch(&s, rays, count, NULL, occluded, NULL, threads, NULL, NULL);
     return ATRBVH_OK;
 }
 
-/* The device versions: the same checks, then the device's backend (the
- * CPU's is the OpenMP batch above). */
-static atrbvh_status device_batch(atrbvh_device *dev, const atrbvh_bvh *bvh,
-                                  const atrbvh_geometry *geometry,
-                                  const atrbvh_ray *rays, size_t count,
-                                  atrbvh_hit *hits, uint8_t *occluded,
-                                  int any, double *kernel_ms, const char *fn,
-                                  atrbvh_error *error)
+/* The first version of atrbvh_trace_stats ends after kernel_ms. */
+#define TRACE_STATS_SIZE_V1                                                    \
+    (offsetof(atrbvh_trace_stats, kernel_ms) + sizeof(double))
+
+void atrbvh_trace_stats_init(atrbvh_trace_stats *stats)
 {
+    if (!stats)
+        return;
+    memset(stats, 0, sizeof *stats);
+    stats->size = sizeof *stats;
+}
+
+/* Every batch call: the checks, then the CPU batch (device NULL or a CPU
+ * device) or the device's backend; the counts when stats asks. */
+static atrbvh_status batch(atrbvh_device *dev, const atrbvh_bvh *bvh,
+                           const atrbvh_geometry *geometry,
+                           const atrbvh_ray *rays, size_t count,
+                           atrbvh_hit *hits, uint8_t *occluded, int any,
+                           int threads, atrbvh_trace_stats *stats,
+                           double *kernel_ms, const char *fn,
+                           atrbvh_error *error)
+{
+    atrbvh_trav_scene s;
     atrbvh_i_input in;
     atrbvh_status st;
+    atrbvh_ray_cost *cost = NULL;
+    uint64_t nb = 0, np = 0;
+    double kms = 0.0;
     if (kernel_ms)
         *kernel_ms = 0.0;
-    if (!dev)
+    if (stats && stats->size < TRACE_STATS_SIZE_V1)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
-                             "%s: the device is NULL", fn);
+                             "%s: stats->size %lu is below the first "
+                             "version's %lu (atrbvh_trace_stats_init sets "
+                             "it)",
+                             fn, (unsigned long)stats->size,
+                             (unsigned long)TRACE_STATS_SIZE_V1);
+    if (dev && threads != 0)
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "%s: threads is %d with a device (must be 0)",
+                             fn, threads);
     st = atrbvh_i_trav_check(bvh, geometry, rays, count,
                              any ? (const void *)occluded
                                  : (const void *)hits,
-                             0, fn, error);
+                             threads, fn, error);
     if (st != ATRBVH_OK)
         return st;
     atrbvh_i_clear_error(error);
+    if (stats) {
+        stats->rays = 0;
+        stats->box_tests = stats->prim_tests = 0;
+        stats->kernel_ms = 0.0;
+        cost = stats->per_ray;
+    }
     if (count == 0)
         return ATRBVH_OK;
-    if (!dev->backend->trace)
-        return any ? atrbvh_occluded_batch(bvh, geometry, rays, count,
-                                           occluded, 0, error)
-                   : atrbvh_intersect_batch(bvh, geometry, rays, count, hits,
-                                            0, error);
-    st = atrbvh_i_check_geometry(geometry, &in, error);
-    if (st != ATRBVH_OK)
-        return st;
-    atrbvh_i_device_lock(dev);
-    st = dev->backend->trace(dev, bvh->nodes, bvh->node_count,
-                             bvh->prim_indices, bvh->prim_count, &in, rays,
-                             count, hits, occluded, 0, kernel_ms, error);
-    atrbvh_i_device_unlock(dev);
-    return st;
+    if (!dev || !dev->backend->trace) {
+        trav_scene(bvh, geometry, &s); /* checked */
+        cpu_batch(&s, rays, count, any ? NULL : hits, any ? occluded : NULL,
+                  cost, threads, stats ? &nb : NULL, stats ? &np : NULL);
+    } else {
+        st = atrbvh_i_check_geometry(geometry, &in, error);
+        if (st != ATRBVH_OK)
+            return st;
+        if (stats && !cost) {
+            cost = atrbvh_i_alloc_array(count, sizeof *cost);
+            if (!cost)
+                return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)count,
+                                     "%s: no memory for %lu ray costs", fn,
+                                     (unsigned long)count);
+        }
+        atrbvh_i_device_lock(dev);
+        st = dev->backend->trace(dev, bvh->nodes, bvh->node_count,
+                                 bvh->prim_indices, bvh->prim_count, &in,
+                                 rays, count, any ? NULL : hits,
+                                 any ? occluded : NULL, cost, 0, &kms, error);
+        atrbvh_i_device_unlock(dev);
+        if (st == ATRBVH_OK && cost) {
+            size_t i;
+            for (i = 0; i < count; i++) {
+                nb += cost[i].box_tests;
+                np += cost[i].prim_tests;
+            }
+        }
+        if (stats && cost != stats->per_ray)
+            atrbvh_i_free(cost);
+        if (st != ATRBVH_OK)
+            return st;
+        if (kernel_ms)
+            *kernel_ms = kms;
+    }
+    if (stats) {
+        stats->rays = (uint64_t)count;
+        stats->box_tests = nb;
+        stats->prim_tests = np;
+        stats->kernel_ms = kms;
+    }
+    return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_intersect_batch_stats(
+    atrbvh_device *device, const atrbvh_bvh *bvh,
+    const atrbvh_geometry *geometry, const atrbvh_ray *rays, size_t count,
+    atrbvh_hit *hits, int threads, atrbvh_trace_stats *stats,
+    atrbvh_error *error)
+{
+    return batch(device, bvh, geometry, rays, count, hits, NULL, 0, threads,
+                 stats, NULL, "atrbvh_intersect_batch_stats", error);
+}
+
+atrbvh_status atrbvh_occluded_batch_stats(
+    atrbvh_device *device, const atrbvh_bvh *bvh,
+    const atrbvh_geometry *geometry, const atrbvh_ray *rays, size_t count,
+    uint8_t *occluded, int threads, atrbvh_trace_stats *stats,
+    atrbvh_error *error)
+{
+    return batch(device, bvh, geometry, rays, count, NULL, occluded, 1,
+                 threads, stats, NULL, "atrbvh_occluded_batch_stats", error);
 }
 
 atrbvh_status atrbvh_intersect_batch_device(atrbvh_device *device,
@@ -326,8 +437,15 @@ atrbvh_status atrbvh_intersect_batch_device(atrbvh_device *device,
                                             double *kernel_ms,
                                             atrbvh_error *error)
 {
-    return device_batch(device, bvh, geometry, rays, count, hits, NULL, 0,
-                        kernel_ms, "atrbvh_intersect_batch_device", error);
+    if (!device) {
+        if (kernel_ms)
+            *kernel_ms = 0.0;
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "atrbvh_intersect_batch_device: the device is "
+                             "NULL");
+    }
+    return batch(device, bvh, geometry, rays, count, hits, NULL, 0, 0, NULL,
+                 kernel_ms, "atrbvh_intersect_batch_device", error);
 }
 
 atrbvh_status atrbvh_occluded_batch_device(atrbvh_device *device,
@@ -338,6 +456,13 @@ atrbvh_status atrbvh_occluded_batch_device(atrbvh_device *device,
                                            double *kernel_ms,
                                            atrbvh_error *error)
 {
-    return device_batch(device, bvh, geometry, rays, count, NULL, occluded, 1,
-                        kernel_ms, "atrbvh_occluded_batch_device", error);
+    if (!device) {
+        if (kernel_ms)
+            *kernel_ms = 0.0;
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "atrbvh_occluded_batch_device: the device is "
+                             "NULL");
+    }
+    return batch(device, bvh, geometry, rays, count, NULL, occluded, 1, 0,
+                 NULL, kernel_ms, "atrbvh_occluded_batch_device", error);
 }

@@ -63,7 +63,8 @@ import csv, json, math, subprocess, sys
 path, tool, scenes = sys.argv[1], sys.argv[2], sys.argv[3:]
 need = ("scene method treelet_size rounds backend threads build_ms sah "
         "sah_binary nodes leaves peak_bytes primary_mrays ao_mrays "
-        "diffuse_mrays relative_pct").split()
+        "diffuse_mrays relative_pct box_tests_per_ray tri_tests_per_ray "
+        "ray_cost_pct").split()
 with open(path, newline="") as f:
     rows = list(csv.reader(f))
 head, body = rows[0], rows[1:]
@@ -107,6 +108,33 @@ for r in lib:
 for r in emb:
     assert int(r["treelet_size"]) == 0 and r["backend"] == "embree"
     assert float(r["embree_primary_mrays"]) > 0
+PY
+
+# Exact ray cost: the CSV's per-ray counts are those `atrbvh trace --json`
+# reports for the same tree and rays (viewpoint 0, same size and spp), and
+# ray_cost_pct is 100 for the reference TRBVH(7,3).
+checks=$((checks + 1))
+run 0 bench builtin:sphere:3000 --configs lbvh --repeat 1 --width 24 \
+    --height 16 --viewpoints 1 --spp 1 --csv "$T/cost.csv" &&
+    run 0 trace builtin:sphere:3000 --method lbvh --max-leaf 8 --width 24 \
+    --height 16 --spp 1 --json &&
+    python3 - "$T/cost.csv" "$T/out" <<'PY' || fail "bench ray cost check failed"
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1], newline="")))
+js = json.load(open(sys.argv[2]))
+lb = [r for r in rows if r["method"] == "lbvh"][0]
+ref = [r for r in rows if r["method"] == "trbvh"][0]
+assert float(ref["ray_cost_pct"]) == 100.0, ref["ray_cost_pct"]
+for kind, col in (("primary", "primary_"), ("ao", "ao_"),
+                  ("diffuse", "diffuse_"), ("all", "")):
+    for what in ("box", "tri"):
+        a = float(lb[col + what + "_tests_per_ray"])
+        b = js["rays"][kind][what + "_tests_per_ray"]
+        assert a > 0 and repr(a) == repr(b), (kind, what, a, b)
+assert repr(float(lb["ray_cost"])) == repr(js["ray_cost"]), \
+    (lb["ray_cost"], js["ray_cost"])
+assert abs(float(lb["ray_cost_pct"]) -
+           100 * float(lb["ray_cost"]) / float(ref["ray_cost"])) < 1e-9
 PY
 
 # --methods x --treelet x --rounds, no rays
@@ -205,6 +233,54 @@ else
     run 1 render builtin:city:2000 -o "$T/r.png" && err_line=$(cat "$T/err") &&
         case "$err_line" in *libpng*) ;; *) fail "render without libpng: $err_line" ;; esac
 fi
+
+# ---------------------------------------------------------------- cameras
+# A closed cube is a room (every face of its box covered): viewpoint 0 is
+# inside it, so every primary ray hits; from --eye outside, looking at it,
+# some rays miss.  The camera options' usage errors.
+{
+    echo "v 0 0 0"; echo "v 1 0 0"; echo "v 1 1 0"; echo "v 0 1 0"
+    echo "v 0 0 1"; echo "v 1 0 1"; echo "v 1 1 1"; echo "v 0 1 1"
+    for f in "1 2 3" "1 3 4" "5 7 6" "5 8 7" "1 5 6" "1 6 2" \
+             "4 3 7" "4 7 8" "1 4 8" "1 8 5" "2 6 7" "2 7 3"; do
+        echo "f $f"
+    done
+} >"$T/cube.obj"
+checks=$((checks + 1))
+run 0 trace "$T/cube.obj" --width 16 --height 12 --spp 0 --json &&
+    python3 - "$T/out" <<'PY' || fail "trace in a room: the camera is not inside"
+import json, sys
+p = json.load(open(sys.argv[1]))["rays"]["primary"]
+assert p["count"] == 192 and p["hits"] == 192, p
+PY
+checks=$((checks + 1))
+run 0 trace "$T/cube.obj" --width 16 --height 12 --spp 0 --json \
+    --eye 3,2,4 --look-at 0.5,0.5,0.5 --fov 60 &&
+    python3 - "$T/out" <<'PY' || fail "trace --eye outside the cube"
+import json, sys
+p = json.load(open(sys.argv[1]))["rays"]["primary"]
+assert 0 < p["hits"] < p["count"] == 192, p
+PY
+# bench with --eye traces that camera's rays: the same counts as trace
+checks=$((checks + 1))
+run 0 bench builtin:city:2000 --configs lbvh --repeat 1 --width 20 \
+    --height 10 --spp 1 --eye 0,50,300 --look-at 10,0,0 --csv "$T/eye.csv" &&
+    run 0 trace builtin:city:2000 --method lbvh --max-leaf 8 --width 20 \
+    --height 10 --spp 1 --eye 0,50,300 --look-at 10,0,0 --json &&
+    python3 - "$T/eye.csv" "$T/out" <<'PY' || fail "bench --eye and trace --eye differ"
+import csv, json, sys
+lb = [r for r in csv.DictReader(open(sys.argv[1], newline=""))
+      if r["method"] == "lbvh"][0]
+js = json.load(open(sys.argv[2]))
+assert repr(float(lb["box_tests_per_ray"])) == \
+    repr(js["rays"]["all"]["box_tests_per_ray"]), (lb, js["rays"])
+assert js["rays"]["primary"]["count"] == 200
+PY
+run 2 trace builtin:city:2000 --look-at 1,2,3
+run 2 trace builtin:city:2000 --eye 1,2
+run 2 trace builtin:city:2000 --eye 1,2,x
+run 2 render builtin:city:2000 -o "$T/x.png" --eye 1,2,3 --look-at 1,2,3
+run 2 bench builtin:city:2000 --fov 0
 
 echo "bench.sh: $checks runs, $failures failures"
 [ "$failures" -eq 0 ]

@@ -8,7 +8,8 @@
  * and boxes, with collapsed and binary trees.  One closed interval
  * [tmin, tmax] for closest and any hit, on both.  The error paths.  Every
  * test skips, saying so, when no OpenCL device (or no OpenCL support) is
- * there.
+ * there.  The per-ray counts of atrbvh_*_batch_stats (boxes and
+ * primitives tested) are the same on the device as on the CPU.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <check.h>
@@ -108,6 +109,52 @@ static void expect_same(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
                       what, i, oc[i], od[i]);
         hits += hc[i].primitive != ATRBVH_NO_HIT;
         occ += oc[i];
+    }
+    /* The exact ray cost: per ray, the same boxes and primitives tested on
+     * the device as on the CPU, for both queries, with the same results. */
+    {
+        atrbvh_ray_cost *cc = malloc(n * sizeof *cc),
+                        *cd = malloc(n * sizeof *cd);
+        atrbvh_trace_stats sc, sd;
+        int q;
+        ck_assert(cc && cd);
+        for (q = 0; q < 2; q++) {
+            atrbvh_trace_stats_init(&sc);
+            atrbvh_trace_stats_init(&sd);
+            sc.per_ray = cc;
+            sd.per_ray = cd;
+            memset(cd, 0xab, n * sizeof *cd);
+            if (q == 0) {
+                ck_assert_int_eq(atrbvh_intersect_batch_stats(
+                                     NULL, bvh, g, rays, n, hc, 2, &sc, &e),
+                                 ATRBVH_OK);
+                st = atrbvh_intersect_batch_stats(cl_dev, bvh, g, rays, n, hd,
+                                                  0, &sd, &e);
+            } else {
+                ck_assert_int_eq(atrbvh_occluded_batch_stats(
+                                     NULL, bvh, g, rays, n, oc, 2, &sc, &e),
+                                 ATRBVH_OK);
+                st = atrbvh_occluded_batch_stats(cl_dev, bvh, g, rays, n, od,
+                                                 0, &sd, &e);
+            }
+            ck_assert_msg(st == ATRBVH_OK, "%s: device stats: %s", what,
+                          e.text);
+            ck_assert(q == 0 ? memcmp(hc, hd, n * sizeof *hc) == 0
+                             : memcmp(oc, od, n) == 0);
+            for (i = 0; i < n; i++)
+                ck_assert_msg(cc[i].box_tests == cd[i].box_tests &&
+                                  cc[i].prim_tests == cd[i].prim_tests,
+                              "%s: %s ray %zu: cpu %u boxes %u prims, "
+                              "opencl %u boxes %u prims",
+                              what, q ? "any-hit" : "closest", i,
+                              cc[i].box_tests, cc[i].prim_tests,
+                              cd[i].box_tests, cd[i].prim_tests);
+            ck_assert(sc.box_tests == sd.box_tests &&
+                      sc.prim_tests == sd.prim_tests && sd.rays == n);
+            ck_assert(sc.box_tests >= n / 2);
+        }
+        free(cc);
+        free(cd);
     }
     /* The rays must exercise something. */
     ck_assert_msg(hits > n / 10 && hits < n, "%s: %zu hits of %zu rays", what,

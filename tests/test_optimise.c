@@ -454,10 +454,21 @@ START_TEST(atrbvh_is_naive_greedy)
                 unsigned q;
                 int mode = (int)(trial % 5u);
                 random_leaves(&r, n, mode, &p, &lv);
+                atrbvh_treelet_topo merged;
                 root = atrbvh_agglomerate(&p, n, &lv, dist, &topo);
                 check_topology(n, &topo);
                 ck_assert_uint_eq(topo.root, n - 2);
+                /* agglomerate leaves each merge's box, count and cost
+                 * (atrbvh_treelet_process skips evaluate on that
+                 * promise): bit for bit what evaluate computes. */
+                merged = topo;
                 ck_assert(atrbvh_treelet_evaluate(&p, n, &lv, &topo) == root);
+                ck_assert(memcmp(merged.box, topo.box,
+                                 (n - 1) * sizeof topo.box[0]) == 0);
+                ck_assert(memcmp(merged.count, topo.count,
+                                 (n - 1) * sizeof topo.count[0]) == 0);
+                ck_assert(memcmp(merged.cost, topo.cost,
+                                 (n - 1) * sizeof topo.cost[0]) == 0);
                 naive_greedy(&p, n, &lv, left, right, cost);
                 for (q = 0; q + 1 < n; q++) {
                     ck_assert_msg(topo.left[q] == left[q] &&

@@ -1,7 +1,8 @@
 /*
  * test_stages.c - internal stages checked on their own (links the static
- * core): the radix sort against an independent stable reference, and the
- * Morton key properties.
+ * core): the radix sort against an independent stable reference, the
+ * hierarchy against the per-node Karras search, and the Morton key
+ * properties.
  */
 #include <check.h>
 #include <stdlib.h>
@@ -25,9 +26,17 @@ static int cmp_pair(const void *a, const void *b)
     return x->v < y->v ? -1 : x->v > y->v;
 }
 
+static int cmp_u64(const void *a, const void *b)
+{
+    const uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
+}
+
 /* kind 0: random 63-bit; 1: few distinct keys (long runs of equal keys);
  * 2: skewed (most keys in one top bucket); 3: only low bits vary;
- * 4: already sorted descending. */
+ * 4: already sorted descending; 5: all keys equal; 6: random but with
+ * constant middle bits (digits no key changes between varying ones);
+ * 7: random full 64-bit keys. */
 static void fill(uint64_t *k, uint32_t n, int kind, tu_rng *r)
 {
     uint32_t i;
@@ -38,6 +47,9 @@ static void fill(uint64_t *k, uint32_t n, int kind, tu_rng *r)
         case 2: x = (i % 10) ? (x & 0xfffff) : x; break;
         case 3: x = 0x5555000000000000ull | (x & 0x3ff); break;
         case 4: x = (uint64_t)(n - i) << 20; break;
+        case 5: x = 0x123456789abcull; break;
+        case 6: x = (x & 0x7ff00000000000ffull) | 0x0000abcdef000000ull; break;
+        case 7: x = tu_rng_next(r); break;
         default: break;
         }
         k[i] = x;
@@ -46,14 +58,15 @@ static void fill(uint64_t *k, uint32_t n, int kind, tu_rng *r)
 
 START_TEST(radix_sort_is_stable_and_sorted)
 {
-    static const uint32_t sizes[] = {2, 3, 47, 48, 49, 1000, 4099, 70001, 300000};
+    static const uint32_t sizes[] = {1,  2,    3,    31,    32,    33,   47,
+                                     48, 49,   1000, 4099,  70001, 300000};
     size_t si;
     int kind, threads;
     tu_rng r;
     tu_rng_seed(&r, 1234);
     for (si = 0; si < sizeof sizes / sizeof *sizes; si++)
-        for (kind = 0; kind < 5; kind++)
-            for (threads = 1; threads <= 4; threads += 3) {
+        for (kind = 0; kind < 8; kind++)
+            for (threads = 1; threads <= 4; threads *= 2) {
                 const uint32_t n = sizes[si];
                 uint64_t *k = malloc(n * sizeof *k), *tk = malloc(n * sizeof *k);
                 uint32_t *v = malloc(n * sizeof *v), *tv = malloc(n * sizeof *v);
@@ -80,6 +93,60 @@ START_TEST(radix_sort_is_stable_and_sorted)
                 free(tv);
                 free(ref);
             }
+}
+END_TEST
+
+/* The hierarchy stage against atrbvh_karras_node (the OpenCL backend's
+ * per-node search, and the definition of the numbering): every child,
+ * parent and count, for every block split of the CPU's stack passes,
+ * over keys with long runs of equal keys (the position tie rule), few
+ * distinct bits, and random keys. */
+START_TEST(hierarchy_is_karras)
+{
+    static const uint32_t sizes[] = {1, 2, 3, 4, 5, 17, 64, 1000, 65537};
+    static const int threads[] = {1, 2, 3, 7, 16, 40};
+    size_t si, ti;
+    int kind;
+    tu_rng r;
+    tu_rng_seed(&r, 99);
+    for (si = 0; si < sizeof sizes / sizeof *sizes; si++)
+        for (kind = 0; kind < 4; kind++) {
+            const uint32_t n = sizes[si];
+            uint64_t *k = malloc(n * sizeof *k);
+            uint32_t i;
+            for (i = 0; i < n; i++) {
+                uint64_t x = tu_rng_next(&r) >> 1;
+                k[i] = kind == 0   ? x
+                       : kind == 1 ? (x % 5) << 30 /* long equal runs */
+                       : kind == 2 ? x & 0x7 /* few bits, many equal */
+                                   : 42; /* all equal */
+            }
+            qsort(k, n, sizeof *k, cmp_u64);
+            for (ti = 0; ti < sizeof threads / sizeof *threads; ti++) {
+                atrbvh_i_tree t;
+                ck_assert_int_eq(atrbvh_i_tree_alloc(&t, n, 1), ATRBVH_OK);
+                memset(t.parent, 0xab, (2 * (size_t)n - 1) * sizeof *t.parent);
+                memset(t.count, 0xab, (2 * (size_t)n - 1) * sizeof *t.count);
+                atrbvh_i_hierarchy(k, &t, threads[ti]);
+                ck_assert_uint_eq(t.parent[0], ATRBVH_NONE);
+                for (i = 0; i + 1 < n; i++) {
+                    atrbvh_u32 l, rr, c;
+                    atrbvh_karras_node(k, n, i, &l, &rr, &c);
+                    ck_assert_msg(t.left[i] == l && t.right[i] == rr &&
+                                      t.count[i] == c,
+                                  "n %u kind %d threads %d node %u: (%u, %u, "
+                                  "%u) vs Karras (%u, %u, %u)",
+                                  n, kind, threads[ti], i, t.left[i],
+                                  t.right[i], t.count[i], l, rr, c);
+                    ck_assert_uint_eq(t.parent[l], i);
+                    ck_assert_uint_eq(t.parent[rr], i);
+                }
+                for (i = n - 1; i < 2 * n - 1; i++)
+                    ck_assert_uint_eq(t.count[i], 1);
+                atrbvh_i_tree_free(&t);
+            }
+            free(k);
+        }
 }
 END_TEST
 
@@ -123,6 +190,7 @@ int main(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, radix_sort_is_stable_and_sorted);
     tcase_add_test(tc, morton_keys);
+    tcase_add_test(tc, hierarchy_is_karras);
     suite_add_tcase(s, tc);
     sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);

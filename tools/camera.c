@@ -30,6 +30,12 @@ static const double elevations[3] = {25.0, 10.0, 40.0};
 void camera_frame(const float lo[3], const float hi[3], unsigned which,
                   float aspect, camera *cam)
 {
+    camera_frame_fov(lo, hi, which, aspect, VFOV_DEGREES, cam);
+}
+
+void camera_frame_fov(const float lo[3], const float hi[3], unsigned which,
+                      float aspect, double fov, camera *cam)
+{
     double c[3], r = 0.0, az, el, tan_v, tan_h, dist, f[3], rt[3], up[3],
            len, span = 0.0;
     int k;
@@ -52,7 +58,9 @@ void camera_frame(const float lo[3], const float hi[3], unsigned which,
         r = span > 0.0 ? span * 1e-3 : 1.0;
     az = (30.0 + 45.0 * (double)(which % 8u)) * PI / 180.0;
     el = elevations[which % 3u] * PI / 180.0;
-    tan_v = tan(0.5 * VFOV_DEGREES * PI / 180.0);
+    if (!(fov > 0.0 && fov < 180.0))
+        fov = VFOV_DEGREES;
+    tan_v = tan(0.5 * fov * PI / 180.0);
     tan_h = tan_v * (double)aspect;
     f[0] = -sin(az) * cos(el);
     f[1] = -sin(el);
@@ -104,6 +112,207 @@ void camera_frame(const float lo[3], const float hi[3], unsigned which,
      * so far out that primary rays need it to cross the whole box. */
     cam->far_distance = (float)(dist + 2.0 * r > 4.0 * r ? dist + 2.0 * r
                                                           : 4.0 * r);
+}
+
+/* The box with non-finite or reversed extents made a point at 0. */
+static void sane_box(const float lo[3], const float hi[3], double l[3],
+                     double h[3])
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        l[k] = lo[k];
+        h[k] = hi[k];
+        if (!(l[k] <= h[k]) || !isfinite(l[k]) || !isfinite(h[k]))
+            l[k] = h[k] = 0.0;
+    }
+}
+
+/* The frame of a camera looking along f (unit), world up +y (+z when f is
+ * vertical), and its ray length: to the box's farthest corner and back
+ * (twice), at least 4 x the bounding sphere's radius. */
+static void set_frame(const double eye[3], const double f[3], double fov,
+                      float aspect, const float lo[3], const float hi[3],
+                      camera *cam)
+{
+    double rt[3], up[3], len, tan_v, tan_h, l[3], h[3], far2 = 0.0, r = 0.0;
+    int k, c;
+    if (!(aspect > 0.0f && aspect <= FLT_MAX))
+        aspect = 1.0f;
+    tan_v = tan(0.5 * fov * PI / 180.0);
+    tan_h = tan_v * (double)aspect;
+    /* right = forward x up */
+    rt[0] = -f[2];
+    rt[1] = 0.0;
+    rt[2] = f[0];
+    len = sqrt(rt[0] * rt[0] + rt[2] * rt[2]);
+    if (!(len > 1e-9)) { /* looking straight up or down: up is +z */
+        rt[0] = f[1];
+        rt[1] = -f[0];
+        rt[2] = 0.0;
+        len = sqrt(rt[0] * rt[0] + rt[1] * rt[1]);
+        if (!(len > 0.0)) {
+            rt[0] = 1.0;
+            len = 1.0;
+        }
+    }
+    for (k = 0; k < 3; k++)
+        rt[k] /= len;
+    up[0] = rt[1] * f[2] - rt[2] * f[1];
+    up[1] = rt[2] * f[0] - rt[0] * f[2];
+    up[2] = rt[0] * f[1] - rt[1] * f[0];
+    sane_box(lo, hi, l, h);
+    for (k = 0; k < 3; k++)
+        r += (h[k] - l[k]) * (h[k] - l[k]);
+    r = 0.5 * sqrt(r);
+    for (c = 0; c < 8; c++) {
+        double d2 = 0.0;
+        for (k = 0; k < 3; k++) {
+            double q = ((c >> k) & 1 ? h[k] : l[k]) - eye[k];
+            d2 += q * q;
+        }
+        if (d2 > far2)
+            far2 = d2;
+    }
+    memset(cam, 0, sizeof *cam);
+    for (k = 0; k < 3; k++) {
+        cam->eye[k] = (float)eye[k];
+        cam->forward[k] = (float)f[k];
+        cam->right[k] = (float)(rt[k] * tan_h);
+        cam->up[k] = (float)(up[k] * tan_v);
+    }
+    far2 = 2.0 * sqrt(far2);
+    cam->far_distance = (float)(far2 > 4.0 * r ? far2 : 4.0 * r);
+    if (!(cam->far_distance > 0.0f))
+        cam->far_distance = 1.0f;
+}
+
+int camera_look(const float eye[3], const float at[3], double fov,
+                float aspect, const float lo[3], const float hi[3],
+                camera *cam)
+{
+    double e[3], f[3], len = 0.0;
+    int k;
+    for (k = 0; k < 3; k++) {
+        e[k] = eye[k];
+        f[k] = (double)at[k] - e[k];
+        len += f[k] * f[k];
+    }
+    len = sqrt(len);
+    if (!(len > 0.0) || !isfinite(len))
+        return -1;
+    for (k = 0; k < 3; k++)
+        f[k] /= len;
+    if (!(fov > 0.0 && fov < 180.0))
+        fov = VFOV_DEGREES;
+    set_frame(e, f, fov, aspect, lo, hi, cam);
+    return 0;
+}
+
+#define INSIDE_FOV 70.0
+#define INSIDE_PITCH 10.0
+
+void camera_inside(const float lo[3], const float hi[3], unsigned j,
+                   float aspect, double fov, camera *cam)
+{
+    double l[3], h[3], c[3], f[3], az, el = INSIDE_PITCH * PI / 180.0;
+    int k;
+    sane_box(lo, hi, l, h);
+    for (k = 0; k < 3; k++)
+        c[k] = 0.5 * l[k] + 0.5 * h[k];
+    /* azimuth from +z towards +x: along the longer horizontal axis first */
+    az = (h[0] - l[0] > h[2] - l[2] ? 90.0 : 0.0) + 90.0 * (double)(j % 4u);
+    az *= PI / 180.0;
+    f[0] = sin(az) * cos(el);
+    f[1] = -sin(el);
+    f[2] = cos(az) * cos(el);
+    if (!(fov > 0.0 && fov < 180.0))
+        fov = INSIDE_FOV;
+    set_frame(c, f, fov, aspect, lo, hi, cam);
+}
+
+int camera_viewpoint(const float lo[3], const float hi[3], int room,
+                     unsigned which, const camera_view *v, float aspect,
+                     camera *cam)
+{
+    double fov = v ? v->fov : 0.0;
+    if (v && v->have_eye) {
+        float at[3];
+        int k;
+        if (v->have_at) {
+            for (k = 0; k < 3; k++)
+                at[k] = v->at[k];
+        } else {
+            double l[3], h[3];
+            sane_box(lo, hi, l, h);
+            for (k = 0; k < 3; k++)
+                at[k] = (float)(0.5 * l[k] + 0.5 * h[k]);
+        }
+        return camera_look(v->eye, at, fov, aspect, lo, hi, cam);
+    }
+    if (room && which % 2u == 0u)
+        camera_inside(lo, hi, which / 2u, aspect, fov, cam);
+    else
+        camera_frame_fov(lo, hi, room ? which / 2u : which, aspect,
+                         fov > 0.0 ? fov : VFOV_DEGREES, cam);
+    return 0;
+}
+
+/* Twice the area of triangle a b c projected along axis `ax`. */
+static double proj_area2(const float *a, const float *b, const float *c,
+                         int ax)
+{
+    int u = (ax + 1) % 3, w = (ax + 2) % 3;
+    double x1 = (double)b[u] - a[u], y1 = (double)b[w] - a[w];
+    double x2 = (double)c[u] - a[u], y2 = (double)c[w] - a[w];
+    return fabs(x1 * y2 - x2 * y1);
+}
+
+int scene_is_room(const scene *s, const float lo[3], const float hi[3],
+                  int *faces)
+{
+    double cover[6] = {0, 0, 0, 0, 0, 0}, l[3], h[3], ext[3];
+    size_t i;
+    int k, side, n = 0;
+    sane_box(lo, hi, l, h);
+    for (k = 0; k < 3; k++)
+        ext[k] = h[k] - l[k];
+    for (i = 0; i < s->triangle_count; i++) {
+        const uint32_t *t = s->indices + 3 * i;
+        const float *p[3];
+        int j, ok = 1;
+        for (j = 0; j < 3; j++) {
+            if (t[j] >= s->vertex_count)
+                ok = 0;
+        }
+        if (!ok)
+            continue;
+        for (j = 0; j < 3; j++)
+            p[j] = s->vertices + 3 * (size_t)t[j];
+        for (k = 0; k < 3; k++) {
+            double tol = 0.02 * ext[k];
+            if (!(ext[k] > 0.0))
+                continue;
+            for (side = 0; side < 2; side++) {
+                double plane = side ? h[k] : l[k];
+                int on = 1;
+                for (j = 0; j < 3; j++)
+                    if (!(fabs((double)p[j][k] - plane) <= tol))
+                        on = 0;
+                if (on)
+                    cover[2 * k + side] +=
+                        0.5 * proj_area2(p[0], p[1], p[2], k);
+            }
+        }
+    }
+    for (k = 0; k < 3; k++) {
+        double area = ext[(k + 1) % 3] * ext[(k + 2) % 3];
+        for (side = 0; side < 2; side++)
+            if (area > 0.0 && cover[2 * k + side] >= 0.25 * area)
+                n++;
+    }
+    if (faces)
+        *faces = n;
+    return n >= 3;
 }
 
 void camera_ray(const camera *cam, unsigned width, unsigned height,

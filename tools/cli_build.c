@@ -9,9 +9,11 @@
 #include "outfile.h"
 
 #include <errno.h>
+#include <pthread.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 static const char *const method_names[] = {"lbvh", "trbvh", "atrbvh", NULL};
@@ -107,6 +109,10 @@ void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table)
              .dest = &o->skip_invalid, .flag_value = 1,
              .help = "leave out triangles with NaN or infinite\n"
                      "coordinates (counted) instead of failing"},
+            {.name = "--quiet", .alias = "-q", .kind = CLI_OPT_FLAG,
+             .dest = &a->quiet, .flag_value = 1,
+             .help = "no progress on stderr (shown only on a\n"
+                     "terminal, for work over a second)"},
         };
         size_t k;
         for (k = 0; k < sizeof core / sizeof core[0]; k++)
@@ -249,29 +255,134 @@ int cli_bad_device(const cli_build_args *a, atrbvh_status st,
 }
 
 /* ------------------------------------------------------------ progress */
-/* Shown only on a terminal, and only once a build has run for a while, so
- * short builds and logs stay clean. */
+/* Shown only on a terminal (and not with --quiet), and only once loading
+ * or building has run for a second, so short runs and logs stay clean.
+ * The library and the loader report work done (stage, fraction) from the
+ * working thread; a drawing thread redraws the line every
+ * PROGRESS_EVERY_MS with that and the seconds elapsed, so the line moves
+ * even through a long stage that reports only at its start. */
 #define PROGRESS_AFTER_MS 1000.0
+#define PROGRESS_EVERY_MS 250
 
 typedef struct progress {
+    pthread_mutex_t lock;
+    pthread_cond_t wake;
+    pthread_t thread;
+    int running, stop, shown;
     double start_ms;
-    int shown;
+    const char *what;  /* "loading", "building" */
+    char stage[16];
+    double fraction;
 } progress;
+
+/* The delay before the first line: PROGRESS_AFTER_MS, or
+ * $ATRBVH_PROGRESS_AFTER_MS (the tests use 0). */
+static double progress_after_ms(void)
+{
+    const char *v = getenv("ATRBVH_PROGRESS_AFTER_MS");
+    char *end;
+    double d;
+    if (!v || !*v)
+        return PROGRESS_AFTER_MS;
+    d = strtod(v, &end);
+    return *end == '\0' && d >= 0.0 ? d : PROGRESS_AFTER_MS;
+}
+
+/* Draws the line (the lock held). */
+static void draw(progress *p)
+{
+    double f = p->fraction, now = cli_now_ms();
+    if (now - p->start_ms < progress_after_ms())
+        return;
+    if (!(f >= 0.0))
+        f = 0.0;
+    if (f > 1.0)
+        f = 1.0;
+    fprintf(stderr, "\ratrbvh: %s: %-10.10s %3d%%  %.1f s ", p->what,
+            p->stage, (int)(f * 100.0 + 0.5), (now - p->start_ms) / 1000.0);
+    fflush(stderr);
+    p->shown = 1;
+}
+
+static void *drawing(void *arg)
+{
+    progress *p = arg;
+    pthread_mutex_lock(&p->lock);
+    while (!p->stop) {
+        struct timespec until;
+        clock_gettime(CLOCK_REALTIME, &until);
+        until.tv_nsec += (long)PROGRESS_EVERY_MS * 1000000L;
+        if (until.tv_nsec >= 1000000000L) {
+            until.tv_sec++;
+            until.tv_nsec -= 1000000000L;
+        }
+        pthread_cond_timedwait(&p->wake, &p->lock, &until);
+        if (!p->stop)
+            draw(p);
+    }
+    pthread_mutex_unlock(&p->lock);
+    return NULL;
+}
+
+/* Starts the display for `what` when stderr is a terminal and not quiet;
+ * without a thread (none could be made) nothing is shown. */
+static void begin_progress(progress *p, const char *what, int quiet)
+{
+    memset(p, 0, sizeof *p);
+    p->start_ms = cli_now_ms();
+    p->what = what;
+    if (quiet || !isatty(STDERR_FILENO))
+        return;
+    if (pthread_mutex_init(&p->lock, NULL) != 0)
+        return;
+    if (pthread_cond_init(&p->wake, NULL) != 0) {
+        pthread_mutex_destroy(&p->lock);
+        return;
+    }
+    if (pthread_create(&p->thread, NULL, drawing, p) != 0) {
+        pthread_cond_destroy(&p->wake);
+        pthread_mutex_destroy(&p->lock);
+        return;
+    }
+    p->running = 1;
+}
+
+static void report(progress *p, const char *stage, double fraction)
+{
+    if (!p->running)
+        return;
+    pthread_mutex_lock(&p->lock);
+    snprintf(p->stage, sizeof p->stage, "%s", stage ? stage : "");
+    p->fraction = fraction;
+    pthread_mutex_unlock(&p->lock);
+}
 
 static int on_progress(const char *stage, double fraction, void *user)
 {
-    progress *p = user;
-    if (!p->shown && cli_now_ms() - p->start_ms < PROGRESS_AFTER_MS)
-        return 0;
-    if (!(fraction >= 0.0))
-        fraction = 0.0;
-    if (fraction > 1.0)
-        fraction = 1.0;
-    fprintf(stderr, "\ratrbvh: building: %-10.10s %3d%%",
-            stage ? stage : "", (int)(fraction * 100.0 + 0.5));
-    fflush(stderr);
-    p->shown = 1;
+    report(user, stage, fraction);
     return 0;
+}
+
+static void on_load_progress(double fraction, void *user)
+{
+    report(user, "", fraction);
+}
+
+/* Stops the drawing thread and clears the line. */
+static void end_progress(progress *p)
+{
+    if (!p->running)
+        return;
+    pthread_mutex_lock(&p->lock);
+    p->stop = 1;
+    pthread_cond_signal(&p->wake);
+    pthread_mutex_unlock(&p->lock);
+    pthread_join(p->thread, NULL);
+    if (p->shown)
+        fprintf(stderr, "\r%60s\r", "");
+    pthread_cond_destroy(&p->wake);
+    pthread_mutex_destroy(&p->lock);
+    p->running = 0;
 }
 
 /* ----------------------------------------------------- load and build */
@@ -320,10 +431,16 @@ int cli_load_and_build(const cli_build_args *a, cli_built *b)
     if (a->output && cli_out_usable(a->output, a->scene) != 0)
         return CLI_FAIL;
     t0 = cli_now_ms();
+    begin_progress(&prog, "loading", a->quiet);
+    scene_set_progress(on_load_progress, &prog);
     if (scene_load(a->scene, &b->sc, err, sizeof err) != 0) {
+        scene_set_progress(NULL, NULL);
+        end_progress(&prog);
         cli_error("%s", err);
         return CLI_FAIL;
     }
+    scene_set_progress(NULL, NULL);
+    end_progress(&prog);
     b->load_ms = cli_now_ms() - t0;
     if (b->sc.triangle_count == 0) {
         cli_error("%s: the scene has no triangles", a->scene);
@@ -347,16 +464,14 @@ int cli_load_and_build(const cli_build_args *a, cli_built *b)
         }
         o.device = b->device;
     }
-    prog.start_ms = cli_now_ms();
-    prog.shown = 0;
-    if (isatty(STDERR_FILENO)) {
+    begin_progress(&prog, "building", a->quiet);
+    if (prog.running) {
         o.progress = on_progress;
         o.progress_user = &prog;
     }
     memset(&e, 0, sizeof e);
     st = atrbvh_build(&b->geometry, &o, &b->bvh, &e);
-    if (prog.shown)
-        fprintf(stderr, "\r%40s\r", "");
+    end_progress(&prog);
     if (st != ATRBVH_OK && cli_bad_device(a, st, e.text)) {
         b->bvh = NULL;
         return cli_usage(a->cmd, "--device: %s", e.text);

@@ -1,13 +1,13 @@
 /*
  * cli_render.c - `atrbvh render`: a shaded picture of a scene through a
- * BVH, or a heat map of traversal steps per pixel, as PNG.
+ * BVH, or a heat map of traversal work per pixel, as PNG.
  *
- * The heat map counts the nodes whose box a primary ray is tested against
- * in a closest-hit traversal of the public node array (atrbvh_bvh_nodes):
- * front-to-back by the near child's entry distance, a leaf's triangles by
- * Moller-Trumbore.  The library's traverser has no counter (and the ABI is
- * not changed for one), so the tool walks the tree itself; its hits agree
- * with the library's up to ties.
+ * The primary rays go through the library's closest-hit batch
+ * (atrbvh_intersect_batch_stats): the shading uses its hits, and the heat
+ * map its exact per-ray count of the node boxes the traversal tested (the
+ * same count bench and trace report, on every backend).  The heat map
+ * carries its colour scale, with numbers, along its bottom edge when the
+ * picture is large enough (at least 96 x 64).
  */
 #define _POSIX_C_SOURCE 200809L
 #include "config.h"
@@ -23,119 +23,76 @@
 
 #define MAX_SIDE 16384u
 #define MAX_PIXELS ((size_t)1 << 26)
-#define STACK 256
+#define RAY_CHUNK ((size_t)1 << 20)
 
-static int box_hit(const atrbvh_node *n, const float o[3], const float inv[3],
-                   float tmin, float tmax, float *tnear)
+static void heat_color(double x, unsigned char *c);
+
+/* Digits 0-9 in 3 x 5 pixels, one row per 3 bits (top row first). */
+static const unsigned char digit_rows[10][5] = {
+    {7, 5, 5, 5, 7}, {2, 6, 2, 2, 7}, {7, 1, 7, 4, 7}, {7, 1, 7, 1, 7},
+    {5, 5, 7, 1, 1}, {7, 4, 7, 1, 7}, {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1},
+    {7, 5, 7, 5, 7}, {7, 5, 7, 1, 7}};
+
+static void put_px(unsigned char *rgb, unsigned w, unsigned h, long x, long y,
+                   const unsigned char c[3])
 {
-    int k;
-    for (k = 0; k < 3; k++) {
-        float t0 = (n->min[k] - o[k]) * inv[k];
-        float t1 = (n->max[k] - o[k]) * inv[k];
-        if (t0 > t1) {
-            float t = t0;
-            t0 = t1;
-            t1 = t;
-        }
-        /* NaN (0 * inf) compares false and leaves the bound as it was */
-        if (t0 > tmin)
-            tmin = t0;
-        if (t1 < tmax)
-            tmax = t1;
-    }
-    *tnear = tmin;
-    return tmin <= tmax;
+    if (x < 0 || y < 0 || (unsigned long)x >= w || (unsigned long)y >= h)
+        return;
+    memcpy(rgb + 3 * ((size_t)y * w + (size_t)x), c, 3);
 }
 
-static int tri_hit(const scene *sc, uint32_t prim, const atrbvh_ray *r,
-                   float *t)
+/* The decimal text of v at (x, y) (top left), pixels s x s; its width. */
+static long draw_number(unsigned char *rgb, unsigned w, unsigned h, long x,
+                        long y, unsigned v, int s, int draw)
 {
-    const uint32_t *tri = sc->indices + (size_t)prim * 3;
-    const float *a = sc->vertices + (size_t)tri[0] * 3;
-    const float *b = sc->vertices + (size_t)tri[1] * 3;
-    const float *c = sc->vertices + (size_t)tri[2] * 3;
-    double e1[3], e2[3], p[3], q[3], s[3], det, inv, u, v, tt;
-    int k;
-    for (k = 0; k < 3; k++) {
-        e1[k] = (double)b[k] - a[k];
-        e2[k] = (double)c[k] - a[k];
-        s[k] = (double)r->origin[k] - a[k];
+    static const unsigned char white[3] = {255, 255, 255};
+    char text[16];
+    int i, n = snprintf(text, sizeof text, "%u", v), r, c, dy, dx;
+    long x0 = x;
+    for (i = 0; i < n; i++) {
+        const unsigned char *g = digit_rows[text[i] - '0'];
+        for (r = 0; r < 5 && draw; r++)
+            for (c = 0; c < 3; c++)
+                if (g[r] & (4 >> c))
+                    for (dy = 0; dy < s; dy++)
+                        for (dx = 0; dx < s; dx++)
+                            put_px(rgb, w, h, x + c * s + dx,
+                                   y + r * s + dy, white);
+        x += 4 * s;
     }
-    p[0] = r->dir[1] * e2[2] - r->dir[2] * e2[1];
-    p[1] = r->dir[2] * e2[0] - r->dir[0] * e2[2];
-    p[2] = r->dir[0] * e2[1] - r->dir[1] * e2[0];
-    det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
-    if (det == 0.0)
-        return 0;
-    inv = 1.0 / det;
-    u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) * inv;
-    if (u < 0.0 || u > 1.0)
-        return 0;
-    q[0] = s[1] * e1[2] - s[2] * e1[1];
-    q[1] = s[2] * e1[0] - s[0] * e1[2];
-    q[2] = s[0] * e1[1] - s[1] * e1[0];
-    v = (r->dir[0] * q[0] + r->dir[1] * q[1] + r->dir[2] * q[2]) * inv;
-    if (v < 0.0 || u + v > 1.0)
-        return 0;
-    tt = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) * inv;
-    if (!(tt >= r->tmin && tt <= *t)) /* [tmin, tmax], as the library */
-        return 0;
-    *t = (float)tt;
-    return 1;
+    return x - x0 - s;
 }
 
-/* Closest hit; returns the nodes visited, *prim the hit (or NO_HIT). */
-static unsigned count_trace(const atrbvh_node *nodes, const uint32_t *ids,
-                            const scene *sc, const atrbvh_ray *r,
-                            uint32_t *prim, float *t_hit)
+/* The heat map's scale: a bar from 0 to `top` along the bottom edge, with
+ * 0, top/4, top/2, 3top/4 and top written above it, on a darkened band. */
+static void draw_scale(unsigned char *rgb, unsigned w, unsigned h,
+                       unsigned top)
 {
-    uint32_t stack[STACK];
-    int sp = 0, k;
-    unsigned steps = 0;
-    float inv[3], t = r->tmax, tn;
-    uint32_t cur = 0;
-    *prim = ATRBVH_NO_HIT;
-    for (k = 0; k < 3; k++)
-        inv[k] = 1.0f / r->dir[k];
-    steps++;
-    if (!box_hit(&nodes[0], r->origin, inv, r->tmin, t, &tn))
-        return steps;
-    for (;;) {
-        const atrbvh_node *n = &nodes[cur];
-        if (n->count) {
-            uint32_t j;
-            for (j = 0; j < n->count; j++)
-                if (tri_hit(sc, ids[n->index + j], r, &t))
-                    *prim = ids[n->index + j];
-        } else {
-            uint32_t l = cur + 1, rr = n->index;
-            float tl, tr;
-            int hl, hr;
-            steps += 2;
-            hl = box_hit(&nodes[l], r->origin, inv, r->tmin, t, &tl);
-            hr = box_hit(&nodes[rr], r->origin, inv, r->tmin, t, &tr);
-            if (hl && hr) {
-                uint32_t near = tl <= tr ? l : rr, far = tl <= tr ? rr : l;
-                if (sp < STACK)
-                    stack[sp++] = far;
-                cur = near;
-                continue;
-            }
-            if (hl || hr) {
-                cur = hl ? l : rr;
-                continue;
-            }
+    int s = w >= 400 && h >= 200 ? 2 : 1, k;
+    long bar_h = 4 * s, x0 = 4 * s, x1 = (long)w - 4 * s - 1,
+         bar_y = (long)h - 3 * s - bar_h, text_y = bar_y - 7 * s,
+         band_y = text_y - 2 * s, x, y;
+    if (w < 96 || h < 64)
+        return;
+    for (y = band_y; y < (long)h; y++)
+        for (x = 0; x < (long)w; x++) {
+            unsigned char *p = rgb + 3 * ((size_t)y * w + (size_t)x);
+            p[0] = (unsigned char)(p[0] / 4);
+            p[1] = (unsigned char)(p[1] / 4);
+            p[2] = (unsigned char)(p[2] / 4);
         }
-        /* pop, skipping nodes now beyond the closest hit */
-        for (;;) {
-            if (sp == 0) {
-                *t_hit = t;
-                return steps;
-            }
-            cur = stack[--sp];
-            if (box_hit(&nodes[cur], r->origin, inv, r->tmin, t, &tn))
-                break;
-        }
+    for (x = x0; x <= x1; x++) {
+        unsigned char c[3];
+        heat_color((double)(x - x0) / (double)(x1 - x0), c);
+        for (y = bar_y; y < bar_y + bar_h; y++)
+            put_px(rgb, w, h, x, y, c);
+    }
+    for (k = 0; k <= 4; k++) {
+        unsigned v = (unsigned)(((unsigned long long)top * (unsigned)k) / 4u);
+        long tx = x0 + (x1 - x0) * k / 4, tw = draw_number(rgb, w, h, 0, 0,
+                                                           v, s, 0);
+        tx -= k == 0 ? 0 : (k == 4 ? tw : tw / 2);
+        draw_number(rgb, w, h, tx, text_y, v, s, 1);
     }
 }
 
@@ -167,12 +124,13 @@ static int cmp_unsigned(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-#define RENDER_OPTS 7
+#define RENDER_OPTS (7 + RAYS_CAMERA_OPTS)
 
 typedef struct render_args {
     unsigned width, height, view, heat_top;
     int heatmap;
     const char *output;
+    camera_view cam;
 } render_args;
 
 static void render_opts(render_args *r, cli_opt *table)
@@ -182,7 +140,7 @@ static void render_opts(render_args *r, cli_opt *table)
          .arg = "FILE", .dest = &r->output,
          .help = "the PNG to write (required)"},
         {.name = "--heatmap", .kind = CLI_OPT_FLAG, .dest = &r->heatmap,
-         .flag_value = 1, .help = "traversal steps per pixel instead of "
+         .flag_value = 1, .help = "node boxes tested per pixel instead of "
                                   "shading"},
         {.name = "--width", .kind = CLI_OPT_UINT, .arg = "W", .min = 1,
          .max = MAX_SIDE, .dest = &r->width,
@@ -195,10 +153,13 @@ static void render_opts(render_args *r, cli_opt *table)
          .help = "camera viewpoint (default 0; see CAMERAS in atrbvh(1))"},
         {.name = "--heat-top", .kind = CLI_OPT_UINT, .arg = "N", .min = 1,
          .max = 1000000, .dest = &r->heat_top,
-         .help = "the heat map's white: N nodes (default: the 99th\n"
-                 "percentile), to compare trees on one scale"},
+         .help = "the heat map's white: N node boxes (default: the\n"
+                 "99th percentile), to compare trees on one scale"},
         {.name = NULL}};
-    CLI_OPTS_COPY(table, opts, RENDER_OPTS);
+    size_t n = sizeof opts / sizeof opts[0];
+    CLI_OPTS_COPY(table, opts, RENDER_OPTS - RAYS_CAMERA_OPTS);
+    rays_camera_opts(&r->cam, table + n - 1);
+    table[n - 1 + RAYS_CAMERA_OPTS] = opts[n - 1];
 }
 /* -o names the picture here, and there is no JSON output. */
 #define RENDER_BUILD_OPTS (CLI_BUILD_CORE | CLI_BUILD_BACKEND | CLI_BUILD_DEVICE)
@@ -212,11 +173,15 @@ static void render_help(FILE *f)
                    "Usage: atrbvh render SCENE --output FILE.png [OPTIONS]\n"
                    "Build a BVH over SCENE and write a picture of it from a "
                    "camera\n"
-                   "viewpoint: shaded (the default), or with --heatmap the "
+                   "viewpoint (inside the scene for rooms: see CAMERAS in "
+                   "atrbvh(1)) or\n"
+                   "from --eye: shaded (the default), or with --heatmap the "
                    "number of\n"
-                   "BVH nodes each primary ray visits (black few, white "
-                   "many; the\n"
-                   "scale's top is the 99th percentile, printed).\n",
+                   "node boxes the traversal tests for each primary ray "
+                   "(black few,\n"
+                   "white many; the scale along the bottom, its top the "
+                   "99th\n"
+                   "percentile, printed).\n",
                    "Render", table, RENDER_BUILD_OPTS,
                    "0 success, 1 bad input or failure, 2 usage error");
 }
@@ -248,6 +213,8 @@ int cli_render(int argc, char **argv)
     output = ra.output;
     if (!output)
         return cli_usage("render", "no --output FILE.png given");
+    if (rays_camera_check("render", &ra.cam) != 0)
+        return CLI_USAGE;
     if ((size_t)width * height > MAX_PIXELS)
         return cli_usage("render", "%ux%u is more than %zu pixels", width,
                          height, MAX_PIXELS);
@@ -265,25 +232,32 @@ int cli_render(int argc, char **argv)
         unsigned char *rgb = malloc(pixels * 3);
         unsigned *steps = malloc(pixels * sizeof *steps);
         unsigned *sorted = malloc(pixels * sizeof *sorted);
-        const atrbvh_node *nodes;
-        const uint32_t *ids;
-        size_t nn, ni;
+        /* the rays go to the library in chunks of rows */
+        size_t rows = RAY_CHUNK / width ? RAY_CHUNK / width : 1,
+               chunk = rows * width, row0;
+        atrbvh_ray *rays = malloc(chunk * sizeof *rays);
+        atrbvh_hit *hits = malloc(chunk * sizeof *hits);
+        atrbvh_ray_cost *cost = malloc(chunk * sizeof *cost);
+        uint64_t prim_tests = 0;
+        atrbvh_trace_stats ts;
+        atrbvh_error e;
+        atrbvh_status st;
+        int on_device = a.options.backend == ATRBVH_BACKEND_OPENCL;
         camera cam;
-        float lo[3], hi[3];
         double light[3], ll, sum = 0.0;
         unsigned top, maxs = 0;
-        long y;
         int k;
-        if (!rgb || !steps || !sorted) {
+        if (!rgb || !steps || !sorted || !rays || !hits || !cost) {
             cli_error("out of memory for a %ux%u picture", width, height);
             rc = CLI_FAIL;
             goto out;
         }
-        nodes = atrbvh_bvh_nodes(b.bvh, &nn);
-        ids = atrbvh_bvh_primitive_indices(b.bvh, &ni);
-        scene_bounds(&b.sc, lo, hi);
-        camera_frame(lo, hi, (unsigned)view, (float)width / (float)height,
-                     &cam);
+        if (rays_camera(&b.sc, view, &ra.cam, (float)width / (float)height,
+                        &cam) != 0) {
+            cli_error("the camera's eye is its look-at point");
+            rc = CLI_FAIL;
+            goto out;
+        }
         /* a light over the viewer's left shoulder */
         {
             double ul = 0.0, rl = 0.0;
@@ -301,37 +275,50 @@ int cli_render(int argc, char **argv)
                   light[2] * light[2]);
         for (k = 0; k < 3; k++)
             light[k] /= ll;
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 4)
-#endif
-        for (y = 0; y < (long)height; y++) {
-            unsigned x;
-            for (x = 0; x < width; x++) {
-                atrbvh_ray r;
-                uint32_t prim;
-                float t = 0.0f;
-                size_t q = (size_t)y * width + x;
-                camera_ray(&cam, (unsigned)width, (unsigned)height, x,
-                           (unsigned)y, 0.5f, 0.5f, &r);
-                steps[q] = count_trace(nodes, ids, &b.sc, &r, &prim, &t);
-                if (!heatmap) {
-                    unsigned char *c = rgb + 3 * q;
-                    if (prim == ATRBVH_NO_HIT) {
-                        double g = 0.25 + 0.2 * (double)y / (double)height;
-                        c[0] = c[1] = (unsigned char)(255 * g);
-                        c[2] = (unsigned char)(255 * (g + 0.08));
-                    } else {
-                        double n[3], d, amb = 0.18;
-                        rays_normal(&b.sc, prim, r.dir, n);
-                        d = n[0] * light[0] + n[1] * light[1] +
-                            n[2] * light[2];
-                        if (d < 0.0)
-                            d = 0.0;
-                        d = amb + (1.0 - amb) * d;
-                        c[0] = (unsigned char)(255 * d * 0.92);
-                        c[1] = (unsigned char)(255 * d * 0.86);
-                        c[2] = (unsigned char)(255 * d * 0.74);
-                    }
+        for (row0 = 0; row0 < height; row0 += rows) {
+            size_t nrow = height - row0 < rows ? height - row0 : rows,
+                   n = nrow * width, i;
+            for (i = 0; i < n; i++)
+                camera_ray(&cam, (unsigned)width, (unsigned)height,
+                           (unsigned)(i % width),
+                           (unsigned)(row0 + i / width), 0.5f, 0.5f,
+                           &rays[i]);
+            atrbvh_trace_stats_init(&ts);
+            ts.per_ray = cost;
+            memset(&e, 0, sizeof e);
+            st = atrbvh_intersect_batch_stats(
+                on_device ? b.device : NULL, b.bvh, &b.geometry, rays, n,
+                hits, on_device ? 0 : a.options.threads, &ts, &e);
+            if (st != ATRBVH_OK) {
+                cli_error("tracing primary rays: %s",
+                          e.text[0] ? e.text : atrbvh_strerror(st));
+                rc = CLI_FAIL;
+                goto out;
+            }
+            prim_tests += ts.prim_tests;
+            for (i = 0; i < n; i++) {
+                size_t q = row0 * width + i;
+                unsigned char *c = rgb + 3 * q;
+                steps[q] = cost[i].box_tests;
+                if (heatmap)
+                    continue;
+                if (hits[i].primitive == ATRBVH_NO_HIT ||
+                    hits[i].primitive >= b.sc.triangle_count) {
+                    double g =
+                        0.25 + 0.2 * (double)(q / width) / (double)height;
+                    c[0] = c[1] = (unsigned char)(255 * g);
+                    c[2] = (unsigned char)(255 * (g + 0.08));
+                } else {
+                    double nm[3], d, amb = 0.18;
+                    rays_normal(&b.sc, hits[i].primitive, rays[i].dir, nm);
+                    d = nm[0] * light[0] + nm[1] * light[1] +
+                        nm[2] * light[2];
+                    if (d < 0.0)
+                        d = 0.0;
+                    d = amb + (1.0 - amb) * d;
+                    c[0] = (unsigned char)(255 * d * 0.92);
+                    c[1] = (unsigned char)(255 * d * 0.86);
+                    c[2] = (unsigned char)(255 * d * 0.74);
                 }
             }
         }
@@ -344,28 +331,35 @@ int cli_render(int argc, char **argv)
             unsigned pct = top;
             if (heat_top)
                 top = (unsigned)heat_top;
-        for (p = 0; p < pixels; p++) {
-            sum += steps[p];
-            if (steps[p] > maxs)
-                maxs = steps[p];
+            for (p = 0; p < pixels; p++) {
+                sum += steps[p];
+                if (steps[p] > maxs)
+                    maxs = steps[p];
+                if (heatmap)
+                    heat_color((double)steps[p] / top, rgb + 3 * p);
+            }
             if (heatmap)
-                heat_color((double)steps[p] / top, rgb + 3 * p);
-        }
+                draw_scale(rgb, width, height, top);
             top = pct;
         }
         if (cli_png_write(output, (unsigned)width, (unsigned)height, rgb) !=
             0) {
             rc = CLI_FAIL;
         } else {
-            printf("%s: %ux%u %s, SAH %.6g, nodes visited per pixel: mean "
-                   "%.1f, 99th percentile %u, max %u\n",
+            printf("%s: %ux%u %s, SAH %.6g, node boxes tested per pixel: "
+                   "mean %.1f, 99th percentile %u, max %u; triangles "
+                   "tested per pixel: mean %.2f\n",
                    output, width, height, heatmap ? "heat map" : "shaded",
-                   b.stats.sah, sum / (double)pixels, top, maxs);
+                   b.stats.sah, sum / (double)pixels, top, maxs,
+                   (double)prim_tests / (double)pixels);
         }
     out:
         free(rgb);
         free(steps);
         free(sorted);
+        free(rays);
+        free(hits);
+        free(cost);
     }
     cli_built_free(&b);
     return rc;

@@ -3,9 +3,11 @@
  * nothing is ever lost or left half written.
  *
  * A regular file (or a path that does not exist yet) is written to a
- * temporary file beside its target (mkstemp in the target's directory),
- * flushed, fsync'ed and renamed over the target only when complete; on any
- * failure the temporary file is removed and the target is untouched.  A
+ * temporary file beside its target (created with O_EXCL in the target's
+ * directory), flushed, fsync'ed and renamed over the target only when
+ * complete; on any failure the temporary file is removed and the target is
+ * untouched (the mechanics are lib/atomicfile.c's, shared with the
+ * library; this file adds the FILE *, the messages and the signals).  A
  * symbolic link is followed: the file it names is replaced, the link
  * stays.  A target that is not a regular file - a device, a FIFO, a
  * socket, /dev/stdout or /dev/fd/N (anything reached through /proc's magic
@@ -40,11 +42,13 @@
 
 #include <stdio.h>
 
+#include "atomicfile.h"
+
 typedef struct cli_out {
     FILE *f;
-    char *name;   /* the path as given, for messages */
-    char *target; /* the file replaced on commit (symbolic links followed) */
-    char *tmp;    /* the temporary file; NULL when writing in place */
+    char *name;    /* the path as given, for messages */
+    atomicfile af; /* the target and the temporary file (lib/atomicfile.h);
+                      af.tmp NULL when writing in place */
 } cli_out;
 
 /* Whether `path` can be written, without writing it: 0 when it can, else

@@ -7,6 +7,7 @@
 #include "rays.h"
 
 #include "cli.h"
+#include "options.h"
 #include "rng.h"
 
 #include <math.h>
@@ -102,10 +103,77 @@ void ray_set_free(ray_set *rs)
     memset(rs, 0, sizeof *rs);
 }
 
+/* "X,Y,Z": three finite numbers. */
+static int on_point(const char *cmd, const cli_opt *opt, const char *value,
+                    void *user)
+{
+    float *p = opt->dest;
+    char buf[256], *parts[3], *save = NULL, *tok;
+    int k = 0;
+    double d;
+    (void)user;
+    if (strlen(value) >= sizeof buf)
+        return cli_usage(cmd, "%s: '%.40s...' is too long", opt->name, value);
+    strcpy(buf, value);
+    for (tok = strtok_r(buf, ",", &save); tok && k < 4;
+         tok = strtok_r(NULL, ",", &save))
+        parts[k < 3 ? k : 2] = tok, k++;
+    if (k != 3 || strchr(value, ' '))
+        return cli_usage(cmd, "%s: '%s' is not X,Y,Z (three numbers, "
+                         "commas, no spaces)", opt->name, value);
+    for (k = 0; k < 3; k++) {
+        if (!cli_parse_double(parts[k], &d) || !isfinite(d) ||
+            fabs(d) > 3.4e38)
+            return cli_usage(cmd, "%s: '%s' is not a finite number in '%s'",
+                             opt->name, parts[k], value);
+        p[k] = (float)d;
+    }
+    return 0;
+}
+
+void rays_camera_opts(camera_view *v, cli_opt *out)
+{
+    const cli_opt opts[] = {
+        {.name = "--eye", .kind = CLI_OPT_CALL, .arg = "X,Y,Z",
+         .dest = v->eye, .call = on_point, .seen = &v->have_eye,
+         .help = "a camera at X,Y,Z instead of the default viewpoints"},
+        {.name = "--look-at", .kind = CLI_OPT_CALL, .arg = "X,Y,Z",
+         .dest = v->at, .call = on_point, .seen = &v->have_at,
+         .help = "where the --eye camera looks (default: the centre\n"
+                 "of the scene's box)"},
+        {.name = "--fov", .kind = CLI_OPT_DOUBLE, .arg = "DEG", .min = 0.0,
+         .min_open = 1, .max = 170.0, .dest = &v->fov,
+         .help = "vertical field of view in degrees (default 50, 70\n"
+                 "for the inside cameras of rooms)"}};
+    memcpy(out, opts, sizeof opts);
+}
+
+int rays_camera_check(const char *cmd, const camera_view *v)
+{
+    if (v->have_at && !v->have_eye)
+        return cli_usage(cmd, "--look-at needs --eye");
+    if (v->have_eye && v->have_at && v->eye[0] == v->at[0] &&
+        v->eye[1] == v->at[1] && v->eye[2] == v->at[2])
+        return cli_usage(cmd, "--eye and --look-at are the same point");
+    return 0;
+}
+
+int rays_camera(const scene *sc, unsigned which, const camera_view *v,
+                float aspect, camera *cam)
+{
+    float lo[3], hi[3];
+    int room = 0;
+    scene_bounds(sc, lo, hi);
+    if (!v || !v->have_eye)
+        room = scene_is_room(sc, lo, hi, NULL);
+    return camera_viewpoint(lo, hi, room, which, v, aspect, cam);
+}
+
 int ray_set_make(const scene *sc, const atrbvh_bvh *ref, unsigned width,
                  unsigned height, unsigned viewpoints, unsigned spp,
-                 int threads, ray_set *rs)
+                 int threads, const camera_view *view, ray_set *rs)
 {
+    int room = 0;
     atrbvh_geometry g = scene_geometry(sc);
     atrbvh_hit *hits = NULL;
     atrbvh_error e;
@@ -126,9 +194,15 @@ int ray_set_make(const scene *sc, const atrbvh_bvh *ref, unsigned width,
     for (k = 0; k < 3; k++)
         diag += ((double)hi[k] - lo[k]) * ((double)hi[k] - lo[k]);
     diag = sqrt(diag);
+    if (!view || !view->have_eye)
+        room = scene_is_room(sc, lo, hi, NULL);
     for (v = 0, i = 0; v < viewpoints; v++) {
         camera cam;
-        camera_frame(lo, hi, v, (float)width / (float)height, &cam);
+        if (camera_viewpoint(lo, hi, room, v, view,
+                             (float)width / (float)height, &cam) != 0) {
+            cli_error("the camera's eye is its look-at point");
+            goto fail;
+        }
         for (y = 0; y < height; y++)
             for (x = 0; x < width; x++, i++)
                 camera_ray(&cam, width, height, x, y, 0.5f, 0.5f,

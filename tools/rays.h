@@ -22,10 +22,24 @@ typedef struct ray_set {
     size_t n_primary, n_ao, n_diffuse;
 } ray_set;
 
-/* 0 on success; -1 after a cli_error line.  `ref` is any BVH of `sc`. */
+/* 0 on success; -1 after a cli_error line.  `ref` is any BVH of `sc`.
+ * Viewpoint v is camera_viewpoint(v) (inside cameras for rooms,
+ * scene_is_room); `view` (may be NULL) the user's --eye/--look-at/--fov. */
 int ray_set_make(const scene *sc, const atrbvh_bvh *ref, unsigned width,
                  unsigned height, unsigned viewpoints, unsigned spp,
-                 int threads, ray_set *rs);
+                 int threads, const camera_view *view, ray_set *rs);
+
+/* The camera options every ray command takes (--eye, --look-at, --fov),
+ * written into out[0..RAYS_CAMERA_OPTS-1], their values into *v. */
+#define RAYS_CAMERA_OPTS 3
+struct cli_opt;
+void rays_camera_opts(camera_view *v, struct cli_opt *out);
+/* After parsing: a usage error (CLI_USAGE after its line) for --look-at
+ * without --eye, or an eye equal to the look-at point; else 0. */
+int rays_camera_check(const char *cmd, const camera_view *v);
+/* Viewpoint `which` of scene sc (box and room rule computed here). */
+int rays_camera(const scene *sc, unsigned which, const camera_view *v,
+                float aspect, camera *cam);
 void ray_set_free(ray_set *rs);
 
 /* The seeds of the secondary rays (rng.h), shared with `atrbvh trace`. */

@@ -26,6 +26,12 @@ typedef struct scene {
  * the file and the line or byte offset of the problem. */
 int scene_load(const char *spec, scene *out, char *err, size_t err_len);
 void scene_free(scene *s);
+/* Progress of scene_load for the tool's display: `fraction` of the file
+ * read (0 .. 0.5) and parsed (0.5 .. 1), called now and then from the
+ * loading thread; NULL turns it off.  Not thread-safe (one loader at a
+ * time in a process that sets it). */
+typedef void (*scene_progress_fn)(double fraction, void *user);
+void scene_set_progress(scene_progress_fn fn, void *user);
 /* The library's view of the scene (no copy). */
 atrbvh_geometry scene_geometry(const scene *s);
 
@@ -48,6 +54,46 @@ typedef struct camera {
  * see atrbvh(1), "CAMERAS". aspect = width / height. */
 void camera_frame(const float lo[3], const float hi[3], unsigned which,
                   float aspect, camera *cam);
+/* The same with vertical field of view `fov` degrees (0 < fov < 180). */
+void camera_frame_fov(const float lo[3], const float hi[3], unsigned which,
+                      float aspect, double fov, camera *cam);
+
+/* What the user asks for on the command line (--eye, --look-at, --fov):
+ * have_eye 0 means the default viewpoints; fov 0 the default (50 degrees
+ * outside, 70 inside a room). */
+typedef struct camera_view {
+    int have_eye, have_at;
+    float eye[3], at[3];
+    double fov;
+} camera_view;
+
+/* Whether a scene is a room (its interior is what users look at): the
+ * fraction of each face of the box lo..hi covered by triangles lying on
+ * that face (every vertex within 2% of the box's extent of the face
+ * plane; projected areas summed, capped at 1), and the scene is a room
+ * when at least 3 of the 6 faces are covered to 25% or more.  See
+ * atrbvh(1), "CAMERAS".  *faces (may be NULL) gets how many are. */
+int scene_is_room(const scene *s, const float lo[3], const float hi[3],
+                  int *faces);
+
+/* Viewpoint `which` of a scene with box lo..hi: the user's camera when
+ * v->have_eye; otherwise, for a room, the even viewpoints are inside
+ * cameras (camera_inside(which / 2)) and the odd ones camera_frame's
+ * (which / 2); for any other scene camera_frame's.  0, or -1 when the
+ * user's camera is unusable (eye == look-at). */
+int camera_viewpoint(const float lo[3], const float hi[3], int room,
+                     unsigned which, const camera_view *v, float aspect,
+                     camera *cam);
+/* Inside camera j: at the centre of the box, looking 10 degrees down,
+ * along the box's longer horizontal axis, turned 90 degrees per j. */
+void camera_inside(const float lo[3], const float hi[3], unsigned j,
+                   float aspect, double fov, camera *cam);
+/* A camera at eye looking at `at`, vertical field of view fov degrees;
+ * rays long enough to cross the box lo..hi.  0, or -1 when eye == at. */
+int camera_look(const float eye[3], const float at[3], double fov,
+                float aspect, const float lo[3], const float hi[3],
+                camera *cam);
+
 /* The primary ray through pixel (x, y) with subpixel offset (sx, sy) in
  * [0, 1). */
 void camera_ray(const camera *cam, unsigned width, unsigned height,

@@ -1,41 +1,152 @@
 /*
  * hierarchy.c - stage "hierarchy": the binary radix tree of Karras,
  * "Maximizing Parallelism in the Construction of BVHs, Octrees, and k-d
- * Trees" (HPG 2012).  One independent item per internal node; the
- * arithmetic (delta with -1 out of range and the index tie-break for equal
- * keys, the range search, the split search) is atrbvh_karras_node in
- * shared/arith.h, shared with the OpenCL backend.
+ * Trees" (HPG 2012), numbered as Karras numbers it.  The tie rule for
+ * equal keys (positions told apart, atrbvh_karras_delta in shared/arith.h)
+ * decides the tree and is the OpenCL backend's (kernel for kernel, it runs
+ * atrbvh_karras_node per internal node).
+ *
+ * The CPU builds the same tree without the per-node searches.  With
+ * delta_s = atrbvh_karras_delta(s, s+1) for the n-1 split positions s,
+ * the node whose split is s covers the leaves ps+1 .. ns, where ps (ns) is
+ * the nearest split to the left (right) with a smaller delta (-1 and n-1
+ * when there is none): the radix tree of distinct (key, position) strings
+ * is the Cartesian tree of the adjacent common-prefix lengths, and between
+ * two equal deltas there is always a smaller one, so every range has one
+ * smallest split.  Its parent is the one of ps, ns with the larger delta;
+ * Karras's numbering gives a left child (parent ns) the id of its last
+ * leaf, a right child (parent ps) that of its first, the root id 0, and
+ * every node the children gamma = s and s+1 (leaves when alone).
+ *
+ * The nearest smaller values come from one left-to-right pass with a stack
+ * per contiguous block of splits (one block per thread).  A node is
+ * written as soon as both neighbours are known; the rest of each block -
+ * its prefix minima (no left neighbour in the block) and what is left on
+ * its stack (no right neighbour) - are strictly monotone in delta, so at
+ * most ATRBVH_HIER_SIDE each, and a second, serial pass over these
+ * leftovers of every block, in position order, finds their neighbours:
+ * the nearest smaller split of a leftover is itself a leftover.  Deltas
+ * lie in -1 .. 96, so no stack is deeper than 97.
  */
 #include "config.h"
 
 #include "cpu.h"
 
+/* Strictly monotone runs of deltas in 0 .. 95 (clz of distinct keys
+ * 0 .. 63, equal keys 64 .. 95): at most 96 entries. */
+#define ATRBVH_HIER_SIDE 128
+/* Blocks (threads) of the first pass: its leftovers live on the stack. */
+#define ATRBVH_HIER_BLOCKS 16
+
+typedef struct hier_entry {
+    int64_t s; /* split position */
+    int d;     /* its delta       */
+} hier_entry;
+
+/* Writes internal node s (its split) from its neighbours ps (-1: none)
+ * and ns (n-1: none) and their deltas. */
+static inline void emit(atrbvh_i_tree *t, int64_t n, int64_t s, int64_t ps,
+                        int dps, int64_t ns, int dns)
+{
+    const int64_t l = ps + 1, r = ns;
+    uint32_t id, lc, rc;
+    if (ps < 0)
+        id = ns == n - 1 ? 0u : (uint32_t)r;
+    else if (ns == n - 1)
+        id = (uint32_t)l;
+    else
+        id = dns > dps ? (uint32_t)r : (uint32_t)l;
+    lc = (uint32_t)(l == s ? s + n - 1 : s);
+    rc = (uint32_t)(s + 1 == r ? s + n : s + 1);
+    t->left[id] = lc;
+    t->right[id] = rc;
+    t->count[id] = (uint32_t)(r - l + 1);
+    t->parent[lc] = id;
+    t->parent[rc] = id;
+}
+
+/* The first pass over the splits lo .. hi-1.  Leftovers (their positions,
+ * ascending) go to `out`; returns how many. */
+static uint32_t block_pass(const uint64_t *keys, atrbvh_i_tree *t, int64_t n,
+                           int64_t lo, int64_t hi, int64_t *out)
+{
+    hier_entry st[ATRBVH_HIER_SIDE];
+    uint32_t sp = 0, nout = 0, k;
+    int64_t s;
+    for (s = lo; s < hi; s++) {
+        const int d = atrbvh_karras_delta(keys, n, s, s + 1);
+        t->count[n - 1 + s] = 1;
+        while (sp > 0 && st[sp - 1].d > d) {
+            const hier_entry x = st[--sp];
+            if (sp > 0)
+                emit(t, n, x.s, st[sp - 1].s, st[sp - 1].d, s, d);
+        }
+        if (sp == 0 && nout < ATRBVH_HIER_SIDE)
+            out[nout++] = s; /* a prefix minimum */
+        if (sp == ATRBVH_HIER_SIDE)
+            continue; /* keys out of order: cannot happen when sorted */
+        st[sp++].s = s;
+        st[sp - 1].d = d;
+    }
+    /* st[0] is the last prefix minimum, already out. */
+    for (k = 1; k < sp; k++)
+        out[nout++] = st[k].s;
+    return nout;
+}
+
 void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                         int threads)
 {
     const int64_t n = t->n;
-    int64_t i;
+    int64_t left_over[ATRBVH_HIER_BLOCKS][2 * ATRBVH_HIER_SIDE];
+    uint32_t counts[ATRBVH_HIER_BLOCKS];
+    hier_entry st[ATRBVH_HIER_SIDE];
+    int blocks, b;
+    uint32_t sp = 0, k;
     t->parent[0] = ATRBVH_U32_MAX;
-    if (n == 1) {
-        t->count[0] = 1;
-        return;
-    }
-#ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) schedule(static)
-#else
-    (void)threads;
-#endif
-    for (i = 0; i < n - 1; i++) {
-        uint32_t l, r, c;
-        atrbvh_karras_node(sorted_keys, n, i, &l, &r, &c);
-        t->left[i] = l;
-        t->right[i] = r;
-        t->count[i] = c;
-        t->parent[l] = (uint32_t)i;
-        t->parent[r] = (uint32_t)i;
-        t->count[n - 1 + i] = 1;
-    }
     t->count[2 * n - 2] = 1;
+    if (n == 1)
+        return;
+    blocks = threads < 1 ? 1 : threads;
+    if (blocks > ATRBVH_HIER_BLOCKS)
+        blocks = ATRBVH_HIER_BLOCKS;
+    if ((int64_t)blocks > n - 1)
+        blocks = (int)(n - 1);
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(blocks) schedule(static, 1)
+#endif
+    for (b = 0; b < blocks; b++)
+        counts[b] = block_pass(
+            sorted_keys, t, n,
+            (int64_t)((uint64_t)(n - 1) * (uint64_t)b / (uint64_t)blocks),
+            (int64_t)((uint64_t)(n - 1) * (uint64_t)(b + 1) /
+                      (uint64_t)blocks),
+            left_over[b]);
+    /* The second pass: the same stack over every block's leftovers. */
+    for (b = 0; b < blocks; b++) {
+        for (k = 0; k < counts[b]; k++) {
+            const int64_t s = left_over[b][k];
+            const int d = atrbvh_karras_delta(sorted_keys, n, s, s + 1);
+            while (sp > 0 && st[sp - 1].d > d) {
+                const hier_entry x = st[--sp];
+                if (sp > 0)
+                    emit(t, n, x.s, st[sp - 1].s, st[sp - 1].d, s, d);
+                else
+                    emit(t, n, x.s, -1, 0, s, d);
+            }
+            if (sp == ATRBVH_HIER_SIDE)
+                continue; /* keys out of order (see block_pass) */
+            st[sp].s = s;
+            st[sp++].d = d;
+        }
+    }
+    while (sp > 0) {
+        const hier_entry x = st[--sp];
+        if (sp > 0)
+            emit(t, n, x.s, st[sp - 1].s, st[sp - 1].d, n - 1, 0);
+        else
+            emit(t, n, x.s, -1, 0, n - 1, 0);
+    }
 }
 
 /* The stage: the tree's arrays (kept for the later stages), the topology,

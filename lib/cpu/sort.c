@@ -23,6 +23,7 @@
 #include "config.h"
 
 #include "cpu.h"
+#include "shared/sort.h"
 
 #include <string.h>
 
@@ -30,17 +31,12 @@
 #define MSD_MAX_BITS 11
 #define BUCKET_TARGET 1024u
 #define INSERTION_MAX 48u
-#define LSD_BITS 8
-#define LSD_RADIX (1u << LSD_BITS)
+/* The passes' digits, block ranges, scan and placement are the rules of
+ * shared/sort.h, the same the OpenCL kernels apply. */
+#define LSD_BITS ATRBVH_SORT_BITS
+#define LSD_RADIX ATRBVH_SORT_RADIX
 
 /* The [lo, hi) range of block b of `blocks` over n items. */
-static void block_range(uint32_t n, int b, int blocks, uint32_t *lo,
-                        uint32_t *hi)
-{
-    *lo = (uint32_t)((uint64_t)n * (uint64_t)b / (uint64_t)blocks);
-    *hi = (uint32_t)((uint64_t)n * (uint64_t)(b + 1) / (uint64_t)blocks);
-}
-
 static int highest_bit(uint64_t x)
 {
     int h = 63;
@@ -83,20 +79,16 @@ static void sort_bucket(uint64_t *k, uint32_t *v, uint64_t *tk, uint32_t *tv,
         insertion_sort(k, v, n, mask);
     } else if (varying) {
         for (shift = 0; shift < 64; shift += LSD_BITS) {
-            uint32_t c[LSD_RADIX], total = 0;
-            unsigned d;
+            uint32_t c[LSD_RADIX];
             if (!((varying >> shift) & (LSD_RADIX - 1)))
                 continue;
             memset(c, 0, sizeof c);
             for (i = 0; i < n; i++)
-                c[(k[i] >> shift) & (LSD_RADIX - 1)]++;
-            for (d = 0; d < LSD_RADIX; d++) {
-                uint32_t t = c[d];
-                c[d] = total;
-                total += t;
-            }
+                c[atrbvh_sort_digit(k[i], (atrbvh_u32)shift)]++;
+            (void)atrbvh_sort_scan(c, LSD_RADIX);
             for (i = 0; i < n; i++) {
-                uint32_t o = c[(k[i] >> shift) & (LSD_RADIX - 1)]++;
+                uint32_t o =
+                    atrbvh_sort_place(c, atrbvh_sort_digit(k[i], (atrbvh_u32)shift));
                 tk[o] = k[i];
                 tv[o] = v[i];
             }
@@ -173,10 +165,11 @@ atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
 #endif
         for (b = 0; b < blocks; b++) {
             uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
-            block_range(n, b, blocks, &lo, &hi);
+            atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo, &hi);
             memset(c, 0, buckets * sizeof *c);
             for (j = lo; j < hi; j++)
-                c[(keys[j] >> shift) & (buckets - 1)]++;
+                c[atrbvh_sort_digit_bits(keys[j], (atrbvh_u32)shift,
+                                         (atrbvh_u32)bits)]++;
         }
 #ifdef _OPENMP
 #pragma omp single
@@ -199,9 +192,11 @@ atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
 #endif
         for (b = 0; b < blocks; b++) {
             uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
-            block_range(n, b, blocks, &lo, &hi);
+            atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo, &hi);
             for (j = lo; j < hi; j++) {
-                uint32_t o = c[(keys[j] >> shift) & (buckets - 1)]++;
+                uint32_t o = atrbvh_sort_place(
+                    c, atrbvh_sort_digit_bits(keys[j], (atrbvh_u32)shift,
+                                              (atrbvh_u32)bits));
                 tmp_keys[o] = keys[j];
                 tmp_values[o] = values[j];
             }

@@ -82,7 +82,8 @@ typedef struct atrbvh_kargs_trace {
     atrbvh_u64 ray_count;
     atrbvh_u32 boxes;   /* 0 triangles, 1 boxes */
     atrbvh_u32 indexed;
-    atrbvh_u32 pad0, pad1;
+    atrbvh_u32 count_cost; /* 1: write each ray's box and primitive tests */
+    atrbvh_u32 pad1;
 } atrbvh_kargs_trace;
 
 /* The cost model from a struct's fields. */

@@ -71,6 +71,9 @@ typedef struct atrbvh_trav_ray {
     double orgd[3];  /* the slab tests run in double: see node_hit */
     double idird[3];
     int sign[3]; /* 1 when idird[k] < 0 (direction -0 included) */
+    /* Where a node's near and far planes are among its first six floats
+     * (min x, y, z, max x, y, z): k or 3 + k by the sign. */
+    int near_at[3], far_at[3];
     float tmin, tmax;
     /* watertight triangle test, in double */
     double o[3];
@@ -82,6 +85,10 @@ typedef struct atrbvh_trav_best {
     float t, u, v;
     atrbvh_u32 prim;
     float tlim; /* node pruning bound: t widened by the slack */
+    /* The ray's cost, exact and independent of thread count and backend:
+     * node boxes tested (atrbvh_trav_node_hit calls) and primitives
+     * tested (triangle or box tests, after the index checks). */
+    atrbvh_u32 box_tests, prim_tests;
 } atrbvh_trav_best;
 
 /* |x| for float and double without libc: -0 gives +0, NaN stays NaN. */
@@ -125,6 +132,8 @@ ATRBVH_FN int atrbvh_trav_setup(const float *origin, const float *dir,
          * reciprocal overflows to inf below 2^-128); +-inf for +-0 */
         r->idird[k] = 1.0 / (double)dir[k];
         r->sign[k] = r->idird[k] < 0.0;
+        r->near_at[k] = r->sign[k] ? 3 + k : k;
+        r->far_at[k] = r->sign[k] ? k : 3 + k;
         r->o[k] = (double)origin[k];
         ad[k] = atrbvh_trav_abs((double)dir[k]);
     }
@@ -178,12 +187,12 @@ ATRBVH_FN int atrbvh_trav_node_hit(ATRBVH_CONST_GLOBAL atrbvh_node *n,
                                    float thi, float *tnear)
 {
     double lo = -ATRBVH_TRAV_INF, hi = ATRBVH_TRAV_INF;
+    /* the node's box as six floats: min x, y, z, max x, y, z */
+    ATRBVH_CONST_GLOBAL float *b = (ATRBVH_CONST_GLOBAL float *)n;
     int k;
     for (k = 0; k < 3; k++) {
-        float bn = r->sign[k] ? n->max[k] : n->min[k];
-        float bf = r->sign[k] ? n->min[k] : n->max[k];
-        double tn = atrbvh_trav_slab_t(bn, r, k);
-        double tf = atrbvh_trav_slab_t(bf, r, k);
+        double tn = atrbvh_trav_slab_t(b[r->near_at[k]], r, k);
+        double tf = atrbvh_trav_slab_t(b[r->far_at[k]], r, k);
         /* NaN (0 * inf) fails the comparison and is dropped. */
         lo = tn > lo ? tn : lo;
         hi = tf < hi ? tf : hi;
@@ -335,6 +344,7 @@ ATRBVH_FN int atrbvh_trav_leaf(const atrbvh_trav_scene *s,
         float t, u = 0.0f, v = 0.0f;
         if ((atrbvh_u64)prim >= s->primitive_count)
             continue;
+        best->prim_tests++;
         if (!s->boxes) {
             float vtx[3][3];
             if (!atrbvh_trav_triangle_vertices(s, prim, vtx) ||
@@ -384,8 +394,10 @@ ATRBVH_FN int atrbvh_trav_linear(const atrbvh_trav_scene *s,
     for (i = 0; i < s->node_count; i++) {
         ATRBVH_CONST_GLOBAL atrbvh_node *n = &s->nodes[i];
         float tn;
-        if (n->count == 0u ||
-            !atrbvh_trav_node_hit(n, r, tlo, best->tlim, &tn))
+        if (n->count == 0u)
+            continue;
+        best->box_tests++;
+        if (!atrbvh_trav_node_hit(n, r, tlo, best->tlim, &tn))
             continue;
         if (atrbvh_trav_leaf(s, n, r, any, best))
             return 1;
@@ -416,7 +428,11 @@ ATRBVH_FN int atrbvh_trav_run(const atrbvh_trav_scene *s,
     best->u = best->v = 0.0f;
     best->prim = ATRBVH_NO_HIT;
     best->tlim = atrbvh_trav_widen_limit(r->tmax);
-    if (count == 0u || !atrbvh_trav_node_hit(&nodes[0], r, tlo, best->tlim, &tn))
+    best->box_tests = best->prim_tests = 0u;
+    if (count == 0u)
+        return 0;
+    best->box_tests++;
+    if (!atrbvh_trav_node_hit(&nodes[0], r, tlo, best->tlim, &tn))
         return 0;
     for (;;) {
         ATRBVH_CONST_GLOBAL atrbvh_node *n = &nodes[cur];
@@ -429,9 +445,11 @@ ATRBVH_FN int atrbvh_trav_run(const atrbvh_trav_scene *s,
             /* rr <= l or out of range: never for a valid tree (pop) */
             if (rr > l && (atrbvh_u64)rr < count) {
                 float nl, nr;
-                int hl = atrbvh_trav_node_hit(&nodes[l], r, tlo, best->tlim,
+                int hl, hr;
+                best->box_tests += 2u;
+                hl = atrbvh_trav_node_hit(&nodes[l], r, tlo, best->tlim,
                                               &nl);
-                int hr = atrbvh_trav_node_hit(&nodes[rr], r, tlo, best->tlim,
+                hr = atrbvh_trav_node_hit(&nodes[rr], r, tlo, best->tlim,
                                               &nr);
                 if (hl && hr) {
                     atrbvh_u32 near_node = l, far_node = rr;
@@ -477,19 +495,29 @@ ATRBVH_FN int atrbvh_trav_run(const atrbvh_trav_scene *s,
 /* Closest hit of one ray with t in [tmin, tmax]: hit->primitive
  * ATRBVH_NO_HIT (t = tmax, u = v = 0) when nothing is hit.  Returns 1 on a
  * hit. */
-ATRBVH_FN int atrbvh_trav_closest(const atrbvh_trav_scene *s,
-                                  const float *origin, const float *dir,
-                                  float tmin, float tmax, float *t, float *u,
-                                  float *v, atrbvh_u32 *prim)
+ATRBVH_FN int atrbvh_trav_closest_cost(const atrbvh_trav_scene *s,
+                                       const float *origin, const float *dir,
+                                       float tmin, float tmax, float *t,
+                                       float *u, float *v, atrbvh_u32 *prim,
+                                       atrbvh_u32 *box_tests,
+                                       atrbvh_u32 *prim_tests)
 {
     atrbvh_trav_ray r;
     atrbvh_trav_best best;
+    int hit;
     *t = tmax;
     *u = 0.0f;
     *v = 0.0f;
     *prim = ATRBVH_NO_HIT;
-    if (!atrbvh_trav_setup(origin, dir, tmin, tmax, &r) ||
-        !atrbvh_trav_run(s, &r, 0, &best))
+    *box_tests = 0u;
+    *prim_tests = 0u;
+    /* a ray that can hit nothing is not traversed: cost 0 */
+    if (!atrbvh_trav_setup(origin, dir, tmin, tmax, &r))
+        return 0;
+    hit = atrbvh_trav_run(s, &r, 0, &best);
+    *box_tests = best.box_tests;
+    *prim_tests = best.prim_tests;
+    if (!hit)
         return 0;
     *t = best.t;
     *u = best.u;
@@ -498,15 +526,42 @@ ATRBVH_FN int atrbvh_trav_closest(const atrbvh_trav_scene *s,
     return 1;
 }
 
-/* Any hit of one ray in [tmin, tmax]. */
-ATRBVH_FN int atrbvh_trav_any(const atrbvh_trav_scene *s, const float *origin,
-                              const float *dir, float tmin, float tmax)
+ATRBVH_FN int atrbvh_trav_closest(const atrbvh_trav_scene *s,
+                                  const float *origin, const float *dir,
+                                  float tmin, float tmax, float *t, float *u,
+                                  float *v, atrbvh_u32 *prim)
+{
+    atrbvh_u32 nb, np;
+    return atrbvh_trav_closest_cost(s, origin, dir, tmin, tmax, t, u, v, prim,
+                                    &nb, &np);
+}
+
+/* Any hit of one ray in [tmin, tmax]; the _cost version also returns the
+ * boxes and primitives tested (up to the first hit found). */
+ATRBVH_FN int atrbvh_trav_any_cost(const atrbvh_trav_scene *s,
+                                   const float *origin, const float *dir,
+                                   float tmin, float tmax,
+                                   atrbvh_u32 *box_tests,
+                                   atrbvh_u32 *prim_tests)
 {
     atrbvh_trav_ray r;
     atrbvh_trav_best best;
+    int hit;
+    *box_tests = 0u;
+    *prim_tests = 0u;
     if (!atrbvh_trav_setup(origin, dir, tmin, tmax, &r))
         return 0;
-    return atrbvh_trav_run(s, &r, 1, &best);
+    hit = atrbvh_trav_run(s, &r, 1, &best);
+    *box_tests = best.box_tests;
+    *prim_tests = best.prim_tests;
+    return hit;
+}
+
+ATRBVH_FN int atrbvh_trav_any(const atrbvh_trav_scene *s, const float *origin,
+                              const float *dir, float tmin, float tmax)
+{
+    atrbvh_u32 nb, np;
+    return atrbvh_trav_any_cost(s, origin, dir, tmin, tmax, &nb, &np);
 }
 
 #endif

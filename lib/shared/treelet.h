@@ -119,13 +119,18 @@ ATRBVH_FN atrbvh_u32 atrbvh_treelet_form(const atrbvh_treelet_tree *t,
     tl->leaf[1] = t->right[root];
     area[0] = atrbvh_box_area(t->box[tl->leaf[0]]);
     area[1] = atrbvh_box_area(t->box[tl->leaf[1]]);
+    /* A slot that is not an internal BVH node gets area -1: areas are
+     * never negative, so "the first expandable slot, then strictly
+     * larger" is one strict > against a start of -0.5. */
+    if (tl->leaf[0] >= t->n_internal)
+        area[0] = -1.0;
+    if (tl->leaf[1] >= t->n_internal)
+        area[1] = -1.0;
     while (m < n) {
-        atrbvh_u32 best = ATRBVH_U32_MAX, node;
-        double best_area = 0.0;
+        atrbvh_u32 best = ATRBVH_U32_MAX, node, child;
+        double best_area = -0.5;
         for (k = 0; k < m; k++) {
-            if (tl->leaf[k] >= t->n_internal)
-                continue;
-            if (best == ATRBVH_U32_MAX || area[k] > best_area) {
+            if (area[k] > best_area) {
                 best = k;
                 best_area = area[k];
             }
@@ -134,10 +139,14 @@ ATRBVH_FN atrbvh_u32 atrbvh_treelet_form(const atrbvh_treelet_tree *t,
             break;
         node = tl->leaf[best];
         tl->internal[m - 1] = node;
-        tl->leaf[best] = t->left[node];
-        area[best] = atrbvh_box_area(t->box[t->left[node]]);
-        tl->leaf[m] = t->right[node];
-        area[m] = atrbvh_box_area(t->box[t->right[node]]);
+        child = t->left[node];
+        tl->leaf[best] = child;
+        area[best] = child < t->n_internal ? atrbvh_box_area(t->box[child])
+                                           : -1.0;
+        child = t->right[node];
+        tl->leaf[m] = child;
+        area[m] = child < t->n_internal ? atrbvh_box_area(t->box[child])
+                                        : -1.0;
         m++;
     }
     tl->n = m;
@@ -307,6 +316,85 @@ ATRBVH_FN void atrbvh_row_min(ATRBVH_GLOBAL const double *dist, atrbvh_u32 r,
     *c = bc;
 }
 
+/* The cluster boxes of atrbvh_agglomerate as six coordinate arrays (min
+ * x, y, z, max x, y, z), padded so that a kernel may read
+ * ATRBVH_SOA_PAD - 1 lanes past the last slot. */
+#define ATRBVH_SOA_PAD 4
+typedef struct atrbvh_box_soa {
+    float c[6][ATRBVH_TREELET_MAX + ATRBVH_SOA_PAD];
+} atrbvh_box_soa;
+
+ATRBVH_FN void atrbvh_soa_set(atrbvh_box_soa *s, atrbvh_u32 k, atrbvh_box b)
+{
+    s->c[0][k] = b.min[0];
+    s->c[1][k] = b.min[1];
+    s->c[2][k] = b.min[2];
+    s->c[3][k] = b.max[0];
+    s->c[4][k] = b.max[1];
+    s->c[5][k] = b.max[2];
+}
+
+/* out[a] = atrbvh_box_area(atrbvh_box_union(q, box of slot a)) for a in
+ * lo .. hi-1, q the first union operand; out needs ATRBVH_SOA_PAD - 1
+ * entries of room past hi.  On x86 CPUs four at a time with SSE2: MINPS
+ * and MAXPS are q < b ? q : b and q > b ? q : b, lane for lane the scalar
+ * expressions, and the double arithmetic is the same IEEE operations in
+ * the same order, so the bits are the same as the scalar loop's (which
+ * OpenCL runs). */
+#if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
+#include <emmintrin.h>
+ATRBVH_FN void atrbvh_union_areas(const atrbvh_box_soa *s, atrbvh_box q,
+                                  atrbvh_u32 lo, atrbvh_u32 hi, double *out)
+{
+    const __m128 q0 = _mm_set1_ps(q.min[0]), q1 = _mm_set1_ps(q.min[1]),
+                 q2 = _mm_set1_ps(q.min[2]), q3 = _mm_set1_ps(q.max[0]),
+                 q4 = _mm_set1_ps(q.max[1]), q5 = _mm_set1_ps(q.max[2]);
+    const __m128d two = _mm_set1_pd(2.0);
+    atrbvh_u32 a;
+    for (a = lo; a < hi; a += 4u) {
+        const __m128 x0 = _mm_min_ps(q0, _mm_loadu_ps(&s->c[0][a]));
+        const __m128 y0 = _mm_min_ps(q1, _mm_loadu_ps(&s->c[1][a]));
+        const __m128 z0 = _mm_min_ps(q2, _mm_loadu_ps(&s->c[2][a]));
+        const __m128 x1 = _mm_max_ps(q3, _mm_loadu_ps(&s->c[3][a]));
+        const __m128 y1 = _mm_max_ps(q4, _mm_loadu_ps(&s->c[4][a]));
+        const __m128 z1 = _mm_max_ps(q5, _mm_loadu_ps(&s->c[5][a]));
+        __m128d dx = _mm_sub_pd(_mm_cvtps_pd(x1), _mm_cvtps_pd(x0));
+        __m128d dy = _mm_sub_pd(_mm_cvtps_pd(y1), _mm_cvtps_pd(y0));
+        __m128d dz = _mm_sub_pd(_mm_cvtps_pd(z1), _mm_cvtps_pd(z0));
+        __m128d t = _mm_mul_pd(dx, dy);
+        t = _mm_add_pd(t, _mm_mul_pd(dy, dz));
+        t = _mm_add_pd(t, _mm_mul_pd(dz, dx));
+        _mm_storeu_pd(out + a, _mm_mul_pd(two, t));
+        dx = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(x1, x1)),
+                        _mm_cvtps_pd(_mm_movehl_ps(x0, x0)));
+        dy = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(y1, y1)),
+                        _mm_cvtps_pd(_mm_movehl_ps(y0, y0)));
+        dz = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(z1, z1)),
+                        _mm_cvtps_pd(_mm_movehl_ps(z0, z0)));
+        t = _mm_mul_pd(dx, dy);
+        t = _mm_add_pd(t, _mm_mul_pd(dy, dz));
+        t = _mm_add_pd(t, _mm_mul_pd(dz, dx));
+        _mm_storeu_pd(out + a + 2, _mm_mul_pd(two, t));
+    }
+}
+#else
+ATRBVH_FN void atrbvh_union_areas(const atrbvh_box_soa *s, atrbvh_box q,
+                                  atrbvh_u32 lo, atrbvh_u32 hi, double *out)
+{
+    atrbvh_u32 a;
+    for (a = lo; a < hi; a++) {
+        atrbvh_box b;
+        b.min[0] = q.min[0] < s->c[0][a] ? q.min[0] : s->c[0][a];
+        b.min[1] = q.min[1] < s->c[1][a] ? q.min[1] : s->c[1][a];
+        b.min[2] = q.min[2] < s->c[2][a] ? q.min[2] : s->c[2][a];
+        b.max[0] = q.max[0] > s->c[3][a] ? q.max[0] : s->c[3][a];
+        b.max[1] = q.max[1] > s->c[4][a] ? q.max[1] : s->c[4][a];
+        b.max[2] = q.max[2] > s->c[5][a] ? q.max[2] : s->c[5][a];
+        out[a] = atrbvh_box_area(b);
+    }
+}
+#endif
+
 /* ATRBVH (Domingues & Pedrini 2015, "Bounding Volume Hierarchy
  * Optimization through Agglomerative Treelet Restructuring", HPG 2015,
  * Algorithm 1): greedy agglomerative clustering of the n treelet leaves.
@@ -343,26 +431,46 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
     atrbvh_u32 code[ATRBVH_TREELET_MAX];
     double rmin[ATRBVH_TREELET_MAX];     /* row minimum, rows 1..m-1   */
     atrbvh_u32 rcol[ATRBVH_TREELET_MAX]; /* its column (lowest if tied) */
+    atrbvh_box_soa soa;                  /* box[], by coordinate      */
+    double area_of[ATRBVH_TREELET_MAX + ATRBVH_SOA_PAD];
     atrbvh_u32 m, a, b, q = 0;
     double root_cost = 0.0;
 
     for (a = 0; a < n; a++) {
         box[a] = lv->box[a];
+        atrbvh_soa_set(&soa, a, box[a]);
         cost[a] = lv->cost[a];
         count[a] = lv->count[a];
         code[a] = a;
     }
+    /* Lanes read past the end, never used: any finite value. */
+    for (a = n; a < n + ATRBVH_SOA_PAD; a++)
+        atrbvh_soa_set(&soa, a, box[0]);
+    /* The matrix row by row, each row's minimum found on the way (strict
+     * <: the lowest column among equals, as atrbvh_row_min). */
     for (a = 1; a < n; a++) {
-        atrbvh_u32 row = a * (a - 1u) / 2u;
-        for (b = 0; b < a; b++)
-            dist[row + b] = atrbvh_box_area(atrbvh_box_union(box[a], box[b]));
+        ATRBVH_GLOBAL double *row = dist + a * (a - 1u) / 2u;
+        double bv;
+        atrbvh_u32 bc = 0;
+        atrbvh_union_areas(&soa, box[a], 0, a, area_of);
+        bv = area_of[0];
+        row[0] = bv;
+        for (b = 1; b < a; b++) {
+            double d = area_of[b];
+            row[b] = d;
+            if (d < bv) {
+                bv = d;
+                bc = b;
+            }
+        }
+        rmin[a] = bv;
+        rcol[a] = bc;
     }
-    for (a = 1; a < n; a++)
-        atrbvh_row_min(dist, a, &rmin[a], &rcol[a]);
     for (m = n; m > 1; m--) {
         atrbvh_u32 i = 1, j, last = m - 1u, r;
         double best = rmin[1], area;
         atrbvh_box merged;
+        ATRBVH_GLOBAL double *jrow;
         int collapsed;
         /* Rows in order, strict <: the lowest row among equal minima, and
          * within it (atrbvh_row_min) the lowest column: the lowest linear
@@ -381,46 +489,61 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
         root_cost = atrbvh_node_cost(p, area, count[j] + count[i], cost[j],
                                      cost[i], &collapsed);
         box[j] = merged;
+        atrbvh_soa_set(&soa, j, merged);
         cost[j] = root_cost;
         count[j] += count[i];
         code[j] = n + q;
+        /* The merge's box, count and cost: exactly what
+         * atrbvh_treelet_evaluate computes for local node q (the same
+         * union of the same children, left first). */
+        topo->box[q] = merged;
+        topo->count[q] = count[j];
+        topo->cost[q] = root_cost;
         q++;
         if (last == 1u)
             break;
-        /* (a) the last cluster moves into slot i. */
+        /* (a) the last cluster moves into slot i: row i (columns < i) and
+         * column i (rows i+1 .. last-1) take row `last`'s entries. */
         if (i != last) {
+            ATRBVH_GLOBAL double *irow = dist + i * (i - 1u) / 2u;
+            ATRBVH_GLOBAL double *lrow = dist + last * (last - 1u) / 2u;
             box[i] = box[last];
+            atrbvh_soa_set(&soa, i, box[i]);
             cost[i] = cost[last];
             count[i] = count[last];
             code[i] = code[last];
-            for (a = 0; a < last; a++)
-                if (a != i)
-                    dist[atrbvh_tri_index(i, a)] =
-                        dist[atrbvh_tri_index(last, a)];
+            for (a = 0; a < i; a++)
+                irow[a] = lrow[a];
+            for (a = i + 1u; a < last; a++)
+                dist[a * (a - 1u) / 2u + i] = lrow[a];
         }
         /* (b) distances to the merged cluster in slot j (after (a), so
-         * the (i, j) entry gets the new value). */
-        for (a = 0; a < last; a++)
-            if (a != j)
-                dist[atrbvh_tri_index(j, a)] =
-                    atrbvh_box_area(atrbvh_box_union(box[j], box[a]));
-        /* Row minima of the rows 1..last-1 that remain.  Rows i and j
+         * the (i, j) entry gets the new value): row j here, column j
+         * (rows r > j) in the loop below, each row's entry written before
+         * that row's minimum is looked at.
+         * (c) Row minima of the rows 1..last-1 that remain.  Rows i and j
          * changed entirely; a row r > j changed in column j, and a row
          * r > i in column i: rescan it if its minimum sat in a changed
          * column (the value may have grown), else a changed entry can only
          * take over the minimum (lower column first among equals).  Rows
          * below j hold neither column. */
+        atrbvh_union_areas(&soa, merged, 0, last, area_of);
+        jrow = dist + j * (j - 1u) / 2u;
+        for (a = 0; a < j; a++)
+            jrow[a] = area_of[a];
         for (r = j + 1u; r < last; r++) {
+            ATRBVH_GLOBAL double *row = dist + r * (r - 1u) / 2u;
+            double v = area_of[r];
+            row[j] = v;
             if (r == i || rcol[r] == j || (r > i && rcol[r] == i)) {
                 atrbvh_row_min(dist, r, &rmin[r], &rcol[r]);
             } else {
-                double v = dist[r * (r - 1u) / 2u + j];
                 if (v < rmin[r] || (v == rmin[r] && j < rcol[r])) {
                     rmin[r] = v;
                     rcol[r] = j;
                 }
                 if (r > i) {
-                    v = dist[r * (r - 1u) / 2u + i];
+                    v = row[i];
                     if (v < rmin[r] || (v == rmin[r] && i < rcol[r])) {
                         rmin[r] = v;
                         rcol[r] = i;
@@ -436,16 +559,12 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
 }
 
 /* ------------------------------------------------------ evaluate, write */
-/* Fills topo->order (pre-order from the root, explicit stack) and, bottom
- * up, the box, count and cost of every local node.  Returns the root's
- * cost: exactly what a refit of the written-back treelet computes. */
-ATRBVH_FN double atrbvh_treelet_evaluate(const atrbvh_cost_params *p,
-                                         atrbvh_u32 n,
-                                         const atrbvh_treelet_leaves *lv,
-                                         atrbvh_treelet_topo *topo)
+/* Fills topo->order: the local nodes in pre-order from the root (explicit
+ * stack), left subtree first. */
+ATRBVH_FN void atrbvh_treelet_preorder(atrbvh_u32 n, atrbvh_treelet_topo *topo)
 {
     atrbvh_u32 stack[ATRBVH_TREELET_MAX];
-    atrbvh_u32 sp = 0, q = 0, k;
+    atrbvh_u32 sp = 0, q = 0;
     stack[sp++] = topo->root;
     while (sp > 0) {
         atrbvh_u32 node = stack[--sp];
@@ -456,6 +575,18 @@ ATRBVH_FN double atrbvh_treelet_evaluate(const atrbvh_cost_params *p,
         if (topo->left[node] >= n)
             stack[sp++] = topo->left[node] - n;
     }
+}
+
+/* Fills topo->order (pre-order from the root, explicit stack) and, bottom
+ * up, the box, count and cost of every local node.  Returns the root's
+ * cost: exactly what a refit of the written-back treelet computes. */
+ATRBVH_FN double atrbvh_treelet_evaluate(const atrbvh_cost_params *p,
+                                         atrbvh_u32 n,
+                                         const atrbvh_treelet_leaves *lv,
+                                         atrbvh_treelet_topo *topo)
+{
+    atrbvh_u32 k;
+    atrbvh_treelet_preorder(n, topo);
     for (k = n - 1u; k-- > 0u;) {
         atrbvh_u32 node = topo->order[k];
         atrbvh_u32 l = topo->left[node], r = topo->right[node];
@@ -554,13 +685,20 @@ ATRBVH_FN int atrbvh_treelet_process(const atrbvh_treelet_tree *t,
     /* A quick reject: the DP's optimum (and the agglomerative root merge)
      * is what evaluate recomputes (the same sums in the same order), so
      * nothing strictly cheaper exists when it finds none. */
-    if (agglomerative)
+    if (agglomerative) {
         found = atrbvh_agglomerate(p, tl.n, &lv, dist, &topo);
-    else
+        if (!(found < t->cost[root]))
+            return 0;
+        /* The merges already hold evaluate's boxes, counts and costs (the
+         * root's is `found`); only the pre-order is missing. */
+        atrbvh_treelet_preorder(tl.n, &topo);
+        cost = found;
+    } else {
         found = atrbvh_trbvh_dp(p, tl.n, &lv, s, &topo);
-    if (!(found < t->cost[root]))
-        return 0;
-    cost = atrbvh_treelet_evaluate(p, tl.n, &lv, &topo);
+        if (!(found < t->cost[root]))
+            return 0;
+        cost = atrbvh_treelet_evaluate(p, tl.n, &lv, &topo);
+    }
     if (!(cost < t->cost[root]))
         return 0;
     atrbvh_treelet_write(t, &tl, &topo);

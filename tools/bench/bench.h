@@ -45,6 +45,11 @@ typedef struct row {
     double mrays[3], total_mrays;
     double emb_mrays[3], emb_commit_ms;
     double rel_pct, time_pct, sah_pct;
+    /* Exact ray cost (atrbvh_trace_stats): boxes and primitives tested per
+     * ray, per kind (primary, ao, diffuse) and [3] over every ray;
+     * ray_cost = ci x boxes + ct x primitives per ray (over every ray),
+     * cost_pct relative to the scene's TRBVH(7,3). */
+    double box_per_ray[4], tri_per_ray[4], ray_cost, cost_pct;
 } row;
 
 typedef struct bench_args {
@@ -59,6 +64,7 @@ typedef struct bench_args {
     int scaling;
     size_t sizes[MAX_SIZES];
     int nsizes;
+    camera_view view; /* --eye, --look-at, --fov */
 } bench_args;
 
 typedef struct scene_data {

@@ -58,7 +58,11 @@ void csv_header(FILE *f)
     fputs(",sah,sah_binary,nodes,leaves,peak_bytes,bvh_bytes,primary_mrays,"
           "ao_mrays,diffuse_mrays,total_mrays,relative_pct,time_pct,sah_pct,"
           "embree_primary_mrays,embree_ao_mrays,embree_diffuse_mrays,"
-          "embree_commit_ms\n",
+          "embree_commit_ms,primary_box_tests_per_ray,"
+          "ao_box_tests_per_ray,diffuse_box_tests_per_ray,box_tests_per_ray,"
+          "primary_tri_tests_per_ray,ao_tri_tests_per_ray,"
+          "diffuse_tri_tests_per_ray,tri_tests_per_ray,ray_cost,"
+          "ray_cost_pct\n",
           f);
 }
 
@@ -101,6 +105,18 @@ void csv_row(FILE *f, const bench_args *a, const row *r)
     }
     fputc(',', f);
     put_double(f, r->emb_commit_ms);
+    for (s = 0; s < 4; s++) {
+        fputc(',', f);
+        put_double(f, r->box_per_ray[s]);
+    }
+    for (s = 0; s < 4; s++) {
+        fputc(',', f);
+        put_double(f, r->tri_per_ray[s]);
+    }
+    fputc(',', f);
+    put_double(f, r->ray_cost);
+    fputc(',', f);
+    put_double(f, r->cost_pct);
     fputc('\n', f);
 }
 

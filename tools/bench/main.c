@@ -201,7 +201,7 @@ static int on_quality(const char *cmd, const cli_opt *o, const char *v,
     return 0;
 }
 
-#define BENCH_OPTS 24
+#define BENCH_OPTS (24 + RAYS_CAMERA_OPTS)
 static void bench_opts(bench_cl *b, cli_opt *table)
 {
     bench_args *a = &b->a;
@@ -276,7 +276,11 @@ static void bench_opts(bench_cl *b, cli_opt *table)
          .help = "triangle counts for --scaling (default " DEFAULT_SIZES
                  ")"},
         {.name = NULL}};
-    CLI_OPTS_COPY(table, opts, BENCH_OPTS);
+    size_t n = sizeof opts / sizeof opts[0];
+    CLI_OPTS_COPY(table, opts, BENCH_OPTS - RAYS_CAMERA_OPTS);
+    /* the camera options before the terminator */
+    rays_camera_opts(&a->view, table + n - 1);
+    table[n - 1 + RAYS_CAMERA_OPTS] = opts[n - 1];
 }
 
 static void bench_help(FILE *f)
@@ -328,6 +332,11 @@ int cli_bench(int argc, char **argv)
         return CLI_USAGE;
     ap->nscenes = npos;
     ap->rays = !b.no_rays;
+    if (rays_camera_check("bench", &ap->view) != 0)
+        return CLI_USAGE;
+    /* one user camera: its viewpoints would all be the same */
+    if (ap->view.have_eye)
+        ap->viewpoints = 1;
     if (b.sizes) {
         unsigned long vals[MAX_SIZES];
         if (parse_uint_list("--sizes", b.sizes, 50000000ul, vals, &ap->nsizes,

@@ -433,12 +433,17 @@ static void body_scene(FILE *g, const void *ctx)
         fputs("set ylabel 'SAH cost of the tree (collapsed, leaf limit as "
               "run)'\n",
               g);
+    else if (sp->col == 5)
+        fputs("set ylabel 'ray cost: ci x boxes + ct x triangles tested per "
+              "ray (exact)'\n",
+              g);
     else
         fputs("set ylabel 'Mrays/s, primary + AO + diffuse, all threads'\n",
               g);
     /* the key below the plot, where it covers no point */
     fputs("set grid\nset key below horizontal\n", g);
     gp_frame(g, sp->fr);
+    fputs("unset label\n", g); /* the other panel's */
     gp_labels(g, sp->fr, sp->p, sp->n);
     fprintf(g, "plot ");
     if (sp->col == 3)
@@ -455,6 +460,32 @@ static void body_scene(FILE *g, const void *ctx)
                          : "Embree tree, our traverser");
 }
 
+/* SAH and ray cost against build time side by side (one wide picture). */
+static void body_trade(FILE *g, const void *ctx)
+{
+    const scene_plot *sp = ctx;
+    fputs("set multiplot layout 1,2\n", g);
+    body_scene(g, &sp[0]);
+    body_scene(g, &sp[1]);
+    fputs("unset multiplot\n", g);
+}
+
+static void gp_wide(FILE *g, pictures *pics, const char *stem,
+                    const scene_plot *two)
+{
+    pictures_add(pics, stem);
+    fprintf(g, "set terminal pngcairo size 1800,600 font 'sans,10'\n"
+               "set output '%s.png'.outsuffix\n",
+            stem);
+    body_trade(g, two);
+    fprintf(g, "unset output\nreset\n"
+               "set terminal svg size 1800,600 dynamic font 'sans,10'\n"
+               "set output '%s.svg'.outsuffix\n",
+            stem);
+    body_trade(g, two);
+    fputs("unset output\nreset\n", g);
+}
+
 int plot_scene(const char *dir, const char *spec, const row *rows, int n,
                int have_rays)
 {
@@ -466,14 +497,17 @@ int plot_scene(const char *dir, const char *spec, const row *rows, int n,
     const row **front = NULL;
     point *pts = NULL;
     int i, nf = 0, pass, np, rc = -1;
-    frame fr;
-    scene_plot sp;
+    frame fr, fr2, fr3;
+    scene_plot sp, two[2];
+    point *pts2 = NULL, *pts3 = NULL;
     const char *base = strrchr(spec, '/') ? strrchr(spec, '/') + 1 : spec;
     scene_tag(spec, tag, sizeof tag);
     labels = malloc((size_t)(n ? n : 1) * sizeof *labels);
     pts = malloc((size_t)(n ? n : 1) * sizeof *pts);
     front = malloc((size_t)(n ? n : 1) * sizeof *front);
-    if (!labels || !pts || !front) {
+    pts2 = malloc((size_t)(n ? n : 1) * sizeof *pts2);
+    pts3 = malloc((size_t)(n ? n : 1) * sizeof *pts3);
+    if (!labels || !pts || !front || !pts2 || !pts3) {
         cli_error("out of memory");
         goto done;
     }
@@ -485,14 +519,15 @@ int plot_scene(const char *dir, const char *spec, const row *rows, int n,
         goto done;
     /* index 0: atrbvh configurations, 1: Embree, 2: the Pareto front */
     for (pass = 0; pass < 2; pass++) {
-        fprintf(f, "# %s\n# label build_ms sah total_mrays\n",
+        fprintf(f, "# %s\n# label build_ms sah total_mrays ray_cost\n",
                 pass ? "embree" : "atrbvh");
         for (i = 0; i < n; i++)
             if (rows[i].c.embree == pass)
-                fprintf(f, "\"%s\" %.6g %.9g %.6g\n", labels[i],
+                fprintf(f, "\"%s\" %.6g %.9g %.6g %.9g\n", labels[i],
                         rows[i].build_ms, rows[i].sah,
                         isfinite(rows[i].total_mrays) ? rows[i].total_mrays
-                                                      : 0.0);
+                                                      : 0.0,
+                        isfinite(rows[i].ray_cost) ? rows[i].ray_cost : 0.0);
         fputs("\n\n", f);
     }
     for (i = 0; i < n; i++)
@@ -513,30 +548,51 @@ int plot_scene(const char *dir, const char *spec, const row *rows, int n,
     sp.tag = tag;
     sp.fr = &fr;
     sp.p = pts;
-    /* col 3: SAH (pareto-), col 4: rays per second (rays-) */
-    for (sp.col = 3; sp.col <= (have_rays ? 4 : 3); sp.col++) {
+    /* col 3: SAH (pareto-), col 4: rays per second (rays-), col 5: the
+     * exact ray cost (cost-); then SAH and ray cost side by side
+     * (trade-) */
+    for (sp.col = 3; sp.col <= (have_rays ? 5 : 3); sp.col++) {
+        point *pp = sp.col == 3 ? pts : (sp.col == 5 ? pts2 : pts3);
+        frame *ff = sp.col == 3 ? &fr : (sp.col == 5 ? &fr2 : &fr3);
         for (i = 0, np = 0; i < n; i++) {
-            double y = sp.col == 3 ? rows[i].sah : rows[i].total_mrays;
+            double y = sp.col == 3   ? rows[i].sah
+                       : sp.col == 4 ? rows[i].total_mrays
+                                     : rows[i].ray_cost;
             if (!(rows[i].build_ms > 0.0) || !isfinite(y) ||
-                (sp.col == 4 && !(y > 0.0)))
+                (sp.col != 3 && !(y > 0.0)))
                 continue;
-            pts[np].x = rows[i].build_ms;
-            pts[np].y = y;
-            pts[np++].label = labels[i];
+            pp[np].x = rows[i].build_ms;
+            pp[np].y = y;
+            pp[np++].label = labels[i];
         }
         if (np == 0)
             continue;
-        fr = frame_for(pts, np, 1);
-        place_labels(&fr, pts, np);
+        *ff = frame_for(pp, np, 1);
+        place_labels(ff, pp, np);
         sp.n = np;
+        sp.p = pp;
+        sp.fr = ff;
         sp.what = sp.col == 3
                       ? "build time against SAH cost, each configuration "
                         "once (lower left is better)"
-                      : "ray throughput of each tree through our traverser "
-                        "against its build time (upper left is better)";
-        snprintf(stem, sizeof stem, "%s-%s", sp.col == 3 ? "pareto" : "rays",
+                  : sp.col == 4
+                      ? "ray throughput of each tree through our traverser "
+                        "against its build time (upper left is better)"
+                      : "exact ray cost (boxes and triangles tested per ray) "
+                        "against build time (lower left is better)";
+        snprintf(stem, sizeof stem, "%s-%s",
+                 sp.col == 3 ? "pareto" : (sp.col == 4 ? "rays" : "cost"),
                  tag);
         gp_both(g, &pics, stem, body_scene, &sp);
+        if (sp.col == 3)
+            two[0] = sp;
+        if (sp.col == 5) {
+            two[1] = sp;
+            two[0].what = "SAH cost against build time";
+            two[1].what = "exact ray cost against build time";
+            snprintf(stem, sizeof stem, "trade-%s", tag);
+            gp_wide(g, &pics, stem, two);
+        }
     }
     g = NULL;
     rc = finish_script(dir, name, &go, &pics);
@@ -548,6 +604,8 @@ done:
     free(pics.stem);
     free(labels);
     free(pts);
+    free(pts2);
+    free(pts3);
     free(front);
     return rc;
 }

@@ -52,10 +52,13 @@ int bench_lib_build(const scene_data *sd, const atrbvh_build_options *o,
 }
 
 /* Traces the scene's rays through `bvh` `repeat` times; median Mrays/s per
- * kind. */
+ * kind.  Then once more, untimed, counting (atrbvh_*_batch_stats): the
+ * boxes and primitives tested per ray of each kind and over all rays. */
 static int lib_trace(const scene_data *sd, const atrbvh_bvh *bvh, int threads,
-                     unsigned repeat, double mrays[3])
+                     unsigned repeat, double ci, double ct, row *row_out)
 {
+    double *mrays = row_out->mrays;
+    uint64_t all_rays = 0, all_boxes = 0, all_prims = 0;
     const ray_set *rs = &sd->rays;
     size_t cap = rs->n_primary > rs->n_diffuse ? rs->n_primary : rs->n_diffuse;
     atrbvh_hit *hits = malloc((cap ? cap : 1) * sizeof *hits);
@@ -93,6 +96,34 @@ static int lib_trace(const scene_data *sd, const atrbvh_bvh *bvh, int threads,
             }
         }
         mrays[kind] = (double)n / (bench_median(t, repeat) * 1e3);
+        {
+            atrbvh_trace_stats ts;
+            atrbvh_error e;
+            atrbvh_status st;
+            atrbvh_trace_stats_init(&ts);
+            memset(&e, 0, sizeof e);
+            st = kind == 1 ? atrbvh_occluded_batch_stats(NULL, bvh, &sd->g,
+                                                         rays, n, occ,
+                                                         threads, &ts, &e)
+                           : atrbvh_intersect_batch_stats(NULL, bvh, &sd->g,
+                                                          rays, n, hits,
+                                                          threads, &ts, &e);
+            if (st != ATRBVH_OK) {
+                cli_error("counting ray cost: %s", e.text);
+                goto done;
+            }
+            row_out->box_per_ray[kind] = (double)ts.box_tests / (double)n;
+            row_out->tri_per_ray[kind] = (double)ts.prim_tests / (double)n;
+            all_rays += ts.rays;
+            all_boxes += ts.box_tests;
+            all_prims += ts.prim_tests;
+        }
+    }
+    if (all_rays > 0) {
+        row_out->box_per_ray[3] = (double)all_boxes / (double)all_rays;
+        row_out->tri_per_ray[3] = (double)all_prims / (double)all_rays;
+        row_out->ray_cost =
+            ci * row_out->box_per_ray[3] + ct * row_out->tri_per_ray[3];
     }
     rc = 0;
 done:
@@ -150,6 +181,9 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
     r->scene = spec;
     r->triangles = sd->sc.triangle_count;
     r->rel_pct = r->time_pct = r->sah_pct = NAN;
+    r->ray_cost = r->cost_pct = NAN;
+    for (s = 0; s < 4; s++)
+        r->box_per_ray[s] = r->tri_per_ray[s] = NAN;
     for (s = 0; s < 3; s++)
         r->mrays[s] = r->emb_mrays[s] = NAN;
     r->emb_commit_ms = NAN;
@@ -282,7 +316,8 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
         }
     }
     if (do_rays && sd->have_rays) {
-        if (lib_trace(sd, bvh, a->base.threads, repeat, r->mrays) != 0)
+        if (lib_trace(sd, bvh, a->base.threads, repeat, a->base.ci,
+                      a->base.ct, r) != 0)
             goto done;
         r->total_mrays = total_mrays(sd, r->mrays);
     }

@@ -54,7 +54,7 @@ int bench_sweep(bench_args *a, FILE *csv)
             if (bench_lib_build(&sd, &o, &lb, a->scenes[si]) != 0 ||
                 ray_set_make(&sd.sc, lb, (unsigned)a->width,
                              (unsigned)a->height, (unsigned)a->viewpoints,
-                             (unsigned)a->spp, a->base.threads,
+                             (unsigned)a->spp, a->base.threads, &a->view,
                              &sd.rays) != 0) {
                 atrbvh_bvh_free(lb);
                 bench_free_scene(&sd);
@@ -65,11 +65,22 @@ int bench_sweep(bench_args *a, FILE *csv)
             sd.have_rays = 1;
         }
         printf("\n## %s: %zu triangles", a->scenes[si], sd.sc.triangle_count);
-        if (sd.have_rays)
-            printf("; rays: %zu primary (%ux%u, viewpoints 0..%u), %zu "
+        if (sd.have_rays && a->view.have_eye)
+            printf("; rays: %zu primary (%ux%u, the --eye camera), %zu "
+                   "ao, %zu diffuse",
+                   sd.rays.n_primary, a->width, a->height, sd.rays.n_ao,
+                   sd.rays.n_diffuse);
+        else if (sd.have_rays) {
+            float lo[3], hi[3];
+            scene_bounds(&sd.sc, lo, hi);
+            printf("; rays: %zu primary (%ux%u, viewpoints 0..%u%s), %zu "
                    "ao, %zu diffuse",
                    sd.rays.n_primary, a->width, a->height, a->viewpoints - 1,
+                   scene_is_room(&sd.sc, lo, hi, NULL)
+                       ? ", a room: even ones inside"
+                       : "",
                    sd.rays.n_ao, sd.rays.n_diffuse);
+        }
         printf("\n");
         fflush(stdout);
         for (i = 0; i < a->nconfigs; i++) {
@@ -94,6 +105,9 @@ int bench_sweep(bench_args *a, FILE *csv)
             if (sd.have_rays)
                 rows[i].rel_pct =
                     rows[i].total_mrays / rows[ref].total_mrays * 100.0;
+            if (sd.have_rays)
+                rows[i].cost_pct =
+                    rows[i].ray_cost / rows[ref].ray_cost * 100.0;
         }
         table_sweep(stdout, rows, n, sd.have_rays);
         table_dominance(stdout, rows, n);

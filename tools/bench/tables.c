@@ -23,8 +23,8 @@ void table_sweep(FILE *f, const row *rows, int n, int have_rays)
     fprintf(f, "%-18s %9s %9s %9s %9s %9s %8s", "config", "build ms",
             "opt ms", "SAH", "SAH bin", "nodes", "peak MB");
     if (have_rays)
-        fprintf(f, " %7s %7s %7s %7s %8s", "prim", "ao", "diff", "all",
-                "rel %");
+        fprintf(f, " %7s %7s %7s %7s %8s %7s %7s %7s", "prim", "ao", "diff",
+                "all", "rel %", "box/ray", "tri/ray", "cost %");
     fprintf(f, " %7s %7s\n", "time %", "SAH %");
     for (i = 0; i < n; i++) {
         const row *r = &rows[i];
@@ -43,6 +43,9 @@ void table_sweep(FILE *f, const row *rows, int n, int have_rays)
             text_num(f, " %*.2f", r->mrays[2], 7);
             text_num(f, " %*.2f", r->total_mrays, 7);
             text_num(f, " %*.1f", r->rel_pct, 8);
+            text_num(f, " %*.1f", r->box_per_ray[3], 7);
+            text_num(f, " %*.1f", r->tri_per_ray[3], 7);
+            text_num(f, " %*.1f", r->cost_pct, 7);
         }
         text_num(f, " %*.1f", r->time_pct, 7);
         text_num(f, " %*.1f", r->sah_pct, 7);
