@@ -142,5 +142,7 @@ int cli_compare(int argc, char **argv);
 int cli_validate(int argc, char **argv);
 int cli_bench(int argc, char **argv);
 int cli_render(int argc, char **argv);
+int cli_stages(int argc, char **argv);
+int cli_check(int argc, char **argv);
 
 #endif

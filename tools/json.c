@@ -65,6 +65,29 @@ void json_end_object(json_writer *w)
 }
 
 /* Length of the valid UTF-8 sequence at s (1..4), or 0 if invalid. */
+/* Arrays: the same layout as objects, without keys. */
+void json_begin_array(json_writer *w)
+{
+    before_value(w);
+    fputc('[', w->f);
+    if (w->depth < JSON_MAX_DEPTH) {
+        w->count[w->depth] = 0;
+        w->depth++;
+    }
+}
+
+void json_end_array(json_writer *w)
+{
+    int had = 0;
+    if (w->depth > 0) {
+        had = w->count[w->depth - 1] > 0;
+        w->depth--;
+    }
+    if (had)
+        indent(w);
+    fputc(']', w->f);
+}
+
 static size_t utf8_len(const unsigned char *s)
 {
     unsigned c = s[0];

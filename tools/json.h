@@ -21,6 +21,8 @@ typedef struct json_writer {
 void json_init(json_writer *w, FILE *f);
 void json_begin_object(json_writer *w);
 void json_end_object(json_writer *w); /* the outermost one ends the line */
+void json_begin_array(json_writer *w);
+void json_end_array(json_writer *w);
 void json_key(json_writer *w, const char *key);
 void json_string(json_writer *w, const char *s);
 void json_uint(json_writer *w, uint64_t v);

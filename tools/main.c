@@ -131,6 +131,11 @@ static void usage(FILE *f)
           "plots\n"
           "  render SCENE --output F  a shaded PNG, or a heat map of "
           "traversal steps\n"
+          "  stages SCENE --dump DIR  every stage's output as .npy files "
+          "and a manifest\n"
+          "  check DIR                compare stage dumps with the "
+          "reference (the first\n"
+          "                           differing stage and item)\n"
           "  help [COMMAND]           this help, or that command's\n"
           "\n"
           "SCENE is a .ply or .obj file, or builtin:NAME[:N] with NAME one "
@@ -146,7 +151,7 @@ static void usage(FILE *f)
           "                           the licence\n"
           "\n"
           "Exit status: 0 success, 1 bad input or failure, 2 usage error;\n"
-          "compare and validate: 0 same, 1 different, 2 trouble.\n"
+          "compare, validate and check: 0 same, 1 different, 2 trouble.\n"
           "See atrbvh(1).\n",
           f);
 }
@@ -162,7 +167,9 @@ int main(int argc, char **argv)
                     {"compare", cli_compare},
                     {"validate", cli_validate},
                     {"bench", cli_bench},
-                    {"render", cli_render}};
+                    {"render", cli_render},
+                    {"stages", cli_stages},
+                    {"check", cli_check}};
     size_t k;
     int rc;
     const char *cmd;
