@@ -141,5 +141,6 @@ int cli_compare(int argc, char **argv);
 int cli_validate(int argc, char **argv);
 int cli_bench(int argc, char **argv);
 int cli_render(int argc, char **argv);
+int cli_animate(int argc, char **argv);
 
 #endif

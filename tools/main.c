@@ -131,6 +131,10 @@ static void usage(FILE *f)
           "plots\n"
           "  render SCENE --output F  a shaded PNG, or a heat map of "
           "traversal steps\n"
+          "  animate SCENE [OPTIONS]  an animated built-in scene: the BVH "
+          "refitted,\n"
+          "                           re-optimised or rebuilt every frame; "
+          "SAH, time\n"
           "  help [COMMAND]           this help, or that command's\n"
           "\n"
           "SCENE is a .ply or .obj file, or builtin:NAME[:N] with NAME one "
@@ -162,7 +166,8 @@ int main(int argc, char **argv)
                     {"compare", cli_compare},
                     {"validate", cli_validate},
                     {"bench", cli_bench},
-                    {"render", cli_render}};
+                    {"render", cli_render},
+                    {"animate", cli_animate}};
     size_t k;
     int rc;
     const char *cmd;
