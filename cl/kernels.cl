@@ -1,9 +1,12 @@
 /*
  * cl/kernels.cl - the OpenCL backend's kernels, one (or a short fixed
  * sequence) per stage, with the same names as the CPU stages.  OpenCL C
- * 1.2.  The host prepends lib/shared/arith.h, treelet.h and stages.h (the
- * per-item arithmetic the CPU backend compiles as C99), so the two
- * backends run the same code per item; only the parallel mapping differs.
+ * 1.2.  The host prepends the lib/shared headers (the per-item
+ * arithmetic the CPU backend compiles as C99, and the argument structs of
+ * kargs.h), so the two backends run the same code per item; only the
+ * parallel mapping differs.  Every kernel is a thin wrapper: it reads its item, calls the
+ * shared function, writes the result.  Scalars come in one struct per
+ * stage (shared/kargs.h), by value.
  *
  * Bottom-up passes (refit, optimise, collapse) use an atomic counter per
  * node: each work-item writes its node, fences, increments the parent's
@@ -15,17 +18,6 @@
  */
 #pragma OPENCL FP_CONTRACT OFF
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
-
-static atrbvh_cost_params cost_params(double ci, double ct, int collapse,
-                                      uint max_leaf)
-{
-    atrbvh_cost_params p;
-    p.ci = ci;
-    p.ct = ct;
-    p.collapse = collapse;
-    p.max_leaf = max_leaf;
-    return p;
-}
 
 static atrbvh_box load_box_v(__global const atrbvh_box *b, uint i)
 {
@@ -51,72 +43,49 @@ static double load_f64_v(__global const double *p, uint i)
 }
 
 /* ------------------------------------------------------------------ bounds */
-/* One box per triangle; `problems` counts primitives with a NaN/Inf
- * coordinate or an index out of range (the host then runs the CPU bounds
- * stage, which reports the error or compacts, exactly). Strides in
- * elements. */
-__kernel void bounds_triangles(__global const float *vertices, ulong vstride,
-                               ulong vertex_count,
-                               __global const uint *indices, ulong istride,
-                               int indexed, uint n,
+/* One box per primitive (atrbvh_prim_box_triangle / _box, the CPU's
+ * functions); `problems` counts invalid primitives (NaN/Inf, an index out
+ * of range, an inverted box): the pipeline then finds the exact error on
+ * the host, or compacts, and hands the boxes back (set_prims). */
+__kernel void bounds_triangles(__global const float *vertices,
+                               __global const uint *indices,
                                __global atrbvh_box *boxes,
-                               __global uint *problems)
+                               __global uint *problems, atrbvh_kargs_bounds a)
 {
-    uint i = (uint)get_global_id(0);
+    uint i = (uint)get_global_id(0), bad = 0;
     atrbvh_box b;
-    int c, ok = 1;
-    if (i >= n)
+    if (i >= a.n)
         return;
-    b = atrbvh_box_empty();
-    for (c = 0; c < 3 && ok; c++) {
-        ulong v;
-        __global const float *p;
-        if (indexed) {
-            v = indices[(ulong)i * istride + (ulong)c];
-            if (v >= vertex_count) {
-                ok = 0;
-                break;
-            }
-        } else {
-            v = 3ul * (ulong)i + (ulong)c;
-        }
-        p = vertices + v * vstride;
-        ok = atrbvh_box_grow(&b, p[0], p[1], p[2]);
-    }
-    boxes[i] = b;
-    if (!ok)
-        atomic_inc(problems);
-}
-
-__kernel void bounds_boxes(__global const float *in, ulong bstride, uint n,
-                           __global atrbvh_box *boxes,
-                           __global uint *problems)
-{
-    uint i = (uint)get_global_id(0);
-    float f[6];
-    atrbvh_box b;
-    int k;
-    if (i >= n)
-        return;
-    for (k = 0; k < 6; k++)
-        f[k] = in[(ulong)i * bstride + (ulong)k];
-    b = atrbvh_box_empty();
-    if (atrbvh_prim_box_from_box(f, &b) != ATRBVH_PRIM_OK)
+    if (atrbvh_prim_box_triangle(vertices, a.vstride, a.vertex_count, indices,
+                                 a.istride, (int)a.indexed, (ulong)i, &b,
+                                 &bad) != ATRBVH_PRIM_OK)
         atomic_inc(problems);
     boxes[i] = b;
 }
 
-/* Partial scene and centroid boxes: item w reduces its contiguous range;
+__kernel void bounds_boxes(__global const float *in, __global atrbvh_box *boxes,
+                           __global uint *problems, atrbvh_kargs_bounds a)
+{
+    uint i = (uint)get_global_id(0);
+    atrbvh_box b;
+    if (i >= a.n)
+        return;
+    if (atrbvh_prim_box_box(in, a.bstride, (ulong)i, &b) != ATRBVH_PRIM_OK)
+        atomic_inc(problems);
+    boxes[i] = b;
+}
+
+/* Partial scene and centroid boxes: item w reduces block w of a.parts;
  * the host unites the partials (min/max: order-independent). */
-__kernel void bounds_reduce(__global const atrbvh_box *boxes, uint n,
-                            uint parts, __global atrbvh_box *partial)
+__kernel void bounds_reduce(__global const atrbvh_box *boxes,
+                            __global atrbvh_box *partial,
+                            atrbvh_kargs_bounds a)
 {
     uint w = (uint)get_global_id(0), lo, hi, i;
     atrbvh_box scene, centroids;
-    if (w >= parts)
+    if (w >= a.parts)
         return;
-    lo = (uint)((ulong)n * w / parts);
-    hi = (uint)((ulong)n * (w + 1u) / parts);
+    atrbvh_block_range(a.n, w, a.parts, &lo, &hi);
     scene = atrbvh_box_empty();
     centroids = atrbvh_box_empty();
     for (i = lo; i < hi; i++)
@@ -126,84 +95,76 @@ __kernel void bounds_reduce(__global const atrbvh_box *boxes, uint n,
 }
 
 /* ------------------------------------------------------------------ morton */
-__kernel void morton(__global const atrbvh_box *boxes, uint n, double lo0,
-                     double lo1, double lo2, double s0, double s1, double s2,
-                     __global ulong *keys, __global uint *order)
+__kernel void morton(__global const atrbvh_box *boxes, __global ulong *keys,
+                     __global uint *order, atrbvh_kargs_morton a)
 {
     uint i = (uint)get_global_id(0);
     atrbvh_box b;
-    if (i >= n)
+    if (i >= a.n)
         return;
     b = boxes[i];
     keys[i] = atrbvh_morton_key(
-        atrbvh_morton_quantise(atrbvh_box_centre(b, 0), lo0, s0),
-        atrbvh_morton_quantise(atrbvh_box_centre(b, 1), lo1, s1),
-        atrbvh_morton_quantise(atrbvh_box_centre(b, 2), lo2, s2));
+        atrbvh_morton_quantise(atrbvh_box_centre(b, 0), a.lo[0], a.scale[0]),
+        atrbvh_morton_quantise(atrbvh_box_centre(b, 1), a.lo[1], a.scale[1]),
+        atrbvh_morton_quantise(atrbvh_box_centre(b, 2), a.lo[2], a.scale[2]));
     order[i] = i; /* the sort's values: build indices */
 }
 
 /* -------------------------------------------------------------------- sort */
-/* Stable LSD radix sort, 8-bit digits, as the CPU: `blocks` contiguous
- * blocks; count per (digit, block), exclusive scan in digit-major order,
- * each block scatters its items in order.  hist[d * blocks + b]. */
-__kernel void sort_count(__global const ulong *keys, uint n, uint shift,
-                         uint blocks, __global uint *hist)
+/* One stable 8-bit LSD pass (shared/sort.h): count per (digit, block),
+ * exclusive scan in digit-major order, each block places its items in
+ * order. */
+__kernel void sort_count(__global const ulong *keys, __global uint *hist,
+                         atrbvh_kargs_sort a)
 {
     uint b = (uint)get_global_id(0), lo, hi, j, d;
-    uint c[256];
-    if (b >= blocks)
+    uint c[ATRBVH_SORT_RADIX];
+    if (b >= a.blocks)
         return;
-    for (d = 0; d < 256u; d++)
+    for (d = 0; d < ATRBVH_SORT_RADIX; d++)
         c[d] = 0;
-    lo = (uint)((ulong)n * b / blocks);
-    hi = (uint)((ulong)n * (b + 1u) / blocks);
+    atrbvh_block_range(a.n, b, a.blocks, &lo, &hi);
     for (j = lo; j < hi; j++)
-        c[(uint)(keys[j] >> shift) & 255u]++;
-    for (d = 0; d < 256u; d++)
-        hist[d * blocks + b] = c[d];
+        c[atrbvh_sort_digit(keys[j], a.shift)]++;
+    for (d = 0; d < ATRBVH_SORT_RADIX; d++)
+        hist[atrbvh_sort_slot(d, b, a.blocks)] = c[d];
 }
 
-__kernel void sort_scan(__global uint *hist, uint entries)
+__kernel void sort_scan(__global uint *hist, atrbvh_kargs_sort a)
 {
-    uint i, total = 0;
     if (get_global_id(0) != 0)
         return;
-    for (i = 0; i < entries; i++) {
-        uint t = hist[i];
-        hist[i] = total;
-        total += t;
-    }
+    (void)atrbvh_sort_scan(hist, a.entries);
 }
 
 __kernel void sort_scatter(__global const ulong *src_k,
                            __global const uint *src_v, __global ulong *dst_k,
-                           __global uint *dst_v, uint n, uint shift,
-                           uint blocks, __global const uint *hist)
+                           __global uint *dst_v, __global const uint *hist,
+                           atrbvh_kargs_sort a)
 {
     uint b = (uint)get_global_id(0), lo, hi, j, d;
-    uint o[256];
-    if (b >= blocks)
+    uint next[ATRBVH_SORT_RADIX];
+    if (b >= a.blocks)
         return;
-    for (d = 0; d < 256u; d++)
-        o[d] = hist[d * blocks + b];
-    lo = (uint)((ulong)n * b / blocks);
-    hi = (uint)((ulong)n * (b + 1u) / blocks);
+    for (d = 0; d < ATRBVH_SORT_RADIX; d++)
+        next[d] = hist[atrbvh_sort_slot(d, b, a.blocks)];
+    atrbvh_block_range(a.n, b, a.blocks, &lo, &hi);
     for (j = lo; j < hi; j++) {
         ulong k = src_k[j];
-        uint at = o[(uint)(k >> shift) & 255u]++;
+        uint at = atrbvh_sort_place(next, atrbvh_sort_digit(k, a.shift));
         dst_k[at] = k;
         dst_v[at] = src_v[j];
     }
 }
 
 /* --------------------------------------------------------------- hierarchy */
-__kernel void hierarchy(__global const ulong *keys, uint n,
-                        __global uint *left, __global uint *right,
-                        __global uint *parent, __global uint *count,
-                        __global uint *leaf_prim, __global const uint *order,
-                        __global const uint *ids, int has_ids)
+__kernel void hierarchy(__global const ulong *keys, __global uint *left,
+                        __global uint *right, __global uint *parent,
+                        __global uint *count, __global uint *leaf_prim,
+                        __global const uint *order, __global const uint *ids,
+                        atrbvh_kargs_tree a)
 {
-    uint i = (uint)get_global_id(0);
+    uint i = (uint)get_global_id(0), n = a.n;
     if (i >= n)
         return;
     if (i + 1u < n) {
@@ -216,7 +177,7 @@ __kernel void hierarchy(__global const ulong *keys, uint n,
         parent[r] = i;
     }
     count[n - 1u + i] = 1u;
-    leaf_prim[i] = has_ids ? ids[order[i]] : order[i];
+    leaf_prim[i] = a.has_ids ? ids[order[i]] : order[i];
     if (i == 0u)
         parent[0] = ATRBVH_U32_MAX;
 }
@@ -228,15 +189,16 @@ __kernel void refit(__global atrbvh_box *box, __global uint *count,
                     __global double *cost, __global const uint *left,
                     __global const uint *right, __global const uint *parent,
                     __global const atrbvh_box *prim_boxes,
-                    __global const uint *order, uint n, double ci, double ct,
-                    int collapse, uint max_leaf, __global uint *counter)
+                    __global const uint *order, __global uint *counter,
+                    atrbvh_kargs_tree a)
 {
     uint i = (uint)get_global_id(0), node;
-    atrbvh_cost_params p = cost_params(ci, ct, collapse, max_leaf);
+    atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
+                                             a.max_leaf);
     atrbvh_box b;
-    if (i >= n)
+    if (i >= a.n)
         return;
-    node = n - 1u + i;
+    node = a.n - 1u + i;
     b = prim_boxes[order[i]];
     box[node] = b;
     count[node] = 1u;
@@ -267,21 +229,20 @@ __kernel void refit(__global atrbvh_box *box, __global uint *count,
  * crown (subtree count >= gamma), and the list of crown nodes with no crown
  * child, where the walks start. */
 __kernel void opt_prepare(__global const uint *left, __global const uint *right,
-                          __global const uint *count, uint n_internal,
-                          uint gamma, __global uint *needed,
+                          __global const uint *count, __global uint *needed,
                           __global uint *counter, __global uint *list,
-                          __global uint *list_count)
+                          __global uint *list_count, atrbvh_kargs_optimise a)
 {
     uint i = (uint)get_global_id(0), l, r, k;
-    if (i >= n_internal)
+    if (i >= a.n_internal)
         return;
     l = left[i];
     r = right[i];
-    k = (uint)(l < n_internal && count[l] >= gamma) +
-        (uint)(r < n_internal && count[r] >= gamma);
+    k = (uint)(l < a.n_internal && count[l] >= a.gamma) +
+        (uint)(r < a.n_internal && count[r] >= a.gamma);
     needed[i] = k;
     counter[i] = 0u;
-    if (count[i] >= gamma && k == 0u)
+    if (count[i] >= a.gamma && k == 0u)
         list[atomic_inc(list_count)] = i;
 }
 
@@ -291,46 +252,43 @@ __kernel void opt_prepare(__global const uint *left, __global const uint *right,
  * only after its whole subtree is final.  The treelet root keeps its id and
  * parent, so the walk's way up stays valid.  The tree arrays are read and
  * written through t's volatile pointers (ATRBVH_SHARED_GLOBAL, treelet.h):
- * they hold nodes other items wrote in this launch.  Scratch: `stride` bytes per
- * worker, sized once per build. */
+ * they hold nodes other items wrote in this launch.  Scratch: a.stride
+ * bytes per worker. */
 __kernel void opt_round(__global uint *left, __global uint *right,
                         __global uint *parent, __global uint *count,
                         __global atrbvh_box *box, __global double *cost,
-                        uint n_internal, __global const uint *list,
-                        uint list_len, __global const uint *needed,
+                        __global const uint *list, __global const uint *needed,
                         __global uint *counter, __global uchar *scratch,
-                        ulong stride, ulong off_cost, ulong off_count,
-                        ulong off_split, ulong off_dist, uint treelet_size,
-                        int agglomerative, uint workers, double ci, double ct,
-                        int collapse, uint max_leaf)
+                        atrbvh_kargs_optimise a)
 {
     uint w = (uint)get_global_id(0), k;
-    atrbvh_cost_params p = cost_params(ci, ct, collapse, max_leaf);
+    atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
+                                             a.max_leaf);
     atrbvh_treelet_tree t;
     atrbvh_trbvh_scratch s;
     __global uchar *base;
     __global double *dist;
-    if (w >= workers)
+    if (w >= a.workers)
         return;
-    base = scratch + (ulong)w * stride;
+    base = scratch + (ulong)w * a.stride;
     s.box = (__global atrbvh_box *)base;
-    s.cost = (__global double *)(base + off_cost);
-    s.count = (__global uint *)(base + off_count);
-    s.split = (__global uint *)(base + off_split);
-    dist = (__global double *)(base + off_dist);
+    s.cost = (__global double *)(base + a.off_cost);
+    s.count = (__global uint *)(base + a.off_count);
+    s.split = (__global uint *)(base + a.off_split);
+    dist = (__global double *)(base + a.off_dist);
     t.left = left;
     t.right = right;
     t.parent = parent;
     t.count = count;
     t.box = box;
     t.cost = cost;
-    t.n_internal = n_internal;
-    for (k = w; k < list_len; k += workers) {
+    t.n_internal = a.n_internal;
+    for (k = w; k < a.list_len; k += a.workers) {
         uint x = list[k];
         for (;;) {
             uint up;
-            atrbvh_treelet_process(&t, &p, x, treelet_size, agglomerative, s,
-                                   dist);
+            atrbvh_treelet_process(&t, &p, x, a.treelet_size,
+                                   (int)a.agglomerative, s, dist);
             if (x == 0u)
                 break;
             up = t.parent[x]; /* volatile, as every tree read here */
@@ -353,15 +311,15 @@ __kernel void collapse(__global const atrbvh_box *box,
                        __global const uint *count,
                        __global const double *cost, __global const uint *left,
                        __global const uint *right,
-                       __global const uint *parent, uint n, double ci,
-                       double ct, int collapse, uint max_leaf,
-                       __global uint *size, __global uint *counter)
+                       __global const uint *parent, __global uint *size,
+                       __global uint *counter, atrbvh_kargs_tree a)
 {
     uint i = (uint)get_global_id(0), node;
-    atrbvh_cost_params p = cost_params(ci, ct, collapse, max_leaf);
-    if (i >= n)
+    atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
+                                             a.max_leaf);
+    if (i >= a.n)
         return;
-    node = n - 1u + i;
+    node = a.n - 1u + i;
     size[node] = 1u | ATRBVH_SIZE_LEAF;
     while (node != 0u) {
         uint up = parent[node], l, r;
@@ -380,21 +338,20 @@ __kernel void collapse(__global const atrbvh_box *box,
 
 /* ------------------------------------------------------------------ layout */
 /* One item per tree node: its depth-first position and first primitive
- * follow from the path to the root (left child: parent + 1; right child:
- * parent + 1 + size(left sibling), primitives + count(left sibling)); it
- * is emitted when no proper ancestor became a leaf.  Every tree leaf
- * writes its primitive at its position, which is where a collapsed
- * ancestor's primitives go too (left to right). */
+ * follow from the path to the root by the placement rule the CPU's
+ * top-down emission applies (atrbvh_layout_right_pos/_prim); it is
+ * emitted (atrbvh_layout_node) when no proper ancestor became a leaf.
+ * Every tree leaf writes its primitive at its position, which is where a
+ * collapsed ancestor's primitives go too (left to right). */
 __kernel void layout(__global const atrbvh_box *box, __global const uint *count,
                      __global const uint *left, __global const uint *right,
                      __global const uint *parent, __global const uint *size,
-                     __global const uint *leaf_prim, uint n,
-                     __global atrbvh_node *nodes, __global uint *prims)
+                     __global const uint *leaf_prim,
+                     __global atrbvh_node *nodes, __global uint *prims,
+                     atrbvh_kargs_tree a)
 {
-    uint x = (uint)get_global_id(0), c, pos = 0, prim = 0;
-    int emitted = 1, k;
-    atrbvh_node out;
-    atrbvh_box b;
+    uint x = (uint)get_global_id(0), c, pos = 0, prim = 0, n = a.n;
+    int emitted = 1;
     if (x >= 2u * n - 1u)
         return;
     c = x;
@@ -404,8 +361,8 @@ __kernel void layout(__global const atrbvh_box *box, __global const uint *count,
             emitted = 0;
         if (right[up] == c) {
             uint l = left[up];
-            pos += 1u + (size[l] & ATRBVH_SIZE_MASK);
-            prim += count[l];
+            pos = atrbvh_layout_right_pos(pos, size[l]);
+            prim = atrbvh_layout_right_prim(prim, count[l]);
         } else {
             pos += 1u;
         }
@@ -415,88 +372,78 @@ __kernel void layout(__global const atrbvh_box *box, __global const uint *count,
         prims[prim] = leaf_prim[x - (n - 1u)];
     if (!emitted)
         return;
-    b = box[x];
-    for (k = 0; k < 3; k++) {
-        out.min[k] = b.min[k];
-        out.max[k] = b.max[k];
-    }
-    if (size[x] & ATRBVH_SIZE_LEAF) {
-        out.index = prim;
-        out.count = count[x];
-    } else {
-        out.index = pos + 1u + (size[left[x]] & ATRBVH_SIZE_MASK);
-        out.count = 0u;
-    }
-    nodes[pos] = out;
+    nodes[pos] = atrbvh_layout_node(
+        box[x], size[x], count[x], pos, prim,
+        (size[x] & ATRBVH_SIZE_LEAF) ? 0u : size[left[x]]);
 }
 
 /* ------------------------------------------------------------- ray queries */
 /* One work-item per ray; the per-ray work is atrbvh_trav_closest /
  * atrbvh_trav_any (shared/traverse.h), the functions lib/traverse.c calls,
  * so every hit (primitive, t, u, v) is bit for bit the CPU's.  Geometry:
- * `boxes` 0 reads triangles from vertices (stride in floats) and, when
- * `indexed`, indices (stride in u32); 1 reads boxes (stride in floats).
- * Unused buffers are dummies. */
-static atrbvh_trav_scene trav_scene(
-    __global const atrbvh_node *nodes, ulong node_count,
-    __global const uint *prim_indices, ulong prim_count, int boxes,
-    ulong primitive_count, __global const float *vertices, ulong vertex_count,
-    ulong vstride, __global const uint *indices, int indexed, ulong istride,
-    __global const float *box_data, ulong bstride)
+ * a.boxes 0 reads triangles from vertices and, when a.indexed, indices;
+ * 1 reads boxes.  Unused buffers are dummies. */
+static atrbvh_trav_scene trav_scene(__global const atrbvh_node *nodes,
+                                    __global const uint *prim_indices,
+                                    __global const float *vertices,
+                                    __global const uint *indices,
+                                    __global const float *box_data,
+                                    atrbvh_kargs_trace a)
 {
     atrbvh_trav_scene s;
     s.nodes = nodes;
-    s.node_count = node_count;
+    s.node_count = a.node_count;
     s.prim_indices = prim_indices;
-    s.prim_count = prim_count;
-    s.boxes = boxes;
-    s.primitive_count = primitive_count;
+    s.prim_count = a.prim_count;
+    s.boxes = (int)a.boxes;
+    s.primitive_count = a.primitive_count;
     s.vertices = vertices;
-    s.vertex_count = vertex_count;
-    s.vertex_stride = vstride;
+    s.vertex_count = a.vertex_count;
+    s.vertex_stride = a.vstride;
     s.indices = indices;
-    s.indexed = indexed;
-    s.index_stride = istride;
+    s.indexed = (int)a.indexed;
+    s.index_stride = a.istride;
     s.box_data = box_data;
-    s.box_stride = bstride;
+    s.box_stride = a.bstride;
     return s;
 }
 
-#define TRAV_PARAMS                                                            \
-    __global const atrbvh_node *nodes, ulong node_count,                       \
-        __global const uint *prim_indices, ulong prim_count, int boxes,        \
-        ulong primitive_count, __global const float *vertices,                 \
-        ulong vertex_count, ulong vstride, __global const uint *indices,       \
-        int indexed, ulong istride, __global const float *box_data,            \
-        ulong bstride, __global const atrbvh_ray *rays, ulong ray_count
-#define TRAV_ARGS                                                              \
-    nodes, node_count, prim_indices, prim_count, boxes, primitive_count,       \
-        vertices, vertex_count, vstride, indices, indexed, istride, box_data,  \
-        bstride
-
-__kernel void intersect_closest(TRAV_PARAMS, __global atrbvh_hit *hits)
+__kernel void intersect_closest(__global const atrbvh_node *nodes,
+                                __global const uint *prim_indices,
+                                __global const float *vertices,
+                                __global const uint *indices,
+                                __global const float *box_data,
+                                __global const atrbvh_ray *rays,
+                                __global atrbvh_hit *hits,
+                                atrbvh_kargs_trace a)
 {
     ulong i = get_global_id(0);
     atrbvh_trav_scene s;
     atrbvh_ray ray;
     atrbvh_hit h;
-    if (i >= ray_count)
+    if (i >= a.ray_count)
         return;
-    s = trav_scene(TRAV_ARGS);
+    s = trav_scene(nodes, prim_indices, vertices, indices, box_data, a);
     ray = rays[i];
     atrbvh_trav_closest(&s, ray.origin, ray.dir, ray.tmin, ray.tmax, &h.t,
                         &h.u, &h.v, &h.primitive);
     hits[i] = h;
 }
 
-__kernel void intersect_any(TRAV_PARAMS, __global uchar *occluded)
+__kernel void intersect_any(__global const atrbvh_node *nodes,
+                            __global const uint *prim_indices,
+                            __global const float *vertices,
+                            __global const uint *indices,
+                            __global const float *box_data,
+                            __global const atrbvh_ray *rays,
+                            __global uchar *occluded, atrbvh_kargs_trace a)
 {
     ulong i = get_global_id(0);
     atrbvh_trav_scene s;
     atrbvh_ray ray;
-    if (i >= ray_count)
+    if (i >= a.ray_count)
         return;
-    s = trav_scene(TRAV_ARGS);
+    s = trav_scene(nodes, prim_indices, vertices, indices, box_data, a);
     ray = rays[i];
     occluded[i] = (uchar)(atrbvh_trav_any(&s, ray.origin, ray.dir, ray.tmin,
                                           ray.tmax) != 0);

@@ -502,6 +502,26 @@ START_TEST(capture_every_stage)
     for (i = 0; i < (size_t)c1.calls; i++)
         ck_assert_msg(c1.sum[i] == c2.sum[i], "stage %s differs with 2 threads",
                       c1.names[i]);
+    /* The same bytes on an OpenCL device, when there is one. */
+    {
+        atrbvh_device *cl = NULL;
+        if (atrbvh_device_open("opencl", &cl, &e) == ATRBVH_OK) {
+            cap_log c4;
+            memset(&c4, 0, sizeof c4);
+            o.device = cl;
+            o.capture_user = &c4;
+            ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_OK);
+            atrbvh_bvh_free(b);
+            o.device = NULL;
+            atrbvh_device_close(cl);
+            ck_assert_int_eq(c4.calls, c1.calls);
+            for (i = 0; i < (size_t)c1.calls; i++)
+                ck_assert_msg(c1.sum[i] == c4.sum[i],
+                              "stage %s differs on OpenCL", c1.names[i]);
+        } else {
+            fprintf(stderr, "SKIP capture on OpenCL: %s\n", e.text);
+        }
+    }
     /* The callback can cancel, after any stage; nothing leaks. */
     atrbvh_set_allocator(count_malloc, count_free);
     for (i = 1; i <= sizeof expect / sizeof *expect; i++) {

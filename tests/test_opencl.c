@@ -6,6 +6,7 @@
  * OpenCL device (or no OpenCL support) is there.
  */
 #define _POSIX_C_SOURCE 200809L
+#include "config.h" /* ATRBVH_KERNEL_SOURCE_OVERRIDE */
 #include <check.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -306,12 +307,14 @@ START_TEST(bad_device_string)
 }
 END_TEST
 
+/* A kernel that does not compile: the compiler log reaches the error text
+ * of atrbvh_device_open (the program is built there, once).  Needs a
+ * library configured with --enable-kernel-source-override (the configs
+ * stage builds one); a normal build reads no environment variable. */
 START_TEST(broken_kernel_source)
 {
-    static const float box[6] = {0, 0, 0, 1, 1, 1};
-    atrbvh_geometry g = atrbvh_geometry_boxes(box, 1);
-    atrbvh_build_options o;
-    atrbvh_bvh *b = NULL;
+#ifdef ATRBVH_KERNEL_SOURCE_OVERRIDE
+    atrbvh_device *dev = (atrbvh_device *)&dev;
     atrbvh_error e;
     atrbvh_status st;
     char dir[] = "/tmp/atrbvh-cl-XXXXXX", path[64];
@@ -326,18 +329,112 @@ START_TEST(broken_kernel_source)
           f);
     fclose(f);
     setenv("ATRBVH_CL_SOURCE_DIR", dir, 1);
-    atrbvh_build_options_init(&o);
-    o.backend = ATRBVH_BACKEND_OPENCL;
-    st = atrbvh_build(&g, &o, &b, &e);
+    st = atrbvh_device_open("opencl", &dev, &e);
     unsetenv("ATRBVH_CL_SOURCE_DIR");
     remove(path);
     rmdir(dir);
     ck_assert_int_eq(st, ATRBVH_ERR_BACKEND);
-    ck_assert_ptr_null(b);
+    ck_assert_ptr_null(dev);
     ck_assert_msg(strstr(e.text, "kernel build failed"), "%s", e.text);
     /* The compiler log: the file and the undeclared name. */
     ck_assert_msg(strstr(e.text, "kernels.cl"), "%s", e.text);
     ck_assert_msg(strstr(e.text, "this_is_not_defined"), "%s", e.text);
+#else
+    fprintf(stderr, "SKIP broken_kernel_source: configured without "
+                    "--enable-kernel-source-override\n");
+#endif
+}
+END_TEST
+
+/* Without the override switch the library reads no environment variable:
+ * a kernel folder in $ATRBVH_CL_SOURCE_DIR changes nothing, and
+ * $ATRBVH_OPENCL_DEVICE does not choose the device. */
+START_TEST(no_environment)
+{
+#ifndef ATRBVH_KERNEL_SOURCE_OVERRIDE
+    atrbvh_device *dev = NULL;
+    atrbvh_error e;
+    atrbvh_status st;
+    char dir[] = "/tmp/atrbvh-cl-XXXXXX", path[64];
+    FILE *f;
+    REQUIRE_DEVICE();
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/kernels.cl", dir);
+    f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs("this is not OpenCL\n", f);
+    fclose(f);
+    setenv("ATRBVH_CL_SOURCE_DIR", dir, 1);
+    setenv("ATRBVH_OPENCL_DEVICE", "no such device, surely", 1);
+    st = atrbvh_device_open("opencl", &dev, &e);
+    unsetenv("ATRBVH_CL_SOURCE_DIR");
+    unsetenv("ATRBVH_OPENCL_DEVICE");
+    remove(path);
+    rmdir(dir);
+    ck_assert_msg(st == ATRBVH_OK, "%s", e.text);
+    atrbvh_device_close(dev);
+#else
+    fprintf(stderr, "SKIP no_environment: configured with "
+                    "--enable-kernel-source-override\n");
+#endif
+}
+END_TEST
+
+/* The device handle: spec forms, and builds on one open handle that match
+ * the CPU's, build after build (the buffers kept on the device between
+ * builds of different sizes must not leak one build into the next). */
+START_TEST(device_handle)
+{
+    atrbvh_device *dev = NULL, *again = NULL, *bad = (atrbvh_device *)&bad;
+    atrbvh_build_options o;
+    atrbvh_error e;
+    char msg[256], upper[128];
+    const char *name;
+    size_t k;
+    int round;
+    REQUIRE_DEVICE();
+    ck_assert_int_eq(atrbvh_device_open("opencl", &dev, &e), ATRBVH_OK);
+    ck_assert_int_eq(atrbvh_device_backend(dev), ATRBVH_BACKEND_OPENCL);
+    name = atrbvh_device_name(dev);
+    ck_assert(name && *name);
+    /* "opencl:0:0" is the first device too; a name substring in another
+     * case finds it again. */
+    ck_assert_int_eq(atrbvh_device_open("opencl:0:0", &again, &e), ATRBVH_OK);
+    ck_assert_str_eq(atrbvh_device_name(again), name);
+    atrbvh_device_close(again);
+    again = NULL;
+    for (k = 0; name[k] && k + 1 < sizeof upper; k++)
+        upper[k] = (char)(name[k] >= 'a' && name[k] <= 'z' ? name[k] - 32
+                                                           : name[k]);
+    upper[k] = '\0';
+    snprintf(msg, sizeof msg, "opencl:%.100s", upper);
+    ck_assert_msg(atrbvh_device_open(msg, &again, &e) == ATRBVH_OK, "%s: %s",
+                  msg, e.text);
+    ck_assert_str_eq(atrbvh_device_name(again), name);
+    atrbvh_device_close(again);
+    ck_assert_int_eq(atrbvh_device_open("opencl:no such device, surely", &bad,
+                                        &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_ptr_null(bad);
+    ck_assert_msg(strstr(e.text, "no device matches"), "%s", e.text);
+    for (round = 0; round < 3; round++) {
+        static const unsigned sizes[] = {3000, 700, 3001};
+        unsigned n = sizes[round];
+        float *v = tu_random_triangles(n, 17 + (unsigned)round, 4.0f, -2.0f);
+        atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * n, NULL, n);
+        atrbvh_bvh *x, *y;
+        atrbvh_build_options_init(&o);
+        x = tu_build(&g, &o);
+        o.device = dev;
+        y = tu_build(&g, &o);
+        ck_assert_str_eq(atrbvh_bvh_device(y), name);
+        ck_assert_msg(atrbvh_compare(x, y, &e) == 0, "round %d: %s", round,
+                      e.text);
+        atrbvh_bvh_free(x);
+        atrbvh_bvh_free(y);
+        free(v);
+    }
+    atrbvh_device_close(dev);
 }
 END_TEST
 
@@ -394,6 +491,8 @@ static Suite *opencl_suite(void)
     tc = tcase_create("errors");
     tcase_add_test(tc, bad_device_string);
     tcase_add_test(tc, broken_kernel_source);
+    tcase_add_test(tc, no_environment);
+    tcase_add_test(tc, device_handle);
     tcase_add_test(tc, kernel_times_and_device);
     tcase_set_timeout(tc, 120);
     suite_add_tcase(s, tc);

@@ -79,6 +79,7 @@ config no-openmp "$no_gomp" lib --disable-openmp
 config no-opencl "$no_cl" lib --disable-opencl
 config no-embree "$no_embree" tool --without-embree
 config no-png "$no_png" tool --without-png
+config kernel-source-override 'grep -q "define ATRBVH_KERNEL_SOURCE_OVERRIDE" config.h && make check TESTS=tests/test_opencl check_PROGRAMS=tests/test_opencl' lib --enable-kernel-source-override
 
 # The configure summary of the all-off build, for the log.
 sed -n '/^  atrbvh /,/^    make check:/p' "$top/_build/configs/all-off/config.out"

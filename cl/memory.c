@@ -1,0 +1,214 @@
+/*
+ * cl/memory.c - the device memory of an open handle and the launches.
+ *
+ * Buffers are kept by role (opencl.h's B_* slots) until the device is
+ * closed: a slot is created, or replaced by a larger one, only when a
+ * build or ray batch needs more than it holds, so repeated builds of
+ * similar size create no buffer.  Sizes are checked for overflow and
+ * against CL_DEVICE_MAX_MEM_ALLOC_SIZE before anything is created.
+ *
+ * Every launch records a profiling event; atrbvh_i_cl_finish waits for the
+ * queue and adds each launch's device time to the current time table (the
+ * build's, for atrbvh_bvh_kernel_time, or a ray batch's).
+ */
+#include "config.h"
+
+#include "opencl.h"
+
+#include <stdio.h>
+#include <string.h>
+
+atrbvh_status atrbvh_i_cl_buffer(atrbvh_cl_device *c, int slot, size_t count,
+                                 size_t item, const char *what,
+                                 atrbvh_error *error)
+{
+    size_t bytes;
+    cl_int err;
+    if (!atrbvh_i_mul_size(count ? count : 1, item, &bytes))
+        return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,
+                             "OpenCL buffer %s: size overflows", what);
+    if (c->buf[slot] && c->buf_bytes[slot] >= bytes)
+        return ATRBVH_OK;
+    if ((cl_ulong)bytes > c->max_alloc)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, ATRBVH_CL_NO_INDEX,
+                             "OpenCL buffer %s of %lu bytes exceeds the "
+                             "device's largest allocation "
+                             "(CL_DEVICE_MAX_MEM_ALLOC_SIZE %lu)",
+                             what, (unsigned long)bytes,
+                             (unsigned long)c->max_alloc);
+    if (c->buf[slot]) {
+        /* Kernels queued on the old buffer keep it alive until they are
+         * done (CL reference counting). */
+        clReleaseMemObject(c->buf[slot]);
+        c->buf[slot] = NULL;
+        c->buf_bytes[slot] = 0;
+    }
+    c->buf[slot] = clCreateBuffer(c->ctx, CL_MEM_READ_WRITE, bytes, NULL, &err);
+    if (!c->buf[slot])
+        return atrbvh_i_cl_error(error, err, "clCreateBuffer", what);
+    c->buf_bytes[slot] = bytes;
+    c->buffers_created++;
+    return ATRBVH_OK;
+}
+
+void atrbvh_i_cl_buffers_release(atrbvh_cl_device *c)
+{
+    int k;
+    for (k = 0; k < B_SLOTS; k++) {
+        if (c->buf[k])
+            clReleaseMemObject(c->buf[k]);
+        c->buf[k] = NULL;
+        c->buf_bytes[k] = 0;
+    }
+}
+
+atrbvh_status atrbvh_i_cl_upload(atrbvh_cl_device *c, int slot,
+                                 const void *data, size_t bytes,
+                                 const char *what, atrbvh_error *error)
+{
+    cl_int err;
+    if (bytes == 0)
+        return ATRBVH_OK;
+    err = clEnqueueWriteBuffer(c->queue, c->buf[slot], CL_TRUE, 0, bytes, data,
+                               0, NULL, NULL);
+    if (err != CL_SUCCESS)
+        return atrbvh_i_cl_error(error, err, "clEnqueueWriteBuffer", what);
+    return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cl_download(atrbvh_cl_device *c, int slot, void *data,
+                                   size_t bytes, const char *what,
+                                   atrbvh_error *error)
+{
+    cl_int err;
+    if (bytes == 0)
+        return ATRBVH_OK;
+    err = clEnqueueReadBuffer(c->queue, c->buf[slot], CL_TRUE, 0, bytes, data,
+                              0, NULL, NULL);
+    if (err != CL_SUCCESS)
+        return atrbvh_i_cl_error(error, err, "clEnqueueReadBuffer", what);
+    return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cl_zero(atrbvh_cl_device *c, int slot, size_t bytes,
+                               const char *what, atrbvh_error *error)
+{
+    cl_uint z = 0;
+    cl_int err;
+    if (bytes == 0)
+        return ATRBVH_OK;
+    err = clEnqueueFillBuffer(c->queue, c->buf[slot], &z, sizeof z, 0, bytes,
+                              0, NULL, NULL);
+    if (err != CL_SUCCESS)
+        return atrbvh_i_cl_error(error, err, "clEnqueueFillBuffer", what);
+    return ATRBVH_OK;
+}
+
+static void add_time(atrbvh_cl_times *t, const char *name, double ms)
+{
+    unsigned i;
+    for (i = 0; i < t->count; i++)
+        if (strcmp(t->name[i], name) == 0)
+            break;
+    if (i == t->count) {
+        if (i == ATRBVH_CL_MAX_TIMES)
+            return;
+        t->name[i] = name;
+        t->ms[i] = 0.0;
+        t->count++;
+    }
+    t->ms[i] += ms;
+}
+
+void atrbvh_i_cl_drop_events(atrbvh_cl_device *c)
+{
+    int k;
+    for (k = 0; k < c->event_count; k++)
+        clReleaseEvent(c->events[k]);
+    c->event_count = 0;
+}
+
+atrbvh_status atrbvh_i_cl_finish(atrbvh_cl_device *c, atrbvh_error *error)
+{
+    int k;
+    cl_int err = clFinish(c->queue);
+    if (err != CL_SUCCESS) {
+        atrbvh_i_cl_drop_events(c);
+        return atrbvh_i_cl_error(error, err, "clFinish", NULL);
+    }
+    for (k = 0; k < c->event_count; k++) {
+        cl_ulong a = 0, b = 0;
+        if (clGetEventProfilingInfo(c->events[k], CL_PROFILING_COMMAND_START,
+                                    sizeof a, &a, NULL) != CL_SUCCESS ||
+            clGetEventProfilingInfo(c->events[k], CL_PROFILING_COMMAND_END,
+                                    sizeof b, &b, NULL) != CL_SUCCESS)
+            a = b = 0;
+        add_time(c->times, atrbvh_i_cl_kernel_names[c->event_kernel[k]],
+                 b > a ? (double)(b - a) * 1e-6 : 0.0);
+    }
+    atrbvh_i_cl_drop_events(c);
+    return ATRBVH_OK;
+}
+
+/* Launches kernel k over `items` work-items (rounded up to a multiple of
+ * 64; every kernel checks its range).  The work-group size is the
+ * implementation's choice except for the ray kernels. */
+static atrbvh_status launch(atrbvh_cl_device *c, int k, size_t items,
+                            atrbvh_error *error)
+{
+    size_t global = (items + 63u) / 64u * 64u, local = 0;
+    cl_event ev = NULL;
+    cl_int err;
+    if (c->event_count == ATRBVH_CL_MAX_EVENTS) {
+        atrbvh_status st = atrbvh_i_cl_finish(c, error);
+        if (st != ATRBVH_OK)
+            return st;
+    }
+    if (k == K_INTERSECT_CLOSEST || k == K_INTERSECT_ANY) {
+        /* Left to itself PoCL picks groups of 4096 for a large launch and
+         * runs out of stack with the traversal's private arrays (2 KB per
+         * item): 64, or the largest power of two the kernel allows below
+         * it (global is a multiple of 64, so it divides it). */
+        size_t max_wg = 0;
+        local = 64;
+        if (clGetKernelWorkGroupInfo(c->kernel[k], c->device,
+                                     CL_KERNEL_WORK_GROUP_SIZE, sizeof max_wg,
+                                     &max_wg, NULL) == CL_SUCCESS &&
+            max_wg > 0)
+            while (local > max_wg)
+                local /= 2;
+    }
+    err = clEnqueueNDRangeKernel(c->queue, c->kernel[k], 1, NULL, &global,
+                                 local ? &local : NULL, 0, NULL, &ev);
+    if (err != CL_SUCCESS)
+        return atrbvh_i_cl_error(error, err, "clEnqueueNDRangeKernel",
+                                 atrbvh_i_cl_kernel_names[k]);
+    c->events[c->event_count] = ev;
+    c->event_kernel[c->event_count++] = k;
+    return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cl_run(atrbvh_cl_device *c, int k, size_t items,
+                              const atrbvh_cl_arg *args, int count,
+                              atrbvh_error *error)
+{
+    int i;
+    if (items == 0)
+        return ATRBVH_OK;
+    for (i = 0; i < count; i++) {
+        cl_int err;
+        if (args[i].slot >= 0)
+            err = clSetKernelArg(c->kernel[k], (cl_uint)i, sizeof(cl_mem),
+                                 &c->buf[args[i].slot]);
+        else
+            err = clSetKernelArg(c->kernel[k], (cl_uint)i, args[i].size,
+                                 args[i].value);
+        if (err != CL_SUCCESS) {
+            char what[64];
+            snprintf(what, sizeof what, "%s argument %d",
+                     atrbvh_i_cl_kernel_names[k], i);
+            return atrbvh_i_cl_error(error, err, "clSetKernelArg", what);
+        }
+    }
+    return launch(c, k, items, error);
+}

@@ -1,0 +1,203 @@
+/*
+ * cl/opencl.h - what the OpenCL backend's files share (internal to cl/).
+ *
+ *   device.c   device choice by spec, context, queue, program (built once
+ *              at open), kernels; the locks; open/close
+ *   source.c   the kernel source: the embedded files, or (configure
+ *              --enable-kernel-source-override only) files from
+ *              $ATRBVH_CL_SOURCE_DIR
+ *   memory.c   device buffers kept between builds, transfers, launches,
+ *              profiling times
+ *   stages.c   one short function per stage, begin/end, set_prims,
+ *              capture: the backend table atrbvh_i_cl_backend
+ *   trace.c    ray batches on the opened device
+ *   error.c    CL error codes as atrbvh errors
+ *
+ * cl/ sees nothing of lib/ but lib/backend.h (the interface and the
+ * library's services), lib/atrbvh.h and lib/shared/.
+ */
+#ifndef ATRBVH_CL_OPENCL_H
+#define ATRBVH_CL_OPENCL_H
+
+#include "backend.h"
+#include "shared/kargs.h"
+#include "shared/sort.h"
+
+#ifndef CL_TARGET_OPENCL_VERSION
+#define CL_TARGET_OPENCL_VERSION 120
+#endif
+#include <CL/cl.h>
+#include <pthread.h>
+
+#define ATRBVH_CL_NO_INDEX ((uint64_t)-1)
+
+/* ------------------------------------------------------------- kernels */
+enum {
+    K_BOUNDS_TRIANGLES,
+    K_BOUNDS_BOXES,
+    K_BOUNDS_REDUCE,
+    K_MORTON,
+    K_SORT_COUNT,
+    K_SORT_SCAN,
+    K_SORT_SCATTER,
+    K_HIERARCHY,
+    K_REFIT,
+    K_OPT_PREPARE,
+    K_OPT_ROUND,
+    K_COLLAPSE,
+    K_LAYOUT,
+    K_INTERSECT_CLOSEST,
+    K_INTERSECT_ANY,
+    K_COUNT
+};
+extern const char *const atrbvh_i_cl_kernel_names[K_COUNT];
+
+/* ------------------------------------------------------------- buffers */
+/* Device buffers by role.  Each keeps its largest size until the device
+ * is closed, so a second build of similar size creates no buffer. */
+enum {
+    B_GEOMETRY,   /* vertices or input boxes             */
+    B_INDICES,    /* triangle indices (or a dummy)        */
+    B_BOXES,      /* primitive boxes, build order         */
+    B_PROBLEMS,   /* bounds: invalid primitive count      */
+    B_PARTIAL,    /* bounds: partial scene/centroid boxes */
+    B_KEYS,
+    B_KEYS_TMP,
+    B_ORDER,
+    B_ORDER_TMP,
+    B_HIST,       /* sort: digit counts per block         */
+    B_IDS,        /* kept primitive ids (skip_invalid)    */
+    B_LEFT,
+    B_RIGHT,
+    B_PARENT,
+    B_COUNT,
+    B_BOX,
+    B_COST,
+    B_LEAF_PRIM,
+    B_COUNTER,    /* bottom-up arrival counters           */
+    B_NEEDED,     /* optimise: crown children per node    */
+    B_LIST,       /* optimise: walk starts                */
+    B_LIST_COUNT,
+    B_SCRATCH,    /* optimise: per-worker treelet tables  */
+    B_SIZE,       /* collapse: output nodes per subtree   */
+    B_OUT_NODES,
+    B_OUT_PRIMS,
+    /* ray batches */
+    B_T_NODES,
+    B_T_PRIMS,
+    B_T_VERTICES,
+    B_T_INDICES,
+    B_T_BOXES,
+    B_T_RAYS,
+    B_T_OUT,
+    B_SLOTS
+};
+
+#define ATRBVH_CL_MAX_EVENTS 256
+#define ATRBVH_CL_MAX_TIMES 32
+
+/* Per-kernel device times (summed over launches). */
+typedef struct atrbvh_cl_times {
+    unsigned count;
+    const char *name[ATRBVH_CL_MAX_TIMES];
+    double ms[ATRBVH_CL_MAX_TIMES];
+} atrbvh_cl_times;
+
+/* The backend's part of an atrbvh_device (dev->impl). */
+typedef struct atrbvh_cl_device {
+    cl_device_id device;
+    cl_context ctx;
+    cl_command_queue queue;
+    cl_program program;
+    cl_kernel kernel[K_COUNT];
+    cl_ulong max_alloc;
+    cl_uint compute_units;
+    cl_mem buf[B_SLOTS];
+    size_t buf_bytes[B_SLOTS];
+    unsigned long buffers_created; /* clCreateBuffer calls (tests) */
+    cl_event events[ATRBVH_CL_MAX_EVENTS];
+    int event_kernel[ATRBVH_CL_MAX_EVENTS];
+    int event_count;
+    atrbvh_cl_times *times; /* where finished launches are added */
+    atrbvh_cl_times build_times; /* the last build's */
+    cl_uint has_ids;        /* this build: B_IDS maps leaves   */
+} atrbvh_cl_device;
+
+/* error.c */
+const char *atrbvh_i_cl_code_name(cl_int err);
+/* "OpenCL: CALL failed [for WHAT]: NAME (code)"; ATRBVH_ERR_NOMEM for the
+ * out-of-memory codes, else ATRBVH_ERR_BACKEND. */
+atrbvh_status atrbvh_i_cl_error(atrbvh_error *error, cl_int err,
+                                const char *call, const char *what);
+
+/* source.c: the program text (library allocator), NULL when out of
+ * memory. */
+char *atrbvh_i_cl_source(void);
+
+/* device.c */
+extern const atrbvh_i_backend atrbvh_i_cl_backend;
+atrbvh_status atrbvh_i_cl_open(atrbvh_device *dev, const char *spec,
+                               atrbvh_error *error);
+void atrbvh_i_cl_close(atrbvh_device *dev);
+
+/* trace.c: the backend table's trace (see lib/backend.h) */
+atrbvh_status atrbvh_i_cl_rays(atrbvh_device *dev, const atrbvh_node *nodes,
+                                size_t node_count,
+                                const uint32_t *prim_indices,
+                                size_t prim_count, const atrbvh_i_input *in,
+                                const atrbvh_ray *rays, size_t count,
+                                atrbvh_hit *hits, uint8_t *occluded,
+                                int threads, double *kernel_ms,
+                                atrbvh_error *error);
+
+/* memory.c */
+/* Buffer `slot` with at least count * item bytes (kept, grown only when
+ * too small). */
+atrbvh_status atrbvh_i_cl_buffer(atrbvh_cl_device *c, int slot, size_t count,
+                                 size_t item, const char *what,
+                                 atrbvh_error *error);
+void atrbvh_i_cl_buffers_release(atrbvh_cl_device *c);
+atrbvh_status atrbvh_i_cl_upload(atrbvh_cl_device *c, int slot,
+                                 const void *data, size_t bytes,
+                                 const char *what, atrbvh_error *error);
+atrbvh_status atrbvh_i_cl_download(atrbvh_cl_device *c, int slot, void *data,
+                                   size_t bytes, const char *what,
+                                   atrbvh_error *error);
+atrbvh_status atrbvh_i_cl_zero(atrbvh_cl_device *c, int slot, size_t bytes,
+                               const char *what, atrbvh_error *error);
+/* A kernel argument: a buffer slot, or a value of `size` bytes. */
+typedef struct atrbvh_cl_arg {
+    int slot; /* -1: value */
+    size_t size;
+    const void *value;
+} atrbvh_cl_arg;
+#define CL_BUF(s) {(s), 0, NULL}
+#define CL_VAL(v) {-1, sizeof(v), &(v)}
+/* Sets the arguments of kernel k in order and launches it over `items`
+ * work-items (0: nothing). */
+atrbvh_status atrbvh_i_cl_run(atrbvh_cl_device *c, int k, size_t items,
+                              const atrbvh_cl_arg *args, int count,
+                              atrbvh_error *error);
+/* Waits for the queue and adds the finished launches' device times to
+ * c->times. */
+atrbvh_status atrbvh_i_cl_finish(atrbvh_cl_device *c, atrbvh_error *error);
+/* Releases pending events without reading them. */
+void atrbvh_i_cl_drop_events(atrbvh_cl_device *c);
+
+#define CL_RUN(c, k, items, error, ...)                                        \
+    do {                                                                       \
+        const atrbvh_cl_arg args_[] = {__VA_ARGS__};                           \
+        atrbvh_status st_ = atrbvh_i_cl_run(                                   \
+            (c), (k), (items), args_, (int)(sizeof args_ / sizeof args_[0]),  \
+            (error));                                                          \
+        if (st_ != ATRBVH_OK)                                                  \
+            return st_;                                                        \
+    } while (0)
+#define CL_CHECK(expr)                                                         \
+    do {                                                                       \
+        atrbvh_status st_ = (expr);                                            \
+        if (st_ != ATRBVH_OK)                                                  \
+            return st_;                                                        \
+    } while (0)
+
+#endif

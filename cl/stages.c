@@ -1,0 +1,548 @@
+/*
+ * cl/stages.c - the OpenCL backend's stage table: one short function per
+ * stage (upload what the stage reads for the first time, launch its
+ * kernel(s) with one argument struct, wait), plus begin/end, set_prims,
+ * capture and kernel_time.  The per-item work is in cl/kernels.cl, thin
+ * wrappers around lib/shared/; the sequencing, timing, progress between
+ * stages and the exact error for an invalid primitive are the pipeline's
+ * (lib/pipeline.c).
+ *
+ * Buffers live on the device handle (cl/memory.c) and stay there between
+ * builds; the pipeline holds the handle's lock around every build, so one
+ * build at a time uses them.
+ */
+#include "config.h"
+
+#include "opencl.h"
+
+#include <string.h>
+
+#define ALIGN64(x) (((x) + 63u) & ~(size_t)63u)
+
+static atrbvh_cl_device *cl_of(atrbvh_device *dev)
+{
+    return (atrbvh_cl_device *)dev->impl;
+}
+
+static size_t tree_nodes(const atrbvh_i_run *run)
+{
+    return 2 * (size_t)run->n - 1;
+}
+
+static size_t tree_inner(const atrbvh_i_run *run)
+{
+    return run->n > 1 ? (size_t)run->n - 1 : 1;
+}
+
+static atrbvh_kargs_tree tree_args(const atrbvh_cl_device *c,
+                                   const atrbvh_i_run *run)
+{
+    atrbvh_kargs_tree a;
+    memset(&a, 0, sizeof a);
+    a.ci = run->cfg->cost.ci;
+    a.ct = run->cfg->cost.ct;
+    a.n = run->n;
+    a.collapse = run->cfg->cost.collapse != 0;
+    a.max_leaf = run->cfg->cost.max_leaf;
+    a.has_ids = c->has_ids;
+    return a;
+}
+
+/* ------------------------------------------------------------ begin/end */
+static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
+                              atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    size_t n = run->in.g->primitive_count;
+    /* 2n - 1 tree nodes must fit the kernels' u32 ids. */
+    if (n == 0 || n > 0x7fffffffu)
+        return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,
+                             "OpenCL: %lu primitives (1 to 2^31-1 supported)",
+                             (unsigned long)n);
+    memset(&c->build_times, 0, sizeof c->build_times);
+    c->times = &c->build_times;
+    c->has_ids = 0;
+    run->state = c;
+    return ATRBVH_OK;
+}
+
+static void cl_end(atrbvh_device *dev, atrbvh_i_run *run)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    atrbvh_error ignored;
+    /* A failed stage may leave launches queued: wait for them (their
+     * buffers stay on the handle for the next build). */
+    if (c->event_count)
+        (void)atrbvh_i_cl_finish(c, &ignored);
+    run->state = NULL;
+}
+
+/* --------------------------------------------------------------- bounds */
+static atrbvh_status upload_geometry(atrbvh_cl_device *c,
+                                     const atrbvh_i_input *in,
+                                     atrbvh_kargs_bounds *a,
+                                     atrbvh_error *error)
+{
+    const atrbvh_geometry *g = in->g;
+    size_t bytes, n = g->primitive_count;
+    if (g->type == ATRBVH_GEOMETRY_TRIANGLES) {
+        int indexed = g->indices != NULL;
+        if (!atrbvh_i_mul_size(g->vertex_count - 1, in->vstride, &bytes))
+            return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE,
+                                 ATRBVH_CL_NO_INDEX, "vertices overflow");
+        bytes += 3 * sizeof(float);
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_GEOMETRY, bytes, 1, "vertices", error));
+        CL_CHECK(atrbvh_i_cl_upload(c, B_GEOMETRY, g->vertices, bytes,
+                                    "vertices", error));
+        bytes = 4;
+        if (indexed) {
+            if (!atrbvh_i_mul_size(n - 1, in->istride, &bytes))
+                return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE,
+                                     ATRBVH_CL_NO_INDEX, "indices overflow");
+            bytes += 3 * sizeof(uint32_t);
+        }
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_INDICES, bytes, 1, "indices", error));
+        if (indexed)
+            CL_CHECK(atrbvh_i_cl_upload(c, B_INDICES, g->indices, bytes,
+                                        "indices", error));
+        a->vstride = in->vstride / sizeof(float);
+        a->istride = in->istride / sizeof(uint32_t);
+        a->vertex_count = g->vertex_count;
+        a->indexed = (atrbvh_u32)indexed;
+        return ATRBVH_OK;
+    }
+    if (!atrbvh_i_mul_size(n - 1, in->bstride, &bytes))
+        return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,
+                             "boxes overflow");
+    bytes += 6 * sizeof(float);
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_GEOMETRY, bytes, 1, "input boxes", error));
+    CL_CHECK(atrbvh_i_cl_upload(c, B_GEOMETRY, g->boxes, bytes, "input boxes",
+                                error));
+    a->bstride = in->bstride / sizeof(float);
+    return ATRBVH_OK;
+}
+
+static atrbvh_status st_bounds(atrbvh_device *dev, atrbvh_i_run *run,
+                               atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    atrbvh_kargs_bounds a;
+    atrbvh_box part[2 * 256];
+    cl_uint bad = 0, u;
+    memset(&a, 0, sizeof a);
+    a.n = (atrbvh_u32)run->in.g->primitive_count;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_BOXES, a.n, sizeof(atrbvh_box),
+                                "primitive boxes", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_PROBLEMS, 1, sizeof(cl_uint),
+                                "bounds problems", error));
+    CL_CHECK(atrbvh_i_cl_zero(c, B_PROBLEMS, sizeof(cl_uint),
+                              "bounds problems", error));
+    CL_CHECK(upload_geometry(c, &run->in, &a, error));
+    if (run->in.g->type == ATRBVH_GEOMETRY_TRIANGLES)
+        CL_RUN(c, K_BOUNDS_TRIANGLES, a.n, error, CL_BUF(B_GEOMETRY),
+               CL_BUF(B_INDICES), CL_BUF(B_BOXES), CL_BUF(B_PROBLEMS),
+               CL_VAL(a));
+    else
+        CL_RUN(c, K_BOUNDS_BOXES, a.n, error, CL_BUF(B_GEOMETRY),
+               CL_BUF(B_BOXES), CL_BUF(B_PROBLEMS), CL_VAL(a));
+    CL_CHECK(atrbvh_i_cl_download(c, B_PROBLEMS, &bad, sizeof bad,
+                                  "bounds problems", error));
+    run->n = a.n;
+    if (bad) {
+        run->bad = 1; /* the pipeline finds the error, then set_prims */
+        return atrbvh_i_cl_finish(c, error);
+    }
+    a.parts = c->compute_units * 8u;
+    if (a.parts > 256u)
+        a.parts = 256u;
+    if (a.parts > a.n)
+        a.parts = a.n;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_PARTIAL, 2u * a.parts, sizeof(atrbvh_box),
+                                "partial boxes", error));
+    CL_RUN(c, K_BOUNDS_REDUCE, a.parts, error, CL_BUF(B_BOXES),
+           CL_BUF(B_PARTIAL), CL_VAL(a));
+    CL_CHECK(atrbvh_i_cl_download(c, B_PARTIAL, part,
+                                  2u * a.parts * sizeof(atrbvh_box),
+                                  "partial boxes", error));
+    run->scene = part[0];
+    run->centroids = part[1];
+    for (u = 1; u < a.parts; u++) {
+        run->scene = atrbvh_box_union(run->scene, part[2 * u]);
+        run->centroids = atrbvh_box_union(run->centroids, part[2 * u + 1]);
+    }
+    return atrbvh_i_cl_finish(c, error);
+}
+
+/* After an invalid primitive: the host's boxes (and kept ids). */
+static atrbvh_status cl_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
+                                  const atrbvh_box *boxes, const uint32_t *ids,
+                                  atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    c->has_ids = 0;
+    if (run->n == 0)
+        return ATRBVH_OK;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_BOXES, run->n, sizeof(atrbvh_box),
+                                "primitive boxes", error));
+    CL_CHECK(atrbvh_i_cl_upload(c, B_BOXES, boxes,
+                                (size_t)run->n * sizeof(atrbvh_box),
+                                "primitive boxes", error));
+    if (ids) {
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_IDS, run->n, sizeof(cl_uint),
+                                    "kept ids", error));
+        CL_CHECK(atrbvh_i_cl_upload(c, B_IDS, ids,
+                                    (size_t)run->n * sizeof(cl_uint),
+                                    "kept ids", error));
+        c->has_ids = 1;
+    }
+    return ATRBVH_OK;
+}
+
+/* --------------------------------------------------------------- morton */
+static atrbvh_status st_morton(atrbvh_device *dev, atrbvh_i_run *run,
+                               atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    atrbvh_kargs_morton a;
+    int k;
+    memset(&a, 0, sizeof a);
+    for (k = 0; k < 3; k++) {
+        a.lo[k] = run->morton_lo[k];
+        a.scale[k] = run->morton_scale[k];
+    }
+    a.n = run->n;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_KEYS, a.n, sizeof(cl_ulong), "keys",
+                                error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_ORDER, a.n, sizeof(cl_uint), "order",
+                                error));
+    CL_RUN(c, K_MORTON, a.n, error, CL_BUF(B_BOXES), CL_BUF(B_KEYS),
+           CL_BUF(B_ORDER), CL_VAL(a));
+    return atrbvh_i_cl_finish(c, error);
+}
+
+/* ----------------------------------------------------------------- sort */
+/* Eight stable 8-bit passes, ping-ponging between (keys, order) and the
+ * scratch pair: after an even count the result is back in B_KEYS and
+ * B_ORDER.  Every pass runs (a pass whose digit never varies is the
+ * identity, so the CPU's skipping cannot change the result). */
+static atrbvh_status st_sort(atrbvh_device *dev, atrbvh_i_run *run,
+                             atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    atrbvh_kargs_sort a;
+    int sk = B_KEYS, sv = B_ORDER, dk = B_KEYS_TMP, dv = B_ORDER_TMP;
+    if (run->n < 2)
+        return ATRBVH_OK;
+    memset(&a, 0, sizeof a);
+    a.n = run->n;
+    a.blocks = c->compute_units * 32u;
+    if (a.blocks > 256u)
+        a.blocks = 256u;
+    if (a.blocks > a.n)
+        a.blocks = a.n;
+    a.entries = ATRBVH_SORT_RADIX * a.blocks;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_KEYS_TMP, a.n, sizeof(cl_ulong),
+                                "keys (scratch)", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_ORDER_TMP, a.n, sizeof(cl_uint),
+                                "order (scratch)", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_HIST, a.entries, sizeof(cl_uint),
+                                "digit counts", error));
+    for (a.shift = 0; a.shift < 64u; a.shift += ATRBVH_SORT_BITS) {
+        int t;
+        CL_RUN(c, K_SORT_COUNT, a.blocks, error, CL_BUF(sk), CL_BUF(B_HIST),
+               CL_VAL(a));
+        CL_RUN(c, K_SORT_SCAN, 1, error, CL_BUF(B_HIST), CL_VAL(a));
+        CL_RUN(c, K_SORT_SCATTER, a.blocks, error, CL_BUF(sk), CL_BUF(sv),
+               CL_BUF(dk), CL_BUF(dv), CL_BUF(B_HIST), CL_VAL(a));
+        t = sk, sk = dk, dk = t;
+        t = sv, sv = dv, dv = t;
+    }
+    return atrbvh_i_cl_finish(c, error);
+}
+
+/* ------------------------------------------------------------ hierarchy */
+static atrbvh_status st_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
+                                  atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    atrbvh_kargs_tree a = tree_args(c, run);
+    size_t nodes = tree_nodes(run), inner = tree_inner(run);
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_LEFT, inner, 4, "left", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_RIGHT, inner, 4, "right", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_PARENT, nodes, 4, "parent", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_COUNT, nodes, 4, "count", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_LEAF_PRIM, run->n, 4, "leaf primitives",
+                                error));
+    /* ids: read only when has_ids; B_ORDER stands in otherwise. */
+    CL_RUN(c, K_HIERARCHY, run->n, error, CL_BUF(B_KEYS), CL_BUF(B_LEFT),
+           CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
+           CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
+           CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_VAL(a));
+    return atrbvh_i_cl_finish(c, error);
+}
+
+/* ---------------------------------------------------------------- refit */
+static atrbvh_status st_refit(atrbvh_device *dev, atrbvh_i_run *run,
+                              atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    atrbvh_kargs_tree a = tree_args(c, run);
+    size_t nodes = tree_nodes(run);
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_BOX, nodes, sizeof(atrbvh_box),
+                                "node boxes", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_COST, nodes, sizeof(double),
+                                "node costs", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_COUNTER, nodes, 4, "node counters",
+                                error));
+    CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4, "node counters",
+                              error));
+    CL_RUN(c, K_REFIT, run->n, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
+           CL_BUF(B_COST), CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT),
+           CL_BUF(B_BOXES), CL_BUF(B_ORDER), CL_BUF(B_COUNTER), CL_VAL(a));
+    return atrbvh_i_cl_finish(c, error);
+}
+
+/* ------------------------------------------------------------- optimise */
+/* Per-worker scratch: the TRBVH subset tables (2^n entries) or the
+ * ATRBVH distance matrix (n(n-1)/2), each array 64-byte aligned. */
+static void scratch_layout(const atrbvh_i_config *cfg,
+                           atrbvh_kargs_optimise *a)
+{
+    size_t subsets = 0, pairs = 0, n = cfg->treelet_size;
+    if (a->agglomerative)
+        pairs = n * (n - 1u) / 2u;
+    else
+        subsets = (size_t)1 << n;
+    a->off_cost = ALIGN64(subsets * sizeof(atrbvh_box));
+    a->off_count = a->off_cost + ALIGN64(subsets * sizeof(double));
+    a->off_split = a->off_count + ALIGN64(subsets * sizeof(uint32_t));
+    a->off_dist = a->off_split + ALIGN64(subsets * sizeof(uint32_t));
+    a->stride = a->off_dist + ALIGN64(pairs * sizeof(double));
+}
+
+static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
+                                 atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    const atrbvh_i_config *cfg = run->cfg;
+    atrbvh_kargs_optimise a;
+    cl_uint workers_max, round, zero = 0;
+    if (cfg->method == ATRBVH_METHOD_LBVH || cfg->rounds == 0 ||
+        run->n < 2 || run->n < cfg->treelet_size)
+        return ATRBVH_OK;
+    memset(&a, 0, sizeof a);
+    a.ci = cfg->cost.ci;
+    a.ct = cfg->cost.ct;
+    a.collapse = cfg->cost.collapse != 0;
+    a.max_leaf = cfg->cost.max_leaf;
+    a.n_internal = run->n - 1;
+    a.treelet_size = cfg->treelet_size;
+    a.agglomerative = cfg->method == ATRBVH_METHOD_ATRBVH;
+    scratch_layout(cfg, &a);
+    /* Enough persistent workers to fill the device, scratch bounded. */
+    workers_max = c->compute_units * 64u;
+    if (workers_max > 4096u)
+        workers_max = 4096u;
+    while (workers_max > 1u &&
+           (cl_ulong)workers_max * a.stride > c->max_alloc / 2u)
+        workers_max /= 2u;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_SCRATCH, workers_max, (size_t)a.stride,
+                                "treelet scratch", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_NEEDED, a.n_internal, 4,
+                                "crown children", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_LIST, a.n_internal, 4, "walk starts",
+                                error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_LIST_COUNT, 1, 4, "walk start count",
+                                error));
+    for (round = 0; round < cfg->rounds; round++) {
+        cl_ulong gamma = (cl_ulong)cfg->gamma << (round < 40u ? round : 40u);
+        if (atrbvh_i_stage_progress(run, round, cfg->rounds)) {
+            atrbvh_i_cl_finish(c, error);
+            return atrbvh_i_fail(error, ATRBVH_ERR_CANCELLED,
+                                 ATRBVH_CL_NO_INDEX,
+                                 "cancelled in stage optimise, round %u",
+                                 (unsigned)round);
+        }
+        if (gamma > run->n)
+            break; /* no crown left (the root's count is n) */
+        a.gamma = (atrbvh_u32)gamma;
+        CL_CHECK(atrbvh_i_cl_upload(c, B_LIST_COUNT, &zero, 4,
+                                    "walk start count", error));
+        CL_RUN(c, K_OPT_PREPARE, a.n_internal, error, CL_BUF(B_LEFT),
+               CL_BUF(B_RIGHT), CL_BUF(B_COUNT), CL_BUF(B_NEEDED),
+               CL_BUF(B_COUNTER), CL_BUF(B_LIST), CL_BUF(B_LIST_COUNT),
+               CL_VAL(a));
+        CL_CHECK(atrbvh_i_cl_download(c, B_LIST_COUNT, &a.list_len, 4,
+                                      "walk start count", error));
+        if (a.list_len > 0) {
+            a.workers = a.list_len < workers_max ? a.list_len : workers_max;
+            CL_RUN(c, K_OPT_ROUND, a.workers, error, CL_BUF(B_LEFT),
+                   CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
+                   CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_LIST),
+                   CL_BUF(B_NEEDED), CL_BUF(B_COUNTER), CL_BUF(B_SCRATCH),
+                   CL_VAL(a));
+        }
+        /* The round's tree for the pipeline's capture (a blocking read
+         * on the in-order queue sees the launch done). */
+        if (atrbvh_i_stage_round(run, round + 1)) {
+            atrbvh_i_cl_finish(c, error);
+            return atrbvh_i_fail(error, ATRBVH_ERR_CANCELLED,
+                                 ATRBVH_CL_NO_INDEX,
+                                 "cancelled in stage optimise, round %u",
+                                 (unsigned)round + 1);
+        }
+    }
+    return atrbvh_i_cl_finish(c, error);
+}
+
+/* ------------------------------------------------------------- collapse */
+static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
+                                 atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    atrbvh_kargs_tree a = tree_args(c, run);
+    size_t nodes = tree_nodes(run);
+    cl_uint root_size = 0;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_SIZE, nodes, 4, "subtree sizes", error));
+    CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4, "node counters",
+                              error));
+    CL_RUN(c, K_COLLAPSE, run->n, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
+           CL_BUF(B_COST), CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT),
+           CL_BUF(B_SIZE), CL_BUF(B_COUNTER), CL_VAL(a));
+    CL_CHECK(atrbvh_i_cl_download(c, B_SIZE, &root_size, 4, "subtree sizes",
+                                  error));
+    run->node_count = root_size & ATRBVH_SIZE_MASK;
+    return atrbvh_i_cl_finish(c, error);
+}
+
+/* --------------------------------------------------------------- layout */
+static atrbvh_status st_layout(atrbvh_device *dev, atrbvh_i_run *run,
+                               atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    atrbvh_kargs_tree a = tree_args(c, run);
+    /* Sized for the most nodes n leaves can give (2n - 1), not this
+     * tree's count: the next build of n primitives then reuses it. */
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_NODES, tree_nodes(run),
+                                sizeof(atrbvh_node), "output nodes", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_PRIMS, run->n, 4,
+                                "output primitive indices", error));
+    CL_RUN(c, K_LAYOUT, tree_nodes(run), error, CL_BUF(B_BOX),
+           CL_BUF(B_COUNT), CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT),
+           CL_BUF(B_SIZE), CL_BUF(B_LEAF_PRIM), CL_BUF(B_OUT_NODES),
+           CL_BUF(B_OUT_PRIMS), CL_VAL(a));
+    CL_CHECK(atrbvh_i_cl_download(c, B_OUT_NODES, run->nodes,
+                                  (size_t)run->node_count * sizeof(atrbvh_node),
+                                  "output nodes", error));
+    CL_CHECK(atrbvh_i_cl_download(c, B_OUT_PRIMS, run->prim_indices,
+                                  (size_t)run->n * 4,
+                                  "output primitive indices", error));
+    return atrbvh_i_cl_finish(c, error);
+}
+
+/* -------------------------------------------------------------- capture */
+static atrbvh_status nomem(atrbvh_error *error)
+{
+    return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, ATRBVH_CL_NO_INDEX,
+                         "cannot allocate the stage capture");
+}
+
+/* A new host array of n items of `size` bytes, read from `slot`. */
+static atrbvh_status copy_out(atrbvh_cl_device *c, int slot, size_t n,
+                              size_t size, void *dst_ptr, const char *what,
+                              atrbvh_error *error)
+{
+    void **dst = (void **)dst_ptr;
+    *dst = atrbvh_i_alloc_array(n, size);
+    if (!*dst)
+        return nomem(error);
+    return atrbvh_i_cl_download(c, slot, *dst, n * size, what, error);
+}
+
+static atrbvh_status read_tree(atrbvh_cl_device *c, const atrbvh_i_run *run,
+                               int values, atrbvh_i_tree *t,
+                               atrbvh_error *error)
+{
+    size_t nodes = tree_nodes(run), inner = run->n - 1u;
+    if (atrbvh_i_tree_alloc(t, run->n, values) != ATRBVH_OK)
+        return nomem(error);
+    CL_CHECK(atrbvh_i_cl_download(c, B_LEFT, t->left, inner * 4, "left",
+                                  error));
+    CL_CHECK(atrbvh_i_cl_download(c, B_RIGHT, t->right, inner * 4, "right",
+                                  error));
+    CL_CHECK(atrbvh_i_cl_download(c, B_PARENT, t->parent, nodes * 4, "parent",
+                                  error));
+    CL_CHECK(atrbvh_i_cl_download(c, B_COUNT, t->count, nodes * 4, "count",
+                                  error));
+    CL_CHECK(atrbvh_i_cl_download(c, B_LEAF_PRIM, t->leaf_prim,
+                                  (size_t)run->n * 4, "leaf_prim", error));
+    if (!values)
+        return ATRBVH_OK;
+    CL_CHECK(atrbvh_i_cl_download(c, B_BOX, t->box,
+                                  nodes * sizeof(atrbvh_box), "box", error));
+    return atrbvh_i_cl_download(c, B_COST, t->cost, nodes * sizeof(double),
+                                "cost", error);
+}
+
+static atrbvh_status cl_capture(atrbvh_device *dev, atrbvh_i_run *run,
+                                atrbvh_stage stage, atrbvh_i_capture *cap,
+                                atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    size_t n = run->n;
+    switch (stage) {
+    case ATRBVH_STAGE_BOUNDS:
+        cap->n = run->n;
+        cap->scene = run->scene;
+        cap->centroids = run->centroids;
+        return copy_out(c, B_BOXES, n, sizeof(atrbvh_box), &cap->prim_boxes,
+                        "primitive boxes", error);
+    case ATRBVH_STAGE_MORTON:
+        return copy_out(c, B_KEYS, n, sizeof(uint64_t), &cap->keys, "keys",
+                        error);
+    case ATRBVH_STAGE_SORT:
+        CL_CHECK(copy_out(c, B_KEYS, n, sizeof(uint64_t), &cap->sorted_keys,
+                          "keys", error));
+        return copy_out(c, B_ORDER, n, sizeof(uint32_t), &cap->order, "order",
+                        error);
+    case ATRBVH_STAGE_HIERARCHY:
+        return read_tree(c, run, 0, &cap->hierarchy, error);
+    case ATRBVH_STAGE_REFIT:
+        return read_tree(c, run, 1, &cap->refit, error);
+    case ATRBVH_STAGE_OPTIMISE:
+        return read_tree(c, run, 1, &cap->optimise, error);
+    case ATRBVH_STAGE_COLLAPSE:
+        return copy_out(c, B_SIZE, tree_nodes(run), sizeof(uint32_t),
+                        &cap->collapse_size, "subtree sizes", error);
+    default:
+        return ATRBVH_OK; /* layout: the output itself */
+    }
+}
+
+/* The last build's per-kernel device times. */
+static int cl_kernel_time(atrbvh_device *dev, size_t i, const char **name,
+                          double *ms)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    if (!c || i >= c->build_times.count)
+        return 0;
+    if (name)
+        *name = c->build_times.name[i];
+    if (ms)
+        *ms = c->build_times.ms[i];
+    return 1;
+}
+
+const atrbvh_i_backend atrbvh_i_cl_backend = {
+    "opencl",
+    ATRBVH_BACKEND_OPENCL,
+    atrbvh_i_cl_open,
+    atrbvh_i_cl_close,
+    cl_begin,
+    cl_end,
+    {st_bounds, st_morton, st_sort, st_hierarchy, st_refit, st_optimise,
+     st_collapse, st_layout},
+    cl_set_prims,
+    cl_capture,
+    atrbvh_i_cl_rays,
+    cl_kernel_time};

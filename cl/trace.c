@@ -1,0 +1,165 @@
+/*
+ * cl/trace.c - ray batches on an open device: the tree, its primitive
+ * indices and the geometry are uploaded once per batch into buffers the
+ * handle keeps; the rays go in chunks that fit the device's largest
+ * allocation, one launch of intersect_closest or intersect_any per chunk
+ * (shared/traverse.h per ray, the CPU's functions).
+ */
+#include "config.h"
+
+#include "opencl.h"
+
+#include <string.h>
+
+/* The geometry as the ray kernels read it; unused buffers are one-word
+ * dummies. */
+static atrbvh_status upload_scene(atrbvh_cl_device *c,
+                                  const atrbvh_i_input *in,
+                                  atrbvh_kargs_trace *a, atrbvh_error *error)
+{
+    const atrbvh_geometry *g = in->g;
+    size_t bytes = 0;
+    a->primitive_count = g->primitive_count;
+    if (g->type != ATRBVH_GEOMETRY_BOXES) {
+        size_t vs = in->vstride ? in->vstride : 3 * sizeof(float);
+        size_t is = in->istride ? in->istride : 3 * sizeof(uint32_t);
+        if (g->vertex_count &&
+            (!atrbvh_i_mul_size(g->vertex_count - 1, vs, &bytes) ||
+             (bytes += 3 * sizeof(float)) < 3 * sizeof(float)))
+            return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE,
+                                 ATRBVH_CL_NO_INDEX, "vertices overflow");
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_T_VERTICES, bytes, 1, "vertices",
+                                    error));
+        CL_CHECK(atrbvh_i_cl_upload(c, B_T_VERTICES, g->vertices, bytes,
+                                    "vertices", error));
+        bytes = 0;
+        if (g->indices && g->primitive_count &&
+            (!atrbvh_i_mul_size(g->primitive_count - 1, is, &bytes) ||
+             (bytes += 12) < 12))
+            return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE,
+                                 ATRBVH_CL_NO_INDEX, "indices overflow");
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_T_INDICES, bytes, 1, "indices",
+                                    error));
+        if (g->indices)
+            CL_CHECK(atrbvh_i_cl_upload(c, B_T_INDICES, g->indices, bytes,
+                                        "indices", error));
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_T_BOXES, 1, 4, "boxes (unused)",
+                                    error));
+        a->vertex_count = g->vertex_count;
+        a->vstride = vs / sizeof(float);
+        a->istride = is / sizeof(uint32_t);
+        a->indexed = g->indices != NULL;
+        a->bstride = 6;
+        return ATRBVH_OK;
+    }
+    {
+        size_t bs = in->bstride ? in->bstride : 6 * sizeof(float);
+        if (g->primitive_count &&
+            (!atrbvh_i_mul_size(g->primitive_count - 1, bs, &bytes) ||
+             (bytes += 6 * sizeof(float)) < 6 * sizeof(float)))
+            return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE,
+                                 ATRBVH_CL_NO_INDEX, "boxes overflow");
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_T_BOXES, bytes, 1, "boxes", error));
+        CL_CHECK(atrbvh_i_cl_upload(c, B_T_BOXES, g->boxes, bytes, "boxes",
+                                    error));
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_T_VERTICES, 1, 4,
+                                    "vertices (unused)", error));
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_T_INDICES, 1, 4, "indices (unused)",
+                                    error));
+        a->boxes = 1;
+        a->bstride = bs / sizeof(float);
+        a->vstride = 3;
+        a->istride = 3;
+    }
+    return ATRBVH_OK;
+}
+
+static atrbvh_status trace_batch(atrbvh_cl_device *c,
+                                  const atrbvh_node *nodes, size_t node_count,
+                                  const uint32_t *prim_indices,
+                                  size_t prim_count, const atrbvh_i_input *in,
+                                  const atrbvh_ray *rays, size_t count,
+                                  atrbvh_hit *hits, uint8_t *occluded,
+                                  atrbvh_error *error)
+{
+    atrbvh_kargs_trace a;
+    int k = occluded ? K_INTERSECT_ANY : K_INTERSECT_CLOSEST;
+    size_t out_item = occluded ? 1 : sizeof(atrbvh_hit);
+    cl_ulong chunk;
+    size_t done;
+    memset(&a, 0, sizeof a);
+    a.node_count = node_count;
+    a.prim_count = prim_count;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_T_NODES, node_count, sizeof(atrbvh_node),
+                                "BVH nodes", error));
+    CL_CHECK(atrbvh_i_cl_upload(c, B_T_NODES, nodes,
+                                node_count * sizeof(atrbvh_node), "BVH nodes",
+                                error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_T_PRIMS, prim_count, sizeof(uint32_t),
+                                "BVH primitive indices", error));
+    CL_CHECK(atrbvh_i_cl_upload(c, B_T_PRIMS, prim_indices,
+                                prim_count * sizeof(uint32_t),
+                                "BVH primitive indices", error));
+    CL_CHECK(upload_scene(c, in, &a, error));
+    chunk = c->max_alloc / sizeof(atrbvh_ray);
+    if (chunk > ((cl_ulong)1 << 24))
+        chunk = (cl_ulong)1 << 24;
+    if (chunk > count)
+        chunk = count;
+    if (chunk == 0)
+        chunk = 1;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_T_RAYS, (size_t)chunk, sizeof(atrbvh_ray),
+                                "rays", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_T_OUT, (size_t)chunk, out_item,
+                                occluded ? "occlusion results" : "hits",
+                                error));
+    for (done = 0; done < count; done += (size_t)chunk) {
+        size_t n = count - done < chunk ? count - done : (size_t)chunk;
+        a.ray_count = n;
+        CL_CHECK(atrbvh_i_cl_upload(c, B_T_RAYS, rays + done,
+                                    n * sizeof(atrbvh_ray), "rays", error));
+        CL_RUN(c, k, n, error, CL_BUF(B_T_NODES), CL_BUF(B_T_PRIMS),
+               CL_BUF(B_T_VERTICES), CL_BUF(B_T_INDICES), CL_BUF(B_T_BOXES),
+               CL_BUF(B_T_RAYS), CL_BUF(B_T_OUT), CL_VAL(a));
+        if (occluded)
+            CL_CHECK(atrbvh_i_cl_download(c, B_T_OUT, occluded + done, n,
+                                          "occlusion results", error));
+        else
+            CL_CHECK(atrbvh_i_cl_download(c, B_T_OUT, hits + done,
+                                          n * sizeof(atrbvh_hit), "hits",
+                                          error));
+        CL_CHECK(atrbvh_i_cl_finish(c, error));
+    }
+    return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cl_rays(atrbvh_device *dev, const atrbvh_node *nodes,
+                                size_t node_count,
+                                const uint32_t *prim_indices,
+                                size_t prim_count, const atrbvh_i_input *in,
+                                const atrbvh_ray *rays, size_t count,
+                                atrbvh_hit *hits, uint8_t *occluded,
+                                int threads, double *kernel_ms,
+                                atrbvh_error *error)
+{
+    atrbvh_cl_device *c = (atrbvh_cl_device *)dev->impl;
+    atrbvh_cl_times times;
+    atrbvh_status st;
+    unsigned i;
+    (void)threads;
+    if (kernel_ms)
+        *kernel_ms = 0.0;
+    memset(&times, 0, sizeof times);
+    c->times = &times; /* the pipeline holds the handle's lock */
+    st = trace_batch(c, nodes, node_count, prim_indices, prim_count, in, rays,
+                      count, hits, occluded, error);
+    if (c->event_count) {
+        atrbvh_error ignored;
+        (void)atrbvh_i_cl_finish(c, &ignored);
+    }
+    c->times = &c->build_times;
+    if (kernel_ms)
+        for (i = 0; i < times.count; i++)
+            *kernel_ms += times.ms[i];
+    return st;
+}
