@@ -171,19 +171,19 @@ static atrbvh_status prim_error(const atrbvh_i_input *in, uint64_t j,
     }
 }
 
-/* The node boxes of the tree over the new positions into `box`
- * (node_count entries); the lowest invalid primitive is an error. */
-static atrbvh_status refit_boxes(const atrbvh_bvh *bvh,
-                                 const atrbvh_i_input *in, atrbvh_box *box,
-                                 int threads, const char *fn,
-                                 atrbvh_error *error)
+/* The leaf boxes of the tree over the new positions into `box` (entries
+ * of leaf nodes only); the lowest invalid primitive is an error. */
+static atrbvh_status leaf_boxes(const atrbvh_bvh *bvh,
+                                const atrbvh_i_input *in, atrbvh_box *box,
+                                int threads, const char *fn,
+                                atrbvh_error *error)
 {
     const atrbvh_node *nodes = bvh->nodes;
     const int64_t count = (int64_t)bvh->node_count;
     uint64_t bad = NO_INDEX;
     int64_t i;
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 256) \
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 1024) \
     reduction(min : bad)
 #else
     (void)threads;
@@ -208,11 +208,32 @@ static atrbvh_status refit_boxes(const atrbvh_bvh *bvh,
     }
     if (bad != NO_INDEX)
         return prim_error(in, bad, fn, error);
-    /* Children follow their parent: reverse order meets them first. */
-    for (i = count - 1; i >= 0; i--)
-        if (nodes[i].count == 0)
-            box[i] = atrbvh_box_union(box[i + 1], box[nodes[i].index]);
     return ATRBVH_OK;
+}
+
+/* Every node box of the tree from the leaf boxes: children follow their
+ * parent in depth-first order, so the reverse order meets them first.
+ * Writes the tree's nodes (nothing can fail any more). */
+static void write_boxes(atrbvh_bvh *bvh, const atrbvh_box *box)
+{
+    atrbvh_node *nodes = bvh->nodes;
+    size_t i = bvh->node_count;
+    while (i-- > 0) {
+        atrbvh_node *v = &nodes[i];
+        int k;
+        if (v->count) {
+            for (k = 0; k < 3; k++) {
+                v->min[k] = box[i].min[k];
+                v->max[k] = box[i].max[k];
+            }
+        } else {
+            const atrbvh_node *l = &nodes[i + 1], *r = &nodes[v->index];
+            for (k = 0; k < 3; k++) {
+                v->min[k] = l->min[k] < r->min[k] ? l->min[k] : r->min[k];
+                v->max[k] = l->max[k] > r->max[k] ? l->max[k] : r->max[k];
+            }
+        }
+    }
 }
 
 atrbvh_status atrbvh_refit(atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
@@ -226,7 +247,6 @@ atrbvh_status atrbvh_refit(atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
     atrbvh_box *box;
     atrbvh_status st;
     double t0 = atrbvh_i_now_ms();
-    size_t i;
 
     st = check_args(fn, bvh, geometry, options, &req, &in, error);
     if (st != ATRBVH_OK)
@@ -241,15 +261,9 @@ atrbvh_status atrbvh_refit(atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
                            "%s: cannot allocate %lu node boxes", fn,
                            (unsigned long)bvh->node_count);
     else
-        st = refit_boxes(bvh, &in, box, req.cfg.threads, fn, error);
+        st = leaf_boxes(bvh, &in, box, req.cfg.threads, fn, error);
     if (st == ATRBVH_OK) {
-        for (i = 0; i < bvh->node_count; i++) {
-            int k;
-            for (k = 0; k < 3; k++) {
-                bvh->nodes[i].min[k] = box[i].min[k];
-                bvh->nodes[i].max[k] = box[i].max[k];
-            }
-        }
+        write_boxes(bvh, box);
         bvh->stats.sah = atrbvh_sah(bvh->nodes, bvh->node_count,
                                     bvh->stats.ci, bvh->stats.ct);
         bvh->stats.refit_ms = atrbvh_i_now_ms() - t0;
@@ -381,20 +395,14 @@ static atrbvh_status reopt_run(atrbvh_device *dev, const atrbvh_bvh *bvh,
         return atrbvh_i_fail(error, ATRBVH_ERR_UNSUPPORTED, NO_INDEX,
                              "%s: the %s backend cannot install a tree yet",
                              fn, be->name);
-    /* Every primitive of the tree valid at its new position (the exact
-     * error as refit gives it). */
-    box = atrbvh_i_scratch_get(s, SLOT_BOX, NODES_MOST(bvh), sizeof *box);
     left = atrbvh_i_scratch_get(s, SLOT_LEFT, inner, sizeof *left);
     right = atrbvh_i_scratch_get(s, SLOT_RIGHT, inner, sizeof *right);
     map = atrbvh_i_scratch_get(s, SLOT_MAP, NODES_MOST(bvh), sizeof *map);
-    if (!box || !left || !right || !map)
+    if (!left || !right || !map)
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                              "%s: cannot allocate the tree of %lu "
                              "primitives",
                              fn, (unsigned long)n);
-    st = refit_boxes(bvh, in, box, cfg->threads, fn, error);
-    if (st != ATRBVH_OK)
-        return st;
     expand(bvh, left, right, map);
 
     memset(&run, 0, sizeof run);
@@ -404,8 +412,17 @@ static atrbvh_status reopt_run(atrbvh_device *dev, const atrbvh_bvh *bvh,
     if (st != ATRBVH_OK)
         return st;
     st = be->stage[ATRBVH_STAGE_BOUNDS](dev, &run, error);
-    /* Primitives of the tree were checked above; a fault there is in a
-     * primitive the build left out (skip_invalid), which no stage reads. */
+    if (st == ATRBVH_OK && run.bad) {
+        /* Some primitive is invalid: the exact error when it is one of
+         * the tree's (as refit gives it); one the build left out
+         * (skip_invalid) is read by no later stage. */
+        box = atrbvh_i_scratch_get(s, SLOT_BOX, NODES_MOST(bvh),
+                                   sizeof *box);
+        st = box ? leaf_boxes(bvh, in, box, cfg->threads, fn, error)
+                 : atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                                 "%s: cannot allocate %lu node boxes", fn,
+                                 (unsigned long)bvh->node_count);
+    }
     run.bad = 0;
     run.n = n;
     if (st == ATRBVH_OK)

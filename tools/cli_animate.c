@@ -4,7 +4,7 @@
  * policies, each with its own tree on one device:
  *
  *   refit          atrbvh_refit every frame (topology of frame 0)
- *   reoptimise:N   atrbvh_refit, then atrbvh_reoptimise with N rounds
+ *   reoptimise:N   atrbvh_reoptimise with N rounds (it refits itself)
  *   rebuild        atrbvh_build every frame
  *   auto           atrbvh_refit; a rebuild when the drift (stats.sah /
  *                  stats.sah_built) passes --drift
@@ -349,15 +349,17 @@ static atrbvh_status step(policy *q, unsigned frame,
             q->bvh = b;
         }
         q->action[frame] = frame == 0 ? 0 : 3;
+    } else if (q->kind == P_REOPT) {
+        /* atrbvh_reoptimise refits (its refit stage) at the new
+         * positions itself. */
+        ro = *o;
+        ro.rounds = q->rounds;
+        s = atrbvh_reoptimise(q->bvh, g, &ro, e);
+        q->action[frame] = 2;
     } else {
         s = atrbvh_refit(q->bvh, g, o, e);
         q->action[frame] = 1;
-        if (s == ATRBVH_OK && q->kind == P_REOPT) {
-            ro = *o;
-            ro.rounds = q->rounds;
-            s = atrbvh_reoptimise(q->bvh, g, &ro, e);
-            q->action[frame] = 2;
-        } else if (s == ATRBVH_OK && q->kind == P_AUTO) {
+        if (s == ATRBVH_OK && q->kind == P_AUTO) {
             atrbvh_bvh_stats(q->bvh, &st);
             if (st.sah_built > 0 && st.sah > drift * st.sah_built) {
                 atrbvh_bvh *b = NULL;
