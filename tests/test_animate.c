@@ -486,6 +486,23 @@ START_TEST(cross_backend)
                       e.text);
         ck_assert_msg(tu_same_bvh(a, b, msg, sizeof msg), "reoptimise %d: %s",
                       f, msg);
+        if (f >= 2) {
+            /* The OpenCL device's frames allocate no host array of the
+             * primitive count either. */
+            frame_of(base, v, T, 5 * f + 1);
+            atrbvh_set_allocator(count_malloc, count_free);
+            total_bytes = 0;
+            ck_assert_int_eq(atrbvh_refit(b, &g, &og, &e), ATRBVH_OK);
+            ck_assert_uint_eq(total_bytes, 0);
+            ck_assert_int_eq(atrbvh_reoptimise(b, &g, &og, &e), ATRBVH_OK);
+            atrbvh_set_allocator(NULL, NULL);
+            ck_assert_msg(total_bytes < (size_t)T,
+                          "OpenCL frame %d allocated %lu bytes", f,
+                          (unsigned long)total_bytes);
+            ck_assert_int_eq(atrbvh_refit(a, &g, &oc, &e), ATRBVH_OK);
+            ck_assert_int_eq(atrbvh_reoptimise(a, &g, &oc, &e), ATRBVH_OK);
+            ck_assert_msg(tu_same_bvh(a, b, msg, sizeof msg), "%s", msg);
+        }
     }
     atrbvh_bvh_free(a);
     atrbvh_bvh_free(b);
