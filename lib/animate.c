@@ -171,6 +171,8 @@ static atrbvh_status prim_error(const atrbvh_i_input *in, uint64_t j,
     }
 }
 
+#define PRIMS_PER_THREAD ((size_t)1 << 17)
+
 /* The leaf boxes of the tree over the new positions into `box` (entries
  * of leaf nodes only); the lowest invalid primitive is an error. */
 static atrbvh_status leaf_boxes(const atrbvh_bvh *bvh,
@@ -182,6 +184,12 @@ static atrbvh_status leaf_boxes(const atrbvh_bvh *bvh,
     const int64_t count = (int64_t)bvh->node_count;
     uint64_t bad = NO_INDEX;
     int64_t i;
+    /* One thread per PRIMS_PER_THREAD primitives at most: a refit is a few
+     * milliseconds of memory traffic, and on a loaded machine waking a
+     * thread costs more than the work it would take (measured in
+     * docs/animation.md).  Min/max only: the result is the same. */
+    if ((size_t)threads > bvh->prim_count / PRIMS_PER_THREAD + 1)
+        threads = (int)(bvh->prim_count / PRIMS_PER_THREAD + 1);
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1024) \
     reduction(min : bad)

@@ -217,6 +217,49 @@ START_TEST(refit_equals_brute_force)
 }
 END_TEST
 
+/* Above 2^17 primitives the refit's leaf pass runs on several threads:
+ * the same boxes as one thread, and the lowest faulty primitive named. */
+START_TEST(refit_parallel_pass)
+{
+    enum { N = 300000 };
+    float *base = tu_random_triangles(N, 18, 1.0f, 0.0f);
+    float *v = malloc((size_t)N * 9 * sizeof *v);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * (size_t)N, NULL, N);
+    atrbvh_build_options o1, o3;
+    atrbvh_bvh *a, *b;
+    atrbvh_error e;
+    char msg[256];
+    snap s;
+    float keep1, keep2;
+    options(&o1, 1);
+    options(&o3, 3);
+    o1.method = o3.method = ATRBVH_METHOD_LBVH;
+    frame_of(base, v, N, 0);
+    a = tu_build(&g, &o1);
+    b = tu_build(&g, &o1);
+    frame_of(base, v, N, 8);
+    ck_assert_int_eq(atrbvh_refit(a, &g, &o1, &e), ATRBVH_OK);
+    ck_assert_int_eq(atrbvh_refit(b, &g, &o3, &e), ATRBVH_OK);
+    ck_assert_msg(tu_same_bvh(a, b, msg, sizeof msg), "%s", msg);
+    ck_assert_msg(tu_check_bvh(b, &g, msg, sizeof msg), "%s", msg);
+    snap_take(&s, b);
+    keep1 = v[9 * 250000 + 1];
+    keep2 = v[9 * 1000 + 8];
+    v[9 * 250000 + 1] = NAN;
+    v[9 * 1000 + 8] = -INFINITY;
+    ck_assert_int_eq(atrbvh_refit(b, &g, &o3, &e), ATRBVH_ERR_NONFINITE);
+    ck_assert_uint_eq(e.index, 1000);
+    ck_assert(snap_same(&s, b));
+    v[9 * 250000 + 1] = keep1;
+    v[9 * 1000 + 8] = keep2;
+    snap_free(&s);
+    atrbvh_bvh_free(a);
+    atrbvh_bvh_free(b);
+    free(base);
+    free(v);
+}
+END_TEST
+
 static const atrbvh_method methods[3] = {
     ATRBVH_METHOD_ATRBVH, ATRBVH_METHOD_TRBVH, ATRBVH_METHOD_LBVH};
 
@@ -519,6 +562,7 @@ static Suite *suite(void)
     TCase *t = tcase_create("animate");
     tcase_set_timeout(t, 600);
     tcase_add_test(t, refit_equals_brute_force);
+    tcase_add_test(t, refit_parallel_pass);
     tcase_add_loop_test(t, reoptimise_never_raises_sah, 0, 3);
     tcase_add_test(t, reoptimise_thread_count);
     tcase_add_test(t, faults_leave_tree);
