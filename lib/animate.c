@@ -466,7 +466,6 @@ static atrbvh_status reopt_run(atrbvh_device *dev, const atrbvh_bvh *bvh,
     out->stats.ci = cfg->cost.ci;
     out->stats.ct = cfg->cost.ct;
     return measure(out, s, fn, error);
-    return ATRBVH_OK;
 }
 
 atrbvh_status atrbvh_reoptimise(atrbvh_bvh *bvh,
