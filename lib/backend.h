@@ -155,6 +155,10 @@ typedef struct atrbvh_i_capture {
  * stay NULL), with the library's allocator; tree_free releases them. */
 atrbvh_status atrbvh_i_tree_alloc(atrbvh_i_tree *t, uint32_t n, int values);
 void atrbvh_i_tree_free(atrbvh_i_tree *t);
+/* A deep copy of src's arrays (box and cost only with values, when src
+ * has them); ATRBVH_ERR_NOMEM with dst empty on failure. */
+atrbvh_status atrbvh_i_tree_copy(atrbvh_i_tree *dst, const atrbvh_i_tree *src,
+                                 int values);
 
 /* ---------------------------------------------------------- the backend */
 typedef struct atrbvh_i_backend atrbvh_i_backend;

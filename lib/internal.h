@@ -85,8 +85,6 @@ atrbvh_status atrbvh_i_capture_emit(atrbvh_capture_fn fn, void *user,
                                     const atrbvh_i_capture *c,
                                     const atrbvh_i_run *run,
                                     atrbvh_error *error);
-/* A deep copy of a tree (every array). */
-atrbvh_status atrbvh_i_tree_copy(atrbvh_i_tree *dst, const atrbvh_i_tree *src);
 
 /* ------------------------------------------------------------- the BVH */
 #define ATRBVH_MAX_KERNEL_TIMES 32

@@ -42,10 +42,11 @@ void atrbvh_i_tree_free(atrbvh_i_tree *t)
     memset(t, 0, sizeof *t);
 }
 
-atrbvh_status atrbvh_i_tree_copy(atrbvh_i_tree *dst, const atrbvh_i_tree *src)
+atrbvh_status atrbvh_i_tree_copy(atrbvh_i_tree *dst, const atrbvh_i_tree *src,
+                                 int values)
 {
     size_t n = src->n, nodes = 2 * n - 1, inner = n > 1 ? n - 1 : 1;
-    int values = src->box != NULL;
+    values = values && src->box != NULL && src->cost != NULL;
     if (atrbvh_i_tree_alloc(dst, src->n, values) != ATRBVH_OK)
         return ATRBVH_ERR_NOMEM;
     memcpy(dst->left, src->left, inner * sizeof *dst->left);

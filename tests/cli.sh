@@ -340,5 +340,26 @@ fi
 run 0 trace builtin:city:3000 --method lbvh --width 40 --height 30 &&
     out_has '^ +primary +1200 ' && out_has '^ +ao ' && out_has '^ +diffuse '
 
+# Progress: on a terminal (a pty from script(1)) a long build shows it,
+# --quiet silences it; when stderr is not a terminal there is none.
+run 0 build builtin:city:300000 --quality high --threads 2 &&
+    [ ! -s "$T/err" ] || fail "progress written to a stderr that is no terminal"
+if command -v script >/dev/null 2>&1; then
+    checks=$((checks + 1))
+    ATRBVH_PROGRESS_AFTER_MS=0 script -qc \
+        "'$TOOL' build builtin:city:300000 --quality high --threads 1" \
+        /dev/null >"$T/pty" 2>&1 </dev/null
+    grep -q "atrbvh: building: optimise" "$T/pty" &&
+        grep -q "atrbvh: building: layout *100%" "$T/pty" ||
+        fail "no progress through optimise to 100% on a terminal: $(tr '\r' '\n' <"$T/pty" | head -3)"
+    checks=$((checks + 1))
+    ATRBVH_PROGRESS_AFTER_MS=0 script -qc \
+        "'$TOOL' build builtin:city:300000 --quality high --threads 1 --quiet" \
+        /dev/null >"$T/pty" 2>&1 </dev/null
+    grep -q "atrbvh: building" "$T/pty" && fail "--quiet still shows progress"
+else
+    echo "cli.sh: script(1) missing, progress on a terminal not checked"
+fi
+
 echo "cli.sh: $checks runs, $failures failures"
 [ "$failures" -eq 0 ]

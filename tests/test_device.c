@@ -132,6 +132,8 @@ END_TEST
  * closed. */
 START_TEST(allocation_failure_open_build_close)
 {
+    /* _i: 0 the CPU, 1 an OpenCL device (skipped without one) */
+    const char *spec = _i ? "opencl" : "cpu";
     float *v1, *v2;
     atrbvh_geometry g1 = soup(&v1, 500, 5), g2 = soup(&v2, 2000, 6);
     atrbvh_build_options o;
@@ -139,6 +141,18 @@ START_TEST(allocation_failure_open_build_close)
     int done = 0;
     atrbvh_build_options_init(&o);
     o.threads = 2;
+    if (_i) {
+        atrbvh_device *probe = NULL;
+        atrbvh_error e;
+        if (atrbvh_device_open(spec, &probe, &e) != ATRBVH_OK) {
+            fprintf(stderr, "SKIP allocation failure on OpenCL: %s\n",
+                    e.text);
+            free(v1);
+            free(v2);
+            return;
+        }
+        atrbvh_device_close(probe);
+    }
     atrbvh_set_allocator(count_malloc, count_free);
     for (k = 0; !done; k++) {
         atrbvh_device *d = NULL;
@@ -147,7 +161,7 @@ START_TEST(allocation_failure_open_build_close)
         atrbvh_status st;
         outstanding = 0;
         countdown = k;
-        st = atrbvh_device_open("cpu", &d, &e);
+        st = atrbvh_device_open(spec, &d, &e);
         if (st == ATRBVH_OK) {
             o.device = d;
             st = atrbvh_build(&g1, &o, &b, &e);
@@ -548,7 +562,7 @@ static Suite *suite(void)
     tcase_set_timeout(t, 600);
     tcase_add_test(t, open_specs);
     tcase_add_test(t, reuse_allocates_no_scratch);
-    tcase_add_test(t, allocation_failure_open_build_close);
+    tcase_add_loop_test(t, allocation_failure_open_build_close, 0, 2);
     tcase_add_test(t, threads_own_and_shared_devices);
     tcase_add_loop_test(t, progress_monotone_to_one, 0, 2);
     tcase_add_test(t, cancel_everywhere);

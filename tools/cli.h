@@ -63,6 +63,7 @@ typedef struct cli_build_args {
     const char *output;
     int method, backend; /* CLI_OPT_ENUM indices, applied to options */
     int device_given;
+    int quiet;       /* --quiet: no progress on stderr */
     const char *cmd; /* the subcommand, for usage messages */
 } cli_build_args;
 

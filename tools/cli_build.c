@@ -107,6 +107,10 @@ void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table)
              .dest = &o->skip_invalid, .flag_value = 1,
              .help = "leave out triangles with NaN or infinite\n"
                      "coordinates (counted) instead of failing"},
+            {.name = "--quiet", .alias = "-q", .kind = CLI_OPT_FLAG,
+             .dest = &a->quiet, .flag_value = 1,
+             .help = "no progress on stderr (shown only on a\n"
+                     "terminal, for work over a second)"},
         };
         size_t k;
         for (k = 0; k < sizeof core / sizeof core[0]; k++)
@@ -249,29 +253,66 @@ int cli_bad_device(const cli_build_args *a, atrbvh_status st,
 }
 
 /* ------------------------------------------------------------ progress */
-/* Shown only on a terminal, and only once a build has run for a while, so
- * short builds and logs stay clean. */
+/* Shown only on a terminal (and not with --quiet), and only once loading
+ * or building has run for a second, so short runs and logs stay clean;
+ * then redrawn at most every PROGRESS_EVERY_MS as the library and the
+ * loader report work done. */
 #define PROGRESS_AFTER_MS 1000.0
+#define PROGRESS_EVERY_MS 100.0
 
 typedef struct progress {
-    double start_ms;
+    double start_ms, last_ms;
     int shown;
+    const char *what; /* "loading", "building" */
 } progress;
 
-static int on_progress(const char *stage, double fraction, void *user)
+/* The delay before the first line: PROGRESS_AFTER_MS, or
+ * $ATRBVH_PROGRESS_AFTER_MS (the tests use 0). */
+static double progress_after_ms(void)
 {
-    progress *p = user;
-    if (!p->shown && cli_now_ms() - p->start_ms < PROGRESS_AFTER_MS)
-        return 0;
+    const char *v = getenv("ATRBVH_PROGRESS_AFTER_MS");
+    char *end;
+    double d;
+    if (!v || !*v)
+        return PROGRESS_AFTER_MS;
+    d = strtod(v, &end);
+    return *end == '\0' && d >= 0.0 ? d : PROGRESS_AFTER_MS;
+}
+
+static void show_progress(progress *p, const char *stage, double fraction)
+{
+    double now = cli_now_ms();
+    if (!p->shown && now - p->start_ms < progress_after_ms())
+        return;
+    if (p->shown && now - p->last_ms < PROGRESS_EVERY_MS && fraction < 1.0)
+        return;
     if (!(fraction >= 0.0))
         fraction = 0.0;
     if (fraction > 1.0)
         fraction = 1.0;
-    fprintf(stderr, "\ratrbvh: building: %-10.10s %3d%%",
+    fprintf(stderr, "\ratrbvh: %s: %-10.10s %3d%%", p->what,
             stage ? stage : "", (int)(fraction * 100.0 + 0.5));
     fflush(stderr);
     p->shown = 1;
+    p->last_ms = now;
+}
+
+static int on_progress(const char *stage, double fraction, void *user)
+{
+    show_progress(user, stage, fraction);
     return 0;
+}
+
+static void on_load_progress(double fraction, void *user)
+{
+    show_progress(user, "", fraction);
+}
+
+static void end_progress(progress *p)
+{
+    if (p->shown)
+        fprintf(stderr, "\r%50s\r", "");
+    p->shown = 0;
 }
 
 /* ----------------------------------------------------- load and build */
@@ -320,10 +361,19 @@ int cli_load_and_build(const cli_build_args *a, cli_built *b)
     if (a->output && cli_out_usable(a->output, a->scene) != 0)
         return CLI_FAIL;
     t0 = cli_now_ms();
+    memset(&prog, 0, sizeof prog);
+    prog.start_ms = t0;
+    prog.what = "loading";
+    if (!a->quiet && isatty(STDERR_FILENO))
+        scene_set_progress(on_load_progress, &prog);
     if (scene_load(a->scene, &b->sc, err, sizeof err) != 0) {
+        scene_set_progress(NULL, NULL);
+        end_progress(&prog);
         cli_error("%s", err);
         return CLI_FAIL;
     }
+    scene_set_progress(NULL, NULL);
+    end_progress(&prog);
     b->load_ms = cli_now_ms() - t0;
     if (b->sc.triangle_count == 0) {
         cli_error("%s: the scene has no triangles", a->scene);
@@ -347,16 +397,16 @@ int cli_load_and_build(const cli_build_args *a, cli_built *b)
         }
         o.device = b->device;
     }
+    memset(&prog, 0, sizeof prog);
     prog.start_ms = cli_now_ms();
-    prog.shown = 0;
-    if (isatty(STDERR_FILENO)) {
+    prog.what = "building";
+    if (!a->quiet && isatty(STDERR_FILENO)) {
         o.progress = on_progress;
         o.progress_user = &prog;
     }
     memset(&e, 0, sizeof e);
     st = atrbvh_build(&b->geometry, &o, &b->bvh, &e);
-    if (prog.shown)
-        fprintf(stderr, "\r%40s\r", "");
+    end_progress(&prog);
     if (st != ATRBVH_OK && cli_bad_device(a, st, e.text)) {
         b->bvh = NULL;
         return cli_usage(a->cmd, "--device: %s", e.text);

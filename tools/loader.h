@@ -44,6 +44,9 @@ int scene_reserve(void **p, size_t *cap, size_t need, size_t elem);
  * out-of-range value would be undefined), NaN stays NaN, so the library
  * reports them as non-finite; values that round to FLT_MAX stay finite. */
 float scene_float(double d);
+/* Reports loading progress (scene_set_progress), `done` of `total` in the
+ * half `phase` (0 reading, 1 parsing); cheap when nobody listens. */
+void scene_progress(int phase, uint64_t done, uint64_t total);
 
 /* Copies the base name of `path` into name (truncated, always terminated). */
 void scene_set_name(scene *s, const char *path);

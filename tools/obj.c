@@ -252,7 +252,8 @@ int scene_parse_obj(const char *path, const unsigned char *data, size_t size,
         const char *end = nl ? nl : stop, *hash, *s = p;
         char kw[TOKEN_LEN];
         int st, rc = 0;
-        o.line++;
+        if ((++o.line & 0xffffu) == 0)
+            scene_progress(1, (uint64_t)(p - (const char *)data), size);
         hash = memchr(p, '#', (size_t)(end - p));
         if (hash)
             end = hash;

@@ -665,6 +665,8 @@ static int read_element(ply *p, const ply_element *e, int is_vertex,
     }
     for (i = 0; i < e->count; i++) {
         size_t k, item_start = p->pos;
+        if ((i & 0xffffu) == 0)
+            scene_progress(1, p->pos, p->size);
         if (p->format == F_ASCII && !ascii_next_line(p))
             return fail_at(p, p->pos, "the file ends at %s item %llu of "
                            "%llu (truncated)", e->name,
@@ -976,6 +978,8 @@ int scene_read_ply(const char *path, unsigned char **data, size_t *size,
             goto fail;
         }
         eof = got < want;
+        if (regular)
+            scene_progress(0, len, (uint64_t)st.st_size);
     }
     if ((uint64_t)(len - header_end) > limit) {
         scene_fail(err, err_len, "%s: more than %llu bytes after the header, "

@@ -161,6 +161,24 @@ static int load_builtin(const char *spec, scene *out, char *err,
     return scene_builtin(buf, n, out, err, err_len);
 }
 
+static scene_progress_fn progress_fn;
+static void *progress_user;
+
+void scene_set_progress(scene_progress_fn fn, void *user)
+{
+    progress_fn = fn;
+    progress_user = user;
+}
+
+void scene_progress(int phase, uint64_t done, uint64_t total)
+{
+    if (progress_fn && total > 0)
+        progress_fn(0.5 * (double)phase +
+                        0.5 * (double)(done < total ? done : total) /
+                            (double)total,
+                    progress_user);
+}
+
 int scene_load(const char *spec, scene *out, char *err, size_t err_len)
 {
     unsigned char *data = NULL;

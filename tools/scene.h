@@ -26,6 +26,12 @@ typedef struct scene {
  * the file and the line or byte offset of the problem. */
 int scene_load(const char *spec, scene *out, char *err, size_t err_len);
 void scene_free(scene *s);
+/* Progress of scene_load for the tool's display: `fraction` of the file
+ * read (0 .. 0.5) and parsed (0.5 .. 1), called now and then from the
+ * loading thread; NULL turns it off.  Not thread-safe (one loader at a
+ * time in a process that sets it). */
+typedef void (*scene_progress_fn)(double fraction, void *user);
+void scene_set_progress(scene_progress_fn fn, void *user);
 /* The library's view of the scene (no copy). */
 atrbvh_geometry scene_geometry(const scene *s);
 

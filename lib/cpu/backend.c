@@ -86,24 +86,6 @@ static int copy_out(void *dst_ptr, const void *src, size_t n, size_t size)
     return 1;
 }
 
-static atrbvh_status copy_tree(atrbvh_i_tree *dst, const atrbvh_i_tree *src,
-                               int values)
-{
-    size_t n = src->n, nodes = 2 * n - 1, inner = n > 1 ? n - 1 : 1;
-    if (atrbvh_i_tree_alloc(dst, src->n, values) != ATRBVH_OK)
-        return ATRBVH_ERR_NOMEM;
-    memcpy(dst->left, src->left, inner * sizeof *dst->left);
-    memcpy(dst->right, src->right, inner * sizeof *dst->right);
-    memcpy(dst->parent, src->parent, nodes * sizeof *dst->parent);
-    memcpy(dst->count, src->count, nodes * sizeof *dst->count);
-    memcpy(dst->leaf_prim, src->leaf_prim, n * sizeof *dst->leaf_prim);
-    if (values) {
-        memcpy(dst->box, src->box, nodes * sizeof *dst->box);
-        memcpy(dst->cost, src->cost, nodes * sizeof *dst->cost);
-    }
-    return ATRBVH_OK;
-}
-
 static atrbvh_status cpu_capture(atrbvh_device *dev, atrbvh_i_run *run,
                                  atrbvh_stage stage, atrbvh_i_capture *cap,
                                  atrbvh_error *error)
@@ -127,13 +109,13 @@ static atrbvh_status cpu_capture(atrbvh_device *dev, atrbvh_i_run *run,
              copy_out(&cap->order, c->order, n, sizeof *c->order);
         break;
     case ATRBVH_STAGE_HIERARCHY:
-        ok = copy_tree(&cap->hierarchy, &c->tree, 0) == ATRBVH_OK;
+        ok = atrbvh_i_tree_copy(&cap->hierarchy, &c->tree, 0) == ATRBVH_OK;
         break;
     case ATRBVH_STAGE_REFIT:
-        ok = copy_tree(&cap->refit, &c->tree, 1) == ATRBVH_OK;
+        ok = atrbvh_i_tree_copy(&cap->refit, &c->tree, 1) == ATRBVH_OK;
         break;
     case ATRBVH_STAGE_OPTIMISE:
-        ok = copy_tree(&cap->optimise, &c->tree, 1) == ATRBVH_OK;
+        ok = atrbvh_i_tree_copy(&cap->optimise, &c->tree, 1) == ATRBVH_OK;
         break;
     case ATRBVH_STAGE_COLLAPSE:
         ok = copy_out(&cap->collapse_size, c->size, 2 * n - 1,
