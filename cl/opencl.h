@@ -151,6 +151,13 @@ atrbvh_status atrbvh_i_cl_rays(atrbvh_device *dev, const atrbvh_node *nodes,
                                 atrbvh_ray_cost *cost, int threads,
                                 double *kernel_ms, atrbvh_error *error);
 
+/* set_tree.c: the backend table's set_tree (see lib/backend.h) */
+atrbvh_status atrbvh_i_cl_set_tree(atrbvh_device *dev, atrbvh_i_run *run,
+                                   const uint32_t *left,
+                                   const uint32_t *right,
+                                   const uint32_t *leaf_prim,
+                                   atrbvh_error *error);
+
 /* memory.c */
 /* Buffer `slot` with at least count * item bytes (kept, grown only when
  * too small). */

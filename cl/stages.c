@@ -545,4 +545,5 @@ const atrbvh_i_backend atrbvh_i_cl_backend = {
     cl_set_prims,
     cl_capture,
     atrbvh_i_cl_rays,
-    cl_kernel_time};
+    cl_kernel_time,
+    atrbvh_i_cl_set_tree};

@@ -294,6 +294,12 @@ typedef struct atrbvh_stats {
     atrbvh_backend backend;
     int threads;             /* threads the build ran with              */
     double build_ms;         /* whole build, wall clock                 */
+    /* added with animation (atrbvh_refit): */
+    double sah_built;        /* SAH when built, loaded or re-optimised;
+                                sah / sah_built is a refitted tree's
+                                drift (atrbvh_refit(3))                 */
+    double refit_ms;         /* the last atrbvh_refit or
+                                atrbvh_reoptimise, wall clock (0: none) */
 } atrbvh_stats;
 
 /* Build a BVH over `geometry`. `options` may be NULL (defaults). On
@@ -312,12 +318,33 @@ ATRBVH_API const uint32_t *atrbvh_bvh_primitive_indices(const atrbvh_bvh *bvh,
 /* Fills the first `size` bytes of *stats (size: the caller's
  * sizeof(atrbvh_stats); the atrbvh_bvh_stats macro passes it).  Returns
  * ATRBVH_ERR_INVALID_ARGUMENT, *stats untouched, when a pointer is NULL or
- * size is below the first version's struct or above this version's. */
+ * size is not the size of a version of the struct (the first, ending
+ * with build_ms, or this one). */
 ATRBVH_API atrbvh_status atrbvh_bvh_stats_sized(const atrbvh_bvh *bvh,
                                                 atrbvh_stats *stats,
                                                 size_t size);
 #define atrbvh_bvh_stats(bvh, stats)                                           \
     atrbvh_bvh_stats_sized((bvh), (stats), sizeof *(stats))
+/* Animation (atrbvh_refit(3)).  `geometry`: the same primitives as the
+ * build (count, and the tree's primitive indices in range) at new
+ * positions.  atrbvh_refit recomputes every node box bottom-up, keeping
+ * the topology, and updates stats.sah (stats.sah_built stays: their ratio
+ * is the drift).  atrbvh_reoptimise runs options' treelet rounds (method,
+ * treelet size, rounds) on the existing tree at the new positions, then
+ * the SAH collapse and layout; with the build's cost options it never
+ * raises the SAH; stats.sah_built becomes the new SAH.  Both run on
+ * options->device (NULL: as options->backend says), allocate nothing on
+ * an open device once its scratch is large enough, give the same bits for
+ * any thread count and backend, and leave the tree unchanged on failure.
+ * `options` may be NULL (defaults). */
+ATRBVH_API atrbvh_status atrbvh_refit(atrbvh_bvh *bvh,
+                                      const atrbvh_geometry *geometry,
+                                      const atrbvh_build_options *options,
+                                      atrbvh_error *error);
+ATRBVH_API atrbvh_status atrbvh_reoptimise(atrbvh_bvh *bvh,
+                                           const atrbvh_geometry *geometry,
+                                           const atrbvh_build_options *options,
+                                           atrbvh_error *error);
 /* Wall-clock milliseconds of one stage of the build (0 for a loaded BVH,
  * a stage that did not run, or a stage out of range). */
 ATRBVH_API double atrbvh_bvh_stage_ms(const atrbvh_bvh *bvh,

@@ -46,6 +46,9 @@ double atrbvh_i_now_ms(void);
  * allocate nothing new.  A build without a device handle uses a scratch
  * that the pipeline frees when the build ends. */
 #define ATRBVH_I_SCRATCH_SLOTS 24
+/* Slots from this one on are the library's own (lib/animate.c); a
+ * backend uses the ones below it. */
+#define ATRBVH_I_SCRATCH_LIB 16
 typedef struct atrbvh_i_scratch {
     void *ptr[ATRBVH_I_SCRATCH_SLOTS];
     size_t bytes[ATRBVH_I_SCRATCH_SLOTS];
@@ -221,6 +224,16 @@ struct atrbvh_i_backend {
     /* Per-kernel device times of the last build (i-th; 0 past the last). */
     int (*kernel_time)(atrbvh_device *dev, size_t i, const char **name,
                        double *ms);
+    /* atrbvh_reoptimise (lib/animate.c), after bounds, in place of morton,
+     * sort and hierarchy: installs the binary tree of run->n leaves
+     * (left/right: n-1 entries, internal nodes 0..n-2 with the root at 0,
+     * leaves n-1..2n-2) whose leaf n-1+p holds input primitive
+     * leaf_prim[p] (its box: the bounds stage's entry leaf_prim[p]; no
+     * kept ids).  NULL: the backend cannot (ATRBVH_ERR_UNSUPPORTED). */
+    atrbvh_status (*set_tree)(atrbvh_device *dev, atrbvh_i_run *run,
+                              const uint32_t *left, const uint32_t *right,
+                              const uint32_t *leaf_prim,
+                              atrbvh_error *error);
 };
 
 extern const atrbvh_i_backend atrbvh_i_cpu_backend;

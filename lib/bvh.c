@@ -52,13 +52,16 @@ const uint32_t *atrbvh_bvh_primitive_indices(const atrbvh_bvh *bvh,
     return bvh ? bvh->prim_indices : NULL;
 }
 
-/* The first version's atrbvh_stats ends with build_ms. */
+/* The first version's atrbvh_stats ends with build_ms; the second
+ * (animation) with refit_ms.  Only a version's size is accepted. */
 #define STATS_SIZE_V1 (offsetof(atrbvh_stats, build_ms) + sizeof(double))
+#define STATS_SIZE_V2 (offsetof(atrbvh_stats, refit_ms) + sizeof(double))
 
 atrbvh_status atrbvh_bvh_stats_sized(const atrbvh_bvh *bvh,
                                      atrbvh_stats *stats, size_t size)
 {
-    if (!bvh || !stats || size < STATS_SIZE_V1 || size > sizeof *stats)
+    if (!bvh || !stats ||
+        (size != STATS_SIZE_V1 && size != STATS_SIZE_V2))
         return ATRBVH_ERR_INVALID_ARGUMENT;
     memcpy(stats, &bvh->stats, size);
     return ATRBVH_OK;

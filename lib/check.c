@@ -179,5 +179,6 @@ atrbvh_status atrbvh_i_bvh_measure(atrbvh_bvh *b)
     b->stats.max_leaf_primitives = largest;
     b->stats.sah = atrbvh_sah(b->nodes, b->node_count, b->stats.ci,
                               b->stats.ct);
+    b->stats.sah_built = b->stats.sah; /* atrbvh_refit's drift reference */
     return ATRBVH_OK;
 }

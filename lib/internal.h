@@ -96,6 +96,8 @@ struct atrbvh_bvh {
     atrbvh_stats stats;
     double stage_ms[ATRBVH_STAGE_COUNT];
     struct atrbvh_i_device_info *device; /* NULL unless built by OpenCL */
+    size_t node_capacity; /* nodes' allocation when above node_count
+                             (atrbvh_reoptimise reuses it); 0: node_count */
 };
 
 /* The device and per-kernel device times of an OpenCL build (allocated

@@ -144,5 +144,6 @@ int cli_bench(int argc, char **argv);
 int cli_render(int argc, char **argv);
 int cli_stages(int argc, char **argv);
 int cli_check(int argc, char **argv);
+int cli_animate(int argc, char **argv);
 
 #endif

@@ -136,6 +136,10 @@ static void usage(FILE *f)
           "  check DIR                compare stage dumps with the "
           "reference (the first\n"
           "                           differing stage and item)\n"
+          "  animate SCENE [OPTIONS]  an animated built-in scene: the BVH "
+          "refitted,\n"
+          "                           re-optimised or rebuilt every frame; "
+          "SAH, time\n"
           "  help [COMMAND]           this help, or that command's\n"
           "\n"
           "SCENE is a .ply or .obj file, or builtin:NAME[:N] with NAME one "
@@ -169,7 +173,8 @@ int main(int argc, char **argv)
                     {"bench", cli_bench},
                     {"render", cli_render},
                     {"stages", cli_stages},
-                    {"check", cli_check}};
+                    {"check", cli_check},
+                    {"animate", cli_animate}};
     size_t k;
     int rc;
     const char *cmd;

@@ -140,5 +140,6 @@ const atrbvh_i_backend atrbvh_i_cpu_backend = {
     cpu_set_prims,
     cpu_capture,
     NULL, /* trace: lib/traverse.c's OpenMP queries */
-    NULL  /* kernel_time: none */
+    NULL, /* kernel_time: none */
+    atrbvh_i_cpu_set_tree
 };

@@ -68,6 +68,10 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *, atrbvh_i_run *,
                                     atrbvh_error *);
 atrbvh_status atrbvh_i_cpu_layout(atrbvh_device *, atrbvh_i_run *,
                                   atrbvh_error *);
+/* backend.h's set_tree (lib/cpu/set_tree.c). */
+atrbvh_status atrbvh_i_cpu_set_tree(atrbvh_device *, atrbvh_i_run *,
+                                    const uint32_t *, const uint32_t *,
+                                    const uint32_t *, atrbvh_error *);
 
 /* The stages' algorithms, callable on plain arrays (tests use them). */
 /* Stable LSD radix sort of (keys, values) pairs; tmp_* are scratch of the

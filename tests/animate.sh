@@ -1,0 +1,148 @@
+#!/bin/sh
+# animate.sh - `atrbvh animate`: the animated built-in scenes, the
+# policies, --json, --plot, usage errors.  Run by `make check` with
+# ATRBVH_BUILDDIR and ATRBVH_SRCDIR set.
+
+BUILDDIR=${ATRBVH_BUILDDIR:-.}
+TOOL=$BUILDDIR/tools/atrbvh
+
+if [ ! -x "$TOOL" ]; then
+    echo "animate.sh: $TOOL not built" >&2
+    exit 99
+fi
+if ! command -v python3 >/dev/null 2>&1; then
+    echo "animate.sh: python3 not found; skipped"
+    exit 77
+fi
+
+T=$(mktemp -d "${TMPDIR:-/tmp}/atrbvh_animate.XXXXXX") || exit 99
+trap 'rm -rf "$T"' EXIT INT TERM
+
+failures=0
+checks=0
+fail() {
+    echo "FAIL: $*" >&2
+    failures=$((failures + 1))
+}
+
+# run RC ARGS...: output in $T/out, $T/err; a failing status comes with
+# exactly one "atrbvh: " line on stderr.
+run() {
+    want=$1
+    shift
+    checks=$((checks + 1))
+    "$TOOL" "$@" >"$T/out" 2>"$T/err"
+    rc=$?
+    if [ "$rc" -ne "$want" ]; then
+        fail "atrbvh $* exited $rc, expected $want; stderr: $(cat "$T/err")"
+        return 1
+    fi
+    if [ "$want" -ne 0 ]; then
+        if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q '^atrbvh: ' "$T/err"; then
+            fail "atrbvh $*: stderr is not one 'atrbvh: ' line: $(cat "$T/err")"
+            return 1
+        fi
+    fi
+    return 0
+}
+
+# py SCRIPT: python3 over $T/out's JSON as `d`; a failing assert fails.
+py() {
+    checks=$((checks + 1))
+    python3 - "$T/out" "$1" <<'PYEOF' || fail "$1"
+import json, sys
+d = json.load(open(sys.argv[1]))
+exec(sys.argv[2])
+PYEOF
+}
+
+run 0 animate --help && grep -q 'builtin:wave, builtin:shatter, builtin:traffic' "$T/out" ||
+    fail "animate --help does not name the animated scenes"
+run 0 help animate
+
+# Every scene, every policy: JSON with one entry per (policy, frame); frame 0
+# is the same build for all; a rebuild's SAH relative to itself is 1.
+for s in wave shatter traffic; do
+    run 0 animate builtin:$s:3000 --frames 6 --threads 2 --json || continue
+    py '
+f = d["frames"]
+pol = ["refit", "reoptimise:1", "rebuild", "auto"]
+assert len(f) == 24, len(f)
+assert [e["policy"] for e in f] == [p for p in pol for _ in range(6)]
+assert [e["frame"] for e in f] == list(range(6)) * 4
+s0 = [e["sah"] for e in f if e["frame"] == 0]
+assert len(set(s0)) == 1, s0
+for e in f:
+    assert e["sah"] > 0 and e["ms"] >= 0, e
+    if e["policy"] == "rebuild":
+        assert e["sah_vs_rebuild"] == 1, e
+assert [e["action"] for e in f if e["policy"] == "refit"] == ["build"] + ["refit"] * 5
+assert [e["action"] for e in f if e["policy"] == "reoptimise:1"] == ["build"] + ["reoptimise"] * 5
+assert [x["policy"] for x in d["summary"]] == pol
+assert d["summary"][2]["rebuilds"] == 5
+'
+    cp "$T/out" "$T/$s.json"
+    # Deterministic: the same SAH at every frame, whatever the thread count.
+    run 0 animate builtin:$s:3000 --frames 6 --threads 1 --json &&
+        python3 - "$T/$s.json" "$T/out" <<'PYEOF' || fail "$s: SAH differs between 2 and 1 threads"
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+assert [e["sah"] for e in a["frames"]] == [e["sah"] for e in b["frames"]]
+PYEOF
+done
+
+# The scene moves: refit's SAH changes, and on shatter it degrades against
+# a rebuild while re-optimising stays near it.
+run 0 animate builtin:shatter:3000 --frames 30 --policy refit,reoptimise:1,rebuild --json &&
+    py '
+r = [e for e in d["frames"] if e["policy"] == "refit"]
+o = [e for e in d["frames"] if e["policy"] == "reoptimise:1"]
+assert r[-1]["sah_vs_rebuild"] > 1.5, r[-1]
+assert max(e["sah_vs_rebuild"] for e in o) < 1.2, o
+'
+
+# auto: with an unreachable threshold it is refit; with a tiny one it
+# rebuilds whenever the tree drifted.
+run 0 animate builtin:wave:2000 --frames 5 --policy refit,auto --drift 1000 --json &&
+    py '
+r = [e["sah"] for e in d["frames"] if e["policy"] == "refit"]
+a = [e["sah"] for e in d["frames"] if e["policy"] == "auto"]
+assert r == a, (r, a)
+assert d["summary"][1]["rebuilds"] == 0
+'
+run 0 animate builtin:wave:2000 --frames 5 --policy auto --drift 1.0000001 --json &&
+    py 'assert d["summary"][0]["rebuilds"] >= 2, d["summary"]'
+
+# Text output: a row per frame and the summary.
+run 0 animate builtin:traffic:2000 --frames 3 --policy refit,rebuild &&
+    grep -q '^    2 ' "$T/out" && grep -q '^rebuild ' "$T/out" ||
+    fail "text output lacks frame 2 or the summary: $(cat "$T/out")"
+
+# --plot: data, script and (with gnuplot) the pictures.
+mkdir "$T/plot"
+if run 0 animate builtin:wave:1000 --frames 4 --plot "$T/plot"; then
+    for f in animate.dat animate.gp; do
+        [ -s "$T/plot/$f" ] || fail "--plot wrote no $f"
+    done
+    if command -v gnuplot >/dev/null 2>&1; then
+        for f in sah.png sah.svg ms.png ms.svg; do
+            [ -s "$T/plot/$f" ] || fail "--plot wrote no $f"
+        done
+    fi
+    ls "$T/plot" | grep -q '\.part$' && fail "--plot left .part files"
+fi
+run 1 animate builtin:wave:1000 --frames 2 --plot "$T/missing"
+
+# Usage errors (2) and bad scenes (1).
+run 2 animate
+run 2 animate builtin:wave --frames 0
+run 2 animate builtin:wave --policy bogus
+run 2 animate builtin:wave --policy refit,
+run 2 animate builtin:wave --policy reoptimise:0
+run 2 animate builtin:wave --drift 0.5
+run 1 animate builtin:sphere:100 --frames 2
+run 1 animate builtin:wave:abc --frames 2
+run 1 animate scene.ply --frames 2
+
+echo "animate.sh: $checks checks, $failures failed"
+[ "$failures" -eq 0 ]
