@@ -32,6 +32,7 @@
  * leave out); up to PLY_TRAILING_MAX bytes after the last element of a
  * binary file are ignored (padding some writers add).
  */
+#define _POSIX_C_SOURCE 200809L
 #include "config.h"
 
 #include "loader.h"

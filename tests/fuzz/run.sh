@@ -26,8 +26,8 @@ if ! command -v "$CC" >/dev/null 2>&1; then
 fi
 CFLAGS="-std=c99 -g -O1 -ffp-contract=off -fno-omit-frame-pointer
  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
- -Wall -Wextra -Wno-unknown-pragmas -I$out -Ilib -Itools -Itests"
-LIB=$(ls lib/*.c)
+ -Wall -Wextra -Wno-unknown-pragmas -pthread -I$out -Ilib -Itools -Itests"
+LIB=$(ls lib/*.c lib/cpu/*.c)
 SCENE="tools/scene.c tools/ply.c tools/obj.c tools/builtin.c tools/camera.c"
 passed=0
 failed=0
