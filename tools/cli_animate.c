@@ -19,6 +19,7 @@
 
 #include "animated.h"
 #include "cli.h"
+#include "gnuplot.h"
 #include "outfile.h"
 
 #include <errno.h>
@@ -177,95 +178,20 @@ static int pictures_finish(const char *dir, int ok)
 {
     int k, rc = 0;
     for (k = 0; k < 4; k++) {
-        char part[4300], final[4200];
-        struct stat st;
+        char final[4200];
         snprintf(final, sizeof final, "%s/%s", dir, pictures[k]);
-        snprintf(part, sizeof part, "%s.part", final);
-        if (!ok) {
-            remove(part);
-            continue;
-        }
-        if (lstat(final, &st) == 0 && !S_ISREG(st.st_mode)) {
-            cli_error("%s: not a regular file, not replaced (the picture is "
-                      "in %s)", final, part);
+        if (cli_gnuplot_picture(final, ok) != 0)
             rc = -1;
-            continue;
-        }
-        if (rename(part, final) != 0) {
-            cli_error("%s: %s", final, strerror(errno));
-            remove(part);
-            rc = -1;
-        }
     }
     return rc;
 }
 
+/* gnuplot, then the pictures renamed into place (or dropped). */
 static int run_gnuplot(const char *dir)
 {
-    pid_t pid;
-    int st;
-    fflush(NULL);
-    pid = fork();
-    if (pid < 0) {
-        cli_error("%s/animate.gp: cannot start gnuplot: %s", dir,
-                  strerror(errno));
-        return -1;
-    }
-    if (pid == 0) {
-        char *argv[5];
-        int fd;
-        if (chdir(dir) != 0)
-            _exit(126);
-        fd = open("gnuplot.log", O_WRONLY | O_CREAT | O_TRUNC, 0666);
-        if (fd >= 0) {
-            dup2(fd, STDERR_FILENO);
-            close(fd);
-        }
-        fd = open("/dev/null", O_RDONLY);
-        if (fd >= 0) {
-            dup2(fd, STDIN_FILENO);
-            close(fd);
-        }
-        argv[0] = (char *)"gnuplot";
-        argv[1] = (char *)"-e";
-        argv[2] = (char *)"outsuffix = '.part'";
-        argv[3] = (char *)"animate.gp";
-        argv[4] = NULL;
-        execvp(argv[0], argv);
-        _exit(127);
-    }
-    while (waitpid(pid, &st, 0) < 0)
-        if (errno != EINTR) {
-            cli_error("%s/animate.gp: waiting for gnuplot: %s", dir,
-                      strerror(errno));
-            pictures_finish(dir, 0);
-            return -1;
-        }
-    if (WIFEXITED(st) && WEXITSTATUS(st) == 127) {
-        cli_error("%s/animate.gp: gnuplot not found (install gnuplot to get "
-                  "the pictures; the data and script are there)", dir);
-        pictures_finish(dir, 0);
-        return -1;
-    }
-    if (!WIFEXITED(st) || WEXITSTATUS(st) != 0) {
-        cli_error("%s/animate.gp: gnuplot failed (see %s/gnuplot.log)", dir,
-                  dir);
-        pictures_finish(dir, 0);
-        return -1;
-    }
-    return pictures_finish(dir, 1);
+    return pictures_finish(dir, cli_gnuplot(dir, "animate.gp") == 0);
 }
 
-static void gp_string(FILE *g, const char *s)
-{
-    fputc('\'', g);
-    for (; *s; s++) {
-        if (*s == '\'')
-            fputc('\'', g);
-        fputc(*s == '\n' || *s == '\r' ? ' ' : *s, g);
-    }
-    fputc('\'', g);
-}
 
 static void gp_plot(FILE *g, const char *stem, const char *ylabel, int col,
                     const policy *p, int np, const char *title)
@@ -278,14 +204,14 @@ static void gp_plot(FILE *g, const char *stem, const char *ylabel, int col,
         fprintf(g, "set terminal %s\nset output '%s.%s'.outsuffix\n",
                 term[t][0], stem, term[t][1]);
         fprintf(g, "set title ");
-        gp_string(g, title);
+        cli_gnuplot_string(g, title);
         fprintf(g, " noenhanced\nset xlabel 'frame'\nset ylabel '%s'\n"
                    "set key top left noenhanced\nset grid\n",
                 ylabel);
         for (k = 0; k < np; k++) {
             fprintf(g, "%s 'animate.dat' using 1:%d with lines lw 2 title ",
                     k ? ", \\\n    " : "plot ", 2 + 2 * k + col);
-            gp_string(g, p[k].name);
+            cli_gnuplot_string(g, p[k].name);
         }
         fprintf(g, "\nunset output\n");
     }

@@ -6,6 +6,7 @@
 #include "config.h"
 
 #include "bench.h"
+#include "gnuplot.h"
 #include "outfile.h"
 
 #include <ctype.h>
@@ -78,8 +79,7 @@ static int pictures_finish(const char *dir, pictures *p, int ok)
     int k, e, rc = 0;
     for (k = 0; k < p->n; k++)
         for (e = 0; e < 2; e++) {
-            char part[4416], final[4400];
-            struct stat st;
+            char final[4400];
             int w = snprintf(final, sizeof final, "%s/%s.%s", dir,
                              p->stem[k], picture_ext[e]);
             if (w < 0 || (size_t)w >= sizeof final) {
@@ -87,23 +87,8 @@ static int pictures_finish(const char *dir, pictures *p, int ok)
                 rc = -1;
                 continue;
             }
-            snprintf(part, sizeof part, "%s.part", final);
-            if (!ok) {
-                remove(part);
-                continue;
-            }
-            /* replace only a regular file (or nothing) */
-            if (lstat(final, &st) == 0 && !S_ISREG(st.st_mode)) {
-                cli_error("%s: not a regular file, not replaced (the "
-                          "picture is in %s)", final, part);
+            if (cli_gnuplot_picture(final, ok) != 0)
                 rc = -1;
-                continue;
-            }
-            if (rename(part, final) != 0) {
-                cli_error("%s: %s", final, strerror(errno));
-                remove(part);
-                rc = -1;
-            }
         }
     free(p->stem);
     memset(p, 0, sizeof *p);
@@ -112,74 +97,12 @@ static int pictures_finish(const char *dir, pictures *p, int ok)
 
 /* gnuplot SCRIPT in DIR, its messages in DIR/gnuplot.log; no shell (a
  * folder name is never interpreted). */
+/* gnuplot, then the pictures renamed into place (or dropped). */
 static int run_gnuplot(const char *dir, const char *script, pictures *pics)
 {
-    pid_t pid;
-    int st;
-    fflush(NULL);
-    pid = fork();
-    if (pid < 0) {
-        cli_error("%s/%s: cannot start gnuplot: %s", dir, script,
-                  strerror(errno));
-        pictures_finish(dir, pics, 0);
-        return -1;
-    }
-    if (pid == 0) {
-        char *argv[5];
-        int fd;
-        if (chdir(dir) != 0)
-            _exit(126);
-        fd = open("gnuplot.log", O_WRONLY | O_CREAT | O_TRUNC, 0666);
-        if (fd >= 0) {
-            dup2(fd, STDERR_FILENO);
-            close(fd);
-        }
-        fd = open("/dev/null", O_RDONLY);
-        if (fd >= 0) {
-            dup2(fd, STDIN_FILENO);
-            close(fd);
-        }
-        argv[0] = (char *)"gnuplot";
-        argv[1] = (char *)"-e";
-        argv[2] = (char *)"outsuffix = '.part'";
-        argv[3] = (char *)script;
-        argv[4] = NULL;
-        execvp(argv[0], argv);
-        _exit(127);
-    }
-    while (waitpid(pid, &st, 0) < 0)
-        if (errno != EINTR) {
-            cli_error("%s/%s: waiting for gnuplot: %s", dir, script,
-                      strerror(errno));
-            pictures_finish(dir, pics, 0);
-            return -1;
-        }
-    if (WIFEXITED(st) && WEXITSTATUS(st) == 127) {
-        cli_error("%s/%s: gnuplot not found (install gnuplot to get the "
-                  "pictures; the data and script are there)", dir, script);
-        pictures_finish(dir, pics, 0);
-        return -1;
-    }
-    if (!WIFEXITED(st) || WEXITSTATUS(st) != 0) {
-        cli_error("%s/%s: gnuplot failed (see %s/gnuplot.log)", dir, script,
-                  dir);
-        pictures_finish(dir, pics, 0);
-        return -1;
-    }
-    return pictures_finish(dir, pics, 1);
+    return pictures_finish(dir, pics, cli_gnuplot(dir, script) == 0);
 }
 
-/* A gnuplot single-quoted string: '' stands for one quote. */
-static void gp_string(FILE *g, const char *s)
-{
-    fputc('\'', g);
-    for (; *s; s++) {
-        if (*s == '\'')
-            fputc('\'', g);
-        fputc(*s == '\n' || *s == '\r' ? ' ' : *s, g);
-    }
-    fputc('\'', g);
-}
 
 /* Both terminals for the plot commands written by `body`. */
 static void gp_both(FILE *g, pictures *pics, const char *stem,
@@ -385,7 +308,7 @@ static void gp_labels(FILE *g, const frame *fr, const point *p, int n)
     int i;
     for (i = 0; i < n; i++) {
         fputs("set label ", g);
-        gp_string(g, p[i].label);
+        cli_gnuplot_string(g, p[i].label);
         fprintf(g, " at %.9g,%.9g left font ',8' noenhanced front\n",
                 data_x(fr, p[i].ax), data_y(fr, p[i].ay));
     }
@@ -423,7 +346,7 @@ static void body_scene(FILE *g, const void *ctx)
     {
         char t[512];
         snprintf(t, sizeof t, "%s: %s", sp->base, sp->what);
-        gp_string(g, t);
+        cli_gnuplot_string(g, t);
     }
     fputs(" noenhanced\n"
           "set xlabel 'build time, ms (median of the timed runs; log "
@@ -635,7 +558,7 @@ static void body_scaling(FILE *g, const void *ctx)
             fprintf(g, "%s'scaling.dat' index %d using 1:2 with linespoints "
                        "lw 2 title ",
                     k ? ", \\\n  " : "", k);
-            gp_string(g, sp->titles[k]);
+            cli_gnuplot_string(g, sp->titles[k]);
             fputs(" noenhanced", g);
         }
     } else if (sp->which == 1) {
@@ -645,7 +568,7 @@ static void body_scaling(FILE *g, const void *ctx)
                               "count (log-log): %s, %s",
                  r->base, r->label);
         fputs("set title ", g);
-        gp_string(g, t);
+        cli_gnuplot_string(g, t);
         fputs(" noenhanced\nset ylabel 'stage time, ms (median)'\nset logscale y\n"
               "set key top left\nplot ",
               g);
@@ -664,7 +587,7 @@ static void body_scaling(FILE *g, const void *ctx)
             fprintf(g, "%s'scaling.dat' index %d using 1:%d with linespoints "
                        "lw 2 title ",
                     k ? ", \\\n  " : "", k, 3 + ATRBVH_STAGE_COUNT);
-            gp_string(g, sp->titles[k]);
+            cli_gnuplot_string(g, sp->titles[k]);
             fputs(" noenhanced", g);
         }
     }
