@@ -69,6 +69,29 @@ static atrbvh_status cpu_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
     return ATRBVH_OK;
 }
 
+atrbvh_status atrbvh_i_cpu_tree_arrays(atrbvh_i_cpu_run *c, uint32_t n,
+                                       atrbvh_error *error)
+{
+    atrbvh_i_scratch *s = c->scratch;
+    atrbvh_i_tree *t = &c->tree;
+    const size_t nodes = 2 * (size_t)n - 1, inner = n > 1 ? n - 1 : 1;
+    t->n = n;
+    t->left = atrbvh_i_scratch_get(s, CPU_LEFT, inner, sizeof *t->left);
+    t->right = atrbvh_i_scratch_get(s, CPU_RIGHT, inner, sizeof *t->right);
+    t->parent = atrbvh_i_scratch_get(s, CPU_PARENT, nodes, sizeof *t->parent);
+    t->count = atrbvh_i_scratch_get(s, CPU_COUNT, nodes, sizeof *t->count);
+    t->box = atrbvh_i_scratch_get(s, CPU_BOX, nodes, sizeof *t->box);
+    t->cost = atrbvh_i_scratch_get(s, CPU_COST, nodes, sizeof *t->cost);
+    t->leaf_prim = atrbvh_i_scratch_get(s, CPU_LEAF_PRIM, n,
+                                        sizeof *t->leaf_prim);
+    if (!t->left || !t->right || !t->parent || !t->count || !t->box ||
+        !t->cost || !t->leaf_prim)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                             "cannot allocate the tree for %lu primitives",
+                             (unsigned long)n);
+    return ATRBVH_OK;
+}
+
 static atrbvh_status nomem(atrbvh_error *error)
 {
     return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,

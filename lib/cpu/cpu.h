@@ -51,6 +51,11 @@ typedef struct atrbvh_i_cpu_run {
     uint32_t *size;     /* collapse                          */
 } atrbvh_i_cpu_run;
 
+/* The tree's arrays for n leaves in the device's scratch slots (the
+ * hierarchy stage and set_tree). */
+atrbvh_status atrbvh_i_cpu_tree_arrays(atrbvh_i_cpu_run *c, uint32_t n,
+                                       atrbvh_error *error);
+
 /* The stages (backend.h's atrbvh_i_stage_fn). */
 atrbvh_status atrbvh_i_cpu_bounds(atrbvh_device *, atrbvh_i_run *,
                                   atrbvh_error *);

@@ -17,24 +17,17 @@ atrbvh_status atrbvh_i_cpu_set_tree(atrbvh_device *dev, atrbvh_i_run *run,
                                     atrbvh_error *error)
 {
     atrbvh_i_cpu_run *c = run->state;
-    atrbvh_i_scratch *s = c->scratch;
     atrbvh_i_tree *t = &c->tree;
     const uint32_t n = run->n;
-    const size_t nodes = 2 * (size_t)n - 1, inner = n > 1 ? n - 1 : 1;
     int64_t i;
+    atrbvh_status st;
     (void)dev;
-    t->n = n;
-    t->left = atrbvh_i_scratch_get(s, CPU_LEFT, inner, sizeof *t->left);
-    t->right = atrbvh_i_scratch_get(s, CPU_RIGHT, inner, sizeof *t->right);
-    t->parent = atrbvh_i_scratch_get(s, CPU_PARENT, nodes, sizeof *t->parent);
-    t->count = atrbvh_i_scratch_get(s, CPU_COUNT, nodes, sizeof *t->count);
-    t->box = atrbvh_i_scratch_get(s, CPU_BOX, nodes, sizeof *t->box);
-    t->cost = atrbvh_i_scratch_get(s, CPU_COST, nodes, sizeof *t->cost);
-    t->leaf_prim = atrbvh_i_scratch_get(s, CPU_LEAF_PRIM, n,
-                                        sizeof *t->leaf_prim);
-    c->order = atrbvh_i_scratch_get(s, CPU_ORDER, n, sizeof *c->order);
-    if (!t->left || !t->right || !t->parent || !t->count || !t->box ||
-        !t->cost || !t->leaf_prim || !c->order)
+    st = atrbvh_i_cpu_tree_arrays(c, n, error);
+    if (st != ATRBVH_OK)
+        return st;
+    c->order = atrbvh_i_scratch_get(c->scratch, CPU_ORDER, n,
+                                    sizeof *c->order);
+    if (!c->order)
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "cannot allocate the tree for %lu primitives",
                              (unsigned long)n);
