@@ -52,12 +52,16 @@ double atrbvh_i_now_ms(void);
 typedef struct atrbvh_i_scratch {
     void *ptr[ATRBVH_I_SCRATCH_SLOTS];
     size_t bytes[ATRBVH_I_SCRATCH_SLOTS];
+    int transient; /* a build without a handle: nothing to keep for */
 } atrbvh_i_scratch;
 /* At least count * size bytes in slot `slot` (contents undefined); NULL
  * on overflow or allocation failure (the slot is then empty). */
 void *atrbvh_i_scratch_get(atrbvh_i_scratch *s, unsigned slot, size_t count,
                            size_t size);
 void atrbvh_i_scratch_free(atrbvh_i_scratch *s);
+/* A slot the build no longer reads: freed at once when the scratch is
+ * transient (lower peak memory), kept for the next build otherwise. */
+void atrbvh_i_scratch_done(atrbvh_i_scratch *s, unsigned slot);
 
 /* ------------------------------------------------------- a build's data */
 /* The geometry after its metadata checks: strides in bytes. */

@@ -122,4 +122,5 @@ void atrbvh_i_device_cpu_temp(atrbvh_device *dev)
     dev->backend = &atrbvh_i_cpu_backend;
     strcpy(dev->name, "cpu");
     dev->temporary = 1;
+    dev->scratch.transient = 1;
 }

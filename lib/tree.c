@@ -91,6 +91,15 @@ void *atrbvh_i_scratch_get(atrbvh_i_scratch *s, unsigned slot, size_t count,
     return s->ptr[slot];
 }
 
+void atrbvh_i_scratch_done(atrbvh_i_scratch *s, unsigned slot)
+{
+    if (!s->transient || slot >= ATRBVH_I_SCRATCH_SLOTS)
+        return;
+    atrbvh_i_free(s->ptr[slot]);
+    s->ptr[slot] = NULL;
+    s->bytes[slot] = 0;
+}
+
 void atrbvh_i_scratch_free(atrbvh_i_scratch *s)
 {
     unsigned k;

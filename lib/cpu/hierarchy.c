@@ -169,5 +169,12 @@ atrbvh_status atrbvh_i_cpu_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
 #endif
     for (i = 0; i < (int64_t)n; i++)
         t->leaf_prim[i] = c->ids ? c->ids[c->order[i]] : c->order[i];
+    /* The keys and the sort's scratch are read no more. */
+    atrbvh_i_scratch_done(c->scratch, CPU_KEYS);
+    atrbvh_i_scratch_done(c->scratch, CPU_TMP_KEYS);
+    atrbvh_i_scratch_done(c->scratch, CPU_TMP_ORDER);
+    atrbvh_i_scratch_done(c->scratch, CPU_IDS);
+    c->keys = NULL;
+    c->ids = NULL;
     return ATRBVH_OK;
 }

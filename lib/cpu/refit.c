@@ -129,5 +129,10 @@ atrbvh_status atrbvh_i_cpu_refit(atrbvh_device *dev, atrbvh_i_run *run,
     (void)error;
     atrbvh_i_refit(&c->tree, c->boxes, c->order, &run->cfg->cost,
                    run->cfg->threads);
+    /* The leaves hold the primitive boxes now. */
+    atrbvh_i_scratch_done(c->scratch, CPU_BOXES);
+    atrbvh_i_scratch_done(c->scratch, CPU_ORDER);
+    c->boxes = NULL;
+    c->order = NULL;
     return ATRBVH_OK;
 }
