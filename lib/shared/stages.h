@@ -69,6 +69,44 @@ ATRBVH_FN int atrbvh_prim_box_triangle(ATRBVH_CONST_GLOBAL float *vertices,
                                        atrbvh_u32 *bad_value)
 {
     int c;
+    /* The common case first: three indices in range and nine finite
+     * coordinates (x - x is 0 exactly for each finite x, so their sum is 0
+     * exactly when all are), then the box by the same comparisons, in the
+     * same order, as atrbvh_box_grow from an empty box - the same bits.
+     * Anything else takes the corner-by-corner loop below, which finds the
+     * first failing corner. */
+    {
+        const atrbvh_u64 v0 = atrbvh_fetch_vertex_id(indices, istride,
+                                                     indexed, i, 0),
+                         v1 = atrbvh_fetch_vertex_id(indices, istride,
+                                                     indexed, i, 1),
+                         v2 = atrbvh_fetch_vertex_id(indices, istride,
+                                                     indexed, i, 2);
+        if (v0 < vertex_count && v1 < vertex_count && v2 < vertex_count) {
+            float a[3], b[3], d[3], s = 0.0f;
+            atrbvh_fetch_vertex(vertices, vstride, v0, a);
+            atrbvh_fetch_vertex(vertices, vstride, v1, b);
+            atrbvh_fetch_vertex(vertices, vstride, v2, d);
+            for (c = 0; c < 3; c++)
+                s += (a[c] - a[c]) + (b[c] - b[c]) + (d[c] - d[c]);
+            if (s == 0.0f) {
+                for (c = 0; c < 3; c++) {
+                    float lo = a[c], hi = a[c];
+                    if (b[c] < lo)
+                        lo = b[c];
+                    if (b[c] > hi)
+                        hi = b[c];
+                    if (d[c] < lo)
+                        lo = d[c];
+                    if (d[c] > hi)
+                        hi = d[c];
+                    out->min[c] = lo;
+                    out->max[c] = hi;
+                }
+                return ATRBVH_PRIM_OK;
+            }
+        }
+    }
     *out = atrbvh_box_empty();
     for (c = 0; c < 3; c++) {
         float p[3];
