@@ -42,6 +42,8 @@
 #define ATRBVH_TRAV_WIDEN_DOWN 0.99999964f
 /* Relative slack on the closest-hit distance when pruning (2^-12). */
 #define ATRBVH_TRAV_PRUNE_SLACK (1.0f / 4096.0f)
+/* The smallest absolute slack on that limit: FLT_MIN. */
+#define ATRBVH_TRAV_MIN_SLACK 1.17549435e-38f
 /* Relative slack on the near end of a triangle's own box
  * (atrbvh_trav_within_own_box): covers the float rounding of t (2^-24)
  * with a wide margin. */
@@ -104,8 +106,14 @@ ATRBVH_FN double atrbvh_trav_abs(double x)
 
 ATRBVH_FN float atrbvh_trav_widen_limit(float t)
 {
-    /* t + |t| * slack; inf stays inf, -inf stays -inf. */
-    float r = t + atrbvh_trav_absf(t) * ATRBVH_TRAV_PRUNE_SLACK;
+    /* t + |t| * slack, and at least the smallest normal float past t: a
+     * hit at t = 0 must not prune a box entered at a subnormal distance,
+     * whose primitive can tie at 0 and win by its lower index (found by
+     * fuzz_build).  inf stays inf, -inf stays -inf. */
+    float slack = atrbvh_trav_absf(t) * ATRBVH_TRAV_PRUNE_SLACK, r;
+    if (slack < ATRBVH_TRAV_MIN_SLACK)
+        slack = ATRBVH_TRAV_MIN_SLACK;
+    r = t + slack;
     return r == r ? r : t;
 }
 
