@@ -29,10 +29,11 @@ embree_ctx *embree_open(int threads)
 }
 void embree_close(embree_ctx *ctx) { (void)ctx; }
 int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
-                 unsigned max_leaf, double ci, double ct,
+                 unsigned max_leaf, double ci, double ct, int measure_memory,
                  embree_build_result *res)
 {
     (void)ctx, (void)sc, (void)q, (void)max_leaf, (void)ci, (void)ct;
+    (void)measure_memory;
     memset(res, 0, sizeof *res);
     cli_error("not built with Embree");
     return -1;
@@ -55,8 +56,15 @@ int embree_trace(embree_ctx *ctx, const scene *sc, embree_quality q,
 #include <omp.h>
 #endif
 
+/* What an Embree user keeps between builds: the device, one BVH object
+ * (its node allocator and temporary arrays are reused by the next
+ * rtcBuildBVH) and the primitive array (refilled by every build, which
+ * reorders it). */
 struct embree_ctx {
     RTCDevice device;
+    RTCBVH bvh;
+    struct RTCBuildPrimitive *prims;
+    size_t prims_cap;
     long current, peak; /* Embree's memory monitor, bytes */
 };
 
@@ -94,7 +102,14 @@ embree_ctx *embree_open(int threads)
         free(c);
         return NULL;
     }
-    rtcSetDeviceMemoryMonitorFunction(c->device, monitor, c);
+    c->bvh = rtcNewBVH(c->device);
+    if (!c->bvh) {
+        cli_error("Embree: rtcNewBVH failed (error %d)",
+                  (int)rtcGetDeviceError(c->device));
+        rtcReleaseDevice(c->device);
+        free(c);
+        return NULL;
+    }
     return c;
 }
 
@@ -102,7 +117,9 @@ void embree_close(embree_ctx *ctx)
 {
     if (!ctx)
         return;
+    rtcReleaseBVH(ctx->bvh);
     rtcReleaseDevice(ctx->device);
+    free(ctx->prims);
     free(ctx);
 }
 
@@ -333,13 +350,13 @@ static enum RTCBuildQuality rtc_quality(embree_quality q)
 }
 
 int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
-                 unsigned max_leaf, double ci, double ct,
+                 unsigned max_leaf, double ci, double ct, int measure_memory,
                  embree_build_result *res)
 {
     size_t n = sc->triangle_count, i;
     struct RTCBuildPrimitive *prims;
     struct RTCBuildArguments args;
-    RTCBVH bvh;
+    RTCBVH bvh = ctx->bvh;
     enode *root;
     float rlo[3] = {FLT_MAX, FLT_MAX, FLT_MAX};
     float rhi[3] = {-FLT_MAX, -FLT_MAX, -FLT_MAX};
@@ -350,13 +367,36 @@ int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
         cli_error("Embree: %zu triangles", n);
         return -1;
     }
-    ctx->current = ctx->peak = 0;
-    t0 = cli_now_ms();
-    prims = malloc(n * sizeof *prims);
-    if (!prims) {
-        cli_error("out of memory for %zu Embree primitives", n);
-        return -1;
+    if (n > ctx->prims_cap) {
+        free(ctx->prims);
+        ctx->prims_cap = 0;
+        ctx->prims = n <= SIZE_MAX / sizeof *prims
+                         ? malloc(n * sizeof *prims) : NULL;
+        if (!ctx->prims) {
+            cli_error("out of memory for %zu Embree primitives", n);
+            return -1;
+        }
+        ctx->prims_cap = n;
     }
+    prims = ctx->prims;
+    /* The memory monitor is a callback on every allocation: only on a
+     * build whose time is not taken, into a new BVH object (a used one
+     * would reuse its blocks and hide them from the monitor). */
+    if (measure_memory) {
+        RTCBVH fresh = rtcNewBVH(ctx->device);
+        if (!fresh) {
+            cli_error("Embree: rtcNewBVH failed (error %d)",
+                      (int)rtcGetDeviceError(ctx->device));
+            return -1;
+        }
+        rtcReleaseBVH(ctx->bvh);
+        bvh = ctx->bvh = fresh;
+    }
+    ctx->current = ctx->peak = 0;
+    rtcSetDeviceMemoryMonitorFunction(ctx->device,
+                                      measure_memory ? monitor : NULL,
+                                      measure_memory ? ctx : NULL);
+    t0 = cli_now_ms();
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static)
 #endif
@@ -382,7 +422,6 @@ int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
         prims[i].upper_z = hi[2];
         prims[i].primID = (unsigned)i;
     }
-    bvh = rtcNewBVH(ctx->device);
     args = rtcDefaultBuildArguments();
     args.byteSize = sizeof args;
     args.buildFlags = RTC_BUILD_FLAG_NONE;
@@ -408,12 +447,14 @@ int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
     root = rtcBuildBVH(&args);
     t1 = cli_now_ms();
     res->build_ms = t1 - t0;
-    res->peak_bytes = n * sizeof *prims + (size_t)(ctx->peak > 0 ? ctx->peak : 0);
+    if (measure_memory) {
+        res->peak_bytes =
+            n * sizeof *prims + (size_t)(ctx->peak > 0 ? ctx->peak : 0);
+        rtcSetDeviceMemoryMonitorFunction(ctx->device, NULL, NULL);
+    }
     if (!root) {
         cli_error("Embree: rtcBuildBVH failed (error %d)",
                   (int)rtcGetDeviceError(ctx->device));
-        rtcReleaseBVH(bvh);
-        free(prims);
         return -1;
     }
     /* The root's box: the union of every primitive's. */
@@ -432,8 +473,6 @@ int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
     }
     rc = convert(root, rlo, rhi, n, ci, ct, &res->bvh);
     res->convert_ms = cli_now_ms() - t1;
-    rtcReleaseBVH(bvh);
-    free(prims);
     return rc;
 }
 

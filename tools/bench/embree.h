@@ -35,12 +35,19 @@ typedef struct embree_build_result {
     atrbvh_bvh *bvh;      /* the tree as an atrbvh BVH (free it)          */
     double build_ms;      /* primitive boxes + rtcBuildBVH, wall clock    */
     double convert_ms;    /* layout into atrbvh nodes (not in build_ms)   */
-    size_t peak_bytes;    /* primitive array + Embree's memory monitor    */
+    size_t peak_bytes;    /* primitive array + Embree's memory monitor,
+                             0 unless measure_memory                    */
 } embree_build_result;
 
-/* max_leaf 0 means 1 (Embree needs a bound).  0, or -1 after cli_error. */
+/* As Embree's users build: the device, the BVH object and the primitive
+ * array are the context's, made once and reused; each build refills the
+ * primitive array (inside build_ms) and calls rtcBuildBVH.  The tree lives
+ * until the context's next build (res->bvh is a converted copy).
+ * measure_memory installs Embree's memory monitor for this build only (a
+ * callback on every allocation: do not time such a build).  max_leaf 0
+ * means 1 (Embree needs a bound).  0, or -1 after cli_error. */
 int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
-                 unsigned max_leaf, double ci, double ct,
+                 unsigned max_leaf, double ci, double ct, int measure_memory,
                  embree_build_result *res);
 
 /* Embree's own scene (rtcCommitScene at quality q) traced with
