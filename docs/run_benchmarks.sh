@@ -1,7 +1,9 @@
 #!/bin/sh
 # docs/run_benchmarks.sh [PART...] - regenerates the measurements, plots and
 # tables of docs/benchmarks.md.  PART: machine, main, sweep, scaling,
-# render, tables (default: all, in that order).  Run from anywhere after the build
+# render, tables (default: all, in that order), and speed (not in the
+# default: the build-speed section beside Embree, about 10 minutes; run it
+# alone on a quiet machine).  Run from anywhere after the build
 # in _build/ (BUILDDIR=... to use another); scenes from ../shared/scenes,
 # or ../../shared/scenes from a worktree (ATRBVH_SCENES=... to use others).  Needs gnuplot and python3.
 set -eu
@@ -60,6 +62,31 @@ for part in "$@"; do
         done
         "$TOOL" render "$S/conference.ply" --width 400 --height 300 \
             --viewpoint 2 -o "$OUT/shaded-conference.png" >/dev/null
+        ;;
+    speed)
+        # Builds only, 2 threads, median of 5, beside Embree in one run;
+        # then the standalone Embree timing and the 10^7 scaling.
+        {
+            echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
+            echo "cpu: $(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -n 1), $(nproc) cores"
+            echo "OMP_WAIT_POLICY: $OMP_WAIT_POLICY"
+            echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+            echo "command: sh docs/run_benchmarks.sh speed"
+        } >"$OUT/speed-machine.txt"
+        mkdir -p "$OUT/speed"
+        # shellcheck disable=SC2086
+        "$TOOL" bench $SCENES --no-rays --repeat 5 --threads 2 \
+            --configs lbvh,atrbvh:9:2,atrbvh:16:3,trbvh:7:3,fast,balanced,high,embree \
+            --csv "$OUT/speed.csv" --plot "$OUT/speed" >"$OUT/speed.txt"
+        ALONE=$(dirname "$TOOL")/embree-alone
+        if [ -x "$ALONE" ]; then
+            for s in $SCENES; do "$ALONE" "$s" 2 5; done >"$OUT/embree-alone.txt"
+        fi
+        "$TOOL" bench --scaling builtin:sphere --configs lbvh --threads 2 \
+            --repeat 3 --sizes 100000,1000000,3000000,10000000 \
+            --csv "$OUT/speed-scaling.csv" >"$OUT/speed-scaling.txt"
+        echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)" >>"$OUT/speed-machine.txt"
+        python3 docs/speed_tables.py "$OUT" docs/benchmarks.md
         ;;
     tables)
         echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)" >>"$OUT/machine.txt"
