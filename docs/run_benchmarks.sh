@@ -76,7 +76,7 @@ for part in "$@"; do
         mkdir -p "$OUT/speed"
         # shellcheck disable=SC2086
         "$TOOL" bench $SCENES --no-rays --repeat 5 --threads 2 \
-            --configs lbvh,atrbvh:9:2,atrbvh:16:3,trbvh:7:3,fast,balanced,high,embree \
+            --configs lbvh,atrbvh:9:2,atrbvh:16:3,trbvh:7:3,fast,balanced,high,embree,lbvh@opencl,atrbvh:9:2@opencl \
             --csv "$OUT/speed.csv" --plot "$OUT/speed" >"$OUT/speed.txt"
         ALONE=$(dirname "$TOOL")/embree-alone
         if [ -x "$ALONE" ]; then

@@ -37,10 +37,11 @@ def label(r):
     m = r["method"]
     if m.startswith("embree"):
         return m
+    suffix = "@opencl" if r.get("backend") == "opencl" else ""
     if m == "lbvh":
-        return "LBVH"
+        return "LBVH" + suffix
     ts = r["treelet_size"]
-    return "%s(%s,%s)" % (m.upper(), ts, r["rounds"])
+    return "%s(%s,%s)%s" % (m.upper(), ts, r["rounds"], suffix)
 
 
 def sname(path):
@@ -102,6 +103,18 @@ def main():
             ratio_cell(g("TRBVH(7,3)"), me, 1.5),
             ratio_cell(g("ATRBVH(16,3)"), me, 99), lo, me))
     L.append("")
+    if any(lab.endswith("@opencl") for (_, lab) in by):
+        L.append("### OpenCL on PoCL against the CPU backend (same tree, same "
+                 "run; device opened once, outside the timing; goal <= 1.5)")
+        L.append("")
+        L.append("| scene | LBVH OpenCL / CPU | ATRBVH(9,2) OpenCL / CPU |")
+        L.append("|---|---:|---:|")
+        for s in scenes:
+            g = lambda lab: fnum(by.get((s, lab), {}), "build_ms")
+            L.append("| %s | %s | %s |" % (
+                s, ratio_cell(g("LBVH@opencl"), g("LBVH"), 1.5),
+                ratio_cell(g("ATRBVH(9,2)@opencl"), g("ATRBVH(9,2)"), 1.5)))
+        L.append("")
     if alone:
         L.append("### Cross-check: the bench's Embree rows against a standalone "
                  "`rtcBuildBVH` (`tools/embree-alone`)")
@@ -154,14 +167,15 @@ def main():
         dom = []
         if em:
             for (ss, lab), r in by.items():
-                if ss != s or lab.startswith("embree"):
+                if ss != s or lab.startswith("embree") or "@" in lab:
                     continue
                 if (fnum(r, "build_ms") < fnum(em, "build_ms")
                         and fnum(r, "sah") < fnum(em, "sah")):
                     dom.append(lab)
         if not dom and em:
             best = min((fnum(r, "sah"), lab) for (ss, lab), r in by.items()
-                       if ss == s and not lab.startswith("embree"))
+                       if ss == s and not lab.startswith("embree")
+                       and "@" not in lab)
             dom = ["none: the lowest atrbvh SAH run, %s %.2f, is %+.1f%% "
                    "from Embree medium's" % (best[1], best[0],
                                              100 * (best[0] / fnum(em, "sah")
