@@ -26,7 +26,8 @@ const char *const atrbvh_i_cl_kernel_names[K_COUNT] = {
     "bounds_triangles", "bounds_boxes", "bounds_reduce", "morton",
     "sort_count",       "sort_scan",    "sort_scatter",  "hierarchy",
     "refit",            "opt_prepare",  "opt_round",     "collapse",
-    "layout",           "intersect_closest", "intersect_any"};
+    "layout_link",      "layout_jump",  "layout",
+    "intersect_closest", "intersect_any"};
 
 /* ------------------------------------------------------ device choice */
 static void info_string(cl_device_id d, cl_platform_id p, char *buf,

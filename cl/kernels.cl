@@ -343,34 +343,88 @@ __kernel void collapse(__global const atrbvh_box *box,
  * emitted (atrbvh_layout_node) when no proper ancestor became a leaf.
  * Every tree leaf writes its primitive at its position, which is where a
  * collapsed ancestor's primitives go too (left to right). */
-__kernel void layout(__global const atrbvh_box *box, __global const uint *count,
-                     __global const uint *left, __global const uint *right,
-                     __global const uint *parent, __global const uint *size,
-                     __global const uint *leaf_prim,
-                     __global atrbvh_node *nodes, __global uint *prims,
-                     atrbvh_kargs_tree a)
+/* Every node's output position and first primitive are sums of per-edge
+ * offsets along its path to the root (shared/stages.h's placement rule:
+ * a left child sits 1 after its parent, a right child after the left
+ * subtree), and a node is emitted unless an ancestor is a collapsed leaf.
+ * Walking each path would cost the tree's depth per node; instead the
+ * paths are summed by pointer jumping (Wyllie): each round every node adds
+ * its ancestor's partial sum and jumps to the ancestor's ancestor, so
+ * ceil(log2(depth)) rounds suffice.  Integer sums, two buffers (a round
+ * reads one and writes the other): the result is exact and independent
+ * of scheduling.  j holds two halves of 3 x nodes words: ancestor (0 at
+ * the root), position offset | ATRBVH_SIZE_LEAF when some ancestor is a
+ * collapsed leaf, primitive offset; *more is set when some node still
+ * has an ancestor after the round. */
+__kernel void layout_link(__global const uint *count,
+                          __global const uint *left,
+                          __global const uint *parent,
+                          __global const uint *size, __global uint *j,
+                          atrbvh_kargs_tree a)
 {
-    uint x = (uint)get_global_id(0), c, pos = 0, prim = 0, n = a.n;
-    int emitted = 1;
-    if (x >= 2u * n - 1u)
+    uint x = (uint)get_global_id(0), nodes = 2u * a.n - 1u;
+    uint up, pos = 0u, prim = 0u;
+    if (x >= nodes)
         return;
-    c = x;
-    while (c != 0u) {
-        uint up = parent[c];
-        if (size[up] & ATRBVH_SIZE_LEAF)
-            emitted = 0;
-        if (right[up] == c) {
-            uint l = left[up];
-            pos = atrbvh_layout_right_pos(pos, size[l]);
-            prim = atrbvh_layout_right_prim(prim, count[l]);
+    up = x == 0u ? 0u : parent[x];
+    if (x != 0u) {
+        if (left[up] == x) {
+            pos = 1u;
         } else {
-            pos += 1u;
+            uint l = left[up];
+            pos = atrbvh_layout_right_pos(0u, size[l]);
+            prim = atrbvh_layout_right_prim(0u, count[l]);
         }
-        c = up;
+        if (size[up] & ATRBVH_SIZE_LEAF)
+            pos |= ATRBVH_SIZE_LEAF;
     }
+    j[x] = up;
+    j[nodes + x] = pos;
+    j[2u * nodes + x] = prim;
+}
+
+__kernel void layout_jump(__global uint *j, __global uint *more, uint from,
+                          atrbvh_kargs_tree a)
+{
+    uint x = (uint)get_global_id(0), nodes = 2u * a.n - 1u;
+    __global const uint *src = j + (size_t)from * 3u * nodes;
+    __global uint *dst = j + (size_t)(1u - from) * 3u * nodes;
+    uint up, pos, prim;
+    if (x >= nodes)
+        return;
+    up = src[x];
+    pos = src[nodes + x];
+    prim = src[2u * nodes + x];
+    if (up != 0u) {
+        uint upos = src[nodes + up];
+        pos = ((pos & ATRBVH_SIZE_MASK) + (upos & ATRBVH_SIZE_MASK)) |
+              ((pos | upos) & ATRBVH_SIZE_LEAF);
+        prim += src[2u * nodes + up];
+        up = src[up];
+        if (up != 0u)
+            *more = 1u; /* every writer stores the same value */
+    }
+    dst[x] = up;
+    dst[nodes + x] = pos;
+    dst[2u * nodes + x] = prim;
+}
+
+__kernel void layout(__global const atrbvh_box *box, __global const uint *count,
+                     __global const uint *left, __global const uint *size,
+                     __global const uint *leaf_prim, __global const uint *j,
+                     __global atrbvh_node *nodes, __global uint *prims,
+                     uint from, atrbvh_kargs_tree a)
+{
+    uint x = (uint)get_global_id(0), n = a.n, all = 2u * n - 1u;
+    __global const uint *src = j + (size_t)from * 3u * all;
+    uint pos, prim;
+    if (x >= all)
+        return;
+    pos = src[all + x];
+    prim = src[2u * all + x];
     if (x >= n - 1u)
         prims[prim] = leaf_prim[x - (n - 1u)];
-    if (!emitted)
+    if (pos & ATRBVH_SIZE_LEAF)
         return;
     nodes[pos] = atrbvh_layout_node(
         box[x], size[x], count[x], pos, prim,
