@@ -29,7 +29,8 @@
 /* One thread's scratch, allocated once per build (never per treelet). */
 typedef struct opt_worker {
     atrbvh_trbvh_scratch trbvh; /* 2^n entries each (TRBVH)             */
-    double *dist;               /* n(n-1)/2 distances (ATRBVH)          */
+    atrbvh_agg_scratch agg;     /* ATRBVH: n(n-1)/2 distances, and the
+                                   arrays of treelets above 32 leaves   */
     uint64_t treelets;          /* treelets processed                   */
     uint64_t applied;           /* of which restructured                */
 } opt_worker;
@@ -90,6 +91,17 @@ static int in_crown(const walk_ctx *c, uint32_t node)
     return node < c->t.n_internal && c->t.count[node] >= c->gamma;
 }
 
+/* Larger and adaptive ATRBVH treelets, kept out of process() so that
+ * the fixed-size path's code and registers stay what they were. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int process_agg(walk_ctx *c, opt_worker *w, uint32_t node)
+{
+    return atrbvh_atrbvh_process(&c->t, c->cost, node, c->n, c->gamma,
+                                 w->trbvh, &w->agg);
+}
+
 static void process(walk_ctx *c, uint32_t node)
 {
     opt_worker *w = c->workers;
@@ -108,9 +120,16 @@ static void process(walk_ctx *c, uint32_t node)
      * Pedrini 2015), write back if strictly cheaper - all of it
      * shared/treelet.h's atrbvh_treelet_process, which the OpenCL kernel
      * calls too. */
-    int applied = atrbvh_treelet_process(&c->t, c->cost, node, c->n,
+    int applied;
+    /* Up to ATRBVH_TREELET_MAX leaves the private-array path directly (no
+     * wrapper on the hot path); larger and adaptive ATRBVH treelets go
+     * through atrbvh_atrbvh_process. */
+    if (c->n <= ATRBVH_TREELET_MAX)
+        applied = atrbvh_treelet_process(&c->t, c->cost, node, c->n,
                                          c->method == ATRBVH_METHOD_ATRBVH,
-                                         w->trbvh, w->dist);
+                                         w->trbvh, w->agg.dist);
+    else
+        applied = process_agg(c, w, node);
     w->treelets++;
     w->applied += (uint64_t)applied;
     progress(c);
@@ -188,9 +207,13 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     walk_ctx c;
     opt_worker *workers = NULL;
     unsigned char *block;
-    size_t subsets = 0, pairs = 0, stride = 0, off_cost, off_count,
+    size_t subsets = 0, agg = 0, stride = 0, off_cost, off_count,
            off_split, off_dist, total;
     unsigned round, n = cfg->treelet_size;
+    /* The largest treelet of the build (ATRBVH_TREELET_AUTO: the rule's
+     * largest) and the smallest subtree that can hold a treelet. */
+    unsigned nmax = n == ATRBVH_TREELET_AUTO ? ATRBVH_AUTO_MAX : n;
+    unsigned nmin = n == ATRBVH_TREELET_AUTO ? cfg->gamma : n;
     int threads = cfg->threads > 0 ? cfg->threads : 1, k;
 
     if (cfg->method == ATRBVH_METHOD_LBVH || cfg->rounds == 0)
@@ -200,30 +223,38 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "optimise: method %d has no treelet optimiser",
                              (int)cfg->method);
-    if (n < 3u ||
-        n > (cfg->method == ATRBVH_METHOD_TRBVH ? (unsigned)ATRBVH_TRBVH_MAX
-                                                : (unsigned)ATRBVH_TREELET_MAX))
+    if (n == ATRBVH_TREELET_AUTO && cfg->method == ATRBVH_METHOD_ATRBVH) {
+        if (cfg->gamma < 3u)
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+                                 (uint64_t)-1,
+                                 "optimise: gamma %u below 3", cfg->gamma);
+    } else if (n < 3u ||
+               n > (cfg->method == ATRBVH_METHOD_TRBVH
+                        ? (unsigned)ATRBVH_TRBVH_MAX
+                        : (unsigned)ATRBVH_ATRBVH_MAX)) {
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "optimise: treelet size %u out of range", n);
-    if (cfg->gamma < n)
+    } else if (cfg->gamma < n)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "optimise: gamma %u below the treelet size %u",
                              cfg->gamma, n);
     /* A tree of fewer than n primitives has no treelet root. */
-    if (t->n < 2u || t->count[0] < n)
+    if (t->n < 2u || t->count[0] < nmin)
         return ATRBVH_OK;
 
     /* Scratch: TRBVH 2^n boxes, costs, counts, splits; ATRBVH the
-     * n(n-1)/2 distances.  Sizes are tiny (n <= 32) but checked anyway. */
+     * n(n-1)/2 distances and, above 32 leaves, the treelet's arrays
+     * (atrbvh_agg_layout, sized from the largest size used: 150 KiB at
+     * 128).  Sizes are small but checked anyway. */
     if (cfg->method == ATRBVH_METHOD_TRBVH)
         subsets = (size_t)1 << n;
     else
-        pairs = (size_t)n * (n - 1u) / 2u;
+        agg = (size_t)atrbvh_agg_layout(NULL, nmax, NULL);
     off_cost = ALIGN64(subsets * sizeof(atrbvh_box));
     off_count = off_cost + ALIGN64(subsets * sizeof(double));
     off_split = off_count + ALIGN64(subsets * sizeof(uint32_t));
     off_dist = off_split + ALIGN64(subsets * sizeof(uint32_t));
-    stride = off_dist + ALIGN64(pairs * sizeof(double));
+    stride = off_dist + ALIGN64(agg);
     if (!atrbvh_i_mul_size((size_t)threads, stride, &total))
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
                              "optimise: scratch size overflows");
@@ -249,7 +280,8 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         workers[k].trbvh.cost = (double *)(void *)(base + off_cost);
         workers[k].trbvh.count = (uint32_t *)(void *)(base + off_count);
         workers[k].trbvh.split = (uint32_t *)(void *)(base + off_split);
-        workers[k].dist = (double *)(void *)(base + off_dist);
+        if (cfg->method == ATRBVH_METHOD_ATRBVH)
+            atrbvh_agg_layout(base + off_dist, nmax, &workers[k].agg);
     }
 
     c.t.left = t->left;
