@@ -122,7 +122,8 @@ void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table)
                      "or 32 per treelet by its subtree's size)"},
             {.name = "--rounds", .kind = CLI_OPT_UINT, .arg = "R", .min = 0,
              .max = UINT_MAX, .dest = &o->rounds,
-             .help = "optimisation rounds (default: trbvh 3, atrbvh 2)"},
+             .help = "optimisation rounds (default: trbvh 3, atrbvh 2,\n"
+                     "atrbvh with --treelet auto 4)"},
             {.name = "--threads", .kind = CLI_OPT_INT, .arg = "N", .min = 0,
              .max = ATRBVH_MAX_THREADS, .dest = &o->threads,
              .help = "threads (default: all; 0 = OpenMP default)"},

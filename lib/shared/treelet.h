@@ -55,6 +55,7 @@
 #endif
 #define ATRBVH_AUTO_MIN 9
 #define ATRBVH_AUTO_MAX 32
+#define ATRBVH_AUTO_ROUNDS_DEFAULT 4
 /* Defaults (atrbvh_build_options: treelet_size 0, rounds 0). */
 #define ATRBVH_TRBVH_DEFAULT 7
 #define ATRBVH_ATRBVH_DEFAULT 9
