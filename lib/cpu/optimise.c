@@ -29,8 +29,10 @@
 /* One thread's scratch, allocated once per build (never per treelet). */
 typedef struct opt_worker {
     atrbvh_trbvh_scratch trbvh; /* 2^n entries each (TRBVH)             */
-    atrbvh_agg_scratch agg;     /* ATRBVH: n(n-1)/2 distances, and the
-                                   arrays of treelets above 32 leaves   */
+    atrbvh_agg_scratch agg;     /* ATRBVH above 32 leaves or adaptive:
+                                   distances (= dist) and the treelet's
+                                   arrays, atrbvh_agg_layout            */
+    double *dist;               /* n(n-1)/2 distances (ATRBVH)          */
     uint64_t treelets;          /* treelets processed                   */
     uint64_t applied;           /* of which restructured                */
 } opt_worker;
@@ -58,8 +60,13 @@ typedef struct walk_ctx {
     int cancel; /* set by thread 0 when the user cancels: skip the rest */
 } walk_ctx;
 
-/* Counts a treelet done; thread 0 reports progress now and then. */
-static void progress(walk_ctx *c)
+/* Counts a treelet done; thread 0 reports progress now and then.  Inlined
+ * into both of its callers (process, process_agg): a call per treelet
+ * shows in the instruction count of the small treelets. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void progress(walk_ctx *c)
 {
     uint64_t done;
     int cancel;
@@ -91,17 +98,6 @@ static int in_crown(const walk_ctx *c, uint32_t node)
     return node < c->t.n_internal && c->t.count[node] >= c->gamma;
 }
 
-/* Larger and adaptive ATRBVH treelets, kept out of process() so that
- * the fixed-size path's code and registers stay what they were. */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static int process_agg(walk_ctx *c, opt_worker *w, uint32_t node)
-{
-    return atrbvh_atrbvh_process(&c->t, c->cost, node, c->n, c->gamma,
-                                 w->trbvh, &w->agg);
-}
-
 static void process(walk_ctx *c, uint32_t node)
 {
     opt_worker *w = c->workers;
@@ -120,19 +116,49 @@ static void process(walk_ctx *c, uint32_t node)
      * Pedrini 2015), write back if strictly cheaper - all of it
      * shared/treelet.h's atrbvh_treelet_process, which the OpenCL kernel
      * calls too. */
-    int applied;
-    /* Up to ATRBVH_TREELET_MAX leaves the private-array path directly (no
-     * wrapper on the hot path); larger and adaptive ATRBVH treelets go
-     * through atrbvh_atrbvh_process. */
-    if (c->n <= ATRBVH_TREELET_MAX)
-        applied = atrbvh_treelet_process(&c->t, c->cost, node, c->n,
+    int applied = atrbvh_treelet_process(&c->t, c->cost, node, c->n,
                                          c->method == ATRBVH_METHOD_ATRBVH,
-                                         w->trbvh, w->agg.dist);
-    else
-        applied = process_agg(c, w, node);
+                                         w->trbvh, w->dist);
     w->treelets++;
     w->applied += (uint64_t)applied;
     progress(c);
+}
+
+/* ATRBVH treelets above 32 leaves and the adaptive size: process()'s
+ * bookkeeping around atrbvh_atrbvh_process (shared/treelet.h, which the
+ * OpenCL kernel calls too).  Kept out of process() so that the fixed-size
+ * path's code and registers stay what they were. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void process_agg(walk_ctx *c, uint32_t node)
+{
+    opt_worker *w = c->workers;
+    int cancel, applied;
+#ifdef _OPENMP
+#pragma omp atomic read
+#endif
+    cancel = c->cancel;
+    if (cancel)
+        return; /* the build is being cancelled: its tree is dropped */
+#ifdef _OPENMP
+    w += omp_get_thread_num();
+#endif
+    applied = atrbvh_atrbvh_process(&c->t, c->cost, node, c->n, c->gamma,
+                                    w->trbvh, &w->agg);
+    w->treelets++;
+    w->applied += (uint64_t)applied;
+    progress(c);
+}
+
+/* One crown node: up to ATRBVH_TREELET_MAX leaves process(), above (and
+ * ATRBVH_TREELET_AUTO) process_agg(). */
+static void visit(walk_ctx *c, uint32_t node)
+{
+    if (c->n <= ATRBVH_TREELET_MAX)
+        process(c, node);
+    else
+        process_agg(c, node);
 }
 
 /* Post-order over the crown below (and including) crown node s, without a
@@ -153,7 +179,7 @@ static void walk_serial(walk_ctx *c, uint32_t s)
         }
         for (;;) {
             uint32_t parent;
-            process(c, x);
+            visit(c, x);
             if (x == s)
                 return;
             parent = t->parent[x];
@@ -193,7 +219,7 @@ static void walk_tasks(walk_ctx *c, uint32_t node, int depth)
 #ifdef _OPENMP
 #pragma omp taskwait
 #endif
-    process(c, node);
+    visit(c, node);
 }
 
 /* Per-thread scratch layout, each part aligned to 64 bytes. */
@@ -207,7 +233,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     walk_ctx c;
     opt_worker *workers = NULL;
     unsigned char *block;
-    size_t subsets = 0, agg = 0, stride = 0, off_cost, off_count,
+    size_t subsets = 0, pairs = 0, stride = 0, off_cost, off_count,
            off_split, off_dist, total;
     unsigned round, n = cfg->treelet_size;
     /* The largest treelet of the build (ATRBVH_TREELET_AUTO: the rule's
@@ -245,16 +271,17 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     /* Scratch: TRBVH 2^n boxes, costs, counts, splits; ATRBVH the
      * n(n-1)/2 distances and, above 32 leaves, the treelet's arrays
      * (atrbvh_agg_layout, sized from the largest size used: 84 KiB at
-     * 128, 17 KiB at 48).  Sizes are small but checked anyway. */
+     * 128, 17 KiB at 48; `pairs` counts it in doubles, a multiple of 8).
+     * Sizes are small but checked anyway. */
     if (cfg->method == ATRBVH_METHOD_TRBVH)
         subsets = (size_t)1 << n;
     else
-        agg = (size_t)atrbvh_agg_layout(NULL, nmax, NULL);
+        pairs = (size_t)atrbvh_agg_layout(NULL, nmax, NULL) / sizeof(double);
     off_cost = ALIGN64(subsets * sizeof(atrbvh_box));
     off_count = off_cost + ALIGN64(subsets * sizeof(double));
     off_split = off_count + ALIGN64(subsets * sizeof(uint32_t));
     off_dist = off_split + ALIGN64(subsets * sizeof(uint32_t));
-    stride = off_dist + ALIGN64(agg);
+    stride = off_dist + ALIGN64(pairs * sizeof(double));
     if (!atrbvh_i_mul_size((size_t)threads, stride, &total))
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
                              "optimise: scratch size overflows");
@@ -280,6 +307,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         workers[k].trbvh.cost = (double *)(void *)(base + off_cost);
         workers[k].trbvh.count = (uint32_t *)(void *)(base + off_count);
         workers[k].trbvh.split = (uint32_t *)(void *)(base + off_split);
+        workers[k].dist = (double *)(void *)(base + off_dist);
         if (cfg->method == ATRBVH_METHOD_ATRBVH)
             atrbvh_agg_layout(base + off_dist, nmax, &workers[k].agg);
     }
