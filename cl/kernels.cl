@@ -266,8 +266,8 @@ __kernel void opt_round(__global uint *left, __global uint *right,
                                              a.max_leaf);
     atrbvh_treelet_tree t;
     atrbvh_trbvh_scratch s;
+    atrbvh_agg_scratch agg;
     __global uchar *base;
-    __global double *dist;
     if (w >= a.workers)
         return;
     base = scratch + (ulong)w * a.stride;
@@ -275,7 +275,13 @@ __kernel void opt_round(__global uint *left, __global uint *right,
     s.cost = (__global double *)(base + a.off_cost);
     s.count = (__global uint *)(base + a.off_count);
     s.split = (__global uint *)(base + a.off_split);
-    dist = (__global double *)(base + a.off_dist);
+    /* ATRBVH: the distances, and above 32 leaves the treelet's arrays,
+     * laid out for the largest size (the host sized them alike). */
+    atrbvh_agg_layout(base + a.off_dist,
+                      a.treelet_size == ATRBVH_TREELET_AUTO
+                          ? (uint)ATRBVH_AUTO_MAX
+                          : a.agglomerative ? a.treelet_size : 2u,
+                      &agg);
     t.left = left;
     t.right = right;
     t.parent = parent;
@@ -287,8 +293,12 @@ __kernel void opt_round(__global uint *left, __global uint *right,
         uint x = list[k];
         for (;;) {
             uint up;
-            atrbvh_treelet_process(&t, &p, x, a.treelet_size,
-                                   (int)a.agglomerative, s, dist);
+            if (a.agglomerative)
+                atrbvh_atrbvh_process(&t, &p, x, a.treelet_size, a.gamma, s,
+                                      &agg);
+            else
+                atrbvh_treelet_process(&t, &p, x, a.treelet_size, 0, s,
+                                       agg.dist);
             if (x == 0u)
                 break;
             up = t.parent[x]; /* volatile, as every tree read here */

@@ -14,6 +14,7 @@
 #include "config.h"
 
 #include "opencl.h"
+#include "shared/treelet.h"
 
 #include <string.h>
 
@@ -304,20 +305,25 @@ static atrbvh_status st_refit(atrbvh_device *dev, atrbvh_i_run *run,
 
 /* ------------------------------------------------------------- optimise */
 /* Per-worker scratch: the TRBVH subset tables (2^n entries) or the
- * ATRBVH distance matrix (n(n-1)/2), each array 64-byte aligned. */
+ * ATRBVH distance matrix (n(n-1)/2) and, above 32 leaves, the treelet's
+ * arrays (atrbvh_agg_layout, as the kernel carves them; for
+ * ATRBVH_TREELET_AUTO the rule's largest size), each 64-byte aligned. */
 static void scratch_layout(const atrbvh_i_config *cfg,
                            atrbvh_kargs_optimise *a)
 {
-    size_t subsets = 0, pairs = 0, n = cfg->treelet_size;
+    size_t subsets = 0, agg = 0, n = cfg->treelet_size;
     if (a->agglomerative)
-        pairs = n * (n - 1u) / 2u;
+        agg = (size_t)atrbvh_agg_layout(
+            NULL,
+            n == ATRBVH_TREELET_AUTO ? ATRBVH_AUTO_MAX : (atrbvh_u32)n,
+            NULL);
     else
         subsets = (size_t)1 << n;
     a->off_cost = ALIGN64(subsets * sizeof(atrbvh_box));
     a->off_count = a->off_cost + ALIGN64(subsets * sizeof(double));
     a->off_split = a->off_count + ALIGN64(subsets * sizeof(uint32_t));
     a->off_dist = a->off_split + ALIGN64(subsets * sizeof(uint32_t));
-    a->stride = a->off_dist + ALIGN64(pairs * sizeof(double));
+    a->stride = a->off_dist + ALIGN64(agg);
 }
 
 static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
@@ -328,7 +334,9 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_kargs_optimise a;
     cl_uint workers_max, round, zero = 0;
     if (cfg->method == ATRBVH_METHOD_LBVH || cfg->rounds == 0 ||
-        run->n < 2 || run->n < cfg->treelet_size)
+        run->n < 2 ||
+        run->n < (cfg->treelet_size == ATRBVH_TREELET_AUTO ? cfg->gamma
+                                                            : cfg->treelet_size))
         return ATRBVH_OK;
     memset(&a, 0, sizeof a);
     a.ci = cfg->cost.ci;

@@ -271,15 +271,22 @@ atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
         unsigned hi = o.method == ATRBVH_METHOD_TRBVH ? ATRBVH_TRBVH_MAX
                                                       : ATRBVH_ATRBVH_MAX;
         const char *name = o.method == ATRBVH_METHOD_TRBVH ? "trbvh" : "atrbvh";
+        int autosize;
         c->treelet_size = o.treelet_size ? o.treelet_size
                           : o.method == ATRBVH_METHOD_TRBVH
                               ? ATRBVH_TRBVH_DEFAULT
                               : ATRBVH_ATRBVH_DEFAULT;
-        c->rounds = o.rounds ? o.rounds
+        autosize = o.method == ATRBVH_METHOD_ATRBVH &&
+                   c->treelet_size == ATRBVH_TREELET_AUTO;
+        /* The adaptive size's default rounds: 4, the fewest that come
+         * within 0.5 % of the best fixed size on every shared scene
+         * (docs/optimisers.md). */
+        c->rounds = o.rounds     ? o.rounds
+                    : autosize   ? ATRBVH_AUTO_ROUNDS_DEFAULT
                     : o.method == ATRBVH_METHOD_TRBVH
                         ? ATRBVH_TRBVH_ROUNDS_DEFAULT
                         : ATRBVH_ATRBVH_ROUNDS_DEFAULT;
-        if (c->treelet_size < lo || c->treelet_size > hi)
+        if (!autosize && (c->treelet_size < lo || c->treelet_size > hi))
             return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                  (uint64_t)-1,
                                  "treelet size %u is out of range for %s "
@@ -290,8 +297,12 @@ atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
                                  (uint64_t)-1,
                                  "rounds %u is out of range (1 to %u)",
                                  c->rounds, ATRBVH_ROUNDS_MAX);
-        c->gamma = o.gamma ? o.gamma : c->treelet_size;
-        if (c->gamma < c->treelet_size)
+        /* Auto: the smallest size the rule picks starts the crown, and
+         * a smaller gamma only needs the 3 leaves of any treelet. */
+        c->gamma = o.gamma       ? o.gamma
+                   : autosize    ? ATRBVH_AUTO_MIN
+                                 : c->treelet_size;
+        if (c->gamma < (autosize ? 3u : c->treelet_size))
             return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                  (uint64_t)-1,
                                  "gamma %u is smaller than the treelet size "

@@ -227,14 +227,22 @@ typedef struct atrbvh_stage_output {
 typedef int (*atrbvh_capture_fn)(const atrbvh_stage_output *output,
                                  void *user);
 
+/* atrbvh_build_options.treelet_size for ATRBVH: the size chosen per
+ * treelet root from its primitive count (9, 16 or 32; atrbvh(3)); its
+ * default rounds are 4.  Stats and saved files report it as this value. */
+#define ATRBVH_TREELET_AUTO 0xffffffffu
+
 /* Set `size` to sizeof(atrbvh_build_options) (atrbvh_build_options_init
  * does); fields beyond the size the caller was compiled with take their
  * defaults, so the struct can grow without breaking old callers. */
 typedef struct atrbvh_build_options {
     size_t size;
     atrbvh_method method;        /* default ATRBVH_METHOD_ATRBVH          */
-    unsigned treelet_size;       /* 0 = method default (TRBVH 7, ATRBVH 9) */
-    unsigned rounds;             /* 0 = method default (TRBVH 3, ATRBVH 2) */
+    unsigned treelet_size;       /* 0 = method default (TRBVH 7, ATRBVH 9);
+                                    TRBVH 3 to 10, ATRBVH 3 to 128 or
+                                    ATRBVH_TREELET_AUTO                   */
+    unsigned rounds;             /* 0 = method default (TRBVH 3, ATRBVH 2,
+                                    ATRBVH_TREELET_AUTO 4)                */
     unsigned gamma;              /* first round's minimum subtree size,
                                     0 = treelet_size; doubles each round  */
     double ci;                   /* internal node cost, default 1.2       */

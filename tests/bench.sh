@@ -143,6 +143,20 @@ run 0 bench "$SCENE" --repeat 1 --no-rays --methods atrbvh,lbvh --treelet 5,7 \
     { [ "$(wc -l <"$T/m.csv")" -eq 7 ] || fail "--methods: $(wc -l <"$T/m.csv") lines, expected 1 + 4 + lbvh + trbvh ref"; }
 checks=$((checks + 1))
 
+# the adaptive treelet size: atrbvh:auto:R, the CSV saying auto, and the
+# same SAH as atrbvh build --treelet auto (scene of 3000: sizes 9 and 16)
+run 0 bench "$SCENE" --repeat 1 --no-rays --configs atrbvh:auto:2,atrbvh:48:1 \
+    --csv "$T/a.csv" && python3 - "$T/a.csv" <<'PY' || fail "atrbvh:auto:2: $(cat "$T/a.csv")"
+import csv, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["method"] == "atrbvh"]
+assert sorted((r["treelet_size"], r["rounds"]) for r in rows) == \
+    [("48", "1"), ("auto", "2")], rows
+PY
+checks=$((checks + 1))
+run 2 bench "$SCENE" --repeat 1 --no-rays --configs trbvh:auto:2 &&
+    { grep -q "treelet size 'auto'" "$T/err" || fail "trbvh:auto: $(cat "$T/err")"; }
+checks=$((checks + 1))
+
 # plots, when gnuplot is there
 if command -v gnuplot >/dev/null 2>&1; then
     run 0 bench "$SCENE" --repeat 1 --width 8 --height 8 --viewpoints 1 \

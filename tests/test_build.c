@@ -66,6 +66,56 @@ START_TEST(random_soups)
 }
 END_TEST
 
+/* ATRBVH treelets above 32 leaves (the scratch path of shared/treelet.h)
+ * and the adaptive size: valid trees, the same bits for 1..4 threads
+ * (30000 triangles: parallel tasks from 2048 primitives), the stats
+ * naming the size asked for.  Before the scratch path, sizes above 32
+ * and ATRBVH_TREELET_AUTO were rejected. */
+START_TEST(large_and_auto_treelets)
+{
+    static const unsigned sizes[] = {48, 128, ATRBVH_TREELET_AUTO};
+    float *v = tu_random_triangles(30000, 91, 10.0f, -3.0f);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 90000, NULL, 30000);
+    size_t k;
+    int collapse;
+    for (k = 0; k < sizeof sizes / sizeof *sizes; k++) {
+        for (collapse = 0; collapse < 2; collapse++) {
+            atrbvh_build_options o;
+            atrbvh_bvh *first = NULL;
+            char msg[256];
+            int threads;
+            atrbvh_build_options_init(&o);
+            o.method = ATRBVH_METHOD_ATRBVH;
+            o.treelet_size = sizes[k];
+            o.rounds = 2;
+            o.collapse = collapse;
+            for (threads = 1; threads <= 4; threads++) {
+                atrbvh_bvh *b;
+                atrbvh_stats st;
+                o.threads = threads;
+                b = tu_build(&g, &o);
+                ck_assert_msg(tu_check_bvh(b, &g, msg, sizeof msg),
+                              "treelet %u collapse %d threads %d: %s",
+                              sizes[k], collapse, threads, msg);
+                ck_assert(atrbvh_bvh_stats(b, &st) == ATRBVH_OK);
+                ck_assert_uint_eq(st.treelet_size, sizes[k]);
+                if (!first) {
+                    first = b;
+                } else {
+                    ck_assert_msg(tu_same_bvh(first, b, msg, sizeof msg),
+                                  "treelet %u collapse %d: 1 vs %d "
+                                  "threads: %s",
+                                  sizes[k], collapse, threads, msg);
+                    atrbvh_bvh_free(b);
+                }
+            }
+            atrbvh_bvh_free(first);
+        }
+    }
+    free(v);
+}
+END_TEST
+
 START_TEST(builtin_scenes)
 {
     static const char *const names[] = {"sphere", "terrain", "city"};
@@ -181,6 +231,7 @@ int main(void)
     tcase_set_timeout(tc, 600);
     tcase_add_test(tc, random_soups);
     tcase_add_test(tc, builtin_scenes);
+    tcase_add_test(tc, large_and_auto_treelets);
     tcase_add_test(tc, box_geometry);
     tcase_add_test(tc, strides);
     suite_add_tcase(s, tc);

@@ -190,7 +190,7 @@ START_TEST(bad_options)
     WITH(method, (atrbvh_method)7, ATRBVH_ERR_INVALID_ARGUMENT,
          "method 7");
     WITH(treelet_size, 2, ATRBVH_ERR_INVALID_ARGUMENT, "treelet size 2");
-    WITH(treelet_size, 33, ATRBVH_ERR_INVALID_ARGUMENT, "treelet size 33");
+    WITH(treelet_size, 129, ATRBVH_ERR_INVALID_ARGUMENT, "treelet size 129");
     WITH(rounds, 1000, ATRBVH_ERR_INVALID_ARGUMENT, "rounds 1000");
     WITH(gamma, 4, ATRBVH_ERR_INVALID_ARGUMENT, "gamma 4");
     WITH(ci, NAN, ATRBVH_ERR_INVALID_ARGUMENT, "ci");
@@ -204,6 +204,15 @@ START_TEST(bad_options)
     o.method = ATRBVH_METHOD_TRBVH;
     o.treelet_size = 11;
     EXPECT(&g, &o, ATRBVH_ERR_INVALID_ARGUMENT, "for trbvh");
+    /* The adaptive size is ATRBVH's only; its gamma needs 3 leaves. */
+    atrbvh_build_options_init(&o);
+    o.method = ATRBVH_METHOD_TRBVH;
+    o.treelet_size = ATRBVH_TREELET_AUTO;
+    EXPECT(&g, &o, ATRBVH_ERR_INVALID_ARGUMENT, "for trbvh");
+    atrbvh_build_options_init(&o);
+    o.treelet_size = ATRBVH_TREELET_AUTO;
+    o.gamma = 2;
+    EXPECT(&g, &o, ATRBVH_ERR_INVALID_ARGUMENT, "gamma 2");
     atrbvh_build_options_init(&o);
     o.collapse = 0;
     o.max_leaf_size = 4;

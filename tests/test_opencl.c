@@ -147,6 +147,26 @@ START_TEST(generated_builtin_scenes)
 }
 END_TEST
 
+/* ATRBVH above 32 leaves (the scratch path) and the adaptive size: the
+ * OpenCL kernel carves the same scratch layout and gives the same bits. */
+START_TEST(large_and_auto_treelets)
+{
+    static const config big[] = {
+        {ATRBVH_METHOD_ATRBVH, 48, 2, 1},
+        {ATRBVH_METHOD_ATRBVH, 128, 1, 0},
+        {ATRBVH_METHOD_ATRBVH, ATRBVH_TREELET_AUTO, 2, 1}};
+    size_t k;
+    float *v;
+    atrbvh_geometry g;
+    REQUIRE_DEVICE();
+    v = tu_random_triangles(20000, 77, 10.0f, -5.0f);
+    g = atrbvh_geometry_triangles(v, 60000, NULL, 20000);
+    for (k = 0; k < sizeof big / sizeof big[0]; k++)
+        expect_identical(&g, &big[k], "20000 random triangles");
+    free(v);
+}
+END_TEST
+
 /* ------------------------------------------------------------- extremes */
 static void extreme(const float *v, size_t tris, const char *what)
 {
@@ -477,6 +497,7 @@ static Suite *opencl_suite(void)
     tc = tcase_create("generated");
     tcase_add_test(tc, generated_full_matrix);
     tcase_add_test(tc, generated_builtin_scenes);
+    tcase_add_test(tc, large_and_auto_treelets);
     tcase_set_timeout(tc, 300);
     suite_add_tcase(s, tc);
     tc = tcase_create("extremes");

@@ -124,6 +124,11 @@ void cli_build_text(FILE *f, const cli_build_args *a, const cli_built *b);
  * 1 and the method, treelet size and rounds for a known name, else 0. */
 #define CLI_QUALITY_HIGH_TREELET 20u
 #define CLI_QUALITY_HIGH_ROUNDS 3u
+/* A treelet size as text: the number, or "auto" for ATRBVH_TREELET_AUTO
+ * (buf of at least 16 chars). */
+const char *cli_treelet_text(unsigned size, char *buf);
+/* --treelet's value: "auto" or a whole number; 0 when malformed. */
+int cli_parse_treelet(const char *s, unsigned *out);
 int cli_quality_preset(const char *name, atrbvh_method *m, unsigned *treelet,
                        unsigned *rounds);
 

@@ -52,6 +52,37 @@ int cli_quality_preset(const char *name, atrbvh_method *m, unsigned *treelet,
     return 1;
 }
 
+const char *cli_treelet_text(unsigned size, char *buf)
+{
+    if (size == ATRBVH_TREELET_AUTO)
+        return "auto";
+    snprintf(buf, 16, "%u", size);
+    return buf;
+}
+
+int cli_parse_treelet(const char *s, unsigned *out)
+{
+    unsigned long v;
+    if (strcmp(s, "auto") == 0) {
+        *out = ATRBVH_TREELET_AUTO;
+        return 1;
+    }
+    if (!cli_parse_ulong(s, UINT_MAX - 1ul, &v))
+        return 0;
+    *out = (unsigned)v;
+    return 1;
+}
+
+static int on_treelet(const char *cmd, const cli_opt *o, const char *v,
+                      void *user)
+{
+    (void)user;
+    if (!cli_parse_treelet(v, (unsigned *)o->dest))
+        return cli_usage(cmd, "--treelet: '%s' is not a whole number or "
+                              "auto", v);
+    return 0;
+}
+
 static int on_quality(const char *cmd, const cli_opt *o, const char *v,
                       void *user)
 {
@@ -84,12 +115,15 @@ void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table)
              .arg = "fast|balanced|high", .dest = a, .call = on_quality,
              .help = "a preset: LBVH, ATRBVH(9,2), ATRBVH(20,3)\n"
                      "(later --method/--treelet/--rounds override it)"},
-            {.name = "--treelet", .kind = CLI_OPT_UINT, .arg = "N",
-             .min = 0, .max = UINT_MAX, .dest = &o->treelet_size,
-             .help = "treelet size (default: trbvh 7, atrbvh 9)"},
+            {.name = "--treelet", .kind = CLI_OPT_CALL, .arg = "N|auto",
+             .dest = &o->treelet_size, .call = on_treelet,
+             .help = "treelet size (default: trbvh 7, atrbvh 9;\n"
+                     "trbvh 3 to 10, atrbvh 3 to 128 or auto: 9, 16\n"
+                     "or 32 per treelet by its subtree's size)"},
             {.name = "--rounds", .kind = CLI_OPT_UINT, .arg = "R", .min = 0,
              .max = UINT_MAX, .dest = &o->rounds,
-             .help = "optimisation rounds (default: trbvh 3, atrbvh 2)"},
+             .help = "optimisation rounds (default: trbvh 3, atrbvh 2,\n"
+                     "atrbvh with --treelet auto 4)"},
             {.name = "--threads", .kind = CLI_OPT_INT, .arg = "N", .min = 0,
              .max = ATRBVH_MAX_THREADS, .dest = &o->threads,
              .help = "threads (default: all; 0 = OpenMP default)"},
@@ -514,7 +548,10 @@ void cli_build_json(json_writer *w, const cli_build_args *a,
     json_kv_uint(w, "primitives", s->primitives);
     json_kv_uint(w, "invalid_skipped", s->invalid_skipped);
     json_kv_string(w, "method", cli_method_name(s->method));
-    json_kv_uint(w, "treelet_size", s->treelet_size);
+    if (s->treelet_size == ATRBVH_TREELET_AUTO)
+        json_kv_string(w, "treelet_size", "auto");
+    else
+        json_kv_uint(w, "treelet_size", s->treelet_size);
     json_kv_uint(w, "rounds", s->rounds);
     json_kv_string(w, "backend", backend_name(s->backend));
     json_kv_string(w, "device", atrbvh_bvh_device(b->bvh));
@@ -561,7 +598,11 @@ void cli_build_text(FILE *f, const cli_build_args *a, const cli_built *b)
     fprintf(f, "invalid skipped  %zu\n", s->invalid_skipped);
     fprintf(f, "method           %s", cli_method_name(s->method));
     if (s->method != ATRBVH_METHOD_LBVH)
-        fprintf(f, " (treelet %u, %u rounds)", s->treelet_size, s->rounds);
+    {
+        char tb[16];
+        fprintf(f, " (treelet %s, %u rounds)",
+                cli_treelet_text(s->treelet_size, tb), s->rounds);
+    }
     fputc('\n', f);
     if (s->backend == ATRBVH_BACKEND_OPENCL)
         fprintf(f, "backend          opencl, %s\n", atrbvh_bvh_device(b->bvh));

@@ -98,7 +98,10 @@ int cli_info(int argc, char **argv)
         json_kv_string(&w, "file", path);
         json_kv_uint(&w, "primitives", s.primitives);
         json_kv_string(&w, "method", cli_method_name(s.method));
-        json_kv_uint(&w, "treelet_size", s.treelet_size);
+        if (s.treelet_size == ATRBVH_TREELET_AUTO)
+            json_kv_string(&w, "treelet_size", "auto");
+        else
+            json_kv_uint(&w, "treelet_size", s.treelet_size);
         json_kv_uint(&w, "rounds", s.rounds);
         json_kv_double(&w, "ci", s.ci);
         json_kv_double(&w, "ct", s.ct);
@@ -113,7 +116,11 @@ int cli_info(int argc, char **argv)
         printf("primitives       %zu\n", s.primitives);
         printf("method           %s", cli_method_name(s.method));
         if (s.method != ATRBVH_METHOD_LBVH)
-            printf(" (treelet %u, %u rounds)", s.treelet_size, s.rounds);
+        {
+            char tb[16];
+            printf(" (treelet %s, %u rounds)",
+                   cli_treelet_text(s.treelet_size, tb), s.rounds);
+        }
         putchar('\n');
         printf("SAH              %.6g (ci %g, ct %g)\n", s.sah, s.ci, s.ct);
         printf("nodes            %zu\n", s.nodes);

@@ -174,7 +174,12 @@ static int write_manifest(const dump_state *s, const cli_build_args *a,
     const atrbvh_build_options *o = &a->options;
     const unsigned gamma = st->method == ATRBVH_METHOD_LBVH
                                ? 0u
-                               : o->gamma ? o->gamma : st->treelet_size;
+                           : o->gamma ? o->gamma
+                           /* the adaptive size's crown starts at 9
+                            * (atrbvh(3)) */
+                           : st->treelet_size == ATRBVH_TREELET_AUTO
+                               ? 9u
+                               : st->treelet_size;
     char *path = join(s->dir, "manifest.json");
     json_writer w;
     cli_out out;

@@ -29,6 +29,9 @@
 /* One thread's scratch, allocated once per build (never per treelet). */
 typedef struct opt_worker {
     atrbvh_trbvh_scratch trbvh; /* 2^n entries each (TRBVH)             */
+    atrbvh_agg_scratch agg;     /* ATRBVH above 32 leaves or adaptive:
+                                   distances (= dist) and the treelet's
+                                   arrays, atrbvh_agg_layout            */
     double *dist;               /* n(n-1)/2 distances (ATRBVH)          */
     uint64_t treelets;          /* treelets processed                   */
     uint64_t applied;           /* of which restructured                */
@@ -57,8 +60,13 @@ typedef struct walk_ctx {
     int cancel; /* set by thread 0 when the user cancels: skip the rest */
 } walk_ctx;
 
-/* Counts a treelet done; thread 0 reports progress now and then. */
-static void progress(walk_ctx *c)
+/* Counts a treelet done; thread 0 reports progress now and then.  Inlined
+ * into both of its callers (process, process_agg): a call per treelet
+ * shows in the instruction count of the small treelets. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void progress(walk_ctx *c)
 {
     uint64_t done;
     int cancel;
@@ -116,6 +124,43 @@ static void process(walk_ctx *c, uint32_t node)
     progress(c);
 }
 
+/* ATRBVH treelets above 32 leaves and the adaptive size: process()'s
+ * bookkeeping around atrbvh_atrbvh_process (shared/treelet.h, which the
+ * OpenCL kernel calls too).  Kept out of process() so that the fixed-size
+ * path's code and registers stay what they were. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void process_agg(walk_ctx *c, uint32_t node)
+{
+    opt_worker *w = c->workers;
+    int cancel, applied;
+#ifdef _OPENMP
+#pragma omp atomic read
+#endif
+    cancel = c->cancel;
+    if (cancel)
+        return; /* the build is being cancelled: its tree is dropped */
+#ifdef _OPENMP
+    w += omp_get_thread_num();
+#endif
+    applied = atrbvh_atrbvh_process(&c->t, c->cost, node, c->n, c->gamma,
+                                    w->trbvh, &w->agg);
+    w->treelets++;
+    w->applied += (uint64_t)applied;
+    progress(c);
+}
+
+/* One crown node: up to ATRBVH_TREELET_MAX leaves process(), above (and
+ * ATRBVH_TREELET_AUTO) process_agg(). */
+static void visit(walk_ctx *c, uint32_t node)
+{
+    if (c->n <= ATRBVH_TREELET_MAX)
+        process(c, node);
+    else
+        process_agg(c, node);
+}
+
 /* Post-order over the crown below (and including) crown node s, without a
  * stack: descend to the first crown node with no crown child, process,
  * then go to the right sibling's subtree or up to the parent. */
@@ -134,7 +179,7 @@ static void walk_serial(walk_ctx *c, uint32_t s)
         }
         for (;;) {
             uint32_t parent;
-            process(c, x);
+            visit(c, x);
             if (x == s)
                 return;
             parent = t->parent[x];
@@ -174,7 +219,7 @@ static void walk_tasks(walk_ctx *c, uint32_t node, int depth)
 #ifdef _OPENMP
 #pragma omp taskwait
 #endif
-    process(c, node);
+    visit(c, node);
 }
 
 /* Per-thread scratch layout, each part aligned to 64 bytes. */
@@ -191,6 +236,10 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     size_t subsets = 0, pairs = 0, stride = 0, off_cost, off_count,
            off_split, off_dist, total;
     unsigned round, n = cfg->treelet_size;
+    /* The largest treelet of the build (ATRBVH_TREELET_AUTO: the rule's
+     * largest) and the smallest subtree that can hold a treelet. */
+    unsigned nmax = n == ATRBVH_TREELET_AUTO ? ATRBVH_AUTO_MAX : n;
+    unsigned nmin = n == ATRBVH_TREELET_AUTO ? cfg->gamma : n;
     int threads = cfg->threads > 0 ? cfg->threads : 1, k;
 
     if (cfg->method == ATRBVH_METHOD_LBVH || cfg->rounds == 0)
@@ -200,25 +249,34 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "optimise: method %d has no treelet optimiser",
                              (int)cfg->method);
-    if (n < 3u ||
-        n > (cfg->method == ATRBVH_METHOD_TRBVH ? (unsigned)ATRBVH_TRBVH_MAX
-                                                : (unsigned)ATRBVH_TREELET_MAX))
+    if (n == ATRBVH_TREELET_AUTO && cfg->method == ATRBVH_METHOD_ATRBVH) {
+        if (cfg->gamma < 3u)
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+                                 (uint64_t)-1,
+                                 "optimise: gamma %u below 3", cfg->gamma);
+    } else if (n < 3u ||
+               n > (cfg->method == ATRBVH_METHOD_TRBVH
+                        ? (unsigned)ATRBVH_TRBVH_MAX
+                        : (unsigned)ATRBVH_ATRBVH_MAX)) {
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "optimise: treelet size %u out of range", n);
-    if (cfg->gamma < n)
+    } else if (cfg->gamma < n)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
                              "optimise: gamma %u below the treelet size %u",
                              cfg->gamma, n);
     /* A tree of fewer than n primitives has no treelet root. */
-    if (t->n < 2u || t->count[0] < n)
+    if (t->n < 2u || t->count[0] < nmin)
         return ATRBVH_OK;
 
     /* Scratch: TRBVH 2^n boxes, costs, counts, splits; ATRBVH the
-     * n(n-1)/2 distances.  Sizes are tiny (n <= 32) but checked anyway. */
+     * n(n-1)/2 distances and, above 32 leaves, the treelet's arrays
+     * (atrbvh_agg_layout, sized from the largest size used: 84 KiB at
+     * 128, 17 KiB at 48; `pairs` counts it in doubles, a multiple of 8).
+     * Sizes are small but checked anyway. */
     if (cfg->method == ATRBVH_METHOD_TRBVH)
         subsets = (size_t)1 << n;
     else
-        pairs = (size_t)n * (n - 1u) / 2u;
+        pairs = (size_t)atrbvh_agg_layout(NULL, nmax, NULL) / sizeof(double);
     off_cost = ALIGN64(subsets * sizeof(atrbvh_box));
     off_count = off_cost + ALIGN64(subsets * sizeof(double));
     off_split = off_count + ALIGN64(subsets * sizeof(uint32_t));
@@ -250,6 +308,8 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         workers[k].trbvh.count = (uint32_t *)(void *)(base + off_count);
         workers[k].trbvh.split = (uint32_t *)(void *)(base + off_split);
         workers[k].dist = (double *)(void *)(base + off_dist);
+        if (cfg->method == ATRBVH_METHOD_ATRBVH)
+            atrbvh_agg_layout(base + off_dist, nmax, &workers[k].agg);
     }
 
     c.t.left = t->left;

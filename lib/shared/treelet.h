@@ -39,13 +39,23 @@
  * private array sizes below, the CPU and OpenCL optimise stages).
  * Largest treelet of each optimiser: TRBVH needs 2^n subset entries of
  * scratch and O(3^n) work per treelet; ATRBVH keeps one cluster per leaf
- * and n(n-1)/2 distances.  ATRBVH_TREELET_MAX is the largest of all (the
- * private arrays' size). */
+ * and n(n-1)/2 distances.  ATRBVH_TREELET_MAX is the private arrays'
+ * size: TRBVH and ATRBVH up to it use them, larger ATRBVH treelets (up to
+ * ATRBVH_ATRBVH_MAX) keep their arrays in scratch (section "ATRBVH, any
+ * size" at the end). */
 #define ATRBVH_TREELET_MAX 32
 #define ATRBVH_TRBVH_MAX 10
 #define ATRBVH_TRBVH_MIN 3
 #define ATRBVH_ATRBVH_MIN 3
-#define ATRBVH_ATRBVH_MAX ATRBVH_TREELET_MAX
+#define ATRBVH_ATRBVH_MAX 128
+/* ATRBVH_TREELET_AUTO (atrbvh.h): the adaptive size; its sizes lie in
+ * ATRBVH_AUTO_MIN .. ATRBVH_AUTO_MAX. */
+#ifndef ATRBVH_TREELET_AUTO
+#define ATRBVH_TREELET_AUTO 0xffffffffu
+#endif
+#define ATRBVH_AUTO_MIN 9
+#define ATRBVH_AUTO_MAX 32
+#define ATRBVH_AUTO_ROUNDS_DEFAULT 4
 /* Defaults (atrbvh_build_options: treelet_size 0, rounds 0). */
 #define ATRBVH_TRBVH_DEFAULT 7
 #define ATRBVH_ATRBVH_DEFAULT 9
@@ -703,6 +713,449 @@ ATRBVH_FN int atrbvh_treelet_process(const atrbvh_treelet_tree *t,
         return 0;
     atrbvh_treelet_write(t, &tl, &topo);
     return 1;
+}
+
+/* ------------------------------------------------- ATRBVH, any size */
+/* Treelets of more than ATRBVH_TREELET_MAX leaves (up to ATRBVH_ATRBVH_MAX)
+ * and the adaptive size.  The functions above keep their private arrays
+ * of ATRBVH_TREELET_MAX entries (the fast path, unchanged for n <= 32);
+ * a larger treelet keeps every per-treelet array in the worker's scratch,
+ * sized from the largest size the build asks for (atrbvh_agg_scratch_bytes):
+ * a 128-leaf treelet needs 8128 distances and about 20 KiB besides, which
+ * no private array of a work-item should hold.  The arithmetic is the same
+ * as atrbvh_treelet_form, atrbvh_agglomerate, atrbvh_treelet_preorder and
+ * atrbvh_treelet_write step for step (same operations, same order, same
+ * ties), so for a size both paths accept they give the same tree (the
+ * tests compare them). */
+
+/* The worker scratch of ATRBVH: the distance matrix first (the only part
+ * the fixed-size path uses, at the offset it always had), then, when the
+ * largest size exceeds ATRBVH_TREELET_MAX, the arrays of the large path.
+ * `w` is the row stride of the six coordinate rows of `soa`. */
+typedef struct atrbvh_agg_scratch {
+    ATRBVH_GLOBAL double *dist;      /* n(n-1)/2                          */
+    ATRBVH_GLOBAL atrbvh_u32 *leaf;  /* n: the treelet leaves, slot order */
+    ATRBVH_GLOBAL atrbvh_u32 *internal; /* n: [0] root, expansion order   */
+    ATRBVH_GLOBAL double *area;      /* n: formation areas                */
+    ATRBVH_GLOBAL atrbvh_box *box;   /* n: the clusters                   */
+    ATRBVH_GLOBAL double *cost;
+    ATRBVH_GLOBAL atrbvh_u32 *count;
+    ATRBVH_GLOBAL atrbvh_u32 *code;
+    ATRBVH_GLOBAL double *rmin;      /* n: row minima and their columns   */
+    ATRBVH_GLOBAL atrbvh_u32 *rcol;
+    ATRBVH_GLOBAL float *soa;        /* 6 rows of w floats                */
+    ATRBVH_GLOBAL double *area_of;   /* w                                 */
+    ATRBVH_GLOBAL atrbvh_u32 *left;  /* n: the topology (as _topo)        */
+    ATRBVH_GLOBAL atrbvh_u32 *right;
+    ATRBVH_GLOBAL atrbvh_u32 *order;
+    ATRBVH_GLOBAL atrbvh_box *tbox;
+    ATRBVH_GLOBAL atrbvh_u32 *tcount;
+    ATRBVH_GLOBAL double *tcost;
+    ATRBVH_GLOBAL atrbvh_u32 *ids;   /* n: write-back                     */
+    ATRBVH_GLOBAL atrbvh_u32 *id_of;
+    ATRBVH_GLOBAL atrbvh_u32 *stack; /* n: pre-order walk                 */
+    atrbvh_u32 w;
+} atrbvh_agg_scratch;
+
+ATRBVH_FN atrbvh_u64 atrbvh_agg_align(atrbvh_u64 x)
+{
+    return (x + 63u) & ~(atrbvh_u64)63u;
+}
+
+/* Lays the scratch for treelets of at most n leaves out from `base`
+ * (64-byte aligned; may be 0 to only size it) and returns its bytes.  The
+ * host sizes with it, the kernel and the CPU driver carve with it. */
+ATRBVH_FN atrbvh_u64 atrbvh_agg_layout(ATRBVH_GLOBAL unsigned char *base,
+                                       atrbvh_u32 n, atrbvh_agg_scratch *s)
+{
+    atrbvh_u64 o, n8 = (atrbvh_u64)n, w = n8 + ATRBVH_SOA_PAD;
+    o = atrbvh_agg_align(n8 * (n8 - 1u) / 2u * 8u);
+    if (s) {
+        s->dist = (ATRBVH_GLOBAL double *)(base);
+        s->w = (atrbvh_u32)w;
+    }
+    if (n <= ATRBVH_TREELET_MAX)
+        return o;
+#define ATRBVH_AGG_PART(field, type, entries)                                 \
+    do {                                                                      \
+        if (s)                                                                \
+            s->field = (ATRBVH_GLOBAL type *)(base + o);                      \
+        o += atrbvh_agg_align((entries) * sizeof(type));                      \
+    } while (0)
+    ATRBVH_AGG_PART(leaf, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(internal, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(area, double, n8);
+    ATRBVH_AGG_PART(box, atrbvh_box, n8);
+    ATRBVH_AGG_PART(cost, double, n8);
+    ATRBVH_AGG_PART(count, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(code, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(rmin, double, n8);
+    ATRBVH_AGG_PART(rcol, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(soa, float, 6u * w);
+    ATRBVH_AGG_PART(area_of, double, w);
+    ATRBVH_AGG_PART(left, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(right, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(order, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(tbox, atrbvh_box, n8);
+    ATRBVH_AGG_PART(tcount, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(tcost, double, n8);
+    ATRBVH_AGG_PART(ids, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(id_of, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(stack, atrbvh_u32, n8);
+#undef ATRBVH_AGG_PART
+    return o;
+}
+
+/* atrbvh_treelet_form into the scratch. */
+ATRBVH_FN atrbvh_u32 atrbvh_agg_form(const atrbvh_treelet_tree *t,
+                                     atrbvh_u32 root, atrbvh_u32 n,
+                                     const atrbvh_agg_scratch *s)
+{
+    ATRBVH_GLOBAL double *area = s->area;
+    atrbvh_u32 m = 2, k;
+    s->internal[0] = root;
+    s->leaf[0] = t->left[root];
+    s->leaf[1] = t->right[root];
+    area[0] = s->leaf[0] < t->n_internal ? atrbvh_box_area(t->box[s->leaf[0]])
+                                         : -1.0;
+    area[1] = s->leaf[1] < t->n_internal ? atrbvh_box_area(t->box[s->leaf[1]])
+                                         : -1.0;
+    while (m < n) {
+        atrbvh_u32 best = ATRBVH_U32_MAX, node, child;
+        double best_area = -0.5;
+        for (k = 0; k < m; k++) {
+            if (area[k] > best_area) {
+                best = k;
+                best_area = area[k];
+            }
+        }
+        if (best == ATRBVH_U32_MAX)
+            break;
+        node = s->leaf[best];
+        s->internal[m - 1] = node;
+        child = t->left[node];
+        s->leaf[best] = child;
+        area[best] = child < t->n_internal ? atrbvh_box_area(t->box[child])
+                                           : -1.0;
+        child = t->right[node];
+        s->leaf[m] = child;
+        area[m] = child < t->n_internal ? atrbvh_box_area(t->box[child])
+                                        : -1.0;
+        m++;
+    }
+    return m;
+}
+
+ATRBVH_FN void atrbvh_agg_soa_set(const atrbvh_agg_scratch *s, atrbvh_u32 k,
+                                  atrbvh_box b)
+{
+    ATRBVH_GLOBAL float *c = s->soa;
+    atrbvh_u32 w = s->w;
+    c[k] = b.min[0];
+    c[w + k] = b.min[1];
+    c[2u * w + k] = b.min[2];
+    c[3u * w + k] = b.max[0];
+    c[4u * w + k] = b.max[1];
+    c[5u * w + k] = b.max[2];
+}
+
+/* atrbvh_union_areas over the scratch's coordinate rows. */
+#if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
+ATRBVH_FN void atrbvh_agg_union_areas(const atrbvh_agg_scratch *s,
+                                      atrbvh_box q, atrbvh_u32 lo,
+                                      atrbvh_u32 hi, double *out)
+{
+    const __m128 q0 = _mm_set1_ps(q.min[0]), q1 = _mm_set1_ps(q.min[1]),
+                 q2 = _mm_set1_ps(q.min[2]), q3 = _mm_set1_ps(q.max[0]),
+                 q4 = _mm_set1_ps(q.max[1]), q5 = _mm_set1_ps(q.max[2]);
+    const __m128d two = _mm_set1_pd(2.0);
+    const float *c0 = s->soa, *c1 = c0 + s->w, *c2 = c1 + s->w,
+                *c3 = c2 + s->w, *c4 = c3 + s->w, *c5 = c4 + s->w;
+    atrbvh_u32 a;
+    for (a = lo; a < hi; a += 4u) {
+        const __m128 x0 = _mm_min_ps(q0, _mm_loadu_ps(c0 + a));
+        const __m128 y0 = _mm_min_ps(q1, _mm_loadu_ps(c1 + a));
+        const __m128 z0 = _mm_min_ps(q2, _mm_loadu_ps(c2 + a));
+        const __m128 x1 = _mm_max_ps(q3, _mm_loadu_ps(c3 + a));
+        const __m128 y1 = _mm_max_ps(q4, _mm_loadu_ps(c4 + a));
+        const __m128 z1 = _mm_max_ps(q5, _mm_loadu_ps(c5 + a));
+        __m128d dx = _mm_sub_pd(_mm_cvtps_pd(x1), _mm_cvtps_pd(x0));
+        __m128d dy = _mm_sub_pd(_mm_cvtps_pd(y1), _mm_cvtps_pd(y0));
+        __m128d dz = _mm_sub_pd(_mm_cvtps_pd(z1), _mm_cvtps_pd(z0));
+        __m128d t = _mm_mul_pd(dx, dy);
+        t = _mm_add_pd(t, _mm_mul_pd(dy, dz));
+        t = _mm_add_pd(t, _mm_mul_pd(dz, dx));
+        _mm_storeu_pd(out + a, _mm_mul_pd(two, t));
+        dx = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(x1, x1)),
+                        _mm_cvtps_pd(_mm_movehl_ps(x0, x0)));
+        dy = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(y1, y1)),
+                        _mm_cvtps_pd(_mm_movehl_ps(y0, y0)));
+        dz = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(z1, z1)),
+                        _mm_cvtps_pd(_mm_movehl_ps(z0, z0)));
+        t = _mm_mul_pd(dx, dy);
+        t = _mm_add_pd(t, _mm_mul_pd(dy, dz));
+        t = _mm_add_pd(t, _mm_mul_pd(dz, dx));
+        _mm_storeu_pd(out + a + 2, _mm_mul_pd(two, t));
+    }
+}
+#else
+ATRBVH_FN void atrbvh_agg_union_areas(const atrbvh_agg_scratch *s,
+                                      atrbvh_box q, atrbvh_u32 lo,
+                                      atrbvh_u32 hi, ATRBVH_GLOBAL double *out)
+{
+    ATRBVH_GLOBAL const float *c = s->soa;
+    atrbvh_u32 a, w = s->w;
+    for (a = lo; a < hi; a++) {
+        atrbvh_box b;
+        b.min[0] = q.min[0] < c[a] ? q.min[0] : c[a];
+        b.min[1] = q.min[1] < c[w + a] ? q.min[1] : c[w + a];
+        b.min[2] = q.min[2] < c[2u * w + a] ? q.min[2] : c[2u * w + a];
+        b.max[0] = q.max[0] > c[3u * w + a] ? q.max[0] : c[3u * w + a];
+        b.max[1] = q.max[1] > c[4u * w + a] ? q.max[1] : c[4u * w + a];
+        b.max[2] = q.max[2] > c[5u * w + a] ? q.max[2] : c[5u * w + a];
+        out[a] = atrbvh_box_area(b);
+    }
+}
+#endif
+
+/* atrbvh_agglomerate over the scratch, the m formed leaves read from the
+ * tree (what atrbvh_treelet_gather copies).  Fills s->left/right/tbox/
+ * tcount/tcost (local node q = merge q, root n-2); returns the root's
+ * cost.  Comments on the steps: atrbvh_agglomerate. */
+ATRBVH_FN double atrbvh_agg_cluster(const atrbvh_treelet_tree *t,
+                                    const atrbvh_cost_params *p, atrbvh_u32 n,
+                                    const atrbvh_agg_scratch *s)
+{
+    ATRBVH_GLOBAL double *dist = s->dist;
+    ATRBVH_GLOBAL atrbvh_box *box = s->box;
+    ATRBVH_GLOBAL double *cost = s->cost;
+    ATRBVH_GLOBAL atrbvh_u32 *count = s->count;
+    ATRBVH_GLOBAL atrbvh_u32 *code = s->code;
+    ATRBVH_GLOBAL double *rmin = s->rmin;
+    ATRBVH_GLOBAL atrbvh_u32 *rcol = s->rcol;
+    ATRBVH_GLOBAL double *area_of = s->area_of;
+    atrbvh_u32 m, a, b, q = 0;
+    double root_cost = 0.0;
+
+    for (a = 0; a < n; a++) {
+        atrbvh_u32 node = s->leaf[a];
+        box[a] = t->box[node];
+        atrbvh_agg_soa_set(s, a, box[a]);
+        cost[a] = t->cost[node];
+        count[a] = t->count[node];
+        code[a] = a;
+    }
+    for (a = n; a < n + ATRBVH_SOA_PAD; a++)
+        atrbvh_agg_soa_set(s, a, box[0]);
+    for (a = 1; a < n; a++) {
+        ATRBVH_GLOBAL double *row = dist + a * (a - 1u) / 2u;
+        double bv;
+        atrbvh_u32 bc = 0;
+        atrbvh_agg_union_areas(s, box[a], 0, a, area_of);
+        bv = area_of[0];
+        row[0] = bv;
+        for (b = 1; b < a; b++) {
+            double d = area_of[b];
+            row[b] = d;
+            if (d < bv) {
+                bv = d;
+                bc = b;
+            }
+        }
+        rmin[a] = bv;
+        rcol[a] = bc;
+    }
+    for (m = n; m > 1; m--) {
+        atrbvh_u32 i = 1, j, last = m - 1u, r;
+        double best = rmin[1], area;
+        atrbvh_box merged;
+        ATRBVH_GLOBAL double *jrow;
+        int collapsed;
+        for (r = 2; r < m; r++) {
+            if (rmin[r] < best) {
+                best = rmin[r];
+                i = r;
+            }
+        }
+        j = rcol[i];
+        merged = atrbvh_box_union(box[j], box[i]);
+        area = atrbvh_box_area(merged);
+        s->left[q] = code[j];
+        s->right[q] = code[i];
+        root_cost = atrbvh_node_cost(p, area, count[j] + count[i], cost[j],
+                                     cost[i], &collapsed);
+        box[j] = merged;
+        atrbvh_agg_soa_set(s, j, merged);
+        cost[j] = root_cost;
+        count[j] += count[i];
+        code[j] = n + q;
+        s->tbox[q] = merged;
+        s->tcount[q] = count[j];
+        s->tcost[q] = root_cost;
+        q++;
+        if (last == 1u)
+            break;
+        if (i != last) {
+            ATRBVH_GLOBAL double *irow = dist + i * (i - 1u) / 2u;
+            ATRBVH_GLOBAL double *lrow = dist + last * (last - 1u) / 2u;
+            box[i] = box[last];
+            atrbvh_agg_soa_set(s, i, box[i]);
+            cost[i] = cost[last];
+            count[i] = count[last];
+            code[i] = code[last];
+            for (a = 0; a < i; a++)
+                irow[a] = lrow[a];
+            for (a = i + 1u; a < last; a++)
+                dist[a * (a - 1u) / 2u + i] = lrow[a];
+        }
+        atrbvh_agg_union_areas(s, merged, 0, last, area_of);
+        jrow = dist + j * (j - 1u) / 2u;
+        for (a = 0; a < j; a++)
+            jrow[a] = area_of[a];
+        for (r = j + 1u; r < last; r++) {
+            ATRBVH_GLOBAL double *row = dist + r * (r - 1u) / 2u;
+            double v = area_of[r];
+            row[j] = v;
+            if (r == i || rcol[r] == j || (r > i && rcol[r] == i)) {
+                double rv;
+                atrbvh_u32 rc;
+                atrbvh_row_min(dist, r, &rv, &rc);
+                rmin[r] = rv;
+                rcol[r] = rc;
+            } else {
+                if (v < rmin[r] || (v == rmin[r] && j < rcol[r])) {
+                    rmin[r] = v;
+                    rcol[r] = j;
+                }
+                if (r > i) {
+                    v = row[i];
+                    if (v < rmin[r] || (v == rmin[r] && i < rcol[r])) {
+                        rmin[r] = v;
+                        rcol[r] = i;
+                    }
+                }
+            }
+        }
+        if (j > 0u) {
+            double rv;
+            atrbvh_u32 rc;
+            atrbvh_row_min(dist, j, &rv, &rc);
+            rmin[j] = rv;
+            rcol[j] = rc;
+        }
+    }
+    return root_cost;
+}
+
+/* atrbvh_treelet_preorder and atrbvh_treelet_write over the scratch
+ * (root n-2, the agglomerative root). */
+ATRBVH_FN void atrbvh_agg_write(const atrbvh_treelet_tree *t, atrbvh_u32 n,
+                                const atrbvh_agg_scratch *s)
+{
+    ATRBVH_GLOBAL atrbvh_u32 *stack = s->stack;
+    ATRBVH_GLOBAL atrbvh_u32 *ids = s->ids;
+    ATRBVH_GLOBAL atrbvh_u32 *id_of = s->id_of;
+    atrbvh_u32 sp = 0, q = 0, k;
+    stack[sp++] = n - 2u;
+    while (sp > 0) {
+        atrbvh_u32 node = stack[--sp];
+        s->order[q++] = node;
+        if (s->right[node] >= n)
+            stack[sp++] = s->right[node] - n;
+        if (s->left[node] >= n)
+            stack[sp++] = s->left[node] - n;
+    }
+    for (k = 1; k + 1u < n; k++) {
+        atrbvh_u32 v = s->internal[k];
+        q = k - 1u;
+        while (q > 0u && ids[q - 1u] > v) {
+            ids[q] = ids[q - 1u];
+            q--;
+        }
+        ids[q] = v;
+    }
+    id_of[s->order[0]] = s->internal[0];
+    for (k = 1; k + 1u < n; k++)
+        id_of[s->order[k]] = ids[k - 1u];
+    for (k = 0; k + 1u < n; k++) {
+        atrbvh_u32 id = id_of[k];
+        atrbvh_u32 l = s->left[k], r = s->right[k];
+        atrbvh_u32 lid = l < n ? s->leaf[l] : id_of[l - n];
+        atrbvh_u32 rid = r < n ? s->leaf[r] : id_of[r - n];
+        t->left[id] = lid;
+        t->right[id] = rid;
+        t->parent[lid] = id;
+        t->parent[rid] = id;
+        t->box[id] = s->tbox[k];
+        t->count[id] = s->tcount[k];
+        t->cost[id] = s->tcost[k];
+    }
+}
+
+/* atrbvh_treelet_process for ATRBVH with every array in the scratch. */
+ATRBVH_FN int atrbvh_agg_process_large(const atrbvh_treelet_tree *t,
+                                       const atrbvh_cost_params *p,
+                                       atrbvh_u32 root, atrbvh_u32 n,
+                                       const atrbvh_agg_scratch *s)
+{
+    atrbvh_u32 m;
+    double found;
+    atrbvh_treelet_refresh(t, p, root);
+    m = atrbvh_agg_form(t, root, n, s);
+    if (m < 3u)
+        return 0;
+    found = atrbvh_agg_cluster(t, p, m, s);
+    if (!(found < t->cost[root]))
+        return 0;
+    atrbvh_agg_write(t, m, s);
+    return 1;
+}
+
+/* The adaptive treelet size (ATRBVH_TREELET_AUTO), a pure function of
+ * the treelet root's primitive count, so the same on both backends and
+ * for any schedule:
+ *
+ *   count <  512   9 leaves (the paper's size)
+ *   count >= 512   16 leaves
+ *   count >= 4096  32 leaves
+ *
+ * Why: a treelet of n leaves costs about n^2 (n(n-1)/2 distances, and
+ * forming it scans up to n slots n times), and a crown holds about 2N/c
+ * roots of at least c primitives.  The nodes below 512 primitives are
+ * nearly all of the crown (the round's work at 9 leaves); the few above
+ * carry the largest boxes, hence most of the SAH, and there a larger
+ * search pays: 16 leaves from 512 add about (2N/512)(120 - 36) and 32
+ * from 4096 about (2N/4096)(496 - 120) distances, about 0.5 N against
+ * the 9-leaf base's (2N/9) * 36 = 8 N per round.  The crown starts at 9
+ * primitives (gamma 9), so the bottom is optimised as by ATRBVH(9, R),
+ * which fixed sizes of 16 or 32 (gamma = n) leave to their first round.
+ * Other thresholds measured (16 from 64, 24 from 512, 32 from 4096; 16
+ * from 32, 32 from 1024) cost more and lost 1% on bunny
+ * (docs/optimisers.md).  `gamma` (the round's crown threshold) is not
+ * used by this rule; it is passed so that a rule may use the round. */
+ATRBVH_FN atrbvh_u32 atrbvh_treelet_auto_size(atrbvh_u32 count,
+                                              atrbvh_u32 gamma)
+{
+    (void)gamma;
+    return count >= 4096u ? 32u : count >= 512u ? 16u : 9u;
+}
+
+/* One ATRBVH treelet of size n (ATRBVH_TREELET_AUTO: by the rule above
+ * from the root's primitive count and the round's crown threshold gamma):
+ * the fixed-size path up to ATRBVH_TREELET_MAX, the scratch path above.
+ * Both drivers call this. */
+ATRBVH_FN int atrbvh_atrbvh_process(const atrbvh_treelet_tree *t,
+                                    const atrbvh_cost_params *p,
+                                    atrbvh_u32 root, atrbvh_u32 n,
+                                    atrbvh_u32 gamma,
+                                    atrbvh_trbvh_scratch none,
+                                    const atrbvh_agg_scratch *s)
+{
+    if (n == ATRBVH_TREELET_AUTO)
+        n = atrbvh_treelet_auto_size(t->count[root], gamma);
+    if (n <= ATRBVH_TREELET_MAX)
+        return atrbvh_treelet_process(t, p, root, n, 1, none, s->dist);
+    return atrbvh_agg_process_large(t, p, root, n, s);
 }
 
 #endif

@@ -69,9 +69,10 @@ void csv_header(FILE *f)
 void csv_row(FILE *f, const bench_args *a, const row *r)
 {
     int s;
+    char tb[16];
     put_csv_string(f, r->scene);
-    fprintf(f, ",%zu,%s,%u,%u,%s,%d,%u,%u,", r->triangles, row_method(r),
-            r->treelet, r->rounds,
+    fprintf(f, ",%zu,%s,%s,%u,%s,%d,%u,%u,", r->triangles, row_method(r),
+            cli_treelet_text(r->treelet, tb), r->rounds,
             r->c.embree ? "embree" : bench_backend_name(r->c.backend), r->threads,
             a->base.max_leaf_size, a->repeat);
     put_double(f, r->build_ms);
@@ -132,10 +133,11 @@ void csv_scaling_header(FILE *f)
 
 void csv_scaling_row(FILE *f, const char *base, const row *w, size_t copies)
 {
+    char tb[16];
     int s;
     put_csv_string(f, base);
-    fprintf(f, ",%zu,%zu,%s,%u,%u,%d,", w->triangles, copies, row_method(w),
-            w->treelet, w->rounds, w->threads);
+    fprintf(f, ",%zu,%zu,%s,%s,%u,%d,", w->triangles, copies, row_method(w),
+            cli_treelet_text(w->treelet, tb), w->rounds, w->threads);
     put_double(f, w->build_ms);
     for (s = 0; s < ATRBVH_STAGE_COUNT; s++) {
         fputc(',', f);

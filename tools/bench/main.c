@@ -38,15 +38,16 @@ const char *row_method(const row *r)
 void config_label(const config *c, unsigned treelet, unsigned rounds,
                   char *buf, size_t n)
 {
+    char tb[16];
     if (c->embree)
         snprintf(buf, n, "%s", embree_quality_name(c->eq));
     else if (c->method == ATRBVH_METHOD_LBVH)
         snprintf(buf, n, "LBVH%s",
                  c->backend == ATRBVH_BACKEND_OPENCL ? "/cl" : "");
     else
-        snprintf(buf, n, "%s(%u,%u)%s",
+        snprintf(buf, n, "%s(%s,%u)%s",
                  c->method == ATRBVH_METHOD_TRBVH ? "TRBVH" : "ATRBVH",
-                 treelet, rounds,
+                 cli_treelet_text(treelet, tb), rounds,
                  c->backend == ATRBVH_BACKEND_OPENCL ? "/cl" : "");
 }
 
@@ -157,10 +158,15 @@ static int parse_configs(bench_args *a, const char *s, atrbvh_backend be)
             char *r = strchr(p, ':');
             if (r)
                 *r++ = '\0';
-            if (!cli_parse_ulong(p, 64, &v) || v == 0)
+            if (c.method == ATRBVH_METHOD_ATRBVH && strcmp(p, "auto") == 0)
+                c.treelet = ATRBVH_TREELET_AUTO;
+            else if (!cli_parse_ulong(p, 128, &v) || v == 0)
                 return cli_usage("bench", "--configs: treelet size '%s' is "
-                                 "not a whole number from 1 to 64", p), -1;
-            c.treelet = (unsigned)v;
+                                 "not a whole number from 1 to 128%s", p,
+                                 c.method == ATRBVH_METHOD_ATRBVH
+                                     ? " or auto" : ""), -1;
+            else
+                c.treelet = (unsigned)v;
             if (r) {
                 if (!cli_parse_ulong(r, 64, &v) || v == 0)
                     return cli_usage("bench", "--configs: rounds '%s' is not "
