@@ -222,7 +222,8 @@ run 2 bench --scaling --configs embree_low
 run 1 bench /nonexistent/scene.ply --repeat 1 --no-rays
 run 2 build builtin:sphere:100 --quality slow
 run 0 build builtin:sphere:1000 --quality high --json &&
-    grep -q '"treelet_size": *20' "$T/out" || fail "--quality high: $(cat "$T/out")"
+    grep -q '"treelet_size": *"auto"' "$T/out" &&
+    grep -q '"rounds": *4' "$T/out" || fail "--quality high: $(cat "$T/out")"
 
 # --------------------------------------------------------------- render
 if [ -x "$PNGCHECK" ]; then

@@ -53,7 +53,7 @@ static const hconfig configs[] = {
     {"lbvh", ATRBVH_METHOD_LBVH, 0, 0},
     {"trbvh:7:3", ATRBVH_METHOD_TRBVH, 7, 3},
     {"atrbvh:9:2", ATRBVH_METHOD_ATRBVH, 9, 2},
-    {"high", ATRBVH_METHOD_ATRBVH, 20, 3},
+    {"high", ATRBVH_METHOD_ATRBVH, ATRBVH_TREELET_AUTO, 4},
 };
 #define NCONFIGS (sizeof configs / sizeof *configs)
 

@@ -122,8 +122,8 @@ void cli_build_text(FILE *f, const cli_build_args *a, const cli_built *b);
 /* --quality presets (docs/benchmarks.md has the measurements behind
  * them): fast = LBVH, balanced = ATRBVH(9,2), high = ATRBVH with these.
  * 1 and the method, treelet size and rounds for a known name, else 0. */
-#define CLI_QUALITY_HIGH_TREELET 20u
-#define CLI_QUALITY_HIGH_ROUNDS 3u
+#define CLI_QUALITY_HIGH_TREELET ATRBVH_TREELET_AUTO
+#define CLI_QUALITY_HIGH_ROUNDS 4u
 /* A treelet size as text: the number, or "auto" for ATRBVH_TREELET_AUTO
  * (buf of at least 16 chars). */
 const char *cli_treelet_text(unsigned size, char *buf);
