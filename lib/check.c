@@ -174,7 +174,8 @@ atrbvh_status atrbvh_i_bvh_measure(atrbvh_bvh *b)
         }
     b->stats.nodes = b->node_count;
     b->stats.leaves = leaves;
-    b->stats.primitives = b->prim_count;
+    /* a split tree references some primitives more than once */
+    b->stats.primitives = b->split_prims ? b->split_prims : b->prim_count;
     b->stats.max_depth = depth;
     b->stats.max_leaf_primitives = largest;
     b->stats.sah = atrbvh_sah(b->nodes, b->node_count, b->stats.ci,
