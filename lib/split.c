@@ -388,13 +388,19 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
                 break;
             d_lo = d_hi;
         }
+        /* until the total is the budget exactly or the bracket is
+         * 2^-24 wide (a fixed sequence of steps: the same everywhere) */
         if (k < 64)
-            for (k = 0; k < 48; k++) {
+            for (k = 0; k < 24; k++) {
                 double mid = 0.5 * (d_lo + d_hi);
-                if (total_splits(prio, kept, mid, threads) > budget)
+                uint64_t t = total_splits(prio, kept, mid, threads);
+                if (t > budget) {
                     d_hi = mid;
-                else
+                } else {
                     d_lo = mid;
+                    if (t == budget)
+                        break;
+                }
             }
         d = d_lo;
     }
