@@ -164,7 +164,9 @@ atrbvh_status atrbvh_i_bvh_measure(atrbvh_bvh *bvh);
 /* Structural check of a node array (used on load and, in debug builds,
  * after every build): every child index in range and after its parent,
  * leaf ranges tiling the index array in order, child boxes inside parents
- * when check_boxes.  (Index values are the caller's to check.) */
+ * when check_boxes; every primitive index below the input count and
+ * listed once (a split tree: never twice in one leaf, every kept
+ * primitive listed). */
 atrbvh_status atrbvh_i_bvh_check(const atrbvh_bvh *bvh, int check_boxes,
                                  atrbvh_error *error);
 
