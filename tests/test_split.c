@@ -24,6 +24,8 @@
  *    primitive is rejected, and so is a version 2 split file with a
  *    primitive twice in one leaf.
  *  - atrbvh_refit of a split tree: ATRBVH_ERR_UNSUPPORTED.
+ *  - Every allocation of a split build failing in turn: ATRBVH_ERR_NOMEM,
+ *    nothing leaked.
  */
 #include <check.h>
 #include <math.h>
@@ -327,6 +329,7 @@ static int brute(atrbvh_bvh **one, const atrbvh_geometry *single, size_t nt,
                  const atrbvh_ray *r, atrbvh_hit *best)
 {
     size_t i;
+    memset(best, 0, sizeof *best);
     best->primitive = ATRBVH_NO_HIT;
     best->t = INFINITY;
     for (i = 0; i < nt; i++) {
@@ -581,6 +584,74 @@ START_TEST(refit_refuses_split_trees)
 }
 END_TEST
 
+/* Counting allocator: outstanding blocks, and a countdown to failure
+ * (the library's allocator is process-wide: set only around the loop). */
+static long outstanding, countdown = -1;
+static void *count_malloc(size_t n)
+{
+    void *p;
+    if (countdown == 0)
+        return NULL;
+    if (countdown > 0)
+        countdown--;
+    p = malloc(n);
+    if (p)
+        outstanding++;
+    return p;
+}
+static void count_free(void *p)
+{
+    if (p)
+        outstanding--;
+    free(p);
+}
+
+/* Each allocation of a split build (threads 1 and 3, skip_invalid on and
+ * off) failing in turn: ATRBVH_ERR_NOMEM with nothing leaked, until the
+ * build succeeds. */
+START_TEST(allocation_failures)
+{
+    const size_t nt = 200;
+    float *v = sliver_scene(170, 30, 81);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
+    int variant;
+    v[9 * 3] = NAN;
+    for (variant = 0; variant < 2; variant++) {
+        atrbvh_build_options o = split_options(0.5);
+        long k;
+        o.threads = variant ? 3 : 1;
+        o.skip_invalid = 1;
+        atrbvh_set_allocator(count_malloc, count_free);
+        for (k = 0;; k++) {
+            atrbvh_bvh *b = NULL;
+            atrbvh_error e;
+            atrbvh_status st;
+            outstanding = 0;
+            countdown = k;
+            st = atrbvh_build(&g, &o, &b, &e);
+            countdown = -1;
+            if (st == ATRBVH_OK) {
+                size_t np;
+                (void)atrbvh_bvh_primitive_indices(b, &np);
+                ck_assert_uint_gt(np, nt);
+                atrbvh_bvh_free(b);
+                ck_assert_int_eq(outstanding, 0);
+                break;
+            }
+            ck_assert_msg(st == ATRBVH_ERR_NOMEM, "allocation %ld: %s (%s)",
+                          k, atrbvh_strerror(st), e.text);
+            ck_assert_ptr_null(b);
+            ck_assert_msg(outstanding == 0, "allocation %ld failed: %ld "
+                                            "leaked",
+                          k, outstanding);
+        }
+        atrbvh_set_allocator(NULL, NULL);
+        ck_assert_int_gt(k, 8); /* the split's own allocations among them */
+    }
+    free(v);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("split");
@@ -594,6 +665,7 @@ static Suite *suite(void)
     tcase_add_test(t, skip_invalid_with_split);
     tcase_add_test(t, save_load_versions);
     tcase_add_test(t, refit_refuses_split_trees);
+    tcase_add_test(t, allocation_failures);
     suite_add_tcase(s, t);
     return s;
 }
