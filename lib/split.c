@@ -479,6 +479,8 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
         }
     }
     run->n = (uint32_t)total;
+    if (total == kept) /* nothing split: an ordinary tree */
+        run->split_prims = 0;
     run->scene = scene;
     run->centroids = centroids;
     st = dev->backend->set_prims(dev, run, refs, ref_ids, error);

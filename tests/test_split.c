@@ -4,6 +4,8 @@
  *
  *  - Off by default: an options struct of the size before the field
  *    builds the same tree as split_budget 0; out-of-range budgets fail.
+ *  - Axis-aligned triangles: nothing split, the unsplit tree (version 1
+ *    file, refittable).
  *  - A split tree over long diagonal slivers among small triangles has
  *    more references than triangles, at most the budget more; every
  *    primitive is referenced at least once, never twice in one leaf;
@@ -241,6 +243,46 @@ START_TEST(off_by_default)
     o.split_budget = NAN;
     ck_assert_int_eq(atrbvh_build(&g, &o, &c, &e),
                      ATRBVH_ERR_INVALID_ARGUMENT);
+    atrbvh_bvh_free(a);
+    atrbvh_bvh_free(b);
+    free(v);
+}
+END_TEST
+
+/* Axis-aligned triangles (a grid of squares in the plane z = 0) have
+ * boxes no larger than their area allows: nothing is split, and the tree
+ * is the unsplit one - saved as version 1, refittable. */
+START_TEST(nothing_to_split)
+{
+    const size_t side = 20, nt = 2 * side * side;
+    float *v = malloc(nt * 9 * sizeof *v);
+    atrbvh_geometry g;
+    atrbvh_build_options o = split_options(0.5);
+    atrbvh_bvh *a, *b;
+    atrbvh_error e;
+    char msg[256];
+    void *data;
+    size_t size, i, j, t = 0;
+    ck_assert_ptr_nonnull(v);
+    for (i = 0; i < side; i++)
+        for (j = 0; j < side; j++) {
+            const float x = (float)i, y = (float)j;
+            const float q[2][9] = {{x, y, 0, x + 1, y, 0, x, y + 1, 0},
+                                   {x + 1, y, 0, x + 1, y + 1, 0, x, y + 1,
+                                    0}};
+            memcpy(v + 9 * t++, q[0], sizeof q[0]);
+            memcpy(v + 9 * t++, q[1], sizeof q[1]);
+        }
+    g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
+    a = tu_build(&g, &o);
+    o.split_budget = 0.0;
+    b = tu_build(&g, &o);
+    ck_assert_msg(tu_same_bvh(a, b, msg, sizeof msg), "%s", msg);
+    ck_assert_msg(tu_check_bvh(a, &g, msg, sizeof msg), "%s", msg);
+    ck_assert_int_eq(atrbvh_save_memory(a, &data, &size, &e), ATRBVH_OK);
+    ck_assert_uint_eq(((unsigned char *)data)[8], 1);
+    atrbvh_free(data);
+    ck_assert_int_eq(atrbvh_refit(a, &g, NULL, &e), ATRBVH_OK);
     atrbvh_bvh_free(a);
     atrbvh_bvh_free(b);
     free(v);
@@ -658,6 +700,7 @@ static Suite *suite(void)
     TCase *t = tcase_create("split");
     tcase_set_timeout(t, 600);
     tcase_add_test(t, off_by_default);
+    tcase_add_test(t, nothing_to_split);
     tcase_add_test(t, references_cover_triangles);
     tcase_add_test(t, same_for_threads);
     tcase_add_test(t, same_on_opencl);
