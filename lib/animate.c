@@ -111,6 +111,10 @@ static atrbvh_status check_args(const char *fn, const atrbvh_bvh *bvh,
     st = atrbvh_i_check_geometry(geometry, in, error);
     if (st != ATRBVH_OK)
         return st;
+    if (bvh->split_prims) /* references of one primitive: not refittable */
+        return atrbvh_i_fail(error, ATRBVH_ERR_UNSUPPORTED, NO_INDEX,
+                             "%s: the BVH was built with triangle splitting "
+                             "(split_budget); rebuild it instead", fn);
     expect = bvh->prim_count + bvh->stats.invalid_skipped;
     if (geometry->primitive_count != expect)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,

@@ -234,6 +234,7 @@ void atrbvh_build_options_init(atrbvh_build_options *o)
     o->device = NULL;
     o->capture = NULL;
     o->capture_user = NULL;
+    o->split_budget = 0.0;
 }
 
 atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
@@ -339,6 +340,11 @@ atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
     c->cost.max_leaf = o.max_leaf_size;
     c->threads = atrbvh_i_resolve_threads(o.threads);
     c->skip_invalid = o.skip_invalid != 0;
+    if (!(o.split_budget >= 0.0 && o.split_budget <= ATRBVH_I_SPLIT_MAX))
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "split_budget %g is not between 0 and %g",
+                             o.split_budget, ATRBVH_I_SPLIT_MAX);
+    c->split_budget = o.split_budget;
     r->backend = o.backend;
     r->opencl_device = o.opencl_device;
     r->progress = o.progress;

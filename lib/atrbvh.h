@@ -266,6 +266,15 @@ typedef struct atrbvh_build_options {
                                     `backend` says                       */
     atrbvh_capture_fn capture;   /* every stage's output; may be NULL    */
     void *capture_user;
+    /* added with triangle splitting: */
+    double split_budget;         /* 0 (default): off.  Triangles whose box
+                                    is much larger than their area
+                                    suggests get split boxes before the
+                                    Morton stage, at most split_budget *
+                                    primitives extra references (0 to 4;
+                                    boxes geometry is never split).  A
+                                    leaf may then share a primitive with
+                                    another leaf (atrbvh(3))             */
 } atrbvh_build_options;
 
 ATRBVH_API void atrbvh_build_options_init(atrbvh_build_options *options);

@@ -79,6 +79,7 @@ typedef struct atrbvh_i_config {
     atrbvh_cost_params cost; /* ci, ct, collapse, max_leaf */
     int threads;
     int skip_invalid;
+    double split_budget; /* 0: no triangle splitting (lib/split.c)   */
 } atrbvh_i_config;
 
 typedef struct atrbvh_i_run atrbvh_i_run;
@@ -111,6 +112,10 @@ struct atrbvh_i_run {
     atrbvh_box scene, centroids;
     int bad;
     size_t invalid; /* primitives left out (skip_invalid)            */
+    /* pipeline, with triangle splitting (lib/split.c): the primitives
+     * kept; n is then the number of references, each with the id of
+     * its primitive (set_prims). 0: no splitting. */
+    uint32_t split_prims;
     /* pipeline, before morton: the Morton frame of the centroid box
      * (lib/shared/stages.h atrbvh_morton_quantise's lo and scale). */
     double morton_lo[3], morton_scale[3];

@@ -124,6 +124,56 @@ done:
     return st;
 }
 
+/* The primitive indices of a built tree (debug builds, after stats are
+ * measured): each below the input count, none listed twice - or, in a
+ * split tree, none twice within one leaf and as many distinct ones as
+ * the pipeline kept (every kept primitive referenced at least once). */
+static atrbvh_status check_indices(const atrbvh_bvh *b, atrbvh_error *error)
+{
+    const size_t input = b->stats.primitives + b->stats.invalid_skipped;
+    size_t i, distinct = 0;
+    atrbvh_status st = ATRBVH_OK;
+    uint32_t *stamp = atrbvh_i_alloc_array(input, sizeof *stamp);
+    if (!stamp)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                             "cannot allocate %lu primitive stamps",
+                             (unsigned long)input);
+    memset(stamp, 0xff, input * sizeof *stamp);
+    for (i = 0; i < b->node_count && st == ATRBVH_OK; i++) {
+        const atrbvh_node *nd = &b->nodes[i];
+        uint32_t j;
+        for (j = 0; j < nd->count; j++) {
+            const uint32_t p = b->prim_indices[nd->index + j];
+            if (p >= input) {
+                st = atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, i,
+                                   "leaf %lu lists primitive %lu of %lu",
+                                   (unsigned long)i, (unsigned long)p,
+                                   (unsigned long)input);
+                break;
+            }
+            if (stamp[p] != ATRBVH_NONE &&
+                (!b->split_prims || stamp[p] == (uint32_t)i)) {
+                st = atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, i,
+                                   "leaf %lu lists primitive %lu, listed "
+                                   "already by leaf %lu",
+                                   (unsigned long)i, (unsigned long)p,
+                                   (unsigned long)stamp[p]);
+                break;
+            }
+            distinct += stamp[p] == ATRBVH_NONE;
+            stamp[p] = (uint32_t)i;
+        }
+    }
+    if (st == ATRBVH_OK && b->split_prims && distinct != b->split_prims)
+        st = atrbvh_i_fail(error, ATRBVH_ERR_FORMAT, (uint64_t)-1,
+                           "the split tree lists %lu primitives, %lu were "
+                           "kept",
+                           (unsigned long)distinct,
+                           (unsigned long)b->split_prims);
+    atrbvh_i_free(stamp);
+    return st;
+}
+
 atrbvh_status atrbvh_i_bvh_check(const atrbvh_bvh *b, int check_boxes,
                                  atrbvh_error *error)
 {
@@ -155,7 +205,7 @@ atrbvh_status atrbvh_i_bvh_check(const atrbvh_bvh *b, int check_boxes,
                                  (unsigned long)covered);
         covered += b->nodes[i].count;
     }
-    return ATRBVH_OK;
+    return check_indices(b, error);
 }
 
 atrbvh_status atrbvh_i_bvh_measure(atrbvh_bvh *b)
@@ -174,7 +224,8 @@ atrbvh_status atrbvh_i_bvh_measure(atrbvh_bvh *b)
         }
     b->stats.nodes = b->node_count;
     b->stats.leaves = leaves;
-    b->stats.primitives = b->prim_count;
+    /* a split tree references some primitives more than once */
+    b->stats.primitives = b->split_prims ? b->split_prims : b->prim_count;
     b->stats.max_depth = depth;
     b->stats.max_leaf_primitives = largest;
     b->stats.sah = atrbvh_sah(b->nodes, b->node_count, b->stats.ci,

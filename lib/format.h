@@ -7,9 +7,10 @@
  *
  *   offset  size  field
  *        0     8  magic "ATRBVH\0\n"
- *        8     4  u32 format version (1)
+ *        8     4  u32 format version (1 or 2)
  *       12     4  u32 header size (96)
- *       16     4  u32 flags (0; any set bit is rejected)
+ *       16     4  u32 flags: version 1 has none (0); version 2 may set
+ *                 FILE_FLAG_SPLIT; any other set bit is rejected
  *       20     4  u32 method (0 lbvh, 1 trbvh, 2 atrbvh)
  *       24     4  u32 treelet size
  *       28     4  u32 rounds
@@ -28,6 +29,13 @@
  *   ...        4  u32 CRC-32 (IEEE 802.3, as zlib's crc32) of every byte
  *                 before it
  *
+ * Version 2 is version 1 plus the flags.  FILE_FLAG_SPLIT: a tree built
+ * with triangle splitting, whose leaves may reference one primitive more
+ * than once between them (never twice in one leaf); the input count at
+ * byte 48 is then the input's primitive count, not the index count's
+ * bound.  A tree without splitting is written as version 1, which every
+ * reader takes; version 1 files load as before.
+ *
  * Loading trusts nothing: the size the counts imply (computed without
  * overflow) must equal the data's size before anything is allocated, and
  * nothing allocated is larger than the data.  Then the checksum, then the
@@ -40,7 +48,9 @@
 #include <stdint.h>
 #include <string.h>
 
-#define FILE_VERSION 1u
+#define FILE_VERSION 1u       /* a tree without splitting            */
+#define FILE_VERSION_SPLIT 2u /* the newest version this library reads */
+#define FILE_FLAG_SPLIT 1u    /* version 2: references may repeat      */
 #define HEADER_SIZE 96u
 #define NODE_SIZE 32u
 #define CRC_SIZE 4u

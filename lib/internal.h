@@ -68,6 +68,19 @@ atrbvh_status atrbvh_i_scan_prims(const atrbvh_i_input *in,
                                   uint32_t *kept, atrbvh_box *scene,
                                   atrbvh_box *centroids, size_t *invalid,
                                   atrbvh_error *error);
+/* Triangle splitting (lib/split.c): the most split_budget accepted. */
+#define ATRBVH_I_SPLIT_MAX 4.0
+/* After the bounds stage, with cfg->split_budget > 0 over triangles: the
+ * exact error for an invalid primitive as atrbvh_i_scan_prims gives it,
+ * or the split references (boxes and primitive ids) handed to the backend
+ * (set_prims); sets run->n, scene, centroids, invalid, split_prims. */
+atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
+                                   atrbvh_error *error);
+/* After the layout of a split build: duplicate references within one
+ * leaf merged (prim_count shrinks; primitive ids below input_count). */
+atrbvh_status atrbvh_i_split_merge(atrbvh_bvh *bvh, size_t input_count,
+                                   atrbvh_error *error);
+
 /* The Morton frame of a centroid box: per axis the low end and the scale
  * 2^21 / extent (0 for a zero extent), computed once on the host for
  * every backend. */
@@ -98,6 +111,9 @@ struct atrbvh_bvh {
     struct atrbvh_i_device_info *device; /* NULL unless built by OpenCL */
     size_t node_capacity; /* nodes' allocation when above node_count
                              (atrbvh_reoptimise reuses it); 0: node_count */
+    size_t split_prims;   /* a split tree (its leaves may share a
+                             primitive): the distinct primitives it
+                             references; 0: every primitive once       */
 };
 
 /* The device and per-kernel device times of an OpenCL build (allocated
@@ -148,7 +164,9 @@ atrbvh_status atrbvh_i_bvh_measure(atrbvh_bvh *bvh);
 /* Structural check of a node array (used on load and, in debug builds,
  * after every build): every child index in range and after its parent,
  * leaf ranges tiling the index array in order, child boxes inside parents
- * when check_boxes.  (Index values are the caller's to check.) */
+ * when check_boxes; every primitive index below the input count and
+ * listed once (a split tree: never twice in one leaf, every kept
+ * primitive listed). */
 atrbvh_status atrbvh_i_bvh_check(const atrbvh_bvh *bvh, int check_boxes,
                                  atrbvh_error *error);
 

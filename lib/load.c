@@ -19,6 +19,7 @@ typedef struct file_header {
     uint64_t node_count, prim_count, input_count;
     double ci, ct, sah;
     uint64_t total; /* the size the counts imply */
+    int split;      /* version 2, FILE_FLAG_SPLIT: references may repeat */
 } file_header;
 
 #define FAIL_AT(off, ...)                                                      \
@@ -38,17 +39,19 @@ static atrbvh_status parse_header(const unsigned char *h, uint64_t size,
     if (memcmp(h, FILE_MAGIC, FILE_MAGIC_SIZE) != 0)
         return FAIL_AT(0, "byte 0: not an atrbvh BVH file (bad magic)");
     version = get_u32(h + 8);
-    if (version != FILE_VERSION)
+    if (version != FILE_VERSION && version != FILE_VERSION_SPLIT)
         return FAIL_AT(8, "byte 8: format version %u is not supported "
-                          "(this library reads version %u)",
-                       version, FILE_VERSION);
+                          "(this library reads versions %u and %u)",
+                       version, FILE_VERSION, FILE_VERSION_SPLIT);
     header_size = get_u32(h + 12);
     if (header_size != HEADER_SIZE)
-        return FAIL_AT(12, "byte 12: header size %u, version 1 has %u",
-                       header_size, HEADER_SIZE);
+        return FAIL_AT(12, "byte 12: header size %u, version %u has %u",
+                       header_size, version, HEADER_SIZE);
     flags = get_u32(h + 16);
-    if (flags != 0)
-        return FAIL_AT(16, "byte 16: unknown flags 0x%08x", flags);
+    if (version == FILE_VERSION ? flags != 0 : (flags & ~FILE_FLAG_SPLIT) != 0)
+        return FAIL_AT(16, "byte 16: unknown flags 0x%08x for version %u",
+                       flags, version);
+    fh->split = (flags & FILE_FLAG_SPLIT) != 0;
     fh->method = get_u32(h + 20);
     if (fh->method > (uint32_t)ATRBVH_METHOD_ATRBVH)
         return FAIL_AT(20, "byte 20: method %u is not 0, 1 or 2", fh->method);
@@ -61,18 +64,24 @@ static atrbvh_status parse_header(const unsigned char *h, uint64_t size,
         return FAIL_AT(32, "byte 32: node count is 0");
     if (fh->prim_count == 0)
         return FAIL_AT(40, "byte 40: primitive index count is 0");
-    if (fh->prim_count > (uint64_t)ATRBVH_MAX_PRIMITIVES)
+    /* a split tree's references: below 2^31 (2P - 1 nodes fit u32) */
+    if (fh->prim_count > (fh->split ? (uint64_t)0x7fffffffu
+                                    : (uint64_t)ATRBVH_MAX_PRIMITIVES))
         return FAIL_AT(40, "byte 40: primitive index count %llu is beyond "
                            "the limit of %llu",
                        (unsigned long long)fh->prim_count,
-                       (unsigned long long)ATRBVH_MAX_PRIMITIVES);
+                       (unsigned long long)(fh->split
+                                                ? (uint64_t)0x7fffffffu
+                                                : (uint64_t)
+                                                      ATRBVH_MAX_PRIMITIVES));
     if (fh->node_count > 2 * fh->prim_count - 1)
         return FAIL_AT(32, "byte 32: node count %llu is more than a tree over "
                            "%llu primitives can have (%llu)",
                        (unsigned long long)fh->node_count,
                        (unsigned long long)fh->prim_count,
                        (unsigned long long)(2 * fh->prim_count - 1));
-    if (fh->input_count < fh->prim_count ||
+    if ((!fh->split && fh->input_count < fh->prim_count) ||
+        fh->input_count == 0 ||
         fh->input_count > (uint64_t)ATRBVH_MAX_PRIMITIVES)
         return FAIL_AT(48, "byte 48: input primitive count %llu is not "
                            "between the index count %llu and %llu",
@@ -155,6 +164,38 @@ static void heapsort_u32(uint32_t *a, size_t n)
 #define BIT_GET(b, i) (((b)[(i) >> 3] >> ((i)&7u)) & 1u)
 #define BIT_SET(b, i) ((b)[(i) >> 3] |= (unsigned char)(1u << ((i)&7u)))
 
+/* A split tree (FILE_FLAG_SPLIT): no leaf lists a primitive twice.  Each
+ * leaf's range sorted in a copy of the P indices (no larger than the
+ * data). */
+static atrbvh_status split_leaves(const atrbvh_bvh *bvh, size_t p,
+                                  atrbvh_error *error)
+{
+    uint32_t *copy = (uint32_t *)atrbvh_i_alloc_array(p, sizeof *copy);
+    atrbvh_status st = ATRBVH_OK;
+    size_t i, j;
+    if (!copy)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                             "out of memory checking %lu primitive indices",
+                             (unsigned long)p);
+    memcpy(copy, bvh->prim_indices, p * sizeof *copy);
+    for (i = 0; i < bvh->node_count && st == ATRBVH_OK; i++) {
+        const atrbvh_node *nd = &bvh->nodes[i];
+        if (!nd->count)
+            continue;
+        heapsort_u32(copy + nd->index, nd->count);
+        for (j = 1; j < nd->count; j++)
+            if (copy[nd->index + j] == copy[nd->index + j - 1]) {
+                st = FAIL_AT(HEADER_SIZE + (uint64_t)i * NODE_SIZE,
+                             "node %lu: leaf lists primitive %lu twice",
+                             (unsigned long)i,
+                             (unsigned long)copy[nd->index + j]);
+                break;
+            }
+    }
+    atrbvh_i_free(copy);
+    return st;
+}
+
 /* Decodes the body into bvh and checks the structure:
  *  - boxes finite with min <= max;
  *  - depth-first layout: node 0 spans nodes [0, N); an internal node i
@@ -163,7 +204,9 @@ static void heapsort_u32(uint32_t *a, size_t n)
  *    [i, i + 1).  So every node is reached once and N = 2 * leaves - 1;
  *  - every leaf's range lies within the P index slots, no slot is in two
  *    leaves and the leaves cover all P;
- *  - every primitive index is below the input count and none repeats.
+ *  - every primitive index is below the input count and none repeats
+ *    (a split tree: none repeats within one leaf; bvh->split_prims gets
+ *    the number of distinct primitives).
  * Scratch: N u32 (subtree ends) and two bitmaps, each no larger than the
  * data itself. */
 static atrbvh_status decode_body(const unsigned char *data,
@@ -179,6 +222,7 @@ static atrbvh_status decode_body(const unsigned char *data,
     unsigned char *slots = NULL, *seen = NULL;
     atrbvh_status st = ATRBVH_OK;
     int ids_by_bitmap = input / 8 <= fh->total;
+    size_t distinct = 0;
 
     end = (uint32_t *)atrbvh_i_alloc_array(n, sizeof *end);
     slots = (unsigned char *)atrbvh_i_malloc(p / 8 + 1);
@@ -315,6 +359,13 @@ static atrbvh_status decode_body(const unsigned char *data,
             goto done;
         }
         if (seen) {
+            if (fh->split) { /* count the distinct ones */
+                if (!BIT_GET(seen, v)) {
+                    BIT_SET(seen, v);
+                    distinct++;
+                }
+                continue;
+            }
             if (BIT_GET(seen, v)) {
                 st = FAIL_AT(off, "primitive index %lu at byte %llu: "
                                   "primitive %lu is referenced twice",
@@ -338,7 +389,11 @@ static atrbvh_status decode_body(const unsigned char *data,
         }
         memcpy(copy, bvh->prim_indices, p * sizeof *copy);
         heapsort_u32(copy, p);
-        for (i = 1; i < p; i++) {
+        for (i = 1; i < p && fh->split; i++) /* count the distinct ones */
+            distinct += copy[i] != copy[i - 1];
+        if (fh->split)
+            distinct++;
+        for (i = 1; i < p && !fh->split; i++) {
             if (copy[i] == copy[i - 1]) {
                 st = FAIL_AT(HEADER_SIZE + fh->node_count * NODE_SIZE,
                              "primitive %lu is referenced twice",
@@ -349,6 +404,10 @@ static atrbvh_status decode_body(const unsigned char *data,
         if (copy != end)
             atrbvh_i_free(copy);
     }
+    if (st == ATRBVH_OK && fh->split)
+        st = split_leaves(bvh, p, error);
+    if (st == ATRBVH_OK && fh->split)
+        bvh->split_prims = distinct;
 done:
     atrbvh_i_free(end);
     atrbvh_i_free(slots);
@@ -394,8 +453,10 @@ atrbvh_status atrbvh_load_memory(const void *data, size_t size,
         return st;
     }
     memset(&bvh->stats, 0, sizeof bvh->stats);
-    bvh->stats.primitives = (size_t)fh.prim_count;
-    bvh->stats.invalid_skipped = (size_t)(fh.input_count - fh.prim_count);
+    bvh->stats.primitives =
+        bvh->split_prims ? bvh->split_prims : (size_t)fh.prim_count;
+    bvh->stats.invalid_skipped =
+        (size_t)(fh.input_count - (uint64_t)bvh->stats.primitives);
     bvh->stats.ci = fh.ci;
     bvh->stats.ct = fh.ct;
     bvh->stats.method = (atrbvh_method)fh.method;

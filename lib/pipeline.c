@@ -218,8 +218,16 @@ static atrbvh_status run_stages(atrbvh_device *dev, atrbvh_i_run *run,
             run->prim_indices = bvh->prim_indices;
         }
         st = runs ? be->stage[s](dev, run, error) : ATRBVH_OK;
+        if (st == ATRBVH_OK && stage == ATRBVH_STAGE_LAYOUT &&
+            run->split_prims) { /* split.c: no leaf lists one twice */
+            bvh->split_prims = run->split_prims;
+            st = atrbvh_i_split_merge(bvh, run->in.g->primitive_count, error);
+        }
         if (st == ATRBVH_OK && stage == ATRBVH_STAGE_BOUNDS) {
-            if (run->bad)
+            if (run->cfg->split_budget > 0.0 &&
+                run->in.g->type == ATRBVH_GEOMETRY_TRIANGLES)
+                st = atrbvh_i_split_prims(dev, run, error); /* split.c */
+            else if (run->bad)
                 st = invalid_prims(dev, run, error);
             if (st == ATRBVH_OK)
                 atrbvh_i_morton_frame(&run->centroids, run->morton_lo,

@@ -40,13 +40,14 @@ static atrbvh_status serialise(const atrbvh_bvh *bvh, unsigned char **data,
                              "out of memory for a %lu-byte BVH file image",
                              (unsigned long)total);
     input = (uint64_t)bvh->stats.primitives + bvh->stats.invalid_skipped;
-    if (input < bvh->prim_count)
+    if (input < bvh->prim_count && !bvh->split_prims)
         input = bvh->prim_count;
     memset(buf, 0, HEADER_SIZE);
     memcpy(buf, FILE_MAGIC, FILE_MAGIC_SIZE);
-    put_u32(buf + 8, FILE_VERSION);
+    /* version 1 unless the tree is split: old readers keep working */
+    put_u32(buf + 8, bvh->split_prims ? FILE_VERSION_SPLIT : FILE_VERSION);
     put_u32(buf + 12, HEADER_SIZE);
-    put_u32(buf + 16, 0);
+    put_u32(buf + 16, bvh->split_prims ? FILE_FLAG_SPLIT : 0u);
     put_u32(buf + 20, (uint32_t)bvh->stats.method);
     put_u32(buf + 24, bvh->stats.treelet_size);
     put_u32(buf + 28, bvh->stats.rounds);

@@ -205,7 +205,7 @@ atrbvh_status atrbvh_i_trav_check(const atrbvh_bvh *bvh,
                                  "multiple of 4", fn);
     }
     needed = bvh->stats.primitives + bvh->stats.invalid_skipped;
-    if (needed < bvh->prim_count)
+    if (needed < bvh->prim_count && !bvh->split_prims)
         needed = bvh->prim_count;
     if (g->primitive_count < needed)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,

@@ -132,6 +132,9 @@ static int captures_differ(atrbvh_error *e, const atrbvh_i_capture *a,
         U32_DIFF("layout", "output node", "index", i, x->index, y->index);
         U32_DIFF("layout", "output node", "count", i, x->count, y->count);
     }
+    /* a split tree's merged leaves: the index arrays' lengths first */
+    U32_DIFF("layout", "array", "primitive index count", 0, ba->prim_count,
+             bb->prim_count);
     for (i = 0; i < ba->prim_count; i++)
         U32_DIFF("layout", "index array entry", "primitive", i,
                  ba->prim_indices[i], bb->prim_indices[i]);

@@ -242,6 +242,26 @@ if run 0 build "$DATA/nan.obj" --method lbvh --skip-invalid --json; then
     [ "$v" = 3 ] || fail "triangles is '$v', expected 3"
 fi
 
+# Triangle splitting: off by default (no references key), --split B adds
+# at most B * triangles references, saved as format version 2 and shown by
+# info; out of range is a usage error naming --split.
+run 2 build "$T/nothere.ply" --split 4.5 && err_has '^atrbvh: build: --split: '
+run 2 build "$T/nothere.ply" --split -1 && err_has '^atrbvh: build: --split: '
+if run 0 build builtin:sphere:3000 --json; then
+    grep -q '"references"' "$T/out" && fail "references reported without --split"
+fi
+if run 0 build builtin:sphere:3000 --split 0.3 --json -o "$T/split.bvh"; then
+    t=$(json_value triangles)
+    r=$(json_value references)
+    p=$(json_value primitives)
+    [ "$p" = "$t" ] || fail "--split: primitives '$p', triangles '$t'"
+    [ -n "$r" ] && [ "$r" -gt "$t" ] && [ $((r * 10)) -le $((t * 13)) ] ||
+        fail "--split 0.3: references '$r' for $t triangles"
+    ver=$(od -An -tu4 -j8 -N4 "$T/split.bvh" | tr -d ' ')
+    [ "$ver" = 2 ] || fail "--split: file version '$ver', expected 2"
+    run 0 info "$T/split.bvh" && out_has "^references +$r "
+fi
+
 # ------------------------------------------------------------- build
 run 0 build "$DATA/cube.obj" --method lbvh && {
     out_has '^triangles +12'

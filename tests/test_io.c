@@ -565,8 +565,8 @@ START_TEST(structural_errors)
     c[3] = 'X';
     TRY("magic");
     memcpy(c, d, n);
-    wr32(c + 8, 2);
-    TRY("version 2");
+    wr32(c + 8, 3);
+    TRY("version 3");
     memcpy(c, d, n);
     wr32(c + 16, 4);
     TRY("flags");

@@ -139,6 +139,11 @@ void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table)
             {.name = "--ct", .kind = CLI_OPT_DOUBLE, .arg = "X", .min = 0.0,
              .min_open = 1, .max = 1e30, .dest = &o->ct,
              .help = "SAH cost of a primitive (default 1.0)"},
+            {.name = "--split", .kind = CLI_OPT_DOUBLE, .arg = "BUDGET",
+             .min = 0.0, .max = 4.0, .dest = &o->split_budget,
+             .help = "split the boxes of triangles much larger than\n"
+                     "their area suggests, at most BUDGET * triangles\n"
+                     "extra references (e.g. 0.3; default 0: off)"},
             {.name = "--skip-invalid", .kind = CLI_OPT_FLAG,
              .dest = &o->skip_invalid, .flag_value = 1,
              .help = "leave out triangles with NaN or infinite\n"
@@ -195,7 +200,8 @@ static const char *option_named(const char *text)
     } words[] = {{"treelet size", "--treelet"}, {"rounds", "--rounds"},
                  {"gamma", "--treelet"},        {"ci ", "--ci"},
                  {"ct ", "--ct"},               {"threads", "--threads"},
-                 {"max_leaf_size", "--max-leaf"}};
+                 {"max_leaf_size", "--max-leaf"},
+                 {"split_budget", "--split"}};
     size_t k;
     for (k = 0; k < sizeof words / sizeof words[0]; k++)
         if (strstr(text, words[k].word))
@@ -547,6 +553,12 @@ void cli_build_json(json_writer *w, const cli_build_args *a,
     json_kv_uint(w, "triangles", b->sc.triangle_count);
     json_kv_uint(w, "primitives", s->primitives);
     json_kv_uint(w, "invalid_skipped", s->invalid_skipped);
+    if (a->options.split_budget > 0.0) {
+        size_t refs = 0;
+        (void)atrbvh_bvh_primitive_indices(b->bvh, &refs);
+        json_kv_double(w, "split_budget", a->options.split_budget);
+        json_kv_uint(w, "references", refs);
+    }
     json_kv_string(w, "method", cli_method_name(s->method));
     if (s->treelet_size == ATRBVH_TREELET_AUTO)
         json_kv_string(w, "treelet_size", "auto");
@@ -596,6 +608,12 @@ void cli_build_text(FILE *f, const cli_build_args *a, const cli_built *b)
     fprintf(f, "scene            %s\n", a->scene);
     fprintf(f, "triangles        %zu\n", b->sc.triangle_count);
     fprintf(f, "invalid skipped  %zu\n", s->invalid_skipped);
+    if (a->options.split_budget > 0.0) {
+        size_t refs = 0;
+        (void)atrbvh_bvh_primitive_indices(b->bvh, &refs);
+        fprintf(f, "references       %zu (split budget %g)\n", refs,
+                a->options.split_budget);
+    }
     fprintf(f, "method           %s", cli_method_name(s->method));
     if (s->method != ATRBVH_METHOD_LBVH)
     {

@@ -82,6 +82,7 @@ int cli_info(int argc, char **argv)
     int json = 0, rc;
     atrbvh_bvh *bvh;
     atrbvh_stats s;
+    size_t refs = 0;
     if ((rc = cli_help_or_version(argc, argv, info_help)) >= 0)
         return rc;
     info_json = 0;
@@ -91,12 +92,15 @@ int cli_info(int argc, char **argv)
     if (load(path, &bvh) != CLI_OK)
         return CLI_FAIL;
     atrbvh_bvh_stats(bvh, &s);
+    (void)atrbvh_bvh_primitive_indices(bvh, &refs); /* split: more */
     if (json) {
         json_writer w;
         json_init(&w, stdout);
         json_begin_object(&w);
         json_kv_string(&w, "file", path);
         json_kv_uint(&w, "primitives", s.primitives);
+        if (refs != s.primitives)
+            json_kv_uint(&w, "references", refs);
         json_kv_string(&w, "method", cli_method_name(s.method));
         if (s.treelet_size == ATRBVH_TREELET_AUTO)
             json_kv_string(&w, "treelet_size", "auto");
@@ -114,6 +118,8 @@ int cli_info(int argc, char **argv)
     } else {
         printf("file             %s\n", path);
         printf("primitives       %zu\n", s.primitives);
+        if (refs != s.primitives)
+            printf("references       %zu (triangle splitting)\n", refs);
         printf("method           %s", cli_method_name(s.method));
         if (s.method != ATRBVH_METHOD_LBVH)
         {

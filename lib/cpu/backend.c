@@ -54,7 +54,16 @@ static atrbvh_status cpu_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_i_cpu_run *c = run->state;
     (void)dev;
     /* The pipeline's boxes may be the scratch the bounds stage wrote;
-     * memmove keeps that case right. */
+     * memmove keeps that case right.  Other boxes may be more than the
+     * bounds stage's (split references): the slot grows. */
+    if (boxes != c->boxes) {
+        c->boxes = atrbvh_i_scratch_get(c->scratch, CPU_BOXES, run->n,
+                                        sizeof *c->boxes);
+        if (!c->boxes)
+            return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                                 "cannot allocate %lu primitive boxes",
+                                 (unsigned long)run->n);
+    }
     memmove(c->boxes, boxes, (size_t)run->n * sizeof *boxes);
     c->ids = NULL;
     if (ids) {
