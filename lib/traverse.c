@@ -83,6 +83,8 @@ static int trav_scene(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
     s->prim_indices = bvh->prim_indices;
     s->prim_count = bvh->prim_count;
     s->primitive_count = g->primitive_count;
+    /* the CPU keeps subnormals (IEEE arithmetic, no flush to zero) */
+    s->float_slabs = atrbvh_trav_scene_float(s, 1);
     if (g->type == ATRBVH_GEOMETRY_TRIANGLES) {
         size_t vs = g->vertex_stride ? g->vertex_stride : 3 * sizeof(float);
         size_t is = g->index_stride ? g->index_stride : 3 * sizeof(uint32_t);
