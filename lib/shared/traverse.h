@@ -308,6 +308,7 @@ ATRBVH_FN int atrbvh_trav_node_hit_d(ATRBVH_CONST_GLOBAL atrbvh_node *n,
 typedef struct atrbvh_trav_fray {
     /* lanes (x, y, z, x) and (z, x, y, z), matching the two loads */
     __m128 o0, o1, i0, i1;
+    __m128 widen, slack; /* ATRBVH_TRAV_WIDEN_F, ATRBVH_TRAV_SLACK_F */
 } atrbvh_trav_fray;
 
 ATRBVH_TRAV_HOT atrbvh_trav_fray atrbvh_trav_fray_make(const atrbvh_trav_ray *r)
@@ -317,6 +318,8 @@ ATRBVH_TRAV_HOT atrbvh_trav_fray atrbvh_trav_fray_make(const atrbvh_trav_ray *r)
     f.o1 = _mm_setr_ps(r->orgf[2], r->orgf[0], r->orgf[1], r->orgf[2]);
     f.i0 = _mm_setr_ps(r->idirf[0], r->idirf[1], r->idirf[2], r->idirf[0]);
     f.i1 = _mm_setr_ps(r->idirf[2], r->idirf[0], r->idirf[1], r->idirf[2]);
+    f.widen = _mm_set1_ps(ATRBVH_TRAV_WIDEN_F);
+    f.slack = _mm_set1_ps(ATRBVH_TRAV_SLACK_F);
     return f;
 }
 
@@ -372,8 +375,7 @@ ATRBVH_TRAV_HOT int atrbvh_trav_box2_f(const float *bl, const float *br,
     hi = _mm_min_ps(_mm_movehl_ps(f01, f01), hi);
     lo = _mm_max_ps(n2, lo);
     hi = _mm_min_ps(f2, hi);
-    hi = _mm_add_ps(_mm_mul_ps(hi, _mm_set1_ps(ATRBVH_TRAV_WIDEN_F)),
-                    _mm_set1_ps(ATRBVH_TRAV_SLACK_F));
+    hi = _mm_add_ps(_mm_mul_ps(hi, f->widen), f->slack);
     *nl = _mm_cvtss_f32(lo);
     *nr = _mm_cvtss_f32(_mm_shuffle_ps(lo, lo, _MM_SHUFFLE(1, 1, 1, 1)));
     return _mm_movemask_ps(_mm_cmple_ps(lo, hi)) & 3;
