@@ -11,18 +11,22 @@
  * requires byte strides that are multiples of 4).
  *
  * The robustness rules (see lib/traverse.c and atrbvh(3), "Ray queries"):
- * conservative slab test with Ize's 1 + 2*gamma(3) widening of the far
- * distance, watertight Woop/Benthin/Wald triangle test in double, box
+ * conservative slab test with Ize's widening of the far distance, in
+ * single precision for the rays where that is safe (atrbvh_trav_setup)
+ * and in double for the others, watertight Woop/Benthin/Wald triangle
+ * test in double, box
  * primitives as surfaces, closest-hit ties to the lower primitive index,
  * near-first traversal with a TRAVERSE_STACK-entry stack and a linear pass
  * over the leaves when a (hand-made) tree is deeper than that.
  *
  * Portability: there is no single-precision division (OpenCL allows
  * 2.5 ulp for it without -cl-fp32-correctly-rounded-divide-sqrt): the
- * slab distances use the double reciprocal 1.0 / (double)d, and the
- * triangle test is in double.  Every float operation left is a
- * comparison or a conversion, which OpenCL rounds correctly; the double
- * ones (division included) are IEEE under cl_khr_fp64.
+ * reciprocal direction is 1.0 / (double)d (rounded to float for the float
+ * slab test), and the triangle test is in double.  The float operations
+ * are additions, subtractions, multiplications, comparisons and
+ * conversions, which OpenCL rounds correctly; subnormal results must be
+ * kept, so a device without CL_FP_DENORM gets float_slabs 0 (cl/trace.c).
+ * The double ones (division included) are IEEE under cl_khr_fp64.
  */
 #ifndef ATRBVH_SHARED_TRAVERSE_H
 #define ATRBVH_SHARED_TRAVERSE_H
