@@ -304,7 +304,8 @@ ATRBVH_FN int atrbvh_trav_node_hit_d(ATRBVH_CONST_GLOBAL atrbvh_node *n,
  * the same operations in the same order with the same operands (x < y ?
  * x : y is minss/minps, x > y ? x : y is maxss/maxps, NaN and signed zeros
  * included), so both give the same bits on any input, a hand-made tree
- * with NaN boxes included; test_traverse compares them. */
+ * with NaN boxes included; test_clrays compares the CPU's results and
+ * counts with OpenCL's (PoCL runs the scalar code). */
 #if !defined(__OPENCL_VERSION__) && defined(__SSE2__) &&                       \
     !defined(ATRBVH_TRAV_NO_SSE)
 #define ATRBVH_TRAV_SSE 1
