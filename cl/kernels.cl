@@ -469,6 +469,7 @@ static atrbvh_trav_scene trav_scene(__global const atrbvh_node *nodes,
     s.index_stride = a.istride;
     s.box_data = box_data;
     s.box_stride = a.bstride;
+    s.float_slabs = atrbvh_trav_scene_float(&s, (int)a.float_slabs);
     return s;
 }
 

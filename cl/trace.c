@@ -91,6 +91,17 @@ static atrbvh_status trace_batch(atrbvh_cl_device *c,
     a.node_count = node_count;
     a.prim_count = prim_count;
     a.count_cost = cost != NULL;
+    {
+        /* The float node test gives the CPU's answers only where float
+         * subnormals are kept (CL_FP_DENORM, and no -cl-denorms-are-zero
+         * in the build options); elsewhere every ray takes the double
+         * test: the same hits, counts that may differ from the CPU's. */
+        cl_device_fp_config fp = 0;
+        if (clGetDeviceInfo(c->device, CL_DEVICE_SINGLE_FP_CONFIG, sizeof fp,
+                            &fp, NULL) == CL_SUCCESS &&
+            (fp & CL_FP_DENORM))
+            a.float_slabs = 1;
+    }
     CL_CHECK(atrbvh_i_cl_buffer(c, B_T_NODES, node_count, sizeof(atrbvh_node),
                                 "BVH nodes", error));
     CL_CHECK(atrbvh_i_cl_upload(c, B_T_NODES, nodes,

@@ -4,8 +4,14 @@
  *
  * Robustness (see atrbvh(3), "Ray queries"):
  *
- *  - Ray/node test: the slab test with 1/dir, where a zero direction
- *    component gives 1/dir = +-inf.  The near and far distances of each
+ *  - Ray/node test: the slab test with 1/dir, in single precision (SSE on
+ *    the CPU, two children at once) for rays whose direction components
+ *    are all nonzero normal floats within 2^+-125, whose origin and the
+ *    root box lie within +-2^126 and whose tmin >= 0 (then (b - o) * (1/d)
+ *    cannot overflow before the product, nor give NaN), with the far end
+ *    widened by 1 + 2^-21 and 2^-146 (shared/traverse.h,
+ *    atrbvh_trav_node_hit_f); in double for every other ray, below.
+ *    Double: a zero direction component gives 1/dir = +-inf.  The near and far distances of each
  *    slab are chosen by the sign of 1/dir, and folded into the interval with
  *    comparisons written so that a NaN (0 * inf: the origin lies exactly on
  *    a slab plane of a zero-direction axis) is dropped, i.e. that axis puts
@@ -83,6 +89,8 @@ static int trav_scene(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
     s->prim_indices = bvh->prim_indices;
     s->prim_count = bvh->prim_count;
     s->primitive_count = g->primitive_count;
+    /* the CPU keeps subnormals (IEEE arithmetic, no flush to zero) */
+    s->float_slabs = atrbvh_trav_scene_float(s, 1);
     if (g->type == ATRBVH_GEOMETRY_TRIANGLES) {
         size_t vs = g->vertex_stride ? g->vertex_stride : 3 * sizeof(float);
         size_t is = g->index_stride ? g->index_stride : 3 * sizeof(uint32_t);

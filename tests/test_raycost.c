@@ -383,6 +383,171 @@ START_TEST(errors)
 }
 END_TEST
 
+
+/* ------------------------------------ the float node test at the extremes */
+/* A random float of magnitude 2^emin .. 2^(emax + 1), either sign; with
+ * `coarse` a 4-bit mantissa (sums and products then often exact). */
+static float extreme_float(tu_rng *r, int emin, int emax, int coarse)
+{
+    int e = emin + (int)(tu_rng_float(r) * (float)(emax - emin + 1));
+    double m = coarse ? 1.0 + (double)(int)(tu_rng_float(r) * 16.0f) / 16.0
+                      : 1.0 + (double)tu_rng_float(r);
+    double x = ldexp(m, e);
+    if (e > emax)
+        x = ldexp(1.0, emax);
+    return (float)(tu_rng_float(r) < 0.5f ? -x : x);
+}
+
+/* The tightest float box around the exact point o + t d, a point box
+ * where the point is a float.  t d is exact in double (t a float, or t of
+ * at most 25 significant bits and d of 5); the sum is s + err
+ * exactly (Knuth's two-sum), and f = (float)s is on the side of the true
+ * point that the sign of (s - f) + err says (s - f is exact, and when
+ * nonzero larger than |err|).  0 when the box leaves the range the float
+ * test requires (+-2^126). */
+static int box_around(const float o[3], const float d[3], double t,
+                      float lo[3], float hi[3])
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        double a = (double)o[k], b = t * (double)d[k];
+        double s = a + b, bb = s - a, err = (a - (s - bb)) + (b - bb);
+        float f = (float)s;
+        int side = s > (double)f ? 1 : s < (double)f ? -1
+                                     : (err > 0.0) - (err < 0.0);
+        if (!(fabs(s) < ldexp(1.0, 125)))
+            return 0;
+        lo[k] = side >= 0 ? f : nextafterf(f, -INFINITY);
+        hi[k] = side <= 0 ? f : nextafterf(f, INFINITY);
+    }
+    return 1;
+}
+
+/* Ize's widening, the subnormal slack and the pair test: a ray that passes
+ * through a box (a point box or the tightest box around a point of the
+ * ray, at distances down to subnormal ones, with direction components
+ * anywhere from 2^-125 to 2^125 and coordinates up to 2^125) is never
+ * rejected by the single-precision node test, whether the point is at the
+ * ray's tmin, its tmax or inside; and the two children of a hand-made
+ * three-node tree whose boxes both hold a point of the ray are both
+ * visited (box tests 3, primitive tests 2: the leaves' primitives are
+ * empty boxes, never hit).  Also boxes that the ray crosses only between
+ * two consecutive floats (around the point at t halfway between a float
+ * and the next, from the origin 0): in the subnormal range only the
+ * absolute slack keeps those. */
+START_TEST(float_box_conservative)
+{
+    tu_rng rng;
+    size_t trial, used = 0, points = 0, subnormal = 0, halfway = 0;
+    tu_rng_seed(&rng, 97);
+    for (trial = 0; trial < 400000; trial++) {
+        int coarse = trial % 2 == 0, k, j;
+        float o[3], d[3], t[2], lo[2][3], hi[2][3];
+        atrbvh_trav_ray r;
+        atrbvh_node n[3];
+        float pbox[12] = {1, 1, 1, -1, -1, -1, 1, 1, 1, -1, -1, -1};
+        atrbvh_u32 prims[2] = {0, 1}, nb, np;
+        atrbvh_trav_scene s;
+        int ocase = (int)(tu_rng_float(&rng) * 3.0f);
+        for (k = 0; k < 3; k++) {
+            o[k] = ocase == 0 ? 0.0f
+                   : ocase == 1 ? extreme_float(&rng, -149, 20, coarse)
+                                : extreme_float(&rng, -20, 124, coarse);
+            d[k] = extreme_float(&rng, -125, 124, coarse);
+        }
+        for (j = 0; j < 2; j++) {
+            t[j] = fabsf(extreme_float(&rng, -149, 120, coarse));
+            if (!box_around(o, d, t[j], lo[j], hi[j]))
+                break;
+        }
+        if (j < 2)
+            continue;
+        ck_assert(atrbvh_trav_setup(o, d, 0.0f, INFINITY, &r));
+        if (ocase == 0 && coarse) {
+            /* halfway between t and the next float: 25 bits */
+            double th = (double)t[0] +
+                        ((double)nextafterf(t[0], INFINITY) - (double)t[0]) /
+                            2.0;
+            float bl[3], bh[3], tn;
+            if (box_around(o, d, th, bl, bh)) {
+                memcpy(n[0].min, bl, sizeof bl);
+                memcpy(n[0].max, bh, sizeof bh);
+                halfway++;
+                ck_assert_msg(atrbvh_trav_node_hit_f(&n[0], &r, 0.0f,
+                                                     INFINITY, &tn),
+                              "trial %zu: d %a %a %a, box [%a %a %a, %a %a "
+                              "%a] around t %a rejected",
+                              trial, (double)d[0], (double)d[1],
+                              (double)d[2], (double)bl[0], (double)bl[1],
+                              (double)bl[2], (double)bh[0], (double)bh[1],
+                              (double)bh[2], th);
+            }
+        }
+        ck_assert_msg(r.use_float, "trial %zu: the ray takes the double test",
+                      trial);
+        used++;
+        points += lo[0][0] == hi[0][0] && lo[0][1] == hi[0][1] &&
+                  lo[0][2] == hi[0][2];
+        subnormal += t[0] < 1.17549435e-38f;
+        for (j = 0; j < 2; j++) {
+            float tn, lims[4][2];
+            int c;
+            memcpy(n[0].min, lo[j], sizeof lo[j]);
+            memcpy(n[0].max, hi[j], sizeof hi[j]);
+            lims[0][0] = 0.0f, lims[0][1] = INFINITY;
+            lims[1][0] = 0.0f, lims[1][1] = t[j];
+            lims[2][0] = t[j], lims[2][1] = INFINITY;
+            lims[3][0] = t[j], lims[3][1] = t[j];
+            for (c = 0; c < 4; c++)
+                ck_assert_msg(atrbvh_trav_node_hit_f(&n[0], &r, lims[c][0],
+                                                     lims[c][1], &tn),
+                              "trial %zu case %d: o %a %a %a d %a %a %a, box "
+                              "[%a %a %a, %a %a %a] around t %a rejected",
+                              trial, c, (double)o[0], (double)o[1],
+                              (double)o[2], (double)d[0], (double)d[1],
+                              (double)d[2], (double)lo[j][0],
+                              (double)lo[j][1], (double)lo[j][2],
+                              (double)hi[j][0], (double)hi[j][1],
+                              (double)hi[j][2], (double)t[j]);
+        }
+        /* the pair: root = both boxes' union, leaves 1 and 2 */
+        for (j = 0; j < 2; j++) {
+            memcpy(n[1 + j].min, lo[j], sizeof lo[j]);
+            memcpy(n[1 + j].max, hi[j], sizeof hi[j]);
+            n[1 + j].index = (atrbvh_u32)j;
+            n[1 + j].count = 1;
+        }
+        for (k = 0; k < 3; k++) {
+            n[0].min[k] = fminf(lo[0][k], lo[1][k]);
+            n[0].max[k] = fmaxf(hi[0][k], hi[1][k]);
+        }
+        n[0].index = 2;
+        n[0].count = 0;
+        memset(&s, 0, sizeof s);
+        s.nodes = n;
+        s.node_count = 3;
+        s.prim_indices = prims;
+        s.prim_count = 2;
+        s.boxes = 1;
+        s.primitive_count = 2;
+        s.box_data = pbox;
+        s.box_stride = 6;
+        s.float_slabs = atrbvh_trav_scene_float(&s, 1);
+        ck_assert(s.float_slabs);
+        ck_assert(!atrbvh_trav_any_cost(&s, o, d, 0.0f, INFINITY, &nb, &np));
+        ck_assert_msg(nb == 3 && np == 2,
+                      "trial %zu: pair test: %u boxes, %u primitives", trial,
+                      nb, np);
+    }
+    /* the cases must be there */
+    ck_assert_msg(used > 200000 && points > 1000 && subnormal > 1000 &&
+                      halfway > 10000,
+                  "%zu trials used, %zu point boxes, %zu subnormal t, %zu "
+                  "halfway",
+                  used, points, subnormal, halfway);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("raycost");
@@ -391,6 +556,7 @@ static Suite *suite(void)
     tcase_add_test(t, independent_count);
     tcase_add_test(t, same_for_every_thread_count);
     tcase_add_test(t, errors);
+    tcase_add_test(t, float_box_conservative);
     tcase_set_timeout(t, 300);
     suite_add_tcase(s, t);
     return s;

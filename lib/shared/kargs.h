@@ -83,7 +83,8 @@ typedef struct atrbvh_kargs_trace {
     atrbvh_u32 boxes;   /* 0 triangles, 1 boxes */
     atrbvh_u32 indexed;
     atrbvh_u32 count_cost; /* 1: write each ray's box and primitive tests */
-    atrbvh_u32 pad1;
+    atrbvh_u32 float_slabs; /* 1: the device keeps float subnormals, so
+                             * rays may take the float node test */
 } atrbvh_kargs_trace;
 
 /* The cost model from a struct's fields. */

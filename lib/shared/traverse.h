@@ -11,18 +11,22 @@
  * requires byte strides that are multiples of 4).
  *
  * The robustness rules (see lib/traverse.c and atrbvh(3), "Ray queries"):
- * conservative slab test with Ize's 1 + 2*gamma(3) widening of the far
- * distance, watertight Woop/Benthin/Wald triangle test in double, box
+ * conservative slab test with Ize's widening of the far distance, in
+ * single precision for the rays where that is safe (atrbvh_trav_setup)
+ * and in double for the others, watertight Woop/Benthin/Wald triangle
+ * test in double, box
  * primitives as surfaces, closest-hit ties to the lower primitive index,
  * near-first traversal with a TRAVERSE_STACK-entry stack and a linear pass
  * over the leaves when a (hand-made) tree is deeper than that.
  *
  * Portability: there is no single-precision division (OpenCL allows
  * 2.5 ulp for it without -cl-fp32-correctly-rounded-divide-sqrt): the
- * slab distances use the double reciprocal 1.0 / (double)d, and the
- * triangle test is in double.  Every float operation left is a
- * comparison or a conversion, which OpenCL rounds correctly; the double
- * ones (division included) are IEEE under cl_khr_fp64.
+ * reciprocal direction is 1.0 / (double)d (rounded to float for the float
+ * slab test), and the triangle test is in double.  The float operations
+ * are additions, subtractions, multiplications, comparisons and
+ * conversions, which OpenCL rounds correctly; subnormal results must be
+ * kept, so a device without CL_FP_DENORM gets float_slabs 0 (cl/trace.c).
+ * The double ones (division included) are IEEE under cl_khr_fp64.
  */
 #ifndef ATRBVH_SHARED_TRAVERSE_H
 #define ATRBVH_SHARED_TRAVERSE_H
@@ -34,12 +38,37 @@
 #endif
 #define ATRBVH_TRAV_INF INFINITY
 
+/* The node test and the traversal loop inlined on the CPU (GCC otherwise
+ * keeps the node test out of line: a call and the ray's fields reloaded
+ * from memory per box). */
+#if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__))
+#define ATRBVH_TRAV_HOT static inline __attribute__((always_inline))
+#else
+#define ATRBVH_TRAV_HOT ATRBVH_FN
+#endif
+
 #define ATRBVH_TRAVERSE_STACK 256
 #define ATRBVH_TRAV_FLT_MAX 3.402823466e+38f
 /* 1 + 2*gamma(3) and 1 - 2*gamma(3), gamma(n) = n*u / (1 - n*u), u = 2^-24,
  * rounded outwards. */
 #define ATRBVH_TRAV_WIDEN_UP 1.00000036f
 #define ATRBVH_TRAV_WIDEN_DOWN 0.99999964f
+/* The single-precision node test (atrbvh_trav_node_hit_f).  The far
+ * distance is widened by 1 + 2^-21 = 1 + 8u, above Ize's 1 + 2*gamma(3)
+ * (= 1 + 6u + O(u^2)): the reciprocal is rounded twice (double, then
+ * float), one more rounding of at most u(1 + 2^-29).  Then 2^-146 is added:
+ * results in the subnormal range have absolute errors of up to 2^-150 per
+ * rounding, which no relative factor covers. */
+#define ATRBVH_TRAV_WIDEN_F 0x1.000008p+0f
+#define ATRBVH_TRAV_SLACK_F 0x1p-146f
+/* A ray takes the float test when every direction component has a
+ * magnitude in [2^-125, 2^125] (its reciprocal is a finite normal float;
+ * a zero component takes the double test, where 0 * inf gives NaN),
+ * its origin and the root box lie within +-2^126 (b - o cannot overflow)
+ * and tmin >= 0. */
+#define ATRBVH_TRAV_F_DIR_MIN 0x1p-125f
+#define ATRBVH_TRAV_F_DIR_MAX 0x1p+125f
+#define ATRBVH_TRAV_F_COORD_MAX 0x1p+126f
 /* Relative slack on the closest-hit distance when pruning (2^-12). */
 #define ATRBVH_TRAV_PRUNE_SLACK (1.0f / 4096.0f)
 /* The smallest absolute slack on that limit: FLT_MIN. */
@@ -66,11 +95,18 @@ typedef struct atrbvh_trav_scene {
     atrbvh_u64 index_stride;
     ATRBVH_CONST_GLOBAL float *box_data;
     atrbvh_u64 box_stride;
+    /* 1: rays may take the single-precision node test (see
+     * atrbvh_trav_scene_float); 0: every ray takes the double one. */
+    int float_slabs;
 } atrbvh_trav_scene;
 
 /* A ray, prepared. */
 typedef struct atrbvh_trav_ray {
-    double orgd[3];  /* the slab tests run in double: see node_hit */
+    /* Node slab tests in float (use_float: see atrbvh_trav_setup) */
+    float orgf[3];
+    float idirf[3];
+    int use_float;
+    double orgd[3];  /* otherwise in double: see atrbvh_trav_node_hit_d */
     double idird[3];
     int sign[3]; /* 1 when idird[k] < 0 (direction -0 included) */
     /* Where a node's near and far planes are among its first six floats
@@ -117,8 +153,28 @@ ATRBVH_FN float atrbvh_trav_widen_limit(float t)
     return r == r ? r : t;
 }
 
+/* Whether the single-precision node test is allowed for the scene:
+ * `allowed` (0 on an OpenCL device that may flush subnormals: its float
+ * results would differ from the CPU's) and the root box within
+ * +-ATRBVH_TRAV_F_COORD_MAX (every box of a valid tree is inside it; NaN
+ * fails). */
+ATRBVH_FN int atrbvh_trav_scene_float(const atrbvh_trav_scene *s, int allowed)
+{
+    ATRBVH_CONST_GLOBAL float *b;
+    int k;
+    if (!allowed || s->node_count == 0u)
+        return 0;
+    b = (ATRBVH_CONST_GLOBAL float *)&s->nodes[0];
+    for (k = 0; k < 6; k++)
+        if (!(atrbvh_trav_absf(b[k]) <= ATRBVH_TRAV_F_COORD_MAX))
+            return 0;
+    return 1;
+}
+
 /* Prepares a ray; 0 when it can hit nothing (NaN or infinite origin or
- * direction, all-zero direction, NaN tmin/tmax, tmin > tmax). */
+ * direction, all-zero direction, NaN tmin/tmax, tmin > tmax).  Sets
+ * use_float by the ray alone (see ATRBVH_TRAV_F_DIR_MIN); the traversal
+ * clears it when the scene does not allow it (atrbvh_trav_scene_float). */
 ATRBVH_FN int atrbvh_trav_setup(const float *origin, const float *dir,
                                 float tmin, float tmax, atrbvh_trav_ray *r)
 {
@@ -147,6 +203,17 @@ ATRBVH_FN int atrbvh_trav_setup(const float *origin, const float *dir,
     }
     r->tmin = tmin;
     r->tmax = tmax;
+    r->use_float = tmin >= 0.0f;
+    for (k = 0; k < 3; k++) {
+        float a = atrbvh_trav_absf(dir[k]);
+        /* the double reciprocal rounded to float: OpenCL's float division
+         * is not correctly rounded, the conversion is */
+        r->orgf[k] = origin[k];
+        r->idirf[k] = (float)r->idird[k];
+        if (!(atrbvh_trav_absf(origin[k]) <= ATRBVH_TRAV_F_COORD_MAX) ||
+            !(a >= ATRBVH_TRAV_F_DIR_MIN && a <= ATRBVH_TRAV_F_DIR_MAX))
+            r->use_float = 0;
+    }
     /* The largest component becomes z (the first on a tie). */
     r->kz = 0;
     if (ad[1] > ad[r->kz])
@@ -186,11 +253,11 @@ ATRBVH_FN float atrbvh_trav_dist_float(double d)
     return (float)d;
 }
 
-/* Conservative ray/node test.  Hit when the slab interval, far end widened,
- * meets [tlo, thi]; *tnear is where it starts.  In double the interval is
- * exact to a few units of 2^-53; widening by the float factor covers that
- * with a wide margin. */
-ATRBVH_FN int atrbvh_trav_node_hit(ATRBVH_CONST_GLOBAL atrbvh_node *n,
+/* Conservative ray/node test in double.  Hit when the slab interval, far
+ * end widened, meets [tlo, thi]; *tnear is where it starts.  In double the
+ * interval is exact to a few units of 2^-53; widening by the float factor
+ * covers that with a wide margin. */
+ATRBVH_FN int atrbvh_trav_node_hit_d(ATRBVH_CONST_GLOBAL atrbvh_node *n,
                                    const atrbvh_trav_ray *r, float tlo,
                                    float thi, float *tnear)
 {
@@ -213,6 +280,168 @@ ATRBVH_FN int atrbvh_trav_node_hit(ATRBVH_CONST_GLOBAL atrbvh_node *n,
         hi = thi;
     *tnear = atrbvh_trav_dist_float(lo);
     return lo <= hi;
+}
+
+/* The same test in single precision, for rays with use_float (Ize, "Robust
+ * BVH ray traversal", JCGT 2013): (b - o) * (1/d) in float, three
+ * roundings of at most u = 2^-24 each in the normal range (b - o cannot
+ * overflow, 1/d is a finite normal float), so the near distances are at
+ * most (1 + u)^3 and the far ones at least (1 - u)^3 times their true
+ * values; the far end, ray limit included, is widened by
+ * ATRBVH_TRAV_WIDEN_F and ATRBVH_TRAV_SLACK_F (subnormal results), which
+ * keeps every box the ray really crosses.  A product beyond FLT_MAX becomes
+ * +-inf: such a box starts or ends beyond any finite hit, as the double
+ * test says too.  With tmin >= 0 a negative far end is rejected either
+ * way, so the widening needs no sign test (the sign of each product is
+ * exact, underflow to 0 included).
+ *
+ * No direction component is 0 on this path, so no distance is NaN for a
+ * valid tree (finite boxes within the root's): each axis's near and far
+ * distances are the min and max of its two planes' distances, with no
+ * choice by the sign.  The CPU computes the six distances with SSE: one
+ * vector (min x, min y, min z, max x) and one (min z, max x, max y,
+ * max z), both read straight from the node.  The scalar code below does
+ * the same operations in the same order with the same operands (x < y ?
+ * x : y is minss/minps, x > y ? x : y is maxss/maxps, NaN and signed zeros
+ * included), so both give the same bits on any input, a hand-made tree
+ * with NaN boxes included; test_clrays compares the CPU's results and
+ * counts with OpenCL's (PoCL runs the scalar code). */
+#if !defined(__OPENCL_VERSION__) && defined(__SSE2__) &&                       \
+    !defined(ATRBVH_TRAV_NO_SSE)
+#define ATRBVH_TRAV_SSE 1
+#include <emmintrin.h>
+typedef struct atrbvh_trav_fray {
+    /* lanes (x, y, z, x) and (z, x, y, z), matching the two loads */
+    __m128 o0, o1, i0, i1;
+    __m128 widen, slack; /* ATRBVH_TRAV_WIDEN_F, ATRBVH_TRAV_SLACK_F */
+} atrbvh_trav_fray;
+
+ATRBVH_TRAV_HOT atrbvh_trav_fray atrbvh_trav_fray_make(const atrbvh_trav_ray *r)
+{
+    atrbvh_trav_fray f;
+    f.o0 = _mm_setr_ps(r->orgf[0], r->orgf[1], r->orgf[2], r->orgf[0]);
+    f.o1 = _mm_setr_ps(r->orgf[2], r->orgf[0], r->orgf[1], r->orgf[2]);
+    f.i0 = _mm_setr_ps(r->idirf[0], r->idirf[1], r->idirf[2], r->idirf[0]);
+    f.i1 = _mm_setr_ps(r->idirf[2], r->idirf[0], r->idirf[1], r->idirf[2]);
+    f.widen = _mm_set1_ps(ATRBVH_TRAV_WIDEN_F);
+    f.slack = _mm_set1_ps(ATRBVH_TRAV_SLACK_F);
+    return f;
+}
+
+ATRBVH_TRAV_HOT int atrbvh_trav_box_f(const float *b,
+                                      const atrbvh_trav_fray *f, float tlo,
+                                      float thi, float *tnear)
+{
+    /* t0: min x, min y, min z, max x; t1: min z, max x, max y, max z */
+    __m128 t0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(b), f->o0), f->i0);
+    __m128 t1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(b + 2), f->o1), f->i1);
+    /* max x, max y, max z, min z */
+    __m128 t1s = _mm_shuffle_ps(t1, t1, _MM_SHUFFLE(0, 3, 2, 1));
+    __m128 nr = _mm_min_ps(t0, t1s), fr = _mm_max_ps(t0, t1s);
+    __m128 lo = _mm_max_ss(nr, _mm_set_ss(tlo));
+    __m128 hi = _mm_min_ss(fr, _mm_set_ss(thi));
+    float l, h;
+    lo = _mm_max_ss(_mm_shuffle_ps(nr, nr, _MM_SHUFFLE(1, 1, 1, 1)), lo);
+    hi = _mm_min_ss(_mm_shuffle_ps(fr, fr, _MM_SHUFFLE(1, 1, 1, 1)), hi);
+    lo = _mm_max_ss(_mm_movehl_ps(nr, nr), lo);
+    hi = _mm_min_ss(_mm_movehl_ps(fr, fr), hi);
+    l = _mm_cvtss_f32(lo);
+    h = _mm_cvtss_f32(hi);
+    h = h * ATRBVH_TRAV_WIDEN_F + ATRBVH_TRAV_SLACK_F;
+    *tnear = l;
+    return l <= h;
+}
+
+/* Both children at once: lane 0 the left, lane 1 the right, each lane the
+ * operations of atrbvh_trav_box_f.  Bit 0: left hit, bit 1: right hit. */
+ATRBVH_TRAV_HOT int atrbvh_trav_box2_f(const float *bl, const float *br,
+                                       const atrbvh_trav_fray *f, float tlo,
+                                       float thi, float *nl, float *nr)
+{
+    __m128 l0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bl), f->o0), f->i0);
+    __m128 l1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bl + 2), f->o1), f->i1);
+    __m128 r0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(br), f->o0), f->i0);
+    __m128 r1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(br + 2), f->o1), f->i1);
+    __m128 ln, lf, rn, rf, n01, n2, f01, f2, lo, hi;
+    l1 = _mm_shuffle_ps(l1, l1, _MM_SHUFFLE(0, 3, 2, 1));
+    r1 = _mm_shuffle_ps(r1, r1, _MM_SHUFFLE(0, 3, 2, 1));
+    ln = _mm_min_ps(l0, l1);
+    lf = _mm_max_ps(l0, l1);
+    rn = _mm_min_ps(r0, r1);
+    rf = _mm_max_ps(r0, r1);
+    /* (x left, x right, y left, y right) and (z left, z right, -, -) */
+    n01 = _mm_unpacklo_ps(ln, rn);
+    n2 = _mm_unpackhi_ps(ln, rn);
+    f01 = _mm_unpacklo_ps(lf, rf);
+    f2 = _mm_unpackhi_ps(lf, rf);
+    lo = _mm_max_ps(n01, _mm_set1_ps(tlo));
+    hi = _mm_min_ps(f01, _mm_set1_ps(thi));
+    lo = _mm_max_ps(_mm_movehl_ps(n01, n01), lo);
+    hi = _mm_min_ps(_mm_movehl_ps(f01, f01), hi);
+    lo = _mm_max_ps(n2, lo);
+    hi = _mm_min_ps(f2, hi);
+    hi = _mm_add_ps(_mm_mul_ps(hi, f->widen), f->slack);
+    *nl = _mm_cvtss_f32(lo);
+    *nr = _mm_cvtss_f32(_mm_shuffle_ps(lo, lo, _MM_SHUFFLE(1, 1, 1, 1)));
+    return _mm_movemask_ps(_mm_cmple_ps(lo, hi)) & 3;
+}
+#else
+typedef struct atrbvh_trav_fray {
+    float o[3], id[3];
+} atrbvh_trav_fray;
+
+ATRBVH_TRAV_HOT atrbvh_trav_fray atrbvh_trav_fray_make(const atrbvh_trav_ray *r)
+{
+    atrbvh_trav_fray f;
+    int k;
+    for (k = 0; k < 3; k++) {
+        f.o[k] = r->orgf[k];
+        f.id[k] = r->idirf[k];
+    }
+    return f;
+}
+
+ATRBVH_TRAV_HOT int atrbvh_trav_box_f(ATRBVH_CONST_GLOBAL float *b,
+                                      const atrbvh_trav_fray *f, float tlo,
+                                      float thi, float *tnear)
+{
+    float x0 = (b[0] - f->o[0]) * f->id[0];
+    float y0 = (b[1] - f->o[1]) * f->id[1];
+    float z0 = (b[2] - f->o[2]) * f->id[2];
+    float x1 = (b[3] - f->o[0]) * f->id[0];
+    float y1 = (b[4] - f->o[1]) * f->id[1];
+    float z1 = (b[5] - f->o[2]) * f->id[2];
+    float nx = x0 < x1 ? x0 : x1, fx = x0 > x1 ? x0 : x1;
+    float ny = y0 < y1 ? y0 : y1, fy = y0 > y1 ? y0 : y1;
+    float nz = z0 < z1 ? z0 : z1, fz = z0 > z1 ? z0 : z1;
+    float lo = nx > tlo ? nx : tlo, hi = fx < thi ? fx : thi;
+    lo = ny > lo ? ny : lo;
+    hi = fy < hi ? fy : hi;
+    lo = nz > lo ? nz : lo;
+    hi = fz < hi ? fz : hi;
+    hi = hi * ATRBVH_TRAV_WIDEN_F + ATRBVH_TRAV_SLACK_F;
+    *tnear = lo;
+    return lo <= hi;
+}
+#endif
+
+ATRBVH_FN int atrbvh_trav_node_hit_f(ATRBVH_CONST_GLOBAL atrbvh_node *n,
+                                     const atrbvh_trav_ray *r, float tlo,
+                                     float thi, float *tnear)
+{
+    atrbvh_trav_fray f = atrbvh_trav_fray_make(r);
+    return atrbvh_trav_box_f((ATRBVH_CONST_GLOBAL float *)n, &f, tlo, thi,
+                             tnear);
+}
+
+/* The node test of the traversal: float or double by the ray. */
+ATRBVH_FN int atrbvh_trav_node_hit(ATRBVH_CONST_GLOBAL atrbvh_node *n,
+                                   const atrbvh_trav_ray *r, float tlo,
+                                   float thi, float *tnear)
+{
+    if (r->use_float)
+        return atrbvh_trav_node_hit_f(n, r, tlo, thi, tnear);
+    return atrbvh_trav_node_hit_d(n, r, tlo, thi, tnear);
 }
 
 /* Exact ray/box primitive test: entry and exit distances. */
@@ -413,53 +642,69 @@ ATRBVH_FN int atrbvh_trav_linear(const atrbvh_trav_scene *s,
     return 0;
 }
 
-/* The traversal: depth-first, near child first, the far one pushed with
- * its entry distance and skipped on pop when it starts beyond the closest
- * hit.  Returns, for `any`, whether anything was hit; otherwise whether
- * best holds a hit. */
-ATRBVH_FN int atrbvh_trav_run(const atrbvh_trav_scene *s,
-                              const atrbvh_trav_ray *r, int any,
-                              atrbvh_trav_best *best)
+/* The boxes of the two children: bit 0 left hit, bit 1 right hit, and
+ * their entry distances. */
+ATRBVH_TRAV_HOT int atrbvh_trav_children(ATRBVH_CONST_GLOBAL atrbvh_node *nodes,
+                                         atrbvh_u32 l, atrbvh_u32 rr,
+                                         const atrbvh_trav_ray *r,
+                                         const atrbvh_trav_fray *f,
+                                         int use_float, float tlo, float thi,
+                                         float *nl, float *nr)
+{
+    if (use_float) {
+#ifdef ATRBVH_TRAV_SSE
+        return atrbvh_trav_box2_f((const float *)&nodes[l],
+                                  (const float *)&nodes[rr], f, tlo, thi, nl,
+                                  nr);
+#else
+        int hl = atrbvh_trav_box_f((ATRBVH_CONST_GLOBAL float *)&nodes[l], f,
+                                   tlo, thi, nl);
+        int hr = atrbvh_trav_box_f((ATRBVH_CONST_GLOBAL float *)&nodes[rr], f,
+                                   tlo, thi, nr);
+        return hl | (hr << 1);
+#endif
+    }
+    return atrbvh_trav_node_hit_d(&nodes[l], r, tlo, thi, nl) |
+           (atrbvh_trav_node_hit_d(&nodes[rr], r, tlo, thi, nr) << 1);
+}
+
+/* The loop of atrbvh_trav_run past the root, inlined twice: use_float
+ * constant 1 and 0.  The box tests are counted in a local and the pruning
+ * limit kept in one (reread after each leaf), the ray's float fields in
+ * `f`: the leaf test writes through `best`, which the compiler cannot tell
+ * apart from *r, so it would reload them per box. */
+ATRBVH_TRAV_HOT int atrbvh_trav_loop(const atrbvh_trav_scene *s,
+                                     const atrbvh_trav_ray *r, int any,
+                                     atrbvh_trav_best *best, int use_float,
+                                     float tlo)
 {
     atrbvh_u32 stack_node[ATRBVH_TRAVERSE_STACK];
     float stack_t[ATRBVH_TRAVERSE_STACK];
-    atrbvh_u32 sp = 0, cur = 0;
+    atrbvh_u32 sp = 0, cur = 0, nb = 1;
     ATRBVH_CONST_GLOBAL atrbvh_node *nodes = s->nodes;
     atrbvh_u64 count = s->node_count;
-    /* the lower end of the node interval, widened like the upper one */
-    float tlo = r->tmin - atrbvh_trav_absf(r->tmin) * ATRBVH_TRAV_PRUNE_SLACK;
-    float tn;
-
-    if (!(tlo == tlo))
-        tlo = r->tmin;
-    best->t = r->tmax;
-    best->u = best->v = 0.0f;
-    best->prim = ATRBVH_NO_HIT;
-    best->tlim = atrbvh_trav_widen_limit(r->tmax);
-    best->box_tests = best->prim_tests = 0u;
-    if (count == 0u)
-        return 0;
-    best->box_tests++;
-    if (!atrbvh_trav_node_hit(&nodes[0], r, tlo, best->tlim, &tn))
-        return 0;
+    atrbvh_trav_fray f = atrbvh_trav_fray_make(r);
+    float thi = best->tlim;
+    int ret;
     for (;;) {
         ATRBVH_CONST_GLOBAL atrbvh_node *n = &nodes[cur];
-        int descended = 0;
-        if (n->count > 0u) {
-            if (atrbvh_trav_leaf(s, n, r, any, best))
-                return 1;
+        atrbvh_u32 ncount = n->count, nindex = n->index;
+        if (ncount > 0u) {
+            int done = atrbvh_trav_leaf(s, n, r, any, best);
+            thi = best->tlim;
+            if (done) {
+                ret = 1;
+                break;
+            }
         } else {
-            atrbvh_u32 l = cur + 1u, rr = n->index;
+            atrbvh_u32 l = cur + 1u, rr = nindex;
             /* rr <= l or out of range: never for a valid tree (pop) */
             if (rr > l && (atrbvh_u64)rr < count) {
                 float nl, nr;
-                int hl, hr;
-                best->box_tests += 2u;
-                hl = atrbvh_trav_node_hit(&nodes[l], r, tlo, best->tlim,
-                                              &nl);
-                hr = atrbvh_trav_node_hit(&nodes[rr], r, tlo, best->tlim,
-                                              &nr);
-                if (hl && hr) {
+                int h = atrbvh_trav_children(nodes, l, rr, r, &f, use_float,
+                                             tlo, thi, &nl, &nr);
+                nb += 2u;
+                if (h == 3) {
                     atrbvh_u32 near_node = l, far_node = rr;
                     float far_t = nr;
                     if (nr < nl) {
@@ -468,6 +713,7 @@ ATRBVH_FN int atrbvh_trav_run(const atrbvh_trav_scene *s,
                         far_t = nl;
                     }
                     if (sp == ATRBVH_TRAVERSE_STACK) {
+                        best->box_tests += nb;
                         if (atrbvh_trav_linear(s, r, any, best, tlo))
                             return 1;
                         return any ? 0 : best->prim != ATRBVH_NO_HIT;
@@ -476,28 +722,55 @@ ATRBVH_FN int atrbvh_trav_run(const atrbvh_trav_scene *s,
                     stack_t[sp] = far_t;
                     sp++;
                     cur = near_node;
-                    descended = 1;
-                } else if (hl) {
-                    cur = l;
-                    descended = 1;
-                } else if (hr) {
-                    cur = rr;
-                    descended = 1;
+                    continue;
+                }
+                if (h) {
+                    cur = h == 1 ? l : rr;
+                    continue;
                 }
             }
         }
-        if (descended)
-            continue;
-        for (;;) { /* pop */
-            if (sp == 0u)
-                return any ? 0 : best->prim != ATRBVH_NO_HIT;
+        /* pop: the next entry that starts within the closest hit */
+        while (sp > 0u && !(stack_t[sp - 1u] <= thi))
             sp--;
-            if (stack_t[sp] <= best->tlim) {
-                cur = stack_node[sp];
-                break;
-            }
+        if (sp == 0u) {
+            ret = any ? 0 : best->prim != ATRBVH_NO_HIT;
+            break;
         }
+        sp--;
+        cur = stack_node[sp];
     }
+    best->box_tests += nb;
+    return ret;
+}
+
+/* The traversal: depth-first, near child first, the far one pushed with
+ * its entry distance and skipped on pop when it starts beyond the closest
+ * hit.  Returns, for `any`, whether anything was hit; otherwise whether
+ * best holds a hit. */
+ATRBVH_FN int atrbvh_trav_run(const atrbvh_trav_scene *s,
+                              const atrbvh_trav_ray *r, int any,
+                              atrbvh_trav_best *best)
+{
+    /* the lower end of the node interval, widened like the upper one */
+    float tlo = r->tmin - atrbvh_trav_absf(r->tmin) * ATRBVH_TRAV_PRUNE_SLACK;
+    float tn;
+    if (!(tlo == tlo))
+        tlo = r->tmin;
+    best->t = r->tmax;
+    best->u = best->v = 0.0f;
+    best->prim = ATRBVH_NO_HIT;
+    best->tlim = atrbvh_trav_widen_limit(r->tmax);
+    best->box_tests = best->prim_tests = 0u;
+    if (s->node_count == 0u)
+        return 0;
+    if (!atrbvh_trav_node_hit(s->nodes, r, tlo, best->tlim, &tn)) {
+        best->box_tests = 1u;
+        return 0;
+    }
+    if (r->use_float)
+        return atrbvh_trav_loop(s, r, any, best, 1, tlo);
+    return atrbvh_trav_loop(s, r, any, best, 0, tlo);
 }
 
 /* Closest hit of one ray with t in [tmin, tmax]: hit->primitive
@@ -522,6 +795,8 @@ ATRBVH_FN int atrbvh_trav_closest_cost(const atrbvh_trav_scene *s,
     /* a ray that can hit nothing is not traversed: cost 0 */
     if (!atrbvh_trav_setup(origin, dir, tmin, tmax, &r))
         return 0;
+    if (!s->float_slabs)
+        r.use_float = 0;
     hit = atrbvh_trav_run(s, &r, 0, &best);
     *box_tests = best.box_tests;
     *prim_tests = best.prim_tests;
@@ -559,6 +834,8 @@ ATRBVH_FN int atrbvh_trav_any_cost(const atrbvh_trav_scene *s,
     *prim_tests = 0u;
     if (!atrbvh_trav_setup(origin, dir, tmin, tmax, &r))
         return 0;
+    if (!s->float_slabs)
+        r.use_float = 0;
     hit = atrbvh_trav_run(s, &r, 1, &best);
     *box_tests = best.box_tests;
     *prim_tests = best.prim_tests;
