@@ -287,7 +287,7 @@ static unsigned long double_factorial_odd(unsigned n) /* (2n-3)!! */
 
 START_TEST(trbvh_is_optimal)
 {
-    static atrbvh_box sbox[1u << ATRBVH_TRBVH_MAX];
+    static float sbox[6u << ATRBVH_TRBVH_MAX];
     static double scost[1u << ATRBVH_TRBVH_MAX];
     static uint32_t scount[1u << ATRBVH_TRBVH_MAX];
     static uint32_t ssplit[1u << ATRBVH_TRBVH_MAX];
@@ -345,7 +345,7 @@ END_TEST
  * for n = 8 (135135 trees); 9 and 10 are checked for self-consistency. */
 START_TEST(trbvh_large_n)
 {
-    static atrbvh_box sbox[1u << ATRBVH_TRBVH_MAX];
+    static float sbox[6u << ATRBVH_TRBVH_MAX];
     static double scost[1u << ATRBVH_TRBVH_MAX];
     static uint32_t scount[1u << ATRBVH_TRBVH_MAX];
     static uint32_t ssplit[1u << ATRBVH_TRBVH_MAX];

@@ -245,7 +245,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     for (k = 0; k < threads; k++) {
         unsigned char *base = block + (size_t)k * stride;
         memset(&workers[k], 0, sizeof workers[k]);
-        workers[k].trbvh.box = (atrbvh_box *)(void *)base;
+        workers[k].trbvh.box = (float *)(void *)base;
         workers[k].trbvh.cost = (double *)(void *)(base + off_cost);
         workers[k].trbvh.count = (uint32_t *)(void *)(base + off_count);
         workers[k].trbvh.split = (uint32_t *)(void *)(base + off_split);
