@@ -898,7 +898,48 @@ ATRBVH_FN void atrbvh_treelet_refresh(const atrbvh_treelet_tree *t,
  * clustering when `agglomerative`), and writes it back when it is
  * strictly cheaper.  Returns 1 when written back.  The CPU driver
  * (optimise.c) and the OpenCL kernel (cl/kernels.cl) both call this; only
- * the scratch (`s` for TRBVH, `dist` for ATRBVH) and the walk differ. */
+ * the scratch (`s` for TRBVH, `dist` for ATRBVH) and the walk differ.
+ * The formed treelet is left in *tl (its internal ids are the ones a
+ * write-back reuses). */
+ATRBVH_FN int atrbvh_treelet_process_tl(const atrbvh_treelet_tree *t,
+                                        const atrbvh_cost_params *p,
+                                        atrbvh_u32 root, atrbvh_u32 n,
+                                        int agglomerative,
+                                        atrbvh_trbvh_scratch s,
+                                        ATRBVH_GLOBAL double *dist,
+                                        atrbvh_treelet *tl)
+{
+    atrbvh_treelet_leaves lv;
+    atrbvh_treelet_topo topo;
+    double found, cost;
+    atrbvh_treelet_refresh(t, p, root);
+    tl->n = 0;
+    if (atrbvh_treelet_form(t, root, n, tl) < 3u)
+        return 0;
+    atrbvh_treelet_gather(t, tl, &lv);
+    /* A quick reject: the DP's optimum (and the agglomerative root merge)
+     * is what evaluate recomputes (the same sums in the same order), so
+     * nothing strictly cheaper exists when it finds none. */
+    if (agglomerative) {
+        found = atrbvh_agglomerate(p, tl->n, &lv, dist, &topo);
+        if (!(found < t->cost[root]))
+            return 0;
+        /* The merges already hold evaluate's boxes, counts and costs (the
+         * root's is `found`); only the pre-order is missing. */
+        atrbvh_treelet_preorder(tl->n, &topo);
+        cost = found;
+    } else {
+        found = atrbvh_trbvh_dp(p, tl->n, &lv, s, &topo);
+        if (!(found < t->cost[root]))
+            return 0;
+        cost = atrbvh_treelet_evaluate(p, tl->n, &lv, &topo);
+    }
+    if (!(cost < t->cost[root]))
+        return 0;
+    atrbvh_treelet_write(t, tl, &topo);
+    return 1;
+}
+
 ATRBVH_FN int atrbvh_treelet_process(const atrbvh_treelet_tree *t,
                                      const atrbvh_cost_params *p,
                                      atrbvh_u32 root, atrbvh_u32 n,
@@ -907,34 +948,8 @@ ATRBVH_FN int atrbvh_treelet_process(const atrbvh_treelet_tree *t,
                                      ATRBVH_GLOBAL double *dist)
 {
     atrbvh_treelet tl;
-    atrbvh_treelet_leaves lv;
-    atrbvh_treelet_topo topo;
-    double found, cost;
-    atrbvh_treelet_refresh(t, p, root);
-    if (atrbvh_treelet_form(t, root, n, &tl) < 3u)
-        return 0;
-    atrbvh_treelet_gather(t, &tl, &lv);
-    /* A quick reject: the DP's optimum (and the agglomerative root merge)
-     * is what evaluate recomputes (the same sums in the same order), so
-     * nothing strictly cheaper exists when it finds none. */
-    if (agglomerative) {
-        found = atrbvh_agglomerate(p, tl.n, &lv, dist, &topo);
-        if (!(found < t->cost[root]))
-            return 0;
-        /* The merges already hold evaluate's boxes, counts and costs (the
-         * root's is `found`); only the pre-order is missing. */
-        atrbvh_treelet_preorder(tl.n, &topo);
-        cost = found;
-    } else {
-        found = atrbvh_trbvh_dp(p, tl.n, &lv, s, &topo);
-        if (!(found < t->cost[root]))
-            return 0;
-        cost = atrbvh_treelet_evaluate(p, tl.n, &lv, &topo);
-    }
-    if (!(cost < t->cost[root]))
-        return 0;
-    atrbvh_treelet_write(t, &tl, &topo);
-    return 1;
+    return atrbvh_treelet_process_tl(t, p, root, n, agglomerative, s, dist,
+                                     &tl);
 }
 
 #endif
