@@ -37,6 +37,11 @@ typedef struct opt_worker {
 
 #include <string.h>
 
+/* The TRBVH marks hold a round + 1 in a byte. */
+#if ATRBVH_ROUNDS_MAX > 254
+#error "optimise.c: rounds no longer fit the byte marks"
+#endif
+
 /* Subtrees smaller than this are walked serially inside one task. */
 #define TASK_CUTOFF 2048u
 /* Deeper task recursion falls back to the serial walk (bounds the stack
@@ -273,7 +278,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     if (cfg->method == ATRBVH_METHOD_TRBVH)
         marks = (size_t)(t->n - 1u);
     if (!atrbvh_i_mul_size((size_t)threads, stride, &total) ||
-        total + 2u * marks < total)
+        marks > ((size_t)-1 - total) / 2u)
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
                              "optimise: scratch size overflows");
     total += 2u * marks;
