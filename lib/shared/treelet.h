@@ -330,10 +330,10 @@ ATRBVH_FN void atrbvh_trbvh_subsets(atrbvh_u32 n, atrbvh_u32 k,
  * among equal minima (strict <).  *bestp receives it. */
 #define ATRBVH_TRBVH_TRY(c, part)                                              \
     do {                                                                       \
-        if ((c) < best) {                                                      \
-            best = (c);                                                        \
-            *bestp = (part);                                                   \
-        }                                                                      \
+        const double c_ = (c);                                                 \
+        const atrbvh_trbvh_mask p_ = (part);                                   \
+        bp = c_ < best ? p_ : bp;                                              \
+        best = c_ < best ? c_ : best;                                          \
     } while (0)
 #if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
 /* SSE2: with a < b the two lowest leaves of delta and X a subset of the
@@ -352,11 +352,13 @@ ATRBVH_FN double atrbvh_trbvh_best(const double *cost, atrbvh_trbvh_mask S,
     const atrbvh_trbvh_mask delta = (S - 1u) & S;
     const atrbvh_trbvh_mask a = delta & (0u - delta), d1 = delta ^ a;
     const atrbvh_trbvh_mask b = d1 & (0u - d1), rest = d1 ^ b, ab = a | b;
+    atrbvh_trbvh_mask bp = a; /* a local: a conditional move, no branch */
     double best = base + cost[a], c;
     best = best + cost[S ^ a];
-    *bestp = a;
-    if (b == 0u)
+    if (b == 0u) {
+        *bestp = a;
         return best; /* |S| = 2 */
+    }
     c = base + cost[b];
     c = c + cost[S ^ b];
     ATRBVH_TRBVH_TRY(c, b);
@@ -390,6 +392,7 @@ ATRBVH_FN double atrbvh_trbvh_best(const double *cost, atrbvh_trbvh_mask S,
             }
         }
     }
+    *bestp = bp;
     return best;
 }
 #else
@@ -398,15 +401,15 @@ ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
                                    atrbvh_trbvh_mask *bestp)
 {
     const atrbvh_trbvh_mask delta = (S - 1u) & S;
-    atrbvh_trbvh_mask P = delta & (0u - delta);
+    atrbvh_trbvh_mask P = delta & (0u - delta), bp = P;
     double best = base + cost[P];
     best = best + cost[S ^ P];
-    *bestp = P;
     for (P = (P - delta) & delta; P; P = (P - delta) & delta) {
         double c = base + cost[P];
         c = c + cost[S ^ P];
         ATRBVH_TRBVH_TRY(c, P);
     }
+    *bestp = bp;
     return best;
 }
 #endif
