@@ -386,9 +386,10 @@ END_TEST
 /* The subset DP written the plain way (one subset at a time: its box as
  * atrbvh_box_union(box of S minus its highest leaf, that leaf), every
  * partition P = (P - delta) & S in turn, strict <): atrbvh_trbvh_dp
- * computes its tables differently (boxes and areas in a separate pass,
- * four partitions at a time on x86) and must fill them with exactly these
- * bits, split for split, ties included. */
+ * computes its tables differently (boxes, areas and counts in a separate
+ * pass, four subsets at a time on x86; the partition loop over costs
+ * only) and must fill them with exactly these bits, split for split, ties
+ * included. */
 static void plain_dp(const atrbvh_cost_params *p, unsigned n,
                      const atrbvh_treelet_leaves *lv, double *cost,
                      uint32_t *split)
