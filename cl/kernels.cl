@@ -271,7 +271,7 @@ __kernel void opt_round(__global uint *left, __global uint *right,
     if (w >= a.workers)
         return;
     base = scratch + (ulong)w * a.stride;
-    s.box = (__global atrbvh_box *)base;
+    s.box = (__global float *)base;
     s.cost = (__global double *)(base + a.off_cost);
     s.count = (__global uint *)(base + a.off_count);
     s.split = (__global uint *)(base + a.off_split);

@@ -287,7 +287,7 @@ static unsigned long double_factorial_odd(unsigned n) /* (2n-3)!! */
 
 START_TEST(trbvh_is_optimal)
 {
-    static atrbvh_box sbox[1u << ATRBVH_TRBVH_MAX];
+    static float sbox[6u << ATRBVH_TRBVH_MAX];
     static double scost[1u << ATRBVH_TRBVH_MAX];
     static uint32_t scount[1u << ATRBVH_TRBVH_MAX];
     static uint32_t ssplit[1u << ATRBVH_TRBVH_MAX];
@@ -345,7 +345,7 @@ END_TEST
  * for n = 8 (135135 trees); 9 and 10 are checked for self-consistency. */
 START_TEST(trbvh_large_n)
 {
-    static atrbvh_box sbox[1u << ATRBVH_TRBVH_MAX];
+    static float sbox[6u << ATRBVH_TRBVH_MAX];
     static double scost[1u << ATRBVH_TRBVH_MAX];
     static uint32_t scount[1u << ATRBVH_TRBVH_MAX];
     static uint32_t ssplit[1u << ATRBVH_TRBVH_MAX];
@@ -379,6 +379,121 @@ START_TEST(trbvh_large_n)
             }
         }
     }
+}
+END_TEST
+
+/* ------------------------------------------------- plain subset DP */
+/* The subset DP written the plain way (one subset at a time: its box as
+ * atrbvh_box_union(box of S minus its highest leaf, that leaf), every
+ * partition P = (P - delta) & S in turn, strict <): atrbvh_trbvh_dp
+ * computes its tables differently (boxes, areas and counts in a separate
+ * pass, four subsets at a time on x86; the partition loop over costs
+ * only) and must fill them with exactly these bits, split for split, ties
+ * included. */
+static void plain_dp(const atrbvh_cost_params *p, unsigned n,
+                     const atrbvh_treelet_leaves *lv, double *cost,
+                     uint32_t *split)
+{
+    static atrbvh_box box[1u << ATRBVH_TRBVH_MAX];
+    static uint32_t cnt[1u << ATRBVH_TRBVH_MAX];
+    uint32_t k, S;
+    for (k = 0; k < n; k++) {
+        uint32_t bit = 1u << k;
+        box[bit] = lv->box[k];
+        cnt[bit] = lv->count[k];
+        cost[bit] = lv->cost[k];
+        split[bit] = 0;
+        for (S = bit + 1u; S < 2u * bit; S++) {
+            uint32_t delta = (S - 1u) & S, P = (0u - delta) & S, bestp;
+            double area, base, best;
+            box[S] = atrbvh_box_union(box[S ^ bit], lv->box[k]);
+            cnt[S] = cnt[S ^ bit] + lv->count[k];
+            area = atrbvh_box_area(box[S]);
+            base = p->ci * area;
+            best = base + cost[P];
+            best = best + cost[S ^ P];
+            bestp = P;
+            for (P = (P - delta) & S; P; P = (P - delta) & S) {
+                double c = base + cost[P];
+                c = c + cost[S ^ P];
+                if (c < best) {
+                    best = c;
+                    bestp = P;
+                }
+            }
+            if (atrbvh_may_collapse(p, cnt[S])) {
+                double flat = p->ct * area;
+                flat = flat * (double)cnt[S];
+                if (flat < best)
+                    best = flat;
+            }
+            cost[S] = best;
+            split[S] = bestp;
+        }
+    }
+}
+
+START_TEST(trbvh_matches_plain_dp)
+{
+    static float sbox[6u << ATRBVH_TRBVH_MAX];
+    static double scost[1u << ATRBVH_TRBVH_MAX];
+    static uint32_t scount[1u << ATRBVH_TRBVH_MAX];
+    static uint32_t ssplit[1u << ATRBVH_TRBVH_MAX];
+    static double rcost[1u << ATRBVH_TRBVH_MAX];
+    static uint32_t rsplit[1u << ATRBVH_TRBVH_MAX];
+    atrbvh_trbvh_scratch s;
+    rng r;
+    unsigned n, trial, ties = 0;
+    int model;
+    s.box = sbox;
+    s.cost = scost;
+    s.count = scount;
+    s.split = ssplit;
+    rng_seed(&r, 12);
+    for (model = 0; model < 3; model++) {
+        atrbvh_cost_params p = cost_model(model);
+        for (n = ATRBVH_TRBVH_MIN; n <= ATRBVH_TRBVH_MAX; n++) {
+            for (trial = 0; trial < 10u; trial++) {
+                atrbvh_treelet_leaves lv;
+                atrbvh_treelet_topo topo;
+                uint32_t S, P;
+                double dp;
+                random_leaves(&r, n, (int)(trial % 5u), &p, &lv);
+                if (trial >= 5u) {
+                    /* equal leaf costs: many partitions tie exactly */
+                    for (S = 0; S < n; S++)
+                        lv.cost[S] = (double)(1u + S % 2u);
+                }
+                dp = atrbvh_trbvh_dp(&p, n, &lv, s, &topo);
+                plain_dp(&p, n, &lv, rcost, rsplit);
+                for (S = 1; S < (1u << n); S++) {
+                    ck_assert_msg(memcmp(&scost[S], &rcost[S],
+                                         sizeof(double)) == 0,
+                                  "model %d n %u trial %u subset %#x: cost "
+                                  "%.17g, plain %.17g",
+                                  model, n, trial, S, scost[S], rcost[S]);
+                    ck_assert_msg(ssplit[S] == rsplit[S],
+                                  "model %d n %u trial %u subset %#x: split "
+                                  "%#x, plain %#x",
+                                  model, n, trial, S, ssplit[S], rsplit[S]);
+                    /* count subsets where a later partition ties */
+                    if ((S & (S - 1u)) != 0u) {
+                        uint32_t delta = (S - 1u) & S;
+                        for (P = (0u - delta) & S; P; P = (P - delta) & S) {
+                            if (P > rsplit[S] && !(rcost[P] + rcost[S ^ P] !=
+                                                   rcost[rsplit[S]] +
+                                                       rcost[S ^ rsplit[S]]))
+                                ties++;
+                        }
+                    }
+                }
+                ck_assert(memcmp(&dp, &rcost[(1u << n) - 1u], sizeof dp) ==
+                          0);
+            }
+        }
+    }
+    /* the sweep did exercise ties (the first of equal minima is kept) */
+    ck_assert_uint_gt(ties, 1000u);
 }
 END_TEST
 
@@ -1113,6 +1228,7 @@ static Suite *optimise_suite(void)
     tcase_add_test(tc, formation_rule);
     tcase_add_test(tc, trbvh_is_optimal);
     tcase_add_test(tc, trbvh_large_n);
+    tcase_add_test(tc, trbvh_matches_plain_dp);
     tcase_add_test(tc, atrbvh_is_naive_greedy);
     suite_add_tcase(s, tc);
 

@@ -35,9 +35,15 @@ typedef struct opt_worker {
     double *dist;               /* n(n-1)/2 distances (ATRBVH)          */
     uint64_t treelets;          /* treelets processed                   */
     uint64_t applied;           /* of which restructured                */
+    uint64_t skipped;           /* TRBVH: known unchanged, not processed */
 } opt_worker;
 
 #include <string.h>
+
+/* The TRBVH marks hold a round + 1 in a byte. */
+#if ATRBVH_ROUNDS_MAX > 254
+#error "optimise.c: rounds no longer fit the byte marks"
+#endif
 
 /* Subtrees smaller than this are walked serially inside one task. */
 #define TASK_CUTOFF 2048u
@@ -52,6 +58,10 @@ typedef struct walk_ctx {
     unsigned n;
     uint32_t gamma;
     opt_worker *workers;
+    /* TRBVH only (NULL otherwise): per internal node, the last round + 1
+     * in which its subtree changed (chg) and in which it was processed
+     * without a change since (same), 0 for never; see process(). */
+    unsigned char *chg, *same;
     /* Progress inside a round: treelets done of about `crown`; only the
      * calling thread (OpenMP thread 0) reports, every `step` treelets.
      * Progress and cancellation never change what a treelet computes. */
@@ -101,7 +111,9 @@ static int in_crown(const walk_ctx *c, uint32_t node)
 static void process(walk_ctx *c, uint32_t node)
 {
     opt_worker *w = c->workers;
-    int cancel;
+    atrbvh_treelet tl;
+    int cancel, applied;
+    unsigned char r1 = (unsigned char)(c->round + 1u);
 #ifdef _OPENMP
 #pragma omp atomic read
 #endif
@@ -111,14 +123,51 @@ static void process(walk_ctx *c, uint32_t node)
 #ifdef _OPENMP
     w += omp_get_thread_num();
 #endif
+    /* TRBVH: skip a treelet that is known to change nothing.  A treelet
+     * is a pure function of its root's subtree (refresh, form, DP, the
+     * strict comparison), so when the node was processed without a change
+     * in an earlier round and nothing in its subtree changed since, it
+     * would again change nothing.  chg is carried up the post-order walk
+     * (children are final before their parent; a child outside the crown
+     * was not touched this round except through a write-back, which marks
+     * it); a write-back marks the ids it reused, so a
+     * node's `same` never outlives its content.  Skipping changes no
+     * bit of the tree, only the work done. */
+    if (c->chg) {
+        uint32_t l = c->t.left[node], r = c->t.right[node];
+        unsigned char ch = c->chg[node];
+        if (l < c->t.n_internal && c->chg[l] > ch)
+            ch = c->chg[l];
+        if (r < c->t.n_internal && c->chg[r] > ch)
+            ch = c->chg[r];
+        c->chg[node] = ch;
+        if (c->same[node] != 0 && ch <= c->same[node]) {
+            w->skipped++;
+            progress(c);
+            return;
+        }
+    }
     /* One treelet: form, new topology (TRBVH: the subset DP of Karras &
      * Aila 2013; ATRBVH: the agglomerative clustering of Domingues &
      * Pedrini 2015), write back if strictly cheaper - all of it
      * shared/treelet.h's atrbvh_treelet_process, which the OpenCL kernel
      * calls too. */
-    int applied = atrbvh_treelet_process(&c->t, c->cost, node, c->n,
-                                         c->method == ATRBVH_METHOD_ATRBVH,
-                                         w->trbvh, w->dist);
+    applied = atrbvh_treelet_process_tl(&c->t, c->cost, node, c->n,
+                                        c->method == ATRBVH_METHOD_ATRBVH,
+                                        w->trbvh, w->dist, &tl);
+    if (c->chg) {
+        /* A write-back reused the treelet's internal ids (the root's
+         * too) for new nodes: changed, and not known unchanged. */
+        if (applied) {
+            uint32_t k;
+            for (k = 0; k + 1u < tl.n; k++) {
+                c->chg[tl.internal[k]] = r1;
+                c->same[tl.internal[k]] = 0;
+            }
+        } else {
+            c->same[node] = r1;
+        }
+    }
     w->treelets++;
     w->applied += (uint64_t)applied;
     progress(c);
@@ -234,7 +283,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     opt_worker *workers = NULL;
     unsigned char *block;
     size_t subsets = 0, pairs = 0, stride = 0, off_cost, off_count,
-           off_split, off_dist, total;
+           off_split, off_dist, total, marks = 0;
     unsigned round, n = cfg->treelet_size;
     /* The largest treelet of the build (ATRBVH_TREELET_AUTO: the rule's
      * largest) and the smallest subtree that can hold a treelet. */
@@ -282,9 +331,15 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     off_split = off_count + ALIGN64(subsets * sizeof(uint32_t));
     off_dist = off_split + ALIGN64(subsets * sizeof(uint32_t));
     stride = off_dist + ALIGN64(pairs * sizeof(double));
-    if (!atrbvh_i_mul_size((size_t)threads, stride, &total))
+    /* TRBVH: after the workers' parts, two marks per internal node (chg,
+     * same: see process()), rounds + 1 <= 65 fitting a byte. */
+    if (cfg->method == ATRBVH_METHOD_TRBVH)
+        marks = (size_t)(t->n - 1u);
+    if (!atrbvh_i_mul_size((size_t)threads, stride, &total) ||
+        marks > ((size_t)-1 - total) / 2u)
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
                              "optimise: scratch size overflows");
+    total += 2u * marks;
     if (!scratch) {
         memset(&own, 0, sizeof own);
         scratch = &own;
@@ -303,13 +358,19 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     for (k = 0; k < threads; k++) {
         unsigned char *base = block + (size_t)k * stride;
         memset(&workers[k], 0, sizeof workers[k]);
-        workers[k].trbvh.box = (atrbvh_box *)(void *)base;
+        workers[k].trbvh.box = (float *)(void *)base;
         workers[k].trbvh.cost = (double *)(void *)(base + off_cost);
         workers[k].trbvh.count = (uint32_t *)(void *)(base + off_count);
         workers[k].trbvh.split = (uint32_t *)(void *)(base + off_split);
         workers[k].dist = (double *)(void *)(base + off_dist);
         if (cfg->method == ATRBVH_METHOD_ATRBVH)
             atrbvh_agg_layout(base + off_dist, nmax, &workers[k].agg);
+    }
+    c.chg = c.same = NULL;
+    if (marks > 0u) {
+        c.chg = block + (size_t)threads * stride;
+        c.same = c.chg + marks;
+        memset(c.chg, 0, 2u * marks);
     }
 
     c.t.left = t->left;
