@@ -189,8 +189,9 @@ static int copy_out(void *dst_ptr, const void *src, size_t n, size_t size)
     return 1;
 }
 
-/* The refit's tree; an LBVH's refit keeps no costs: the copy gets them
- * as the refit computes them (shared/stages.h), bottom-up. */
+/* The tree after the refit (or the optimise stage, which an LBVH skips);
+ * an LBVH's refit keeps no costs: the copy gets them as the refit
+ * computes them (shared/stages.h), bottom-up. */
 static atrbvh_status capture_refit(atrbvh_i_tree *dst,
                                    const atrbvh_i_tree *src,
                                    const atrbvh_cost_params *p)
@@ -259,7 +260,8 @@ static atrbvh_status cpu_capture(atrbvh_device *dev, atrbvh_i_run *run,
              ATRBVH_OK;
         break;
     case ATRBVH_STAGE_OPTIMISE:
-        ok = atrbvh_i_tree_copy(&cap->optimise, &c->tree, 1) == ATRBVH_OK;
+        ok = capture_refit(&cap->optimise, &c->tree, &run->cfg->cost) ==
+             ATRBVH_OK;
         break;
     case ATRBVH_STAGE_COLLAPSE:
         ok = copy_out(&cap->collapse_size, c->size, 2 * n - 1,

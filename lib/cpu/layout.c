@@ -161,10 +161,9 @@ atrbvh_status atrbvh_i_cpu_layout(atrbvh_device *dev, atrbvh_i_run *run,
 #pragma omp single
 #endif
     emit(&x, 0, 0, 0);
-    if (c->tree.box) { /* kept for kept ids: not beside the next output */
-        atrbvh_i_scratch_release(c->scratch, CPU_BOX);
-        c->tree.box = NULL;
-    }
+    /* A handle keeps the node boxes of an optimised tree (read here
+     * beside the output anyway); an LBVH's collapse releases them. */
+    c->tree.box = NULL;
     atrbvh_i_cpu_scratch_end(c);
     return ATRBVH_OK;
 }
