@@ -15,12 +15,15 @@
  * same boxes and counts: the same doubles the refit or a treelet
  * write-back stored), so the cost array is not read and the sizes take
  * its memory (backend.c's plan).  The node boxes are read for the last
- * time here: their array is released at the end, before the layout
- * allocates the output, when the layout can recompute them (layout.c).
+ * time here: an LBVH's array is released at the end, before the layout
+ * allocates the output; an optimised tree's leaf half takes the sizes
+ * instead (the layout recomputes what it needs, layout.c).
  */
 #include "config.h"
 
 #include "cpu.h"
+
+#include <string.h>
 
 #define TASK_CUTOFF 4096u
 
@@ -85,7 +88,20 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
 #endif
     (void)decide(&x, 0);
     run->node_count = c->size[0] & ATRBVH_SIZE_MASK;
-    if (!c->ids && run->cfg->method == ATRBVH_METHOD_LBVH) {
+    if (!c->ids && run->cfg->method != ATRBVH_METHOD_LBVH &&
+        c->scratch->transient) {
+        /* An optimised tree's internal boxes are read by the layout (a
+         * treelet root keeps its old box), its leaves' are the
+         * primitives': the sizes move into the leaves' half of the box
+         * array (4 of its 24 bytes per leaf) and the cost slot goes.  A
+         * handle keeps it instead: re-optimising an animation frame by
+         * frame then allocates nothing of the primitive count. */
+        uint32_t *moved = (uint32_t *)(void *)(c->tree.box + (run->n - 1));
+        memcpy(moved, c->size, (2 * (size_t)run->n - 1) * sizeof *moved);
+        c->size = moved;
+        c->sizes_in_leaf_boxes = 1;
+        atrbvh_i_scratch_release(c->scratch, CPU_SIZE);
+    } else if (!c->ids && run->cfg->method == ATRBVH_METHOD_LBVH) {
         /* the layout recomputes the boxes (layout.c says when it can) */
         atrbvh_i_scratch_release(c->scratch, CPU_BOX);
         c->tree.box = NULL;

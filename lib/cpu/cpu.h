@@ -49,6 +49,9 @@ typedef struct atrbvh_i_cpu_run {
     uint32_t *order;    /* sort: build index of position p   */
     atrbvh_i_tree tree; /* hierarchy ... optimise            */
     uint32_t *size;     /* collapse                          */
+    /* collapse: the sizes moved into the leaves' half of tree.box, whose
+     * boxes the layout then recomputes (layout.c) */
+    int sizes_in_leaf_boxes;
 } atrbvh_i_cpu_run;
 
 /* The tree's topology arrays for n leaves in the device's scratch slots

@@ -18,6 +18,8 @@
  * split references) a leaf's box need not be its primitive's, and after
  * the optimise stage a treelet root keeps the box of its old children,
  * which can differ from the union of the new ones in the sign of a zero.
+ * An optimised tree without kept ids keeps only the internal boxes there
+ * (the sizes took the leaves' half): its leaves' boxes are recomputed.
  */
 #include "config.h"
 
@@ -32,6 +34,7 @@ typedef struct layout_ctx {
     uint32_t *prims;
     /* NULL: the boxes from the geometry below */
     const atrbvh_box *box;
+    int leaf_boxes; /* box holds the leaves' boxes too */
     const atrbvh_geometry *g;
     atrbvh_u64 vstride, istride, bstride; /* in elements */
 } layout_ctx;
@@ -44,7 +47,7 @@ static inline atrbvh_box leaf_box(const layout_ctx *c, uint32_t leaf)
     atrbvh_u64 prim;
     atrbvh_box b;
     atrbvh_u32 value;
-    if (c->box)
+    if (c->leaf_boxes)
         return c->box[leaf];
     prim = t->leaf_prim[leaf - (t->n - 1)];
     /* Valid: the bounds stage checked every primitive of the tree. */
@@ -99,7 +102,7 @@ static void emit(layout_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at)
     if (leaf) {
         b = gather(c, node, c->prims + prim_at);
         if (c->box)
-            b = c->box[node];
+            b = atrbvh_i_is_leaf(t, node) ? leaf_box(c, node) : c->box[node];
         c->nodes[at] = atrbvh_layout_node(b, c->size[node], t->count[node], at,
                                           prim_at, 0);
         return;
@@ -152,6 +155,7 @@ atrbvh_status atrbvh_i_cpu_layout(atrbvh_device *dev, atrbvh_i_run *run,
     x.nodes = run->nodes;
     x.prims = run->prim_indices;
     x.box = c->tree.box; /* NULL unless kept (collapse.c) */
+    x.leaf_boxes = x.box && !c->sizes_in_leaf_boxes;
     x.g = run->in.g;
     x.vstride = run->in.vstride / sizeof(float);
     x.istride = run->in.istride / sizeof(uint32_t);
