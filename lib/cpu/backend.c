@@ -46,9 +46,12 @@ static void cpu_close(atrbvh_device *dev)
  *   optimise   the same, per-thread treelet scratch               -     92
  *   collapse   costs recomputed bottom-up, sizes 8 into the
  *              cost slot                                         84     92
- *   layout     tree 28, sizes 8 or 16, the output; an LBVH's
- *              node boxes were released at the end of the
- *              collapse (the layout recomputes them)         36+out 92+out
+ *   layout     tree 28, the output; an LBVH's node boxes were
+ *              released at the end of the collapse (the layout
+ *              recomputes them) and its sizes are in the cost
+ *              slot 8; an optimised tree's sizes moved into the
+ *              leaves' half of the node boxes and the cost slot
+ *              was freed (on a handle it stays: 92+out)      36+out 76+out
  *
  * Roles never live together share a slot, so what a device handle keeps
  * between builds is not more than the peak: the slots an LBVH's layout
