@@ -7,6 +7,14 @@
  * similar size create no buffer.  Sizes are checked for overflow and
  * against CL_DEVICE_MAX_MEM_ALLOC_SIZE before anything is created.
  *
+ * Roles never live at once share one buffer (home_of): the sort's
+ * scratch pair is dead once the keys are sorted, the keys once the
+ * hierarchy is built, so the bottom-up arrival counters (refit, optimise,
+ * collapse) take the scratch keys' buffer, the optimise stage's crown
+ * children the scratch order's and the collapse sizes the keys'; a
+ * handle keeps 20 bytes per primitive less and a build touches that much
+ * less memory.
+ *
  * Every launch records a profiling event; atrbvh_i_cl_finish waits for the
  * queue and adds each launch's device time to the current time table (the
  * build's, for atrbvh_bvh_kernel_time, or a ray batch's).
@@ -18,12 +26,28 @@
 #include <stdio.h>
 #include <string.h>
 
+/* The buffer that holds role `slot`. */
+static int home_of(int slot)
+{
+    switch (slot) {
+    case B_COUNTER: /* from the refit on */
+        return B_KEYS_TMP; /* the sort only */
+    case B_NEEDED: /* the optimise stage */
+        return B_ORDER_TMP;
+    case B_SIZE: /* the collapse and the layout */
+        return B_KEYS; /* morton to hierarchy */
+    default:
+        return slot;
+    }
+}
+
 atrbvh_status atrbvh_i_cl_buffer(atrbvh_cl_device *c, int slot, size_t count,
                                  size_t item, const char *what,
                                  atrbvh_error *error)
 {
     size_t bytes;
     cl_int err;
+    slot = home_of(slot);
     if (!atrbvh_i_mul_size(count ? count : 1, item, &bytes))
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,
                              "OpenCL buffer %s: size overflows", what);
@@ -69,7 +93,7 @@ atrbvh_status atrbvh_i_cl_upload(atrbvh_cl_device *c, int slot,
     cl_int err;
     if (bytes == 0)
         return ATRBVH_OK;
-    err = clEnqueueWriteBuffer(c->queue, c->buf[slot], CL_TRUE, 0, bytes, data,
+    err = clEnqueueWriteBuffer(c->queue, c->buf[home_of(slot)], CL_TRUE, 0, bytes, data,
                                0, NULL, NULL);
     if (err != CL_SUCCESS)
         return atrbvh_i_cl_error(error, err, "clEnqueueWriteBuffer", what);
@@ -83,7 +107,7 @@ atrbvh_status atrbvh_i_cl_download(atrbvh_cl_device *c, int slot, void *data,
     cl_int err;
     if (bytes == 0)
         return ATRBVH_OK;
-    err = clEnqueueReadBuffer(c->queue, c->buf[slot], CL_TRUE, 0, bytes, data,
+    err = clEnqueueReadBuffer(c->queue, c->buf[home_of(slot)], CL_TRUE, 0, bytes, data,
                               0, NULL, NULL);
     if (err != CL_SUCCESS)
         return atrbvh_i_cl_error(error, err, "clEnqueueReadBuffer", what);
@@ -97,7 +121,7 @@ atrbvh_status atrbvh_i_cl_zero(atrbvh_cl_device *c, int slot, size_t bytes,
     cl_int err;
     if (bytes == 0)
         return ATRBVH_OK;
-    err = clEnqueueFillBuffer(c->queue, c->buf[slot], &z, sizeof z, 0, bytes,
+    err = clEnqueueFillBuffer(c->queue, c->buf[home_of(slot)], &z, sizeof z, 0, bytes,
                               0, NULL, NULL);
     if (err != CL_SUCCESS)
         return atrbvh_i_cl_error(error, err, "clEnqueueFillBuffer", what);
@@ -199,7 +223,7 @@ atrbvh_status atrbvh_i_cl_run(atrbvh_cl_device *c, int k, size_t items,
         cl_int err;
         if (args[i].slot >= 0)
             err = clSetKernelArg(c->kernel[k], (cl_uint)i, sizeof(cl_mem),
-                                 &c->buf[args[i].slot]);
+                                 &c->buf[home_of(args[i].slot)]);
         else
             err = clSetKernelArg(c->kernel[k], (cl_uint)i, args[i].size,
                                  args[i].value);

@@ -44,7 +44,16 @@ double atrbvh_i_now_ms(void);
 /* Scratch that outlives one build: slot k keeps its largest allocation
  * until the device is closed, so repeated builds of similar sizes
  * allocate nothing new.  A build without a device handle uses a scratch
- * that the pipeline frees when the build ends. */
+ * that the pipeline frees when the build ends.
+ *
+ * Roles and slots: every scratch_get/done names a role; by default role
+ * k lives in slot k, but a backend may plan, before a build's first get,
+ * that a role shares another role's slot (scratch_share): arrays never
+ * live at the same time then take the same memory, so the bytes a build
+ * holds at its peak are also all that a device handle keeps.  A slot may
+ * be reserved (scratch_reserve): it is allocated at least that large, so
+ * a later, larger role finds the contents of an earlier one in place, and
+ * scratch_done of its roles does not free it (scratch_release does). */
 #define ATRBVH_I_SCRATCH_SLOTS 24
 /* Slots from this one on are the library's own (lib/animate.c); a
  * backend uses the ones below it. */
@@ -52,16 +61,32 @@ double atrbvh_i_now_ms(void);
 typedef struct atrbvh_i_scratch {
     void *ptr[ATRBVH_I_SCRATCH_SLOTS];
     size_t bytes[ATRBVH_I_SCRATCH_SLOTS];
+    size_t reserve[ATRBVH_I_SCRATCH_SLOTS]; /* per slot, this build       */
+    unsigned char home[ATRBVH_I_SCRATCH_SLOTS]; /* role -> slot + 1; 0: own */
+    uint32_t live;  /* roles got and not done, this build                 */
     int transient; /* a build without a handle: nothing to keep for */
 } atrbvh_i_scratch;
-/* At least count * size bytes in slot `slot` (contents undefined); NULL
- * on overflow or allocation failure (the slot is then empty). */
+/* At least count * size bytes for role `slot` (contents undefined; those
+ * of an earlier role of a reserved slot stay when it is large enough);
+ * NULL on overflow or allocation failure (the slot is then empty). */
 void *atrbvh_i_scratch_get(atrbvh_i_scratch *s, unsigned slot, size_t count,
                            size_t size);
 void atrbvh_i_scratch_free(atrbvh_i_scratch *s);
-/* A slot the build no longer reads: freed at once when the scratch is
- * transient (lower peak memory), kept for the next build otherwise. */
+/* A role the build no longer reads: its slot is freed at once when the
+ * scratch is transient (lower peak memory), no other live role shares it
+ * and it is not reserved; kept for the next build otherwise. */
 void atrbvh_i_scratch_done(atrbvh_i_scratch *s, unsigned slot);
+/* The slot of role `slot` freed now, also on a device handle (keeping it
+ * would raise the next stages' peak), its reserve dropped. */
+void atrbvh_i_scratch_release(atrbvh_i_scratch *s, unsigned slot);
+/* A build's plan: every role in its own slot, no reserve, nothing live;
+ * then role `role` in the slot of role `slot`, and slot `slot` at least
+ * `bytes` when allocated (0 on overflow: no reserve). */
+void atrbvh_i_scratch_plan_reset(atrbvh_i_scratch *s);
+void atrbvh_i_scratch_share(atrbvh_i_scratch *s, unsigned role,
+                            unsigned slot);
+void atrbvh_i_scratch_reserve(atrbvh_i_scratch *s, unsigned slot,
+                              size_t count, size_t size);
 
 /* ------------------------------------------------------- a build's data */
 /* The geometry after its metadata checks: strides in bytes. */

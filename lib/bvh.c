@@ -27,6 +27,54 @@ atrbvh_bvh *atrbvh_i_bvh_alloc(size_t node_count, size_t prim_count)
     return b;
 }
 
+atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *b)
+{
+    const size_t m = b->node_count;
+    uint32_t *depth;
+    size_t i, leaves = 0;
+    unsigned largest = 0, deepest = 0;
+    if (m == 0)
+        return atrbvh_i_bvh_measure(b);
+    depth = atrbvh_i_alloc_array(m, sizeof *depth);
+    if (!depth)
+        return ATRBVH_ERR_NOMEM;
+    for (i = 1; i < m; i++)
+        depth[i] = UINT32_MAX; /* not reached yet */
+    depth[0] = 0;
+    for (i = 0; i < m; i++) {
+        const atrbvh_node *v = &b->nodes[i];
+        if (depth[i] == UINT32_MAX)
+            break; /* no parent before it */
+        if (depth[i] > deepest)
+            deepest = depth[i];
+        if (v->count) {
+            if (v->index > b->prim_count || v->count > b->prim_count - v->index)
+                break;
+            leaves++;
+            if (v->count > largest)
+                largest = v->count;
+        } else {
+            if (v->index <= i + 1 || v->index >= m ||
+                depth[i + 1] != UINT32_MAX || depth[v->index] != UINT32_MAX)
+                break;
+            depth[i + 1] = depth[i] + 1;
+            depth[v->index] = depth[i] + 1;
+        }
+    }
+    atrbvh_i_free(depth);
+    if (i < m)
+        return ATRBVH_ERR_BACKEND;
+    b->stats.nodes = b->node_count;
+    b->stats.leaves = leaves;
+    b->stats.primitives = b->prim_count;
+    b->stats.max_depth = deepest;
+    b->stats.max_leaf_primitives = largest;
+    b->stats.sah = atrbvh_sah(b->nodes, b->node_count, b->stats.ci,
+                              b->stats.ct);
+    b->stats.sah_built = b->stats.sah; /* atrbvh_refit's drift reference */
+    return ATRBVH_OK;
+}
+
 void atrbvh_bvh_free(atrbvh_bvh *bvh)
 {
     if (!bvh)

@@ -161,6 +161,11 @@ atrbvh_bvh *atrbvh_i_bvh_alloc(size_t node_count, size_t prim_count);
  * sah (with stats.ci/ct) from the node array; fails on an invalid array or
  * when scratch cannot be allocated. */
 atrbvh_status atrbvh_i_bvh_measure(atrbvh_bvh *bvh);
+/* The same for a tree the layout stage just wrote (lib/bvh.c): children
+ * follow their parent, so one forward pass with a depth per node (4 bytes,
+ * the general walk takes 12) measures it; ATRBVH_ERR_BACKEND when the
+ * array is not such a tree, ATRBVH_ERR_NOMEM. */
+atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *bvh);
 /* Structural check of a node array (used on load and, in debug builds,
  * after every build): every child index in range and after its parent,
  * leaf ranges tiling the index array in order, child boxes inside parents

@@ -75,29 +75,102 @@ void atrbvh_i_capture_free(atrbvh_i_capture *c)
 }
 
 /* ------------------------------------------------------------ scratch */
+static unsigned home_of(const atrbvh_i_scratch *s, unsigned role)
+{
+    return s->home[role] ? (unsigned)s->home[role] - 1u : role;
+}
+
 void *atrbvh_i_scratch_get(atrbvh_i_scratch *s, unsigned slot, size_t count,
                            size_t size)
 {
     size_t bytes;
+    unsigned k;
     if (slot >= ATRBVH_I_SCRATCH_SLOTS || !atrbvh_i_mul_size(count, size, &bytes))
         return NULL;
+    k = home_of(s, slot);
+    s->live |= (uint32_t)1 << slot;
     if (bytes == 0)
         bytes = 1;
-    if (s->ptr[slot] && s->bytes[slot] >= bytes)
-        return s->ptr[slot];
-    atrbvh_i_free(s->ptr[slot]);
-    s->ptr[slot] = atrbvh_i_malloc(bytes);
-    s->bytes[slot] = s->ptr[slot] ? bytes : 0;
-    return s->ptr[slot];
+    if (s->ptr[k] && s->bytes[k] >= bytes)
+        return s->ptr[k];
+    if (bytes < s->reserve[k])
+        bytes = s->reserve[k];
+    {
+        /* Another live role in the slot (outside the plan: more
+         * primitives than planned for): its contents move along. */
+        unsigned r;
+        for (r = 0; r < ATRBVH_I_SCRATCH_SLOTS; r++)
+            if (r != slot && ((s->live >> r) & 1u) && home_of(s, r) == k &&
+                s->ptr[k]) {
+                void *grown = atrbvh_i_malloc(bytes);
+                if (!grown)
+                    return NULL; /* the old contents stay */
+                memcpy(grown, s->ptr[k], s->bytes[k]);
+                atrbvh_i_free(s->ptr[k]);
+                s->ptr[k] = grown;
+                s->bytes[k] = bytes;
+                return grown;
+            }
+    }
+    atrbvh_i_free(s->ptr[k]);
+    s->ptr[k] = atrbvh_i_malloc(bytes);
+    s->bytes[k] = s->ptr[k] ? bytes : 0;
+    return s->ptr[k];
+}
+
+static void free_slot(atrbvh_i_scratch *s, unsigned k)
+{
+    unsigned r;
+    for (r = 0; r < ATRBVH_I_SCRATCH_SLOTS; r++)
+        if (home_of(s, r) == k)
+            s->live &= ~((uint32_t)1 << r);
+    atrbvh_i_free(s->ptr[k]);
+    s->ptr[k] = NULL;
+    s->bytes[k] = 0;
+    s->reserve[k] = 0;
 }
 
 void atrbvh_i_scratch_done(atrbvh_i_scratch *s, unsigned slot)
 {
-    if (!s->transient || slot >= ATRBVH_I_SCRATCH_SLOTS)
+    unsigned k, r;
+    if (slot >= ATRBVH_I_SCRATCH_SLOTS)
         return;
-    atrbvh_i_free(s->ptr[slot]);
-    s->ptr[slot] = NULL;
-    s->bytes[slot] = 0;
+    s->live &= ~((uint32_t)1 << slot);
+    k = home_of(s, slot);
+    if (!s->transient || s->reserve[k])
+        return;
+    for (r = 0; r < ATRBVH_I_SCRATCH_SLOTS; r++)
+        if (((s->live >> r) & 1u) && home_of(s, r) == k)
+            return; /* another role still reads the slot */
+    free_slot(s, k);
+}
+
+void atrbvh_i_scratch_release(atrbvh_i_scratch *s, unsigned slot)
+{
+    if (slot < ATRBVH_I_SCRATCH_SLOTS)
+        free_slot(s, home_of(s, slot));
+}
+
+void atrbvh_i_scratch_plan_reset(atrbvh_i_scratch *s)
+{
+    memset(s->home, 0, sizeof s->home);
+    memset(s->reserve, 0, sizeof s->reserve);
+    s->live = 0;
+}
+
+void atrbvh_i_scratch_share(atrbvh_i_scratch *s, unsigned role, unsigned slot)
+{
+    if (role < ATRBVH_I_SCRATCH_SLOTS && slot < ATRBVH_I_SCRATCH_SLOTS)
+        s->home[role] = (unsigned char)(home_of(s, slot) + 1u);
+}
+
+void atrbvh_i_scratch_reserve(atrbvh_i_scratch *s, unsigned slot,
+                              size_t count, size_t size)
+{
+    size_t bytes;
+    if (slot < ATRBVH_I_SCRATCH_SLOTS)
+        s->reserve[home_of(s, slot)] =
+            atrbvh_i_mul_size(count, size, &bytes) ? bytes : 0;
 }
 
 void atrbvh_i_scratch_free(atrbvh_i_scratch *s)

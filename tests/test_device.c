@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "atrbvh.h"
+#include "scene.h"
 #include "testutil.h"
 
 /* ------------------------------------------------- counting allocator */
@@ -83,9 +84,11 @@ START_TEST(open_specs)
 END_TEST
 
 /* Builds on one open device give the trees builds without one give, and a
- * second build of the same size allocates no scratch: only the output
- * (node and index arrays, the object) and the statistics walk's stacks
- * (three 32-bit arrays per node), plus small fixed-size state. */
+ * second build of the same size allocates no scratch but the node box
+ * array (2n-1 boxes, released before every output so that the handle does
+ * not hold it beside the output): the output (node and index arrays, the
+ * object), the statistics pass's depths (a 32-bit array per node; at most
+ * three counted) and that array, plus small fixed-size state. */
 START_TEST(reuse_allocates_no_scratch)
 {
     float *v;
@@ -113,11 +116,13 @@ START_TEST(reuse_allocates_no_scratch)
     ck_assert_msg(tu_same_bvh(ref, b, msg, sizeof msg), "%s", msg);
     atrbvh_bvh_nodes(b, &nodes);
     atrbvh_bvh_primitive_indices(b, &prims);
-    output = nodes * (sizeof(atrbvh_node) + 12) + prims * 4 + 4096;
+    output = nodes * (sizeof(atrbvh_node) + 12) + prims * 4 + 4096 +
+             (2 * (size_t)T - 1) * sizeof(float) * 6;
     /* The first build made the scratch: keys, boxes, the binary tree. */
-    ck_assert_uint_gt(first_bytes, output + (size_t)T * 60);
+    ck_assert_uint_gt(first_bytes, total_bytes + (size_t)T * 30);
     ck_assert_msg(total_bytes <= output,
-                  "second build allocated %lu bytes (output and walk %lu)",
+                  "second build allocated %lu bytes (output, walk and node "
+                  "boxes %lu)",
                   (unsigned long)total_bytes, (unsigned long)output);
     atrbvh_bvh_free(a);
     atrbvh_bvh_free(b);
@@ -188,6 +193,165 @@ START_TEST(allocation_failure_open_build_close)
                           atrbvh_strerror(st));
     }
     ck_assert_int_gt(k, 10);
+    atrbvh_set_allocator(NULL, NULL);
+    free(v1);
+    free(v2);
+}
+END_TEST
+
+/* ------------------------------------------------------- peak memory */
+/* A size-tracking allocator: bytes held now and the peak since reset. */
+static size_t held, peak;
+typedef union sized {
+    size_t size;
+    long double align_ld;
+    void *align_p;
+} sized;
+static void *sized_malloc(size_t n)
+{
+    sized *h;
+    if (countdown == 0)
+        return NULL;
+    if (countdown > 0)
+        countdown--;
+    h = malloc(sizeof *h + n);
+    if (!h)
+        return NULL;
+    h->size = n;
+    outstanding++;
+    held += n;
+    if (held > peak)
+        peak = held;
+    return h + 1;
+}
+static void sized_free(void *p)
+{
+    sized *h;
+    if (!p)
+        return;
+    h = (sized *)p - 1;
+    held -= h->size;
+    outstanding--;
+    free(h);
+}
+
+/* The LBVH of a built-in scene (max leaf 8, as `atrbvh bench` builds it)
+ * holds at its peak at most 100 bytes per triangle and 2.5 times the
+ * output (node and index arrays), without a handle, on a handle's first
+ * build (which makes its scratch) and on its second; a handle keeps no
+ * more than 40 bytes per triangle between builds.  Before the memory plan
+ * (lib/cpu/backend.c) these were about 150 and 200 bytes per triangle, 4
+ * and 5 times the output, and a handle kept 148. */
+START_TEST(peak_memory_lbvh)
+{
+    /* _i: 0 sphere, 1 city, 2 terrain */
+    static const char *const names[] = {"sphere", "city", "terrain"};
+    scene sc;
+    char err[256];
+    atrbvh_geometry g;
+    atrbvh_build_options o;
+    atrbvh_device *d;
+    atrbvh_error e;
+    size_t base;
+    int k;
+    ck_assert_int_eq(scene_builtin(names[_i], 60000, &sc, err, sizeof err), 0);
+    g = scene_geometry(&sc);
+    atrbvh_build_options_init(&o);
+    o.method = ATRBVH_METHOD_LBVH;
+    o.max_leaf_size = 8;
+    o.threads = 2;
+    atrbvh_set_allocator(sized_malloc, sized_free);
+    outstanding = 0;
+    base = held;
+    ck_assert_int_eq(atrbvh_device_open("cpu", &d, &e), ATRBVH_OK);
+    for (k = 0; k < 3; k++) { /* no handle, first and second on one */
+        const double tris = (double)sc.triangle_count;
+        size_t before = held, nodes, prims;
+        double out_bytes, build_peak, kept;
+        atrbvh_bvh *b = NULL;
+        o.device = k ? d : NULL;
+        peak = held;
+        ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_OK);
+        atrbvh_bvh_nodes(b, &nodes);
+        atrbvh_bvh_primitive_indices(b, &prims);
+        out_bytes = (double)nodes * sizeof(atrbvh_node) + (double)prims * 4;
+        /* from before the handle's first build: its scratch counts */
+        build_peak = (double)(peak - base);
+        kept = (double)held - (double)before - out_bytes;
+        ck_assert_msg(build_peak <= 100.0 * tris &&
+                          build_peak <= 2.5 * out_bytes,
+                      "%s, build %d: peak %.1f bytes per triangle, %.2f "
+                      "times the output",
+                      names[_i], k, build_peak / tris, build_peak / out_bytes);
+        if (k == 1)
+            ck_assert_msg(kept <= 40.0 * tris + 65536.0,
+                          "%s: the handle keeps %.1f bytes per triangle",
+                          names[_i], kept / tris);
+        atrbvh_bvh_free(b);
+    }
+    atrbvh_device_close(d);
+    atrbvh_set_allocator(NULL, NULL);
+    ck_assert_int_eq(outstanding, 0);
+    scene_free(&sc);
+}
+END_TEST
+
+/* Every allocation of LBVH builds (the node box array released before the
+ * output and made again, the statistics pass) and of a build leaving out
+ * invalid triangles (leaf primitives and kept ids in their own slots, the
+ * node boxes kept to the layout) fails in turn, on a handle (growing,
+ * then shrinking) and without one: ATRBVH_ERR_NOMEM, and nothing leaks. */
+START_TEST(allocation_failure_lbvh_and_invalid)
+{
+    float *v1, *v2;
+    atrbvh_geometry g1 = soup(&v1, 700, 11), g2 = soup(&v2, 2500, 12);
+    atrbvh_build_options o;
+    long k;
+    int done = 0;
+    v2[3 * 3 * 17 + 1] = 1.0f / 0.0f; /* triangle 17 invalid */
+    atrbvh_build_options_init(&o);
+    o.method = _i ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_LBVH;
+    o.max_leaf_size = 8;
+    o.skip_invalid = 1;
+    o.threads = 2;
+    atrbvh_set_allocator(sized_malloc, sized_free);
+    for (k = 0; !done; k++) {
+        atrbvh_device *d = NULL;
+        atrbvh_bvh *b = NULL;
+        atrbvh_error e;
+        atrbvh_status st;
+        outstanding = 0;
+        countdown = k;
+        o.device = NULL;
+        st = atrbvh_build(&g1, &o, &b, &e);
+        atrbvh_bvh_free(b);
+        b = NULL;
+        if (st == ATRBVH_OK)
+            st = atrbvh_device_open("cpu", &d, &e);
+        if (st == ATRBVH_OK) {
+            o.device = d;
+            st = atrbvh_build(&g1, &o, &b, &e);
+            atrbvh_bvh_free(b);
+            b = NULL;
+            if (st == ATRBVH_OK)
+                st = atrbvh_build(&g2, &o, &b, &e);
+            atrbvh_bvh_free(b);
+            b = NULL;
+            if (st == ATRBVH_OK)
+                st = atrbvh_build(&g1, &o, &b, &e);
+            atrbvh_bvh_free(b);
+            atrbvh_device_close(d);
+        }
+        countdown = -1;
+        ck_assert_msg(outstanding == 0, "allocation %ld: %ld blocks leaked",
+                      k, outstanding);
+        if (st == ATRBVH_OK)
+            done = 1;
+        else
+            ck_assert_msg(st == ATRBVH_ERR_NOMEM, "allocation %ld: %s", k,
+                          atrbvh_strerror(st));
+    }
+    ck_assert_int_gt(k, 20);
     atrbvh_set_allocator(NULL, NULL);
     free(v1);
     free(v2);
@@ -563,6 +727,8 @@ static Suite *suite(void)
     tcase_add_test(t, open_specs);
     tcase_add_test(t, reuse_allocates_no_scratch);
     tcase_add_loop_test(t, allocation_failure_open_build_close, 0, 2);
+    tcase_add_loop_test(t, peak_memory_lbvh, 0, 3);
+    tcase_add_loop_test(t, allocation_failure_lbvh_and_invalid, 0, 2);
     tcase_add_test(t, threads_own_and_shared_devices);
     tcase_add_loop_test(t, progress_monotone_to_one, 0, 2);
     tcase_add_test(t, cancel_everywhere);

@@ -27,6 +27,58 @@ static void cpu_close(atrbvh_device *dev)
     (void)dev;
 }
 
+/* The memory plan of a build of up to n primitives, in bytes per
+ * primitive (a box is 24 bytes, the output 32 per node plus 4 per
+ * primitive, about 35-39 with max leaf 8):
+ *
+ *   stage      live                                            LBVH  TRBVH
+ *   bounds     primitive boxes, in the node box array (its
+ *              slot reserved for 2n-1 boxes)                     48     48
+ *   morton     + keys, in the cost slot (reserved: n keys for
+ *              an LBVH, 2n-1 costs otherwise)                    56     64
+ *   sort       + order 4, sort temporaries 12 in the parent
+ *              and left slots                                    72     80
+ *   hierarchy  + left, right 8, parent 8, count 8 (leaf_prim is
+ *              the order array)                                  84     92
+ *   refit      node boxes 48 (the primitive boxes gathered in
+ *              place into the leaves), tree 28, costs 16 (none
+ *              for an LBVH: its slot stays for the sizes)        84     92
+ *   optimise   the same, per-thread treelet scratch               -     92
+ *   collapse   costs recomputed bottom-up, sizes 8 into the
+ *              cost slot                                         84     92
+ *   layout     tree 28, the output; an LBVH's node boxes were
+ *              released at the end of the collapse (the layout
+ *              recomputes them) and its sizes are in the cost
+ *              slot 8; an optimised tree's sizes moved into the
+ *              leaves' half of the node boxes and the cost slot
+ *              was freed (on a handle it stays: 92+out)      36+out 76+out
+ *
+ * Roles never live together share a slot, so what a device handle keeps
+ * between builds is not more than the peak: the slots an LBVH's layout
+ * still reads (about 36; the node box array, the largest, is released
+ * before the output is allocated on every build, as a handle keeping it
+ * would hold it beside the output).  A transient scratch frees each slot
+ * when its last role is done, and all at the end of the layout.  With
+ * kept ids (skip_invalid), leaf_prim and the ids take their own slots
+ * (+8) and the node boxes are kept to the layout (layout.c). */
+static void plan(atrbvh_i_scratch *s, size_t n, atrbvh_method method)
+{
+    const size_t nodes = n ? 2 * n - 1 : 1;
+    atrbvh_i_scratch_plan_reset(s);
+    atrbvh_i_scratch_share(s, CPU_BOXES, CPU_BOX);
+    atrbvh_i_scratch_share(s, CPU_KEYS, CPU_COST);
+    atrbvh_i_scratch_share(s, CPU_SIZE, CPU_COST);
+    atrbvh_i_scratch_share(s, CPU_TMP_KEYS, CPU_PARENT);
+    atrbvh_i_scratch_share(s, CPU_TMP_ORDER, CPU_LEFT);
+    /* 2n-1 fits in size_t whenever n boxes did (the geometry's check). */
+    atrbvh_i_scratch_reserve(s, CPU_BOX, nodes, sizeof(atrbvh_box));
+    /* An LBVH keeps no costs: the slot takes the keys, then the sizes. */
+    if (method == ATRBVH_METHOD_LBVH)
+        atrbvh_i_scratch_reserve(s, CPU_COST, n ? n : 1, sizeof(uint64_t));
+    else
+        atrbvh_i_scratch_reserve(s, CPU_COST, nodes, sizeof(double));
+}
+
 static atrbvh_status cpu_begin(atrbvh_device *dev, atrbvh_i_run *run,
                                atrbvh_error *error)
 {
@@ -37,6 +89,7 @@ static atrbvh_status cpu_begin(atrbvh_device *dev, atrbvh_i_run *run,
     memset(c, 0, sizeof *c);
     c->scratch = &dev->scratch;
     run->state = c;
+    plan(c->scratch, run->in.g->primitive_count, run->cfg->method);
     return ATRBVH_OK;
 }
 
@@ -89,16 +142,46 @@ atrbvh_status atrbvh_i_cpu_tree_arrays(atrbvh_i_cpu_run *c, uint32_t n,
     t->right = atrbvh_i_scratch_get(s, CPU_RIGHT, inner, sizeof *t->right);
     t->parent = atrbvh_i_scratch_get(s, CPU_PARENT, nodes, sizeof *t->parent);
     t->count = atrbvh_i_scratch_get(s, CPU_COUNT, nodes, sizeof *t->count);
-    t->box = atrbvh_i_scratch_get(s, CPU_BOX, nodes, sizeof *t->box);
-    t->cost = atrbvh_i_scratch_get(s, CPU_COST, nodes, sizeof *t->cost);
-    t->leaf_prim = atrbvh_i_scratch_get(s, CPU_LEAF_PRIM, n,
-                                        sizeof *t->leaf_prim);
-    if (!t->left || !t->right || !t->parent || !t->count || !t->box ||
-        !t->cost || !t->leaf_prim)
+    t->box = NULL; /* atrbvh_i_cpu_tree_values (refit) */
+    t->cost = NULL;
+    /* Without kept ids leaf p's primitive is the sort's order[p]: the
+     * same array. */
+    t->leaf_prim = atrbvh_i_scratch_get(s, c->ids ? CPU_LEAF_PRIM : CPU_ORDER,
+                                        n, sizeof *t->leaf_prim);
+    if (!t->left || !t->right || !t->parent || !t->count || !t->leaf_prim)
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "cannot allocate the tree for %lu primitives",
                              (unsigned long)n);
     return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cpu_tree_values(atrbvh_i_cpu_run *c, int costs,
+                                       atrbvh_error *error)
+{
+    atrbvh_i_scratch *s = c->scratch;
+    atrbvh_i_tree *t = &c->tree;
+    const size_t nodes = 2 * (size_t)t->n - 1;
+    t->box = atrbvh_i_scratch_get(s, CPU_BOX, nodes, sizeof *t->box);
+    t->cost = costs ? atrbvh_i_scratch_get(s, CPU_COST, nodes, sizeof *t->cost)
+                    : NULL;
+    if (!t->box || (costs && !t->cost))
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                             "cannot allocate the node boxes and costs for "
+                             "%lu primitives",
+                             (unsigned long)t->n);
+    /* The primitive boxes are the first n entries (moved along if the
+     * slot had to grow). */
+    c->boxes = t->box;
+    return ATRBVH_OK;
+}
+
+void atrbvh_i_cpu_scratch_end(atrbvh_i_cpu_run *c)
+{
+    unsigned k;
+    if (!c->scratch->transient)
+        return;
+    for (k = 0; k < CPU_SLOTS; k++)
+        atrbvh_i_scratch_release(c->scratch, k);
 }
 
 static atrbvh_status nomem(atrbvh_error *error)
@@ -116,6 +199,47 @@ static int copy_out(void *dst_ptr, const void *src, size_t n, size_t size)
         return 0;
     memcpy(*dst, src, n * size);
     return 1;
+}
+
+/* The tree after the refit (or the optimise stage, which an LBVH skips);
+ * an LBVH's refit keeps no costs: the copy gets them as the refit
+ * computes them (shared/stages.h), bottom-up. */
+static atrbvh_status capture_refit(atrbvh_i_tree *dst,
+                                   const atrbvh_i_tree *src,
+                                   const atrbvh_cost_params *p)
+{
+    const size_t n = src->n, nodes = 2 * n - 1;
+    uint8_t *arrived;
+    size_t i;
+    if (src->cost || !src->box)
+        return atrbvh_i_tree_copy(dst, src, 1);
+    if (atrbvh_i_tree_copy(dst, src, 0) != ATRBVH_OK)
+        return ATRBVH_ERR_NOMEM;
+    dst->box = atrbvh_i_alloc_array(nodes, sizeof *dst->box);
+    dst->cost = atrbvh_i_alloc_array(nodes, sizeof *dst->cost);
+    arrived = atrbvh_i_alloc_array(nodes, 1);
+    if (!dst->box || !dst->cost || !arrived) {
+        atrbvh_i_free(arrived);
+        atrbvh_i_tree_free(dst);
+        return ATRBVH_ERR_NOMEM;
+    }
+    memcpy(dst->box, src->box, nodes * sizeof *dst->box);
+    memset(arrived, 0, nodes);
+    for (i = n - 1; i < nodes; i++) {
+        uint32_t node = (uint32_t)i, up;
+        dst->cost[i] = atrbvh_refit_leaf_cost(p, dst->box[i]);
+        while ((up = dst->parent[node]) != ATRBVH_U32_MAX &&
+               arrived[up]++ == 1) {
+            const uint32_t l = dst->left[up], r = dst->right[up];
+            int collapsed;
+            dst->cost[up] = atrbvh_node_cost(
+                p, atrbvh_box_area(dst->box[up]), dst->count[up],
+                dst->cost[l], dst->cost[r], &collapsed);
+            node = up;
+        }
+    }
+    atrbvh_i_free(arrived);
+    return ATRBVH_OK;
 }
 
 static atrbvh_status cpu_capture(atrbvh_device *dev, atrbvh_i_run *run,
@@ -144,10 +268,12 @@ static atrbvh_status cpu_capture(atrbvh_device *dev, atrbvh_i_run *run,
         ok = atrbvh_i_tree_copy(&cap->hierarchy, &c->tree, 0) == ATRBVH_OK;
         break;
     case ATRBVH_STAGE_REFIT:
-        ok = atrbvh_i_tree_copy(&cap->refit, &c->tree, 1) == ATRBVH_OK;
+        ok = capture_refit(&cap->refit, &c->tree, &run->cfg->cost) ==
+             ATRBVH_OK;
         break;
     case ATRBVH_STAGE_OPTIMISE:
-        ok = atrbvh_i_tree_copy(&cap->optimise, &c->tree, 1) == ATRBVH_OK;
+        ok = capture_refit(&cap->optimise, &c->tree, &run->cfg->cost) ==
+             ATRBVH_OK;
         break;
     case ATRBVH_STAGE_COLLAPSE:
         ok = copy_out(&cap->collapse_size, c->size, 2 * n - 1,

@@ -11,10 +11,19 @@
  * only nodes whose parent's both children collapse; we do not.)
  *
  * Bottom-up in post-order, OpenMP tasks above TASK_CUTOFF primitives.
+ * The subtree costs are recomputed on the way up (the refit's rule on the
+ * same boxes and counts: the same doubles the refit or a treelet
+ * write-back stored), so the cost array is not read and the sizes take
+ * its memory (backend.c's plan).  The node boxes are read for the last
+ * time here: an LBVH's array is released at the end, before the layout
+ * allocates the output; an optimised tree's leaf half takes the sizes
+ * instead (the layout recomputes what it needs, layout.c).
  */
 #include "config.h"
 
 #include "cpu.h"
+
+#include <string.h>
 
 #define TASK_CUTOFF 4096u
 
@@ -24,13 +33,16 @@ typedef struct collapse_ctx {
     uint32_t *size; /* output nodes of the subtree | ATRBVH_SIZE_LEAF */
 } collapse_ctx;
 
-static void decide(collapse_ctx *c, uint32_t node)
+/* Decides `node`'s subtree; returns its cost. */
+static double decide(collapse_ctx *c, uint32_t node)
 {
     const atrbvh_i_tree *t = c->t;
     uint32_t l, r;
+    double cl, cr, cost;
+    int collapsed;
     if (atrbvh_i_is_leaf(t, node)) {
         c->size[node] = 1u | ATRBVH_SIZE_LEAF;
-        return;
+        return atrbvh_refit_leaf_cost(c->p, t->box[node]);
     }
     l = t->left[node];
     r = t->right[node];
@@ -38,18 +50,20 @@ static void decide(collapse_ctx *c, uint32_t node)
 #ifdef _OPENMP
 #pragma omp task default(shared) firstprivate(l)
 #endif
-        decide(c, l);
-        decide(c, r);
+        cl = decide(c, l);
+        cr = decide(c, r);
 #ifdef _OPENMP
 #pragma omp taskwait
 #endif
     } else {
-        decide(c, l);
-        decide(c, r);
+        cl = decide(c, l);
+        cr = decide(c, r);
     }
     c->size[node] = atrbvh_collapse_size(c->p, t->box[node], t->count[node],
-                                         t->cost[l], t->cost[r], c->size[l],
-                                         c->size[r]);
+                                         cl, cr, c->size[l], c->size[r]);
+    cost = atrbvh_node_cost(c->p, atrbvh_box_area(t->box[node]),
+                            t->count[node], cl, cr, &collapsed);
+    return cost;
 }
 
 atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
@@ -58,6 +72,8 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_i_cpu_run *c = run->state;
     collapse_ctx x;
     (void)dev;
+    atrbvh_i_scratch_done(c->scratch, CPU_COST);
+    c->tree.cost = NULL;
     c->size = atrbvh_i_scratch_get(c->scratch, CPU_SIZE,
                                    2 * (size_t)run->n - 1, sizeof *c->size);
     if (!c->size)
@@ -70,7 +86,25 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
 #pragma omp parallel num_threads(run->cfg->threads)
 #pragma omp single
 #endif
-    decide(&x, 0);
+    (void)decide(&x, 0);
     run->node_count = c->size[0] & ATRBVH_SIZE_MASK;
+    if (!c->ids && run->cfg->method != ATRBVH_METHOD_LBVH &&
+        c->scratch->transient) {
+        /* An optimised tree's internal boxes are read by the layout (a
+         * treelet root keeps its old box), its leaves' are the
+         * primitives': the sizes move into the leaves' half of the box
+         * array (4 of its 24 bytes per leaf) and the cost slot goes.  A
+         * handle keeps it instead: re-optimising an animation frame by
+         * frame then allocates nothing of the primitive count. */
+        uint32_t *moved = (uint32_t *)(void *)(c->tree.box + (run->n - 1));
+        memcpy(moved, c->size, (2 * (size_t)run->n - 1) * sizeof *moved);
+        c->size = moved;
+        c->sizes_in_leaf_boxes = 1;
+        atrbvh_i_scratch_release(c->scratch, CPU_SIZE);
+    } else if (!c->ids && run->cfg->method == ATRBVH_METHOD_LBVH) {
+        /* the layout recomputes the boxes (layout.c says when it can) */
+        atrbvh_i_scratch_release(c->scratch, CPU_BOX);
+        c->tree.box = NULL;
+    }
     return ATRBVH_OK;
 }

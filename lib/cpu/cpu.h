@@ -49,12 +49,23 @@ typedef struct atrbvh_i_cpu_run {
     uint32_t *order;    /* sort: build index of position p   */
     atrbvh_i_tree tree; /* hierarchy ... optimise            */
     uint32_t *size;     /* collapse                          */
+    /* collapse: the sizes moved into the leaves' half of tree.box, whose
+     * boxes the layout then recomputes (layout.c) */
+    int sizes_in_leaf_boxes;
 } atrbvh_i_cpu_run;
 
-/* The tree's arrays for n leaves in the device's scratch slots (the
- * hierarchy stage and set_tree). */
+/* The tree's topology arrays for n leaves in the device's scratch slots
+ * (the hierarchy stage and set_tree; leaf_prim is the order array unless
+ * c->ids is set); box and cost stay NULL until tree_values (refit).  The
+ * plan of which arrays share memory: backend.c. */
 atrbvh_status atrbvh_i_cpu_tree_arrays(atrbvh_i_cpu_run *c, uint32_t n,
                                        atrbvh_error *error);
+/* The node boxes (their slot already holds the primitive boxes in its
+ * first n entries) and, with `costs`, the costs of c->tree (else NULL). */
+atrbvh_status atrbvh_i_cpu_tree_values(atrbvh_i_cpu_run *c, int costs,
+                                       atrbvh_error *error);
+/* After the layout: a transient scratch frees every slot of the build. */
+void atrbvh_i_cpu_scratch_end(atrbvh_i_cpu_run *c);
 
 /* The stages (backend.h's atrbvh_i_stage_fn). */
 atrbvh_status atrbvh_i_cpu_bounds(atrbvh_device *, atrbvh_i_run *,
@@ -91,7 +102,9 @@ atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
 void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                         int threads);
 /* Leaf n-1+p gets prim_boxes[order[p]], then boxes, counts and costs
- * bottom-up.  Sets every field but left/right/parent/leaf_prim. */
+ * bottom-up.  Sets every field but left/right/parent/leaf_prim (cost
+ * only when t->cost is not NULL).  prim_boxes may be t->box: the
+ * primitive boxes in its first n entries, gathered in place. */
 void atrbvh_i_refit(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
                     const uint32_t *order, const atrbvh_cost_params *cost,
                     int threads);

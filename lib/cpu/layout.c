@@ -4,6 +4,22 @@
  * left child follows it, its right child comes after the left subtree, so
  * every offset is known before descending (OpenMP tasks above
  * TASK_CUTOFF primitives).
+ *
+ * The node boxes of an LBVH without kept ids: the collapse stage released
+ * the node box array (the memory plan, backend.c), so the layout makes
+ * them again, bottom-up: a leaf's primitive box from the geometry by the
+ * shared rule the bounds stage used, an internal node's the union of its
+ * children's, left first, as the refit computed it.  The union of a
+ * collapsed leaf's primitives folded left to right is the same box: per
+ * coordinate a union keeps the second operand on equal values (-0 and
+ * +0), so any bracketing of the same sequence keeps the value of the last
+ * primitive reaching the extreme (and the empty box is its identity).
+ * Otherwise the array is kept and read: with kept ids (skip_invalid,
+ * split references) a leaf's box need not be its primitive's, and after
+ * the optimise stage a treelet root keeps the box of its old children,
+ * which can differ from the union of the new ones in the sign of a zero.
+ * An optimised tree without kept ids keeps only the internal boxes there
+ * (the sizes took the leaves' half): its leaves' boxes are recomputed.
  */
 #include "config.h"
 
@@ -16,22 +32,54 @@ typedef struct layout_ctx {
     const uint32_t *size; /* collapse: nodes of the subtree | leaf flag */
     atrbvh_node *nodes;
     uint32_t *prims;
+    /* NULL: the boxes from the geometry below */
+    const atrbvh_box *box;
+    int leaf_boxes; /* box holds the leaves' boxes too */
+    const atrbvh_geometry *g;
+    atrbvh_u64 vstride, istride, bstride; /* in elements */
 } layout_ctx;
 
-/* Writes the primitives under `node`, left to right, from prims[at]:
- * a stackless walk with parent links, so any depth is fine. */
-static void gather(const atrbvh_i_tree *t, uint32_t node, uint32_t *out)
+/* The box of leaf `leaf` of the tree: stored, or its primitive's. */
+static inline atrbvh_box leaf_box(const layout_ctx *c, uint32_t leaf)
 {
+    const atrbvh_i_tree *t = c->t;
+    const atrbvh_geometry *g = c->g;
+    atrbvh_u64 prim;
+    atrbvh_box b;
+    atrbvh_u32 value;
+    if (c->leaf_boxes)
+        return c->box[leaf];
+    prim = t->leaf_prim[leaf - (t->n - 1)];
+    /* Valid: the bounds stage checked every primitive of the tree. */
+    if (g->type == ATRBVH_GEOMETRY_BOXES)
+        (void)atrbvh_prim_box_box(g->boxes, c->bstride, prim, &b);
+    else
+        (void)atrbvh_prim_box_triangle(g->vertices, c->vstride,
+                                       g->vertex_count, g->indices,
+                                       c->istride, g->indices != NULL, prim,
+                                       &b, &value);
+    return b;
+}
+
+/* Writes the primitives under `node`, left to right, from prims[at], and
+ * returns their box: a stackless walk with parent links, so any depth is
+ * fine. */
+static atrbvh_box gather(const layout_ctx *c, uint32_t node, uint32_t *out)
+{
+    const atrbvh_i_tree *t = c->t;
     uint32_t cur = node, k = 0;
+    atrbvh_box acc = atrbvh_box_empty();
     for (;;) {
         while (!atrbvh_i_is_leaf(t, cur))
             cur = t->left[cur];
         out[k++] = t->leaf_prim[cur - (t->n - 1)];
+        if (!c->box)
+            acc = atrbvh_box_union(acc, leaf_box(c, cur));
         /* Climb while we are a right child, then step to the sibling. */
         for (;;) {
             uint32_t up;
             if (cur == node)
-                return;
+                return acc;
             up = t->parent[cur];
             if (t->left[up] == cur) {
                 cur = t->right[up];
@@ -43,17 +91,20 @@ static void gather(const atrbvh_i_tree *t, uint32_t node, uint32_t *out)
 }
 
 /* Writes `node` at output position `at` with its primitives from
- * `prim_at` (shared/stages.h's placement rule), then its children. */
+ * `prim_at` (shared/stages.h's placement rule), then its children; the
+ * node's box is written after theirs. */
 static void emit(layout_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at)
 {
     const atrbvh_i_tree *t = c->t;
     const int leaf = (c->size[node] & ATRBVH_SIZE_LEAF) != 0;
     const uint32_t l = leaf ? 0 : t->left[node], r = leaf ? 0 : t->right[node];
-    c->nodes[at] = atrbvh_layout_node(t->box[node], c->size[node],
-                                      t->count[node], at, prim_at,
-                                      leaf ? 0 : c->size[l]);
+    atrbvh_box b;
     if (leaf) {
-        gather(t, node, c->prims + prim_at);
+        b = gather(c, node, c->prims + prim_at);
+        if (c->box)
+            b = atrbvh_i_is_leaf(t, node) ? leaf_box(c, node) : c->box[node];
+        c->nodes[at] = atrbvh_layout_node(b, c->size[node], t->count[node], at,
+                                          prim_at, 0);
         return;
     }
     {
@@ -73,6 +124,22 @@ static void emit(layout_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at)
             emit(c, l, at + 1, prim_at);
             emit(c, r, right_at, right_prim);
         }
+        if (c->box) {
+            b = c->box[node];
+        } else {
+            const atrbvh_node *nl = &c->nodes[at + 1], *nr = &c->nodes[right_at];
+            atrbvh_box bl, br;
+            int k;
+            for (k = 0; k < 3; k++) {
+                bl.min[k] = nl->min[k];
+                bl.max[k] = nl->max[k];
+                br.min[k] = nr->min[k];
+                br.max[k] = nr->max[k];
+            }
+            b = atrbvh_box_union(bl, br);
+        }
+        c->nodes[at] = atrbvh_layout_node(b, c->size[node], t->count[node], at,
+                                          prim_at, c->size[l]);
     }
 }
 
@@ -87,10 +154,20 @@ atrbvh_status atrbvh_i_cpu_layout(atrbvh_device *dev, atrbvh_i_run *run,
     x.size = c->size;
     x.nodes = run->nodes;
     x.prims = run->prim_indices;
+    x.box = c->tree.box; /* NULL unless kept (collapse.c) */
+    x.leaf_boxes = x.box && !c->sizes_in_leaf_boxes;
+    x.g = run->in.g;
+    x.vstride = run->in.vstride / sizeof(float);
+    x.istride = run->in.istride / sizeof(uint32_t);
+    x.bstride = run->in.bstride / sizeof(float);
 #ifdef _OPENMP
 #pragma omp parallel num_threads(run->cfg->threads)
 #pragma omp single
 #endif
     emit(&x, 0, 0, 0);
+    /* A handle keeps the node boxes of an optimised tree (read here
+     * beside the output anyway); an LBVH's collapse releases them. */
+    c->tree.box = NULL;
+    atrbvh_i_cpu_scratch_end(c);
     return ATRBVH_OK;
 }

@@ -34,7 +34,8 @@
 #define PREFETCH 16
 
 /* Climbs from `node` (already final) while it is the second child to
- * arrive at its parent. */
+ * arrive at its parent.  Without a cost array (t->cost NULL) boxes and
+ * counts only. */
 static inline void climb(atrbvh_i_tree *t, const atrbvh_cost_params *p,
                          uint32_t node, int atomic)
 {
@@ -53,34 +54,72 @@ static inline void climb(atrbvh_i_tree *t, const atrbvh_cost_params *p,
             return; /* first to arrive: the sibling's climb goes on */
         l = t->left[up];
         r = t->right[up];
-        atrbvh_refit_node(p, t->box[l], count[l], t->cost[l], t->box[r],
-                          count[r], t->cost[r], &t->box[up], &count[up],
-                          &t->cost[up]);
+        if (t->cost) {
+            atrbvh_refit_node(p, t->box[l], count[l], t->cost[l], t->box[r],
+                              count[r], t->cost[r], &t->box[up], &count[up],
+                              &t->cost[up]);
+        } else { /* the same box and count, no cost (an LBVH) */
+            t->box[up] = atrbvh_box_union(t->box[l], t->box[r]);
+            count[up] = count[l] + count[r];
+        }
         node = up;
     }
 }
 
 /* Leaves lo .. hi-1 (sorted positions): their boxes and costs, then the
- * climb from each. */
+ * climb from each.  gather: the leaf boxes still to be fetched from
+ * prim_boxes (else they are in place). */
 static inline void refit_block(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
                                const uint32_t *order,
                                const atrbvh_cost_params *p, int64_t lo,
-                               int64_t hi, int atomic)
+                               int64_t hi, int atomic, int gather)
 {
     const int64_t n = t->n;
     int64_t i;
     for (i = lo; i < hi; i++) {
         const uint32_t leaf = (uint32_t)(n - 1 + i);
-        const atrbvh_box b = prim_boxes[order[i]];
+        atrbvh_box b;
+        if (gather) {
+            b = prim_boxes[order[i]];
 #if defined(__GNUC__) || defined(__clang__)
-        /* The gather is random; the climb's branches would stall it. */
-        if (i + PREFETCH < hi)
-            __builtin_prefetch(&prim_boxes[order[i + PREFETCH]]);
+            /* The gather is random; the climb's branches would stall it. */
+            if (i + PREFETCH < hi)
+                __builtin_prefetch(&prim_boxes[order[i + PREFETCH]]);
 #endif
-        t->box[leaf] = b;
+            t->box[leaf] = b;
+        } else {
+            b = t->box[leaf];
+        }
         t->count[leaf] = 1;
-        t->cost[leaf] = atrbvh_refit_leaf_cost(p, b);
+        if (t->cost)
+            t->cost[leaf] = atrbvh_refit_leaf_cost(p, b);
         climb(t, p, leaf, atomic);
+    }
+}
+
+/* In place: the primitive boxes are entries 0 .. n-1 of t->box (the
+ * memory plan, backend.c), the leaves n-1 .. 2n-2 take them in sorted
+ * order.  Only entry n-1 is both read and written, so it is read first;
+ * every leaf is written before any climb writes an internal node over
+ * entries 0 .. n-2. */
+static void gather_in_place(atrbvh_i_tree *t, const uint32_t *order,
+                            int threads)
+{
+    const int64_t n = t->n;
+    atrbvh_box *const box = t->box;
+    const atrbvh_box last = box[n - 1];
+    int64_t i;
+    (void)threads;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(static)
+#endif
+    for (i = 0; i < n; i++) {
+        const uint32_t k = order[i];
+#if defined(__GNUC__) || defined(__clang__)
+        if (i + PREFETCH < n)
+            __builtin_prefetch(&box[order[i + PREFETCH]]);
+#endif
+        box[n - 1 + i] = k == (uint32_t)(n - 1) ? last : box[k];
     }
 }
 
@@ -89,15 +128,19 @@ void atrbvh_i_refit(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
                     int threads)
 {
     const int64_t n = t->n;
+    /* prim_boxes in the node box array: gather first, in place. */
+    const int gather = prim_boxes != t->box;
     int64_t i;
     if (threads < 1)
         threads = 1;
     if ((int64_t)threads > n)
         threads = (int)n;
+    if (!gather)
+        gather_in_place(t, order, threads);
     if (threads == 1) {
         for (i = 0; i + 1 < n; i++)
             t->count[i] = 0;
-        refit_block(t, prim_boxes, order, p, 0, n, 0);
+        refit_block(t, prim_boxes, order, p, 0, n, 0, gather);
         return;
     }
 #ifdef _OPENMP
@@ -115,7 +158,7 @@ void atrbvh_i_refit(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
                                   (uint64_t)threads),
                         (int64_t)((uint64_t)n * (uint64_t)(b + 1) /
                                   (uint64_t)threads),
-                        1);
+                        1, gather);
     }
 #endif
 }
@@ -125,13 +168,23 @@ atrbvh_status atrbvh_i_cpu_refit(atrbvh_device *dev, atrbvh_i_run *run,
                                  atrbvh_error *error)
 {
     atrbvh_i_cpu_run *c = run->state;
+    atrbvh_status st;
     (void)dev;
-    (void)error;
+    /* The keys are read no more: their slot takes the costs. */
+    atrbvh_i_scratch_done(c->scratch, CPU_KEYS);
+    /* An LBVH reads no cost after this stage (the collapse recomputes
+     * them): it keeps none. */
+    st = atrbvh_i_cpu_tree_values(c, run->cfg->method != ATRBVH_METHOD_LBVH,
+                                  error);
+    if (st != ATRBVH_OK)
+        return st;
     atrbvh_i_refit(&c->tree, c->boxes, c->order, &run->cfg->cost,
                    run->cfg->threads);
-    /* The leaves hold the primitive boxes now. */
+    /* The leaves hold the primitive boxes now; the order array lives on
+     * as leaf_prim unless there are kept ids. */
     atrbvh_i_scratch_done(c->scratch, CPU_BOXES);
-    atrbvh_i_scratch_done(c->scratch, CPU_ORDER);
+    if (c->order != c->tree.leaf_prim)
+        atrbvh_i_scratch_done(c->scratch, CPU_ORDER);
     c->boxes = NULL;
     c->order = NULL;
     return ATRBVH_OK;
