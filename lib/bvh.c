@@ -66,7 +66,8 @@ atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *b)
         return ATRBVH_ERR_BACKEND;
     b->stats.nodes = b->node_count;
     b->stats.leaves = leaves;
-    b->stats.primitives = b->prim_count;
+    /* a split tree references some primitives more than once */
+    b->stats.primitives = b->split_prims ? b->split_prims : b->prim_count;
     b->stats.max_depth = deepest;
     b->stats.max_leaf_primitives = largest;
     b->stats.sah = atrbvh_sah(b->nodes, b->node_count, b->stats.ci,

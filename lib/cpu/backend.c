@@ -106,6 +106,21 @@ static atrbvh_status cpu_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
 {
     atrbvh_i_cpu_run *c = run->state;
     (void)dev;
+    if (run->n > run->in.g->primitive_count) {
+        /* Split references: more than the plan was made for.  Plan again
+         * for them and make the node box slot its new size now, before
+         * c->boxes points into it (a slot growing later would move the
+         * boxes under that pointer).  The references are copied below
+         * from the pipeline's own array. */
+        plan(c->scratch, run->n, run->cfg->method);
+        if (!atrbvh_i_scratch_get(c->scratch, CPU_BOX, 2 * (size_t)run->n - 1,
+                                  sizeof(atrbvh_box)))
+            return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                                 "cannot allocate %lu node boxes",
+                                 (unsigned long)(2 * (size_t)run->n - 1));
+        atrbvh_i_scratch_done(c->scratch, CPU_BOX);
+        c->boxes = NULL;
+    }
     /* The pipeline's boxes may be the scratch the bounds stage wrote;
      * memmove keeps that case right.  Other boxes may be more than the
      * bounds stage's (split references): the slot grows. */
@@ -119,6 +134,7 @@ static atrbvh_status cpu_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
     }
     memmove(c->boxes, boxes, (size_t)run->n * sizeof *boxes);
     c->ids = NULL;
+    c->kept_ids = ids != NULL;
     if (ids) {
         c->ids = atrbvh_i_scratch_get(c->scratch, CPU_IDS, run->n,
                                       sizeof *c->ids);

@@ -35,6 +35,7 @@ atrbvh_status atrbvh_i_cpu_bounds(atrbvh_device *dev, atrbvh_i_run *run,
                              "cannot allocate %lu primitive boxes",
                              (unsigned long)n);
     c->ids = NULL;
+    c->kept_ids = 0;
     smin0 = smin1 = smin2 = cmin0 = cmin1 = cmin2 = INFINITY;
     smax0 = smax1 = smax2 = cmax0 = cmax1 = cmax2 = -INFINITY;
 #ifdef _OPENMP

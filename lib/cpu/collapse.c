@@ -88,7 +88,7 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
 #endif
     (void)decide(&x, 0);
     run->node_count = c->size[0] & ATRBVH_SIZE_MASK;
-    if (!c->ids && run->cfg->method != ATRBVH_METHOD_LBVH &&
+    if (!c->kept_ids && run->cfg->method != ATRBVH_METHOD_LBVH &&
         c->scratch->transient) {
         /* An optimised tree's internal boxes are read by the layout (a
          * treelet root keeps its old box), its leaves' are the
@@ -101,7 +101,7 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
         c->size = moved;
         c->sizes_in_leaf_boxes = 1;
         atrbvh_i_scratch_release(c->scratch, CPU_SIZE);
-    } else if (!c->ids && run->cfg->method == ATRBVH_METHOD_LBVH) {
+    } else if (!c->kept_ids && run->cfg->method == ATRBVH_METHOD_LBVH) {
         /* the layout recomputes the boxes (layout.c says when it can) */
         atrbvh_i_scratch_release(c->scratch, CPU_BOX);
         c->tree.box = NULL;

@@ -45,6 +45,8 @@ typedef struct atrbvh_i_cpu_run {
     atrbvh_i_scratch *scratch;
     atrbvh_box *boxes;  /* bounds (or set_prims)             */
     uint32_t *ids;      /* NULL: every input primitive kept  */
+    int kept_ids; /* set_prims gave ids (skip_invalid, split): a leaf's
+                     box is then kept, not recomputed (collapse.c) */
     uint64_t *keys;     /* morton, sorted by sort            */
     uint32_t *order;    /* sort: build index of position p   */
     atrbvh_i_tree tree; /* hierarchy ... optimise            */
