@@ -347,98 +347,129 @@ __kernel void collapse(__global const atrbvh_box *box,
 }
 
 /* ------------------------------------------------------------------ layout */
-/* One item per tree node: its depth-first position and first primitive
- * follow from the path to the root by the placement rule the CPU's
- * top-down emission applies (atrbvh_layout_right_pos/_prim); it is
- * emitted (atrbvh_layout_node) when no proper ancestor became a leaf.
- * Every tree leaf writes its primitive at its position, which is where a
- * collapsed ancestor's primitives go too (left to right). */
-/* Every node's output position and first primitive are sums of per-edge
- * offsets along its path to the root (shared/stages.h's placement rule:
- * a left child sits 1 after its parent, a right child after the left
- * subtree), and a node is emitted unless an ancestor is a collapsed leaf.
- * Walking each path would cost the tree's depth per node; instead the
- * paths are summed by pointer jumping (Wyllie): each round every node adds
- * its ancestor's partial sum and jumps to the ancestor's ancestor, so
- * ceil(log2(depth)) rounds suffice.  Integer sums, two buffers (a round
- * reads one and writes the other): the result is exact and independent
- * of scheduling.  j holds two halves of 3 x nodes words: ancestor (0 at
- * the root), position offset | ATRBVH_SIZE_LEAF when some ancestor is a
- * collapsed leaf, primitive offset; *more is set when some node still
- * has an ancestor after the round. */
-__kernel void layout_link(__global const uint *count,
-                          __global const uint *left,
-                          __global const uint *parent,
-                          __global const uint *size, __global uint *j,
-                          atrbvh_kargs_tree a)
+/* The CPU's top-down emission (lib/cpu/layout.c), split where the CPU
+ * stops spawning tasks: layout_top (one work-item) emits the nodes above
+ * the cut (more than ATRBVH_CL_LAYOUT_CUT primitives, not a collapsed
+ * leaf) and lists every subtree hanging below it with its output
+ * position and first primitive; layout (one item per listed subtree)
+ * emits that subtree depth-first, as the CPU's emit/gather do.  Both
+ * walks are stackless: going up, a node's position and first primitive
+ * follow back from its child's by the placement rule (shared/stages.h:
+ * a left child sits at pos + 1 with the same primitives, a right child at
+ * atrbvh_layout_right_pos / _right_prim of its parent's), so any depth
+ * is fine.  Integer arithmetic only: the output is the CPU's exactly. */
+#define ATRBVH_CL_LAYOUT_CUT 256u
+
+/* From child `cur` (at `*pos`, `*prim`) up to its parent: false at `root`;
+ * when `cur` is a left child, moves to its right sibling instead (true),
+ * else to the parent and goes on climbing. */
+static int layout_next(__global const uint *count, __global const uint *left,
+                       __global const uint *right, __global const uint *parent,
+                       __global const uint *size, uint root, uint *cur,
+                       uint *pos, uint *prim)
 {
-    uint x = (uint)get_global_id(0), nodes = 2u * a.n - 1u;
-    uint up, pos = 0u, prim = 0u;
-    if (x >= nodes)
-        return;
-    up = x == 0u ? 0u : parent[x];
-    if (x != 0u) {
-        if (left[up] == x) {
-            pos = 1u;
-        } else {
-            uint l = left[up];
-            pos = atrbvh_layout_right_pos(0u, size[l]);
-            prim = atrbvh_layout_right_prim(0u, count[l]);
+    for (;;) {
+        uint up, l;
+        if (*cur == root)
+            return 0;
+        up = parent[*cur];
+        l = left[up];
+        if (l == *cur) {
+            /* parent at *pos - 1; its right child after the left subtree */
+            *pos = atrbvh_layout_right_pos(*pos - 1u, size[l]);
+            *prim = atrbvh_layout_right_prim(*prim, count[l]);
+            *cur = right[up];
+            return 1;
         }
-        if (size[up] & ATRBVH_SIZE_LEAF)
-            pos |= ATRBVH_SIZE_LEAF;
+        *pos -= 1u + (size[l] & ATRBVH_SIZE_MASK);
+        *prim -= count[l];
+        *cur = up;
     }
-    j[x] = up;
-    j[nodes + x] = pos;
-    j[2u * nodes + x] = prim;
 }
 
-__kernel void layout_jump(__global uint *j, __global uint *more, uint from,
-                          atrbvh_kargs_tree a)
+__kernel void layout_top(__global const uint *count, __global const uint *left,
+                         __global const uint *right,
+                         __global const uint *parent,
+                         __global const uint *size,
+                         __global const atrbvh_box *box,
+                         __global atrbvh_node *nodes, __global uint *list,
+                         __global uint *list_len, atrbvh_kargs_tree a)
 {
-    uint x = (uint)get_global_id(0), nodes = 2u * a.n - 1u;
-    __global const uint *src = j + (size_t)from * 3u * nodes;
-    __global uint *dst = j + (size_t)(1u - from) * 3u * nodes;
-    uint up, pos, prim;
-    if (x >= nodes)
+    uint cur = 0u, pos = 0u, prim = 0u, k = 0u;
+    if (get_global_id(0) != 0)
         return;
-    up = src[x];
-    pos = src[nodes + x];
-    prim = src[2u * nodes + x];
-    if (up != 0u) {
-        uint upos = src[nodes + up];
-        pos = ((pos & ATRBVH_SIZE_MASK) + (upos & ATRBVH_SIZE_MASK)) |
-              ((pos | upos) & ATRBVH_SIZE_LEAF);
-        prim += src[2u * nodes + up];
-        up = src[up];
-        if (up != 0u)
-            *more = 1u; /* every writer stores the same value */
-    }
-    dst[x] = up;
-    dst[nodes + x] = pos;
-    dst[2u * nodes + x] = prim;
+    do {
+        /* down the left spine while above the cut */
+        while (!(size[cur] & ATRBVH_SIZE_LEAF) &&
+               count[cur] > ATRBVH_CL_LAYOUT_CUT) {
+            uint l = left[cur];
+            nodes[pos] = atrbvh_layout_node(box[cur], size[cur], count[cur],
+                                            pos, prim, size[l]);
+            cur = l;
+            pos += 1u;
+        }
+        list[3u * k] = cur;
+        list[3u * k + 1u] = pos;
+        list[3u * k + 2u] = prim;
+        k++;
+    } while (layout_next(count, left, right, parent, size, 0u, &cur, &pos,
+                         &prim));
+    *list_len = k;
+    (void)a;
 }
 
 __kernel void layout(__global const atrbvh_box *box, __global const uint *count,
-                     __global const uint *left, __global const uint *size,
-                     __global const uint *leaf_prim, __global const uint *j,
-                     __global atrbvh_node *nodes, __global uint *prims,
-                     uint from, atrbvh_kargs_tree a)
+                     __global const uint *left, __global const uint *right,
+                     __global const uint *parent, __global const uint *size,
+                     __global const uint *leaf_prim,
+                     __global const uint *list, __global atrbvh_node *nodes,
+                     __global uint *prims, uint list_len, atrbvh_kargs_tree a)
 {
-    uint x = (uint)get_global_id(0), n = a.n, all = 2u * n - 1u;
-    __global const uint *src = j + (size_t)from * 3u * all;
-    uint pos, prim;
-    if (x >= all)
+    uint i = (uint)get_global_id(0), root, cur, pos, prim, first = a.n - 1u;
+    if (i >= list_len)
         return;
-    pos = src[all + x];
-    prim = src[2u * all + x];
-    if (x >= n - 1u)
-        prims[prim] = leaf_prim[x - (n - 1u)];
-    if (pos & ATRBVH_SIZE_LEAF)
-        return;
-    nodes[pos] = atrbvh_layout_node(
-        box[x], size[x], count[x], pos, prim,
-        (size[x] & ATRBVH_SIZE_LEAF) ? 0u : size[left[x]]);
+    root = cur = list[3u * i];
+    pos = list[3u * i + 1u];
+    prim = list[3u * i + 2u];
+    do {
+        uint s;
+        /* emit down the left spine to a leaf (a collapsed one too) */
+        while (!((s = size[cur]) & ATRBVH_SIZE_LEAF)) {
+            uint l = left[cur];
+            nodes[pos] = atrbvh_layout_node(box[cur], s, count[cur], pos,
+                                            prim, size[l]);
+            cur = l;
+            pos += 1u;
+        }
+        nodes[pos] = atrbvh_layout_node(box[cur], s, count[cur], pos, prim,
+                                        0u);
+        if (cur >= first) {
+            prims[prim] = leaf_prim[cur - first];
+        } else {
+            /* a collapsed leaf: its primitives left to right (the CPU's
+             * gather); `pos` is the leaf's node throughout */
+            uint g = cur, k = prim;
+            do {
+                while (g < first)
+                    g = left[g];
+                prims[k++] = leaf_prim[g - first];
+                for (;;) {
+                    uint up;
+                    if (g == cur) {
+                        g = ATRBVH_U32_MAX;
+                        break;
+                    }
+                    up = parent[g];
+                    if (left[up] == g) {
+                        g = right[up];
+                        break;
+                    }
+                    g = up;
+                }
+            } while (g != ATRBVH_U32_MAX);
+        }
+    } while (layout_next(count, left, right, parent, size, root, &cur, &pos,
+                         &prim));
 }
 
 /* ------------------------------------------------------------- ray queries */
