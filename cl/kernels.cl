@@ -158,28 +158,131 @@ __kernel void sort_scatter(__global const ulong *src_k,
 }
 
 /* --------------------------------------------------------------- hierarchy */
+/* The CPU's algorithm (lib/cpu/hierarchy.c), kernel for kernel: the node
+ * whose split is s spans from its nearest split to the left with a smaller
+ * delta to the nearest one to the right; hierarchy_block (one item per
+ * contiguous block of splits) finds them with a stack, writes every node
+ * whose two neighbours lie in its block and leaves the rest (its prefix
+ * minima and its final stack, both strictly monotone in delta, so at most
+ * ATRBVH_CL_HIER_SIDE each) in `over`; hierarchy (one item) runs the same
+ * stack over all blocks' leftovers in position order.  The tree is
+ * Karras's (atrbvh_karras_delta's tie rule), identical for any block
+ * count. */
+#define ATRBVH_CL_HIER_SIDE 128u
+
+/* Internal node of split s from its neighbours ps (-1: none) and ns (n-1:
+ * none) with their deltas (lib/cpu/hierarchy.c's emit). */
+static void hier_emit(__global uint *left, __global uint *right,
+                      __global uint *count, __global uint *parent, long n,
+                      long s, long ps, int dps, long ns, int dns)
+{
+    long l = ps + 1, r = ns;
+    uint id, lc, rc;
+    if (ps < 0)
+        id = ns == n - 1 ? 0u : (uint)r;
+    else if (ns == n - 1)
+        id = (uint)l;
+    else
+        id = dns > dps ? (uint)r : (uint)l;
+    lc = (uint)(l == s ? s + n - 1 : s);
+    rc = (uint)(s + 1 == r ? s + n : s + 1);
+    left[id] = lc;
+    right[id] = rc;
+    count[id] = (uint)(r - l + 1);
+    parent[lc] = id;
+    parent[rc] = id;
+}
+
+/* `over`: 2 * ATRBVH_CL_HIER_SIDE split positions per block, then the
+ * blocks' leftover counts. */
+__kernel void hierarchy_block(__global const ulong *keys, __global uint *left,
+                              __global uint *right, __global uint *parent,
+                              __global uint *count, __global uint *leaf_prim,
+                              __global const uint *order,
+                              __global const uint *ids, __global uint *over,
+                              uint blocks, atrbvh_kargs_tree a)
+{
+    uint b = (uint)get_global_id(0), sp = 0u, nout = 0u, k;
+    long n = (long)a.n, lo, hi, s;
+    uint st_s[ATRBVH_CL_HIER_SIDE];
+    int st_d[ATRBVH_CL_HIER_SIDE];
+    __global uint *out;
+    if (b >= blocks)
+        return;
+    out = over + (size_t)b * (2u * ATRBVH_CL_HIER_SIDE);
+    lo = (long)((ulong)(n - 1) * (ulong)b / (ulong)blocks);
+    hi = (long)((ulong)(n - 1) * (ulong)(b + 1u) / (ulong)blocks);
+    for (s = lo; s < hi; s++) {
+        int d = atrbvh_karras_delta(keys, n, s, s + 1);
+        count[n - 1 + s] = 1u;
+        leaf_prim[s] = a.has_ids ? ids[order[s]] : order[s];
+        while (sp > 0u && st_d[sp - 1u] > d) {
+            uint x = st_s[--sp];
+            if (sp > 0u)
+                hier_emit(left, right, count, parent, n, (long)x,
+                          (long)st_s[sp - 1u], st_d[sp - 1u], s, d);
+        }
+        if (sp == 0u && nout < ATRBVH_CL_HIER_SIDE)
+            out[nout++] = (uint)s; /* a prefix minimum */
+        if (sp == ATRBVH_CL_HIER_SIDE)
+            continue; /* keys out of order: cannot happen when sorted */
+        st_s[sp] = (uint)s;
+        st_d[sp++] = d;
+    }
+    /* st[0] is the last prefix minimum, already out. */
+    for (k = 1u; k < sp; k++)
+        out[nout++] = st_s[k];
+    over[(size_t)blocks * (2u * ATRBVH_CL_HIER_SIDE) + b] = nout;
+}
+
 __kernel void hierarchy(__global const ulong *keys, __global uint *left,
                         __global uint *right, __global uint *parent,
                         __global uint *count, __global uint *leaf_prim,
                         __global const uint *order, __global const uint *ids,
+                        __global const uint *over, uint blocks,
                         atrbvh_kargs_tree a)
 {
-    uint i = (uint)get_global_id(0), n = a.n;
-    if (i >= n)
+    long n = (long)a.n;
+    uint st_s[ATRBVH_CL_HIER_SIDE];
+    int st_d[ATRBVH_CL_HIER_SIDE];
+    uint sp = 0u, b, k;
+    if (get_global_id(0) != 0)
         return;
-    if (i + 1u < n) {
-        uint l, r, c;
-        atrbvh_karras_node(keys, (long)n, (long)i, &l, &r, &c);
-        left[i] = l;
-        right[i] = r;
-        count[i] = c;
-        parent[l] = i;
-        parent[r] = i;
+    parent[0] = ATRBVH_U32_MAX;
+    count[2 * n - 2] = 1u;
+    leaf_prim[n - 1] = a.has_ids ? ids[order[n - 1]] : order[n - 1];
+    if (n == 1)
+        return;
+    for (b = 0u; b < blocks; b++) {
+        __global const uint *in = over + (size_t)b * (2u * ATRBVH_CL_HIER_SIDE);
+        uint m = over[(size_t)blocks * (2u * ATRBVH_CL_HIER_SIDE) + b];
+        for (k = 0u; k < m; k++) {
+            long s = (long)in[k];
+            int d = atrbvh_karras_delta(keys, n, s, s + 1);
+            while (sp > 0u && st_d[sp - 1u] > d) {
+                uint x = st_s[--sp];
+                if (sp > 0u)
+                    hier_emit(left, right, count, parent, n, (long)x,
+                              (long)st_s[sp - 1u], st_d[sp - 1u], s, d);
+                else
+                    hier_emit(left, right, count, parent, n, (long)x, -1, 0,
+                              s, d);
+            }
+            if (sp == ATRBVH_CL_HIER_SIDE)
+                continue; /* keys out of order (see hierarchy_block) */
+            st_s[sp] = (uint)s;
+            st_d[sp++] = d;
+        }
     }
-    count[n - 1u + i] = 1u;
-    leaf_prim[i] = a.has_ids ? ids[order[i]] : order[i];
-    if (i == 0u)
-        parent[0] = ATRBVH_U32_MAX;
+    while (sp > 0u) {
+        uint x = st_s[--sp];
+        if (sp > 0u)
+            hier_emit(left, right, count, parent, n, (long)x,
+                      (long)st_s[sp - 1u], st_d[sp - 1u], n - 1, 0);
+        else
+            hier_emit(left, right, count, parent, n, (long)x, -1, 0, n - 1,
+                      0);
+    }
 }
 
 /* ------------------------------------------------------------------- refit */

@@ -40,6 +40,7 @@ enum {
     K_SORT_COUNT,
     K_SORT_SCAN,
     K_SORT_SCATTER,
+    K_HIERARCHY_BLOCK,
     K_HIERARCHY,
     K_REFIT,
     K_OPT_PREPARE,
@@ -81,7 +82,7 @@ enum {
     B_LIST_COUNT,
     B_SCRATCH,    /* optimise: per-worker treelet tables  */
     B_SIZE,       /* collapse: output nodes per subtree   */
-    B_JUMP,       /* layout: subtrees below the top walk  */
+    B_JUMP,       /* hierarchy leftovers; layout subtrees */
     B_FLAG,       /* layout: their count                  */
     B_OUT_NODES,
     B_OUT_PRIMS,

@@ -268,17 +268,34 @@ static atrbvh_status st_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_cl_device *c = cl_of(dev);
     atrbvh_kargs_tree a = tree_args(c, run);
     size_t nodes = tree_nodes(run), inner = tree_inner(run);
+    cl_uint blocks;
     CL_CHECK(atrbvh_i_cl_buffer(c, B_LEFT, inner, 4, "left", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_RIGHT, inner, 4, "right", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_PARENT, nodes, 4, "parent", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_COUNT, nodes, 4, "count", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_LEAF_PRIM, run->n, 4, "leaf primitives",
                                 error));
+    /* Blocks of the first pass: enough items for every compute unit;
+     * their leftovers (2 * 128 positions each, then the counts) in B_JUMP,
+     * which layout reuses later. */
+    blocks = c->compute_units * 16u;
+    if (blocks > 256u)
+        blocks = 256u;
+    if (blocks > run->n - 1u)
+        blocks = run->n - 1u;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_JUMP, (size_t)blocks * 257u + 1u, 4,
+                                "hierarchy leftovers", error));
     /* ids: read only when has_ids; B_ORDER stands in otherwise. */
-    CL_RUN(c, K_HIERARCHY, run->n, error, CL_BUF(B_KEYS), CL_BUF(B_LEFT),
+    CL_RUN(c, K_HIERARCHY_BLOCK, blocks, error, CL_BUF(B_KEYS),
+           CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
+           CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
+           CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_BUF(B_JUMP),
+           CL_VAL(blocks), CL_VAL(a));
+    CL_RUN(c, K_HIERARCHY, 1, error, CL_BUF(B_KEYS), CL_BUF(B_LEFT),
            CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
-           CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_VAL(a));
+           CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_BUF(B_JUMP),
+           CL_VAL(blocks), CL_VAL(a));
     return atrbvh_i_cl_finish(c, error);
 }
 
