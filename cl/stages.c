@@ -446,13 +446,13 @@ static atrbvh_status st_layout(atrbvh_device *dev, atrbvh_i_run *run,
 {
     atrbvh_cl_device *c = cl_of(dev);
     atrbvh_kargs_tree a = tree_args(c, run);
+    cl_uint list_len = 0;
     /* Sized for the most nodes n leaves can give (2n - 1), not this
      * tree's count: the next build of n primitives then reuses it. */
     CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_NODES, tree_nodes(run),
                                 sizeof(atrbvh_node), "output nodes", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_PRIMS, run->n, 4,
                                 "output primitive indices", error));
-    cl_uint list_len = 0;
     /* At most one listed subtree per leaf: 3 words each. */
     CL_CHECK(atrbvh_i_cl_buffer(c, B_JUMP, 3 * (size_t)run->n, 4,
                                 "layout subtree list", error));
