@@ -349,8 +349,8 @@ __kernel void opt_prepare(__global const uint *left, __global const uint *right,
         list[atomic_inc(list_count)] = i;
 }
 
-/* One round: `workers` persistent items take the start nodes in turn and
- * walk up; a crown node is processed (atrbvh_treelet_process, the CPU's
+/* One round: `workers` persistent items take contiguous shares of the
+ * start nodes and walk up; a crown node is processed (atrbvh_treelet_process, the CPU's
  * function) by the item whose arrival completes its crown children, i.e.
  * only after its whole subtree is final.  The treelet root keeps its id and
  * parent, so the walk's way up stays valid.  The tree arrays are read and
@@ -392,7 +392,11 @@ __kernel void opt_round(__global uint *left, __global uint *right,
     t.box = box;
     t.cost = cost;
     t.n_internal = a.n_internal;
-    for (k = w; k < a.list_len; k += a.workers) {
+    /* A contiguous share of the start list (neighbouring nodes: their walks
+     * meet soon, on data still in cache, as the CPU's post-order walk of a
+     * subtree does), not every workers-th entry. */
+    for (k = (uint)((ulong)a.list_len * w / a.workers);
+         k < (uint)((ulong)a.list_len * (w + 1u) / a.workers); k++) {
         uint x = list[k];
         for (;;) {
             uint up;
