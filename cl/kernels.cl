@@ -158,28 +158,131 @@ __kernel void sort_scatter(__global const ulong *src_k,
 }
 
 /* --------------------------------------------------------------- hierarchy */
+/* The CPU's algorithm (lib/cpu/hierarchy.c), kernel for kernel: the node
+ * whose split is s spans from its nearest split to the left with a smaller
+ * delta to the nearest one to the right; hierarchy_block (one item per
+ * contiguous block of splits) finds them with a stack, writes every node
+ * whose two neighbours lie in its block and leaves the rest (its prefix
+ * minima and its final stack, both strictly monotone in delta, so at most
+ * ATRBVH_CL_HIER_SIDE each) in `over`; hierarchy (one item) runs the same
+ * stack over all blocks' leftovers in position order.  The tree is
+ * Karras's (atrbvh_karras_delta's tie rule), identical for any block
+ * count. */
+#define ATRBVH_CL_HIER_SIDE 128u
+
+/* Internal node of split s from its neighbours ps (-1: none) and ns (n-1:
+ * none) with their deltas (lib/cpu/hierarchy.c's emit). */
+static void hier_emit(__global uint *left, __global uint *right,
+                      __global uint *count, __global uint *parent, long n,
+                      long s, long ps, int dps, long ns, int dns)
+{
+    long l = ps + 1, r = ns;
+    uint id, lc, rc;
+    if (ps < 0)
+        id = ns == n - 1 ? 0u : (uint)r;
+    else if (ns == n - 1)
+        id = (uint)l;
+    else
+        id = dns > dps ? (uint)r : (uint)l;
+    lc = (uint)(l == s ? s + n - 1 : s);
+    rc = (uint)(s + 1 == r ? s + n : s + 1);
+    left[id] = lc;
+    right[id] = rc;
+    count[id] = (uint)(r - l + 1);
+    parent[lc] = id;
+    parent[rc] = id;
+}
+
+/* `over`: 2 * ATRBVH_CL_HIER_SIDE split positions per block, then the
+ * blocks' leftover counts. */
+__kernel void hierarchy_block(__global const ulong *keys, __global uint *left,
+                              __global uint *right, __global uint *parent,
+                              __global uint *count, __global uint *leaf_prim,
+                              __global const uint *order,
+                              __global const uint *ids, __global uint *over,
+                              uint blocks, atrbvh_kargs_tree a)
+{
+    uint b = (uint)get_global_id(0), sp = 0u, nout = 0u, k;
+    long n = (long)a.n, lo, hi, s;
+    uint st_s[ATRBVH_CL_HIER_SIDE];
+    int st_d[ATRBVH_CL_HIER_SIDE];
+    __global uint *out;
+    if (b >= blocks)
+        return;
+    out = over + (size_t)b * (2u * ATRBVH_CL_HIER_SIDE);
+    lo = (long)((ulong)(n - 1) * (ulong)b / (ulong)blocks);
+    hi = (long)((ulong)(n - 1) * (ulong)(b + 1u) / (ulong)blocks);
+    for (s = lo; s < hi; s++) {
+        int d = atrbvh_karras_delta(keys, n, s, s + 1);
+        count[n - 1 + s] = 1u;
+        leaf_prim[s] = a.has_ids ? ids[order[s]] : order[s];
+        while (sp > 0u && st_d[sp - 1u] > d) {
+            uint x = st_s[--sp];
+            if (sp > 0u)
+                hier_emit(left, right, count, parent, n, (long)x,
+                          (long)st_s[sp - 1u], st_d[sp - 1u], s, d);
+        }
+        if (sp == 0u && nout < ATRBVH_CL_HIER_SIDE)
+            out[nout++] = (uint)s; /* a prefix minimum */
+        if (sp == ATRBVH_CL_HIER_SIDE)
+            continue; /* keys out of order: cannot happen when sorted */
+        st_s[sp] = (uint)s;
+        st_d[sp++] = d;
+    }
+    /* st[0] is the last prefix minimum, already out. */
+    for (k = 1u; k < sp; k++)
+        out[nout++] = st_s[k];
+    over[(size_t)blocks * (2u * ATRBVH_CL_HIER_SIDE) + b] = nout;
+}
+
 __kernel void hierarchy(__global const ulong *keys, __global uint *left,
                         __global uint *right, __global uint *parent,
                         __global uint *count, __global uint *leaf_prim,
                         __global const uint *order, __global const uint *ids,
+                        __global const uint *over, uint blocks,
                         atrbvh_kargs_tree a)
 {
-    uint i = (uint)get_global_id(0), n = a.n;
-    if (i >= n)
+    long n = (long)a.n;
+    uint st_s[ATRBVH_CL_HIER_SIDE];
+    int st_d[ATRBVH_CL_HIER_SIDE];
+    uint sp = 0u, b, k;
+    if (get_global_id(0) != 0)
         return;
-    if (i + 1u < n) {
-        uint l, r, c;
-        atrbvh_karras_node(keys, (long)n, (long)i, &l, &r, &c);
-        left[i] = l;
-        right[i] = r;
-        count[i] = c;
-        parent[l] = i;
-        parent[r] = i;
+    parent[0] = ATRBVH_U32_MAX;
+    count[2 * n - 2] = 1u;
+    leaf_prim[n - 1] = a.has_ids ? ids[order[n - 1]] : order[n - 1];
+    if (n == 1)
+        return;
+    for (b = 0u; b < blocks; b++) {
+        __global const uint *in = over + (size_t)b * (2u * ATRBVH_CL_HIER_SIDE);
+        uint m = over[(size_t)blocks * (2u * ATRBVH_CL_HIER_SIDE) + b];
+        for (k = 0u; k < m; k++) {
+            long s = (long)in[k];
+            int d = atrbvh_karras_delta(keys, n, s, s + 1);
+            while (sp > 0u && st_d[sp - 1u] > d) {
+                uint x = st_s[--sp];
+                if (sp > 0u)
+                    hier_emit(left, right, count, parent, n, (long)x,
+                              (long)st_s[sp - 1u], st_d[sp - 1u], s, d);
+                else
+                    hier_emit(left, right, count, parent, n, (long)x, -1, 0,
+                              s, d);
+            }
+            if (sp == ATRBVH_CL_HIER_SIDE)
+                continue; /* keys out of order (see hierarchy_block) */
+            st_s[sp] = (uint)s;
+            st_d[sp++] = d;
+        }
     }
-    count[n - 1u + i] = 1u;
-    leaf_prim[i] = a.has_ids ? ids[order[i]] : order[i];
-    if (i == 0u)
-        parent[0] = ATRBVH_U32_MAX;
+    while (sp > 0u) {
+        uint x = st_s[--sp];
+        if (sp > 0u)
+            hier_emit(left, right, count, parent, n, (long)x,
+                      (long)st_s[sp - 1u], st_d[sp - 1u], n - 1, 0);
+        else
+            hier_emit(left, right, count, parent, n, (long)x, -1, 0, n - 1,
+                      0);
+    }
 }
 
 /* ------------------------------------------------------------------- refit */
@@ -246,8 +349,8 @@ __kernel void opt_prepare(__global const uint *left, __global const uint *right,
         list[atomic_inc(list_count)] = i;
 }
 
-/* One round: `workers` persistent items take the start nodes in turn and
- * walk up; a crown node is processed (atrbvh_treelet_process, the CPU's
+/* One round: `workers` persistent items take contiguous shares of the
+ * start nodes and walk up; a crown node is processed (atrbvh_treelet_process, the CPU's
  * function) by the item whose arrival completes its crown children, i.e.
  * only after its whole subtree is final.  The treelet root keeps its id and
  * parent, so the walk's way up stays valid.  The tree arrays are read and
@@ -289,7 +392,11 @@ __kernel void opt_round(__global uint *left, __global uint *right,
     t.box = box;
     t.cost = cost;
     t.n_internal = a.n_internal;
-    for (k = w; k < a.list_len; k += a.workers) {
+    /* A contiguous share of the start list (neighbouring nodes: their walks
+     * meet soon, on data still in cache, as the CPU's post-order walk of a
+     * subtree does), not every workers-th entry. */
+    for (k = (uint)((ulong)a.list_len * w / a.workers);
+         k < (uint)((ulong)a.list_len * (w + 1u) / a.workers); k++) {
         uint x = list[k];
         for (;;) {
             uint up;
@@ -347,98 +454,129 @@ __kernel void collapse(__global const atrbvh_box *box,
 }
 
 /* ------------------------------------------------------------------ layout */
-/* One item per tree node: its depth-first position and first primitive
- * follow from the path to the root by the placement rule the CPU's
- * top-down emission applies (atrbvh_layout_right_pos/_prim); it is
- * emitted (atrbvh_layout_node) when no proper ancestor became a leaf.
- * Every tree leaf writes its primitive at its position, which is where a
- * collapsed ancestor's primitives go too (left to right). */
-/* Every node's output position and first primitive are sums of per-edge
- * offsets along its path to the root (shared/stages.h's placement rule:
- * a left child sits 1 after its parent, a right child after the left
- * subtree), and a node is emitted unless an ancestor is a collapsed leaf.
- * Walking each path would cost the tree's depth per node; instead the
- * paths are summed by pointer jumping (Wyllie): each round every node adds
- * its ancestor's partial sum and jumps to the ancestor's ancestor, so
- * ceil(log2(depth)) rounds suffice.  Integer sums, two buffers (a round
- * reads one and writes the other): the result is exact and independent
- * of scheduling.  j holds two halves of 3 x nodes words: ancestor (0 at
- * the root), position offset | ATRBVH_SIZE_LEAF when some ancestor is a
- * collapsed leaf, primitive offset; *more is set when some node still
- * has an ancestor after the round. */
-__kernel void layout_link(__global const uint *count,
-                          __global const uint *left,
-                          __global const uint *parent,
-                          __global const uint *size, __global uint *j,
-                          atrbvh_kargs_tree a)
+/* The CPU's top-down emission (lib/cpu/layout.c), split where the CPU
+ * stops spawning tasks: layout_top (one work-item) emits the nodes above
+ * the cut (more than ATRBVH_CL_LAYOUT_CUT primitives, not a collapsed
+ * leaf) and lists every subtree hanging below it with its output
+ * position and first primitive; layout (one item per listed subtree)
+ * emits that subtree depth-first, as the CPU's emit/gather do.  Both
+ * walks are stackless: going up, a node's position and first primitive
+ * follow back from its child's by the placement rule (shared/stages.h:
+ * a left child sits at pos + 1 with the same primitives, a right child at
+ * atrbvh_layout_right_pos / _right_prim of its parent's), so any depth
+ * is fine.  Integer arithmetic only: the output is the CPU's exactly. */
+#define ATRBVH_CL_LAYOUT_CUT 256u
+
+/* From child `cur` (at `*pos`, `*prim`) up to its parent: false at `root`;
+ * when `cur` is a left child, moves to its right sibling instead (true),
+ * else to the parent and goes on climbing. */
+static int layout_next(__global const uint *count, __global const uint *left,
+                       __global const uint *right, __global const uint *parent,
+                       __global const uint *size, uint root, uint *cur,
+                       uint *pos, uint *prim)
 {
-    uint x = (uint)get_global_id(0), nodes = 2u * a.n - 1u;
-    uint up, pos = 0u, prim = 0u;
-    if (x >= nodes)
-        return;
-    up = x == 0u ? 0u : parent[x];
-    if (x != 0u) {
-        if (left[up] == x) {
-            pos = 1u;
-        } else {
-            uint l = left[up];
-            pos = atrbvh_layout_right_pos(0u, size[l]);
-            prim = atrbvh_layout_right_prim(0u, count[l]);
+    for (;;) {
+        uint up, l;
+        if (*cur == root)
+            return 0;
+        up = parent[*cur];
+        l = left[up];
+        if (l == *cur) {
+            /* parent at *pos - 1; its right child after the left subtree */
+            *pos = atrbvh_layout_right_pos(*pos - 1u, size[l]);
+            *prim = atrbvh_layout_right_prim(*prim, count[l]);
+            *cur = right[up];
+            return 1;
         }
-        if (size[up] & ATRBVH_SIZE_LEAF)
-            pos |= ATRBVH_SIZE_LEAF;
+        *pos -= 1u + (size[l] & ATRBVH_SIZE_MASK);
+        *prim -= count[l];
+        *cur = up;
     }
-    j[x] = up;
-    j[nodes + x] = pos;
-    j[2u * nodes + x] = prim;
 }
 
-__kernel void layout_jump(__global uint *j, __global uint *more, uint from,
-                          atrbvh_kargs_tree a)
+__kernel void layout_top(__global const uint *count, __global const uint *left,
+                         __global const uint *right,
+                         __global const uint *parent,
+                         __global const uint *size,
+                         __global const atrbvh_box *box,
+                         __global atrbvh_node *nodes, __global uint *list,
+                         __global uint *list_len, atrbvh_kargs_tree a)
 {
-    uint x = (uint)get_global_id(0), nodes = 2u * a.n - 1u;
-    __global const uint *src = j + (size_t)from * 3u * nodes;
-    __global uint *dst = j + (size_t)(1u - from) * 3u * nodes;
-    uint up, pos, prim;
-    if (x >= nodes)
+    uint cur = 0u, pos = 0u, prim = 0u, k = 0u;
+    if (get_global_id(0) != 0)
         return;
-    up = src[x];
-    pos = src[nodes + x];
-    prim = src[2u * nodes + x];
-    if (up != 0u) {
-        uint upos = src[nodes + up];
-        pos = ((pos & ATRBVH_SIZE_MASK) + (upos & ATRBVH_SIZE_MASK)) |
-              ((pos | upos) & ATRBVH_SIZE_LEAF);
-        prim += src[2u * nodes + up];
-        up = src[up];
-        if (up != 0u)
-            *more = 1u; /* every writer stores the same value */
-    }
-    dst[x] = up;
-    dst[nodes + x] = pos;
-    dst[2u * nodes + x] = prim;
+    do {
+        /* down the left spine while above the cut */
+        while (!(size[cur] & ATRBVH_SIZE_LEAF) &&
+               count[cur] > ATRBVH_CL_LAYOUT_CUT) {
+            uint l = left[cur];
+            nodes[pos] = atrbvh_layout_node(box[cur], size[cur], count[cur],
+                                            pos, prim, size[l]);
+            cur = l;
+            pos += 1u;
+        }
+        list[3u * k] = cur;
+        list[3u * k + 1u] = pos;
+        list[3u * k + 2u] = prim;
+        k++;
+    } while (layout_next(count, left, right, parent, size, 0u, &cur, &pos,
+                         &prim));
+    *list_len = k;
+    (void)a;
 }
 
 __kernel void layout(__global const atrbvh_box *box, __global const uint *count,
-                     __global const uint *left, __global const uint *size,
-                     __global const uint *leaf_prim, __global const uint *j,
-                     __global atrbvh_node *nodes, __global uint *prims,
-                     uint from, atrbvh_kargs_tree a)
+                     __global const uint *left, __global const uint *right,
+                     __global const uint *parent, __global const uint *size,
+                     __global const uint *leaf_prim,
+                     __global const uint *list, __global atrbvh_node *nodes,
+                     __global uint *prims, uint list_len, atrbvh_kargs_tree a)
 {
-    uint x = (uint)get_global_id(0), n = a.n, all = 2u * n - 1u;
-    __global const uint *src = j + (size_t)from * 3u * all;
-    uint pos, prim;
-    if (x >= all)
+    uint i = (uint)get_global_id(0), root, cur, pos, prim, first = a.n - 1u;
+    if (i >= list_len)
         return;
-    pos = src[all + x];
-    prim = src[2u * all + x];
-    if (x >= n - 1u)
-        prims[prim] = leaf_prim[x - (n - 1u)];
-    if (pos & ATRBVH_SIZE_LEAF)
-        return;
-    nodes[pos] = atrbvh_layout_node(
-        box[x], size[x], count[x], pos, prim,
-        (size[x] & ATRBVH_SIZE_LEAF) ? 0u : size[left[x]]);
+    root = cur = list[3u * i];
+    pos = list[3u * i + 1u];
+    prim = list[3u * i + 2u];
+    do {
+        uint s;
+        /* emit down the left spine to a leaf (a collapsed one too) */
+        while (!((s = size[cur]) & ATRBVH_SIZE_LEAF)) {
+            uint l = left[cur];
+            nodes[pos] = atrbvh_layout_node(box[cur], s, count[cur], pos,
+                                            prim, size[l]);
+            cur = l;
+            pos += 1u;
+        }
+        nodes[pos] = atrbvh_layout_node(box[cur], s, count[cur], pos, prim,
+                                        0u);
+        if (cur >= first) {
+            prims[prim] = leaf_prim[cur - first];
+        } else {
+            /* a collapsed leaf: its primitives left to right (the CPU's
+             * gather); `pos` is the leaf's node throughout */
+            uint g = cur, k = prim;
+            do {
+                while (g < first)
+                    g = left[g];
+                prims[k++] = leaf_prim[g - first];
+                for (;;) {
+                    uint up;
+                    if (g == cur) {
+                        g = ATRBVH_U32_MAX;
+                        break;
+                    }
+                    up = parent[g];
+                    if (left[up] == g) {
+                        g = right[up];
+                        break;
+                    }
+                    g = up;
+                }
+            } while (g != ATRBVH_U32_MAX);
+        }
+    } while (layout_next(count, left, right, parent, size, root, &cur, &pos,
+                         &prim));
 }
 
 /* ------------------------------------------------------------- ray queries */

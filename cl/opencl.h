@@ -40,13 +40,13 @@ enum {
     K_SORT_COUNT,
     K_SORT_SCAN,
     K_SORT_SCATTER,
+    K_HIERARCHY_BLOCK,
     K_HIERARCHY,
     K_REFIT,
     K_OPT_PREPARE,
     K_OPT_ROUND,
     K_COLLAPSE,
-    K_LAYOUT_LINK,
-    K_LAYOUT_JUMP,
+    K_LAYOUT_TOP,
     K_LAYOUT,
     K_INTERSECT_CLOSEST,
     K_INTERSECT_ANY,
@@ -82,8 +82,8 @@ enum {
     B_LIST_COUNT,
     B_SCRATCH,    /* optimise: per-worker treelet tables  */
     B_SIZE,       /* collapse: output nodes per subtree   */
-    B_JUMP,       /* layout: path sums, two halves        */
-    B_FLAG,       /* layout: another jump round needed    */
+    B_JUMP,       /* hierarchy leftovers; layout subtrees */
+    B_FLAG,       /* layout: their count                  */
     B_OUT_NODES,
     B_OUT_PRIMS,
     /* ray batches */

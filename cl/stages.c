@@ -268,17 +268,34 @@ static atrbvh_status st_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_cl_device *c = cl_of(dev);
     atrbvh_kargs_tree a = tree_args(c, run);
     size_t nodes = tree_nodes(run), inner = tree_inner(run);
+    cl_uint blocks;
     CL_CHECK(atrbvh_i_cl_buffer(c, B_LEFT, inner, 4, "left", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_RIGHT, inner, 4, "right", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_PARENT, nodes, 4, "parent", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_COUNT, nodes, 4, "count", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_LEAF_PRIM, run->n, 4, "leaf primitives",
                                 error));
+    /* Blocks of the first pass: enough items for every compute unit;
+     * their leftovers (2 * 128 positions each, then the counts) in B_JUMP,
+     * which layout reuses later. */
+    blocks = c->compute_units * 16u;
+    if (blocks > 256u)
+        blocks = 256u;
+    if (blocks > run->n - 1u)
+        blocks = run->n - 1u;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_JUMP, (size_t)blocks * 257u + 1u, 4,
+                                "hierarchy leftovers", error));
     /* ids: read only when has_ids; B_ORDER stands in otherwise. */
-    CL_RUN(c, K_HIERARCHY, run->n, error, CL_BUF(B_KEYS), CL_BUF(B_LEFT),
+    CL_RUN(c, K_HIERARCHY_BLOCK, blocks, error, CL_BUF(B_KEYS),
+           CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
+           CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
+           CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_BUF(B_JUMP),
+           CL_VAL(blocks), CL_VAL(a));
+    CL_RUN(c, K_HIERARCHY, 1, error, CL_BUF(B_KEYS), CL_BUF(B_LEFT),
            CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
-           CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_VAL(a));
+           CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_BUF(B_JUMP),
+           CL_VAL(blocks), CL_VAL(a));
     return atrbvh_i_cl_finish(c, error);
 }
 
@@ -429,36 +446,27 @@ static atrbvh_status st_layout(atrbvh_device *dev, atrbvh_i_run *run,
 {
     atrbvh_cl_device *c = cl_of(dev);
     atrbvh_kargs_tree a = tree_args(c, run);
+    cl_uint list_len = 0;
     /* Sized for the most nodes n leaves can give (2n - 1), not this
      * tree's count: the next build of n primitives then reuses it. */
     CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_NODES, tree_nodes(run),
                                 sizeof(atrbvh_node), "output nodes", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_PRIMS, run->n, 4,
                                 "output primitive indices", error));
-    size_t nodes = tree_nodes(run);
-    cl_uint from = 0, more = 1;
-    unsigned round;
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_JUMP, 6 * nodes, 4, "layout path sums",
+    /* At most one listed subtree per leaf: 3 words each. */
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_JUMP, 3 * (size_t)run->n, 4,
+                                "layout subtree list", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_FLAG, 1, 4, "layout subtree count",
                                 error));
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_FLAG, 1, 4, "layout flag", error));
-    CL_RUN(c, K_LAYOUT_LINK, nodes, error, CL_BUF(B_COUNT), CL_BUF(B_LEFT),
-           CL_BUF(B_PARENT), CL_BUF(B_SIZE), CL_BUF(B_JUMP), CL_VAL(a));
-    /* Pointer jumping until no node has an ancestor left: ceil(log2(depth))
-     * rounds; a depth below 2^32 needs at most 32. */
-    for (round = 0; more && round < 33; round++) {
-        more = 0;
-        CL_CHECK(atrbvh_i_cl_upload(c, B_FLAG, &more, 4, "layout flag",
-                                    error));
-        CL_RUN(c, K_LAYOUT_JUMP, nodes, error, CL_BUF(B_JUMP), CL_BUF(B_FLAG),
-               CL_VAL(from), CL_VAL(a));
-        from = 1u - from;
-        CL_CHECK(atrbvh_i_cl_download(c, B_FLAG, &more, 4, "layout flag",
-                                      error));
-    }
-    CL_RUN(c, K_LAYOUT, nodes, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
-           CL_BUF(B_LEFT), CL_BUF(B_SIZE), CL_BUF(B_LEAF_PRIM),
-           CL_BUF(B_JUMP), CL_BUF(B_OUT_NODES), CL_BUF(B_OUT_PRIMS),
-           CL_VAL(from), CL_VAL(a));
+    CL_RUN(c, K_LAYOUT_TOP, 1, error, CL_BUF(B_COUNT), CL_BUF(B_LEFT),
+           CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_SIZE), CL_BUF(B_BOX),
+           CL_BUF(B_OUT_NODES), CL_BUF(B_JUMP), CL_BUF(B_FLAG), CL_VAL(a));
+    CL_CHECK(atrbvh_i_cl_download(c, B_FLAG, &list_len, 4,
+                                  "layout subtree count", error));
+    CL_RUN(c, K_LAYOUT, list_len, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
+           CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_SIZE),
+           CL_BUF(B_LEAF_PRIM), CL_BUF(B_JUMP), CL_BUF(B_OUT_NODES),
+           CL_BUF(B_OUT_PRIMS), CL_VAL(list_len), CL_VAL(a));
     CL_CHECK(atrbvh_i_cl_download(c, B_OUT_NODES, run->nodes,
                                   (size_t)run->node_count * sizeof(atrbvh_node),
                                   "output nodes", error));

@@ -3,10 +3,10 @@
  * "Maximizing Parallelism in the Construction of BVHs, Octrees, and k-d
  * Trees" (HPG 2012), numbered as Karras numbers it.  The tie rule for
  * equal keys (positions told apart, atrbvh_karras_delta in shared/arith.h)
- * decides the tree and is the OpenCL backend's (kernel for kernel, it runs
- * atrbvh_karras_node per internal node).
+ * decides the tree and is the OpenCL backend's, which runs these same two
+ * passes (cl/kernels.cl: hierarchy_block, hierarchy).
  *
- * The CPU builds the same tree without the per-node searches.  With
+ * Both build the tree without Karras's per-node searches.  With
  * delta_s = atrbvh_karras_delta(s, s+1) for the n-1 split positions s,
  * the node whose split is s covers the leaves ps+1 .. ns, where ps (ns) is
  * the nearest split to the left (right) with a smaller delta (-1 and n-1

@@ -195,7 +195,7 @@ ATRBVH_FN atrbvh_u32 atrbvh_collapse_size(const atrbvh_cost_params *p,
 
 /* ------------------------------------------------------------------ layout */
 /* The depth-first placement rule of the output (lib/cpu/collapse.c's
- * top-down emission, the layout kernel's walk up from each node): a node
+ * top-down emission, which cl/kernels.cl's layout_top/layout mirror): a node
  * at output position `pos` whose primitives start at `prim` puts its left
  * child at pos + 1 with the same first primitive, and its right child
  * after the whole left subtree: pos + 1 + size(left), primitives from
