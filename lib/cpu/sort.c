@@ -131,26 +131,34 @@ atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
                                   uint64_t *tmp_keys, uint32_t *tmp_values,
                                   uint32_t n, int threads)
 {
-    uint32_t *counts, *start;
     uint64_t varying = 0;
-    int blocks, top, bits, shift;
-    uint32_t buckets, target;
     int64_t i;
-
     if (n < 2)
         return ATRBVH_OK;
-    blocks = threads < 1 ? 1 : threads > MAX_BLOCKS ? MAX_BLOCKS : threads;
-    if ((uint32_t)blocks > n)
-        blocks = (int)n;
-
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(blocks) schedule(static) \
-    reduction(| : varying)
+#pragma omp parallel for num_threads(threads < 1 ? 1 : threads) \
+    schedule(static) reduction(| : varying)
 #endif
     for (i = 1; i < (int64_t)n; i++)
         varying |= keys[i] ^ keys[0];
-    if (!varying)
+    return atrbvh_i_radix_sort_varying(keys, values, tmp_keys, tmp_values, n,
+                                       threads, varying);
+}
+
+atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
+                                          uint64_t *tmp_keys,
+                                          uint32_t *tmp_values, uint32_t n,
+                                          int threads, uint64_t varying)
+{
+    uint32_t *counts, *start;
+    int blocks, top, bits, shift;
+    uint32_t buckets, target;
+
+    if (n < 2 || !varying)
         return ATRBVH_OK; /* all keys equal: the input order is sorted */
+    blocks = threads < 1 ? 1 : threads > MAX_BLOCKS ? MAX_BLOCKS : threads;
+    if ((uint32_t)blocks > n)
+        blocks = (int)n;
 
     /* MSD digit: the top `bits` varying bit positions, enough for buckets
      * of about BUCKET_TARGET items. */
@@ -242,22 +250,21 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_i_cpu_run *c = run->state;
     const uint32_t n = run->n;
     uint64_t *tmp_keys;
-    uint32_t *tmp_order, i;
+    uint32_t *tmp_order;
     (void)dev;
-    c->order = atrbvh_i_scratch_get(c->scratch, CPU_ORDER, n, sizeof *c->order);
     tmp_keys = atrbvh_i_scratch_get(c->scratch, CPU_TMP_KEYS, n,
                                     sizeof *tmp_keys);
     tmp_order = atrbvh_i_scratch_get(c->scratch, CPU_TMP_ORDER, n,
                                      sizeof *tmp_order);
-    if (!c->order || !tmp_keys || !tmp_order)
+    if (!tmp_keys || !tmp_order)
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "cannot allocate sort buffers for %lu "
                              "primitives",
                              (unsigned long)n);
-    for (i = 0; i < n; i++)
-        c->order[i] = i;
-    if (atrbvh_i_radix_sort(c->keys, c->order, tmp_keys, tmp_order, n,
-                            run->cfg->threads) != ATRBVH_OK)
+    /* c->order holds the build indices (morton wrote them). */
+    if (atrbvh_i_radix_sort_varying(c->keys, c->order, tmp_keys, tmp_order,
+                                    n, run->cfg->threads,
+                                    c->key_varying) != ATRBVH_OK)
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "cannot allocate sort counters for %lu "
                              "primitives",
