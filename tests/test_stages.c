@@ -160,6 +160,23 @@ START_TEST(morton_keys)
                                         ATRBVH_MORTON_MAX),
                       0x7fffffffffffffffull);
     ck_assert_uint_eq(atrbvh_morton_spread(0x100000), 1ull << 60);
+    /* The table spread is the bit-by-bit definition for every 21-bit
+     * input (and ignores the bits above). */
+    {
+        uint64_t x;
+        for (x = 0; x < (1u << ATRBVH_MORTON_BITS); x++) {
+            uint64_t want = 0;
+            int k;
+            for (k = 0; k < ATRBVH_MORTON_BITS; k++)
+                want |= ((x >> k) & 1u) << (3 * k);
+            if (atrbvh_morton_spread(x) != want ||
+                atrbvh_morton_spread(x | 0xffe00000ull) != want)
+                ck_abort_msg("spread(%llx) is %llx, expected %llx",
+                             (unsigned long long)x,
+                             (unsigned long long)atrbvh_morton_spread(x),
+                             (unsigned long long)want);
+        }
+    }
     /* Quantisation: clamped, zero-extent axes give 0, monotone. */
     ck_assert_uint_eq(atrbvh_morton_quantise(5.0f, 0.0, 0.0), 0);
     ck_assert_uint_eq(atrbvh_morton_quantise(-1.0f, 0.0, 1.0), 0);
