@@ -30,7 +30,7 @@
 #define MAX_BLOCKS 256
 #define MSD_MAX_BITS 11
 #define BUCKET_TARGET 1024u
-#define INSERTION_MAX 16u
+#define INSERTION_MAX 24u
 /* The passes' digits, block ranges, scan and placement are the rules of
  * shared/sort.h, the same the OpenCL kernels apply. */
 /* A bucket's passes: at most BUCKET_BITS-bit digits.  Their counters
@@ -119,9 +119,16 @@ static void sort_bucket(uint64_t *k, uint32_t *v, uint64_t *tk, uint32_t *tv,
     /* c[d] is now the end of sub-bucket d. */
     for (d = 0, start = 0; d < radix; d++) {
         const uint32_t len = c[d] - start;
-        if (len)
+        if (len == 1) {
+            /* Sorted; where it must end (the common case: no call). */
+            if (!to_tmp) {
+                k[start] = tk[start];
+                v[start] = tv[start];
+            }
+        } else if (len) {
             sort_bucket(tk + start, tv + start, k + start, v + start, len,
                         !to_tmp);
+        }
         start = c[d];
     }
     return;
