@@ -95,6 +95,23 @@ typedef struct atrbvh_i_input {
     size_t vstride, istride, bstride;
 } atrbvh_i_input;
 
+/* One sweep over the primitives (the CPU bounds stage, and the host's
+ * scan below): every box (boxes[j].min[0] NaN for a non-finite one, left
+ * unwritten for a fatal one), the scene and centroid boxes of the valid
+ * primitives (+-INFINITY when none), the count of non-finite ones, and
+ * the lowest-indexed problem (a bad index or inverted box before any
+ * NaN/Inf; first_bad -1 when none).  OpenMP-parallel; the per-item rules
+ * are shared/stages.h's atrbvh_prim_box_* and atrbvh_scene_add. */
+typedef struct atrbvh_i_prims_scan {
+    atrbvh_box scene, centroids;
+    size_t invalid;
+    int64_t first_bad;
+    int bad_kind; /* ATRBVH_PRIM_* of first_bad */
+    uint32_t bad_value;
+} atrbvh_i_prims_scan;
+void atrbvh_i_prims_sweep(const atrbvh_i_input *in, int threads,
+                          atrbvh_box *boxes, atrbvh_i_prims_scan *out);
+
 /* Options after validation and default resolution. */
 typedef struct atrbvh_i_config {
     atrbvh_method method;

@@ -118,20 +118,98 @@ atrbvh_status atrbvh_i_check_geometry(const atrbvh_geometry *g,
 #define PRIM_BAD_INDEX ATRBVH_PRIM_BAD_INDEX
 #define PRIM_INVERTED ATRBVH_PRIM_INVERTED
 
-/* Box of primitive i: an ATRBVH_PRIM_* code, *bad_value the offending
- * vertex index for ATRBVH_PRIM_BAD_INDEX (the rule every backend's bounds
- * stage applies). */
-static int prim_box(const atrbvh_i_input *in, size_t i, atrbvh_box *out,
-                    uint32_t *bad_value)
+/* Box of primitive j of the triangles or boxes below: an ATRBVH_PRIM_*
+ * code, *bad_value the offending vertex index for ATRBVH_PRIM_BAD_INDEX
+ * (the rule every backend's bounds stage applies). */
+#define PRIM_BOX(j, b, value)                                                  \
+    (boxes_in ? atrbvh_prim_box_box(boxes_in, bst, (atrbvh_u64)(j), (b))      \
+              : atrbvh_prim_box_triangle(vertices, vst, vcount, indices, ist, \
+                                         indexed, (atrbvh_u64)(j), (b),       \
+                                         (value)))
+
+void atrbvh_i_prims_sweep(const atrbvh_i_input *in, int threads,
+                          atrbvh_box *boxes, atrbvh_i_prims_scan *out)
 {
     const atrbvh_geometry *g = in->g;
-    if (g->type == ATRBVH_GEOMETRY_BOXES)
-        return atrbvh_prim_box_box(g->boxes, in->bstride / sizeof(float), i,
-                                   out);
-    return atrbvh_prim_box_triangle(
-        g->vertices, in->vstride / sizeof(float), g->vertex_count, g->indices,
-        in->istride / sizeof(uint32_t), g->indices != NULL, i, out,
-        bad_value);
+    const int64_t n = (int64_t)g->primitive_count;
+    /* Everything the loop reads, in locals: the stores to boxes[] could
+     * alias *g, and the compiler would reload it for every primitive. */
+    const float *const boxes_in =
+        g->type == ATRBVH_GEOMETRY_BOXES ? g->boxes : NULL;
+    const float *const vertices = g->vertices;
+    const uint32_t *const indices = g->indices;
+    const int indexed = indices != NULL;
+    const atrbvh_u64 vcount = g->vertex_count,
+                     vst = in->vstride / sizeof(float),
+                     ist = in->istride / sizeof(uint32_t),
+                     bst = in->bstride / sizeof(float);
+    int k;
+    for (k = 0; k < 3; k++) {
+        out->scene.min[k] = out->centroids.min[k] = INFINITY;
+        out->scene.max[k] = out->centroids.max[k] = -INFINITY;
+    }
+    out->invalid = 0;
+    out->first_bad = -1;
+    out->bad_kind = PRIM_OK;
+    out->bad_value = 0;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads)
+#endif
+    {
+        atrbvh_box scene, centroids;
+        int64_t my_first_skippable = -1, my_first_fatal = -1, j;
+        int my_fatal_kind = PRIM_OK;
+        uint32_t my_value = 0;
+        size_t my_invalid = 0;
+        scene = out->scene;
+        centroids = out->centroids;
+#ifdef _OPENMP
+#pragma omp for schedule(static) nowait
+#endif
+        for (j = 0; j < n; j++) {
+            atrbvh_box b;
+            uint32_t value = 0;
+            const int r = PRIM_BOX(j, &b, &value);
+            if (r == PRIM_OK) {
+                boxes[j] = b;
+                atrbvh_scene_add(&scene, &centroids, b);
+                continue;
+            }
+            if (r == PRIM_NONFINITE) {
+                my_invalid++;
+                boxes[j].min[0] = NAN; /* marks it for compaction */
+                if (my_first_skippable < 0)
+                    my_first_skippable = j;
+            } else if (my_first_fatal < 0) {
+                my_first_fatal = j;
+                my_fatal_kind = r;
+                my_value = value;
+            }
+        }
+        /* A problem that cannot be skipped (bad index, inverted box)
+         * always wins over NaN/Inf so that skip_invalid never hides it;
+         * among equals the lowest index wins.  Min/max only: the order of
+         * the threads cannot change the boxes. */
+#ifdef _OPENMP
+#pragma omp critical
+#endif
+        {
+            out->scene = atrbvh_box_union(out->scene, scene);
+            out->centroids = atrbvh_box_union(out->centroids, centroids);
+            out->invalid += my_invalid;
+            if (my_first_fatal >= 0 && (out->bad_kind < PRIM_BAD_INDEX ||
+                                        my_first_fatal < out->first_bad)) {
+                out->first_bad = my_first_fatal;
+                out->bad_kind = my_fatal_kind;
+                out->bad_value = my_value;
+            }
+            if (my_first_skippable >= 0 && out->bad_kind < PRIM_BAD_INDEX &&
+                (out->first_bad < 0 || my_first_skippable < out->first_bad)) {
+                out->first_bad = my_first_skippable;
+                out->bad_kind = PRIM_NONFINITE;
+            }
+        }
+    }
 }
 
 atrbvh_status atrbvh_i_scan_prims(const atrbvh_i_input *in,
@@ -143,14 +221,9 @@ atrbvh_status atrbvh_i_scan_prims(const atrbvh_i_input *in,
 {
     const atrbvh_geometry *g = in->g;
     uint32_t *ids = NULL;
-    size_t n, i, kept;
+    size_t n, i, kept, invalid;
     atrbvh_box *boxes;
-    int64_t first_bad = -1;
-    int bad_kind = PRIM_OK;
-    uint32_t bad_value = 0;
-    size_t invalid = 0;
-    float smin0, smin1, smin2, smax0, smax1, smax2;
-    float cmin0, cmin1, cmin2, cmax0, cmax1, cmax2;
+    atrbvh_i_prims_scan scan;
 
     *boxes_out = NULL;
     *ids_out = NULL;
@@ -161,76 +234,35 @@ atrbvh_status atrbvh_i_scan_prims(const atrbvh_i_input *in,
                              "cannot allocate %lu primitive boxes",
                              (unsigned long)n);
 
-    /* Pass 1: boxes and the lowest-indexed problem.  A problem that cannot
-     * be skipped (bad index, inverted box) always wins over NaN/Inf so that
-     * skip_invalid never hides it; among equals the lowest index wins. */
-#ifdef _OPENMP
-#pragma omp parallel num_threads(cfg->threads)
-#endif
-    {
-        int64_t my_first_skippable = -1, my_first_fatal = -1;
-        int my_fatal_kind = PRIM_OK;
-        uint32_t my_value = 0;
-        size_t my_invalid = 0;
-        int64_t j;
-#ifdef _OPENMP
-#pragma omp for schedule(static)
-#endif
-        for (j = 0; j < (int64_t)n; j++) {
-            uint32_t value = 0;
-            int r = prim_box(in, (size_t)j, &boxes[j], &value);
-            if (r == PRIM_NONFINITE) {
-                my_invalid++;
-                boxes[j].min[0] = NAN; /* marks it for compaction */
-                if (my_first_skippable < 0)
-                    my_first_skippable = j;
-            } else if (r != PRIM_OK && my_first_fatal < 0) {
-                my_first_fatal = j;
-                my_fatal_kind = r;
-                my_value = value;
-            }
-        }
-#ifdef _OPENMP
-#pragma omp critical
-#endif
-        {
-            invalid += my_invalid;
-            if (my_first_fatal >= 0 &&
-                (bad_kind < PRIM_BAD_INDEX || my_first_fatal < first_bad)) {
-                first_bad = my_first_fatal;
-                bad_kind = my_fatal_kind;
-                bad_value = my_value;
-            }
-            if (my_first_skippable >= 0 && bad_kind < PRIM_BAD_INDEX &&
-                (first_bad < 0 || my_first_skippable < first_bad)) {
-                first_bad = my_first_skippable;
-                bad_kind = PRIM_NONFINITE;
-            }
-        }
-    }
-
-    if (bad_kind == PRIM_BAD_INDEX) {
+    /* One sweep: the boxes, the lowest-indexed problem, and the scene and
+     * centroid boxes of the valid primitives (the kept ones). */
+    atrbvh_i_prims_sweep(in, cfg->threads, boxes, &scan);
+    invalid = scan.invalid;
+    if (scan.bad_kind == PRIM_BAD_INDEX) {
         atrbvh_i_free(boxes);
-        return atrbvh_i_fail(error, ATRBVH_ERR_INDEX_RANGE, (uint64_t)first_bad,
+        return atrbvh_i_fail(error, ATRBVH_ERR_INDEX_RANGE,
+                             (uint64_t)scan.first_bad,
                              "triangle %ld uses vertex %lu, but there are "
                              "only %lu vertices",
-                             (long)first_bad, (unsigned long)bad_value,
+                             (long)scan.first_bad,
+                             (unsigned long)scan.bad_value,
                              (unsigned long)g->vertex_count);
     }
-    if (bad_kind == PRIM_INVERTED) {
+    if (scan.bad_kind == PRIM_INVERTED) {
         atrbvh_i_free(boxes);
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
-                             (uint64_t)first_bad,
+                             (uint64_t)scan.first_bad,
                              "box %ld has min greater than max",
-                             (long)first_bad);
+                             (long)scan.first_bad);
     }
-    if (bad_kind == PRIM_NONFINITE && !cfg->skip_invalid) {
+    if (scan.bad_kind == PRIM_NONFINITE && !cfg->skip_invalid) {
         atrbvh_i_free(boxes);
-        return atrbvh_i_fail(error, ATRBVH_ERR_NONFINITE, (uint64_t)first_bad,
+        return atrbvh_i_fail(error, ATRBVH_ERR_NONFINITE,
+                             (uint64_t)scan.first_bad,
                              "%s %ld has a NaN or infinite coordinate",
                              g->type == ATRBVH_GEOMETRY_BOXES ? "box"
                                                               : "triangle",
-                             (long)first_bad);
+                             (long)scan.first_bad);
     }
     if (invalid == n) {
         atrbvh_i_free(boxes);
@@ -256,48 +288,8 @@ atrbvh_status atrbvh_i_scan_prims(const atrbvh_i_input *in,
             boxes[kept++] = boxes[i];
         }
     }
-
-    /* Scene and centroid boxes: min/max only, so the order of the
-     * reduction cannot change the result. */
-    smin0 = smin1 = smin2 = cmin0 = cmin1 = cmin2 = INFINITY;
-    smax0 = smax1 = smax2 = cmax0 = cmax1 = cmax2 = -INFINITY;
-    {
-        int64_t j;
-#ifdef _OPENMP
-#pragma omp parallel for num_threads(cfg->threads) schedule(static) \
-    reduction(min : smin0, smin1, smin2, cmin0, cmin1, cmin2)          \
-    reduction(max : smax0, smax1, smax2, cmax0, cmax1, cmax2)
-#endif
-        for (j = 0; j < (int64_t)kept; j++) {
-            const atrbvh_box b = boxes[j];
-            float c0 = atrbvh_box_centre(b, 0), c1 = atrbvh_box_centre(b, 1),
-                  c2 = atrbvh_box_centre(b, 2);
-            smin0 = b.min[0] < smin0 ? b.min[0] : smin0;
-            smin1 = b.min[1] < smin1 ? b.min[1] : smin1;
-            smin2 = b.min[2] < smin2 ? b.min[2] : smin2;
-            smax0 = b.max[0] > smax0 ? b.max[0] : smax0;
-            smax1 = b.max[1] > smax1 ? b.max[1] : smax1;
-            smax2 = b.max[2] > smax2 ? b.max[2] : smax2;
-            cmin0 = c0 < cmin0 ? c0 : cmin0;
-            cmin1 = c1 < cmin1 ? c1 : cmin1;
-            cmin2 = c2 < cmin2 ? c2 : cmin2;
-            cmax0 = c0 > cmax0 ? c0 : cmax0;
-            cmax1 = c1 > cmax1 ? c1 : cmax1;
-            cmax2 = c2 > cmax2 ? c2 : cmax2;
-        }
-    }
-    scene->min[0] = smin0;
-    scene->min[1] = smin1;
-    scene->min[2] = smin2;
-    scene->max[0] = smax0;
-    scene->max[1] = smax1;
-    scene->max[2] = smax2;
-    centroids->min[0] = cmin0;
-    centroids->min[1] = cmin1;
-    centroids->min[2] = cmin2;
-    centroids->max[0] = cmax0;
-    centroids->max[1] = cmax1;
-    centroids->max[2] = cmax2;
+    *scene = scan.scene;
+    *centroids = scan.centroids;
     *kept_out = (uint32_t)kept;
     *boxes_out = boxes;
     *ids_out = ids;

@@ -50,6 +50,9 @@ static void fill(uint64_t *k, uint32_t n, int kind, tu_rng *r)
         case 5: x = 0x123456789abcull; break;
         case 6: x = (x & 0x7ff00000000000ffull) | 0x0000abcdef000000ull; break;
         case 7: x = tu_rng_next(r); break;
+        /* One set bit, in random places: every bucket pass separates only
+         * a few keys from the rest (the bucket sort's deepest recursion). */
+        case 8: x = 1ull << (tu_rng_next(r) % 64); break;
         default: break;
         }
         k[i] = x;
@@ -65,7 +68,7 @@ START_TEST(radix_sort_is_stable_and_sorted)
     tu_rng r;
     tu_rng_seed(&r, 1234);
     for (si = 0; si < sizeof sizes / sizeof *sizes; si++)
-        for (kind = 0; kind < 8; kind++)
+        for (kind = 0; kind < 9; kind++)
             for (threads = 1; threads <= 4; threads *= 2) {
                 const uint32_t n = sizes[si];
                 uint64_t *k = malloc(n * sizeof *k), *tk = malloc(n * sizeof *k);
@@ -160,6 +163,23 @@ START_TEST(morton_keys)
                                         ATRBVH_MORTON_MAX),
                       0x7fffffffffffffffull);
     ck_assert_uint_eq(atrbvh_morton_spread(0x100000), 1ull << 60);
+    /* The table spread is the bit-by-bit definition for every 21-bit
+     * input (and ignores the bits above). */
+    {
+        uint64_t x;
+        for (x = 0; x < (1u << ATRBVH_MORTON_BITS); x++) {
+            uint64_t want = 0;
+            int k;
+            for (k = 0; k < ATRBVH_MORTON_BITS; k++)
+                want |= ((x >> k) & 1u) << (3 * k);
+            if (atrbvh_morton_spread(x) != want ||
+                atrbvh_morton_spread(x | 0xffe00000ull) != want)
+                ck_abort_msg("spread(%llx) is %llx, expected %llx",
+                             (unsigned long long)x,
+                             (unsigned long long)atrbvh_morton_spread(x),
+                             (unsigned long long)want);
+        }
+    }
     /* Quantisation: clamped, zero-extent axes give 0, monotone. */
     ck_assert_uint_eq(atrbvh_morton_quantise(5.0f, 0.0, 0.0), 0);
     ck_assert_uint_eq(atrbvh_morton_quantise(-1.0f, 0.0, 1.0), 0);

@@ -48,6 +48,7 @@ typedef struct atrbvh_i_cpu_run {
     int kept_ids; /* set_prims gave ids (skip_invalid, split): a leaf's
                      box is then kept, not recomputed (collapse.c) */
     uint64_t *keys;     /* morton, sorted by sort            */
+    uint64_t key_varying; /* morton: bits where keys differ  */
     uint32_t *order;    /* sort: build index of position p   */
     atrbvh_i_tree tree; /* hierarchy ... optimise            */
     uint32_t *size;     /* collapse                          */
@@ -92,13 +93,19 @@ atrbvh_status atrbvh_i_cpu_set_tree(atrbvh_device *, atrbvh_i_run *,
                                     const uint32_t *, atrbvh_error *);
 
 /* The stages' algorithms, callable on plain arrays (tests use them). */
-/* Stable LSD radix sort of (keys, values) pairs; tmp_* are scratch of the
+/* Stable radix sort of (keys, values) pairs; tmp_* are scratch of the
  * same length; the result ends in keys/values.  Passes whose digit is the
  * same for every key are skipped.  ATRBVH_ERR_NOMEM (nothing else) when
  * its counters cannot be had. */
 atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
                                   uint64_t *tmp_keys, uint32_t *tmp_values,
                                   uint32_t n, int threads);
+/* The same, told the bits where the keys differ (the OR of all keys XOR
+ * their AND; a superset is also right, only slower). */
+atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
+                                          uint64_t *tmp_keys,
+                                          uint32_t *tmp_values, uint32_t n,
+                                          int threads, uint64_t varying);
 /* Karras 2012: topology from sorted keys (left, right, parent, and count
  * of internal nodes). */
 void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,

@@ -94,8 +94,25 @@ static uint32_t block_pass(const uint64_t *keys, atrbvh_i_tree *t, int64_t n,
     return nout;
 }
 
-void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
-                        int threads)
+/* Each leaf's original primitive, for the leaves lo .. hi-1. */
+static void leaf_prims(atrbvh_i_tree *t, const uint32_t *order,
+                       const uint32_t *ids, int64_t lo, int64_t hi)
+{
+    uint32_t *const leaf_prim = t->leaf_prim;
+    int64_t i;
+    if (ids)
+        for (i = lo; i < hi; i++)
+            leaf_prim[i] = ids[order[i]];
+    else
+        for (i = lo; i < hi; i++)
+            leaf_prim[i] = order[i];
+}
+
+/* The topology; with `order`, also each leaf's primitive (in the same
+ * parallel region: one thread wake-up less per build). */
+static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
+                      int threads, const uint32_t *order,
+                      const uint32_t *ids)
 {
     const int64_t n = t->n;
     int64_t left_over[ATRBVH_HIER_BLOCKS][2 * ATRBVH_HIER_SIDE];
@@ -105,8 +122,11 @@ void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
     uint32_t sp = 0, k;
     t->parent[0] = ATRBVH_U32_MAX;
     t->count[2 * n - 2] = 1;
-    if (n == 1)
+    if (n == 1) {
+        if (order)
+            leaf_prims(t, order, ids, 0, 1);
         return;
+    }
     blocks = threads < 1 ? 1 : threads;
     if (blocks > ATRBVH_HIER_BLOCKS)
         blocks = ATRBVH_HIER_BLOCKS;
@@ -115,13 +135,19 @@ void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(blocks) schedule(static, 1)
 #endif
-    for (b = 0; b < blocks; b++)
+    for (b = 0; b < blocks; b++) {
         counts[b] = block_pass(
             sorted_keys, t, n,
             (int64_t)((uint64_t)(n - 1) * (uint64_t)b / (uint64_t)blocks),
             (int64_t)((uint64_t)(n - 1) * (uint64_t)(b + 1) /
                       (uint64_t)blocks),
             left_over[b]);
+        if (order)
+            leaf_prims(t, order, ids,
+                       (int64_t)((uint64_t)n * (uint64_t)b / (uint64_t)blocks),
+                       (int64_t)((uint64_t)n * (uint64_t)(b + 1) /
+                                 (uint64_t)blocks));
+    }
     /* The second pass: the same stack over every block's leftovers. */
     for (b = 0; b < blocks; b++) {
         for (k = 0; k < counts[b]; k++) {
@@ -149,6 +175,12 @@ void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
     }
 }
 
+void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
+                        int threads)
+{
+    hierarchy(sorted_keys, t, threads, NULL, NULL);
+}
+
 /* The stage: the tree's arrays (kept for the later stages), the topology,
  * and each leaf's original primitive. */
 atrbvh_status atrbvh_i_cpu_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
@@ -157,18 +189,12 @@ atrbvh_status atrbvh_i_cpu_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_i_cpu_run *c = run->state;
     atrbvh_i_tree *t = &c->tree;
     const uint32_t n = run->n;
-    int64_t i;
     atrbvh_status st;
     (void)dev;
     st = atrbvh_i_cpu_tree_arrays(c, n, error);
     if (st != ATRBVH_OK)
         return st;
-    atrbvh_i_hierarchy(c->keys, t, run->cfg->threads);
-#ifdef _OPENMP
-#pragma omp parallel for num_threads(run->cfg->threads) schedule(static)
-#endif
-    for (i = 0; i < (int64_t)n; i++)
-        t->leaf_prim[i] = c->ids ? c->ids[c->order[i]] : c->order[i];
+    hierarchy(c->keys, t, run->cfg->threads, c->order, c->ids);
     /* The keys and the sort's scratch are read no more. */
     atrbvh_i_scratch_done(c->scratch, CPU_KEYS);
     atrbvh_i_scratch_done(c->scratch, CPU_TMP_KEYS);
