@@ -327,6 +327,13 @@ ATRBVH_TRAV_HOT atrbvh_trav_fray atrbvh_trav_fray_make(const atrbvh_trav_ray *r)
     f.i1 = _mm_setr_ps(r->idirf[2], r->idirf[0], r->idirf[1], r->idirf[2]);
     f.widen = _mm_set1_ps(ATRBVH_TRAV_WIDEN_F);
     f.slack = _mm_set1_ps(ATRBVH_TRAV_SLACK_F);
+#if defined(__GNUC__) || defined(__clang__)
+    /* Hide the constants' values from GCC: otherwise it rebuilds the
+     * broadcasts from scalar constants in every node pair (two
+     * instructions each) instead of keeping them in registers.  The
+     * values and operations are unchanged. */
+    __asm__("" : "+x"(f.widen), "+x"(f.slack));
+#endif
     f.tlo4 = f.thi4 = _mm_setzero_ps();
     return f;
 }
