@@ -113,8 +113,7 @@ typedef struct atrbvh_trav_ray {
      * (min x, y, z, max x, y, z): k or 3 + k by the sign. */
     int near_at[3], far_at[3];
     float tmin, tmax;
-    /* watertight triangle test, in double */
-    double o[3];
+    /* watertight triangle test, in double (origin: orgd) */
     int kx, ky, kz;
     double sx, sy, sz;
 } atrbvh_trav_ray;
@@ -178,9 +177,10 @@ ATRBVH_FN int atrbvh_trav_scene_float(const atrbvh_trav_scene *s, int allowed)
 ATRBVH_FN int atrbvh_trav_setup(const float *origin, const float *dir,
                                 float tmin, float tmax, atrbvh_trav_ray *r)
 {
-    int k;
-    double ad[3];
-    if (!(tmin == tmin) || !(tmax == tmax))
+    int k, use_float;
+    float ad[3];
+    /* NaN tmin or tmax fails the comparison */
+    if (!(tmin <= tmax))
         return 0;
     for (k = 0; k < 3; k++) {
         if (!atrbvh_finite(origin[k]) || !atrbvh_finite(dir[k]))
@@ -188,44 +188,43 @@ ATRBVH_FN int atrbvh_trav_setup(const float *origin, const float *dir,
     }
     if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f)
         return 0;
-    if (!(tmin <= tmax))
-        return 0;
+    use_float = tmin >= 0.0f;
     for (k = 0; k < 3; k++) {
-        r->orgd[k] = (double)origin[k];
+        float d = dir[k], a = d < 0.0f ? -d : d; /* -0 stays -0: == 0 */
+        double id = 1.0 / (double)d;
+        int sg = id < 0.0;
         /* finite for every nonzero float, subnormals included (a float
          * reciprocal overflows to inf below 2^-128); +-inf for +-0 */
-        r->idird[k] = 1.0 / (double)dir[k];
-        r->sign[k] = r->idird[k] < 0.0;
-        r->near_at[k] = r->sign[k] ? 3 + k : k;
-        r->far_at[k] = r->sign[k] ? k : 3 + k;
-        r->o[k] = (double)origin[k];
-        ad[k] = atrbvh_trav_abs((double)dir[k]);
-    }
-    r->tmin = tmin;
-    r->tmax = tmax;
-    r->use_float = tmin >= 0.0f;
-    for (k = 0; k < 3; k++) {
-        float a = atrbvh_trav_absf(dir[k]);
+        r->orgd[k] = (double)origin[k];
+        r->idird[k] = id;
+        r->sign[k] = sg;
+        r->near_at[k] = sg ? 3 + k : k;
+        r->far_at[k] = sg ? k : 3 + k;
         /* the double reciprocal rounded to float: OpenCL's float division
          * is not correctly rounded, the conversion is */
         r->orgf[k] = origin[k];
-        r->idirf[k] = (float)r->idird[k];
-        if (!(atrbvh_trav_absf(origin[k]) <= ATRBVH_TRAV_F_COORD_MAX) ||
+        r->idirf[k] = (float)id;
+        ad[k] = a;
+        if (!(origin[k] <= ATRBVH_TRAV_F_COORD_MAX &&
+              origin[k] >= -ATRBVH_TRAV_F_COORD_MAX) ||
             !(a >= ATRBVH_TRAV_F_DIR_MIN && a <= ATRBVH_TRAV_F_DIR_MAX))
-            r->use_float = 0;
+            use_float = 0;
     }
+    r->tmin = tmin;
+    r->tmax = tmax;
+    r->use_float = use_float;
     /* The largest component becomes z (the first on a tie). */
     r->kz = 0;
     if (ad[1] > ad[r->kz])
         r->kz = 1;
     if (ad[2] > ad[r->kz])
         r->kz = 2;
-    r->kx = (r->kz + 1) % 3;
-    r->ky = (r->kx + 1) % 3;
+    r->kx = r->kz == 2 ? 0 : r->kz + 1;
+    r->ky = r->kx == 2 ? 0 : r->kx + 1;
     if (dir[r->kz] < 0.0f) { /* keep the winding */
-        int s = r->kx;
+        int sw = r->kx;
         r->kx = r->ky;
-        r->ky = s;
+        r->ky = sw;
     }
     r->sx = (double)dir[r->kx] / (double)dir[r->kz];
     r->sy = (double)dir[r->ky] / (double)dir[r->kz];
@@ -314,6 +313,9 @@ typedef struct atrbvh_trav_fray {
     /* lanes (x, y, z, x) and (z, x, y, z), matching the two loads */
     __m128 o0, o1, i0, i1;
     __m128 widen, slack; /* ATRBVH_TRAV_WIDEN_F, ATRBVH_TRAV_SLACK_F */
+    /* the traversal's limits broadcast (atrbvh_trav_fray_limits), kept
+     * in registers across the loop instead of rebuilt per node pair */
+    __m128 tlo4, thi4;
 } atrbvh_trav_fray;
 
 ATRBVH_TRAV_HOT atrbvh_trav_fray atrbvh_trav_fray_make(const atrbvh_trav_ray *r)
@@ -325,7 +327,24 @@ ATRBVH_TRAV_HOT atrbvh_trav_fray atrbvh_trav_fray_make(const atrbvh_trav_ray *r)
     f.i1 = _mm_setr_ps(r->idirf[2], r->idirf[0], r->idirf[1], r->idirf[2]);
     f.widen = _mm_set1_ps(ATRBVH_TRAV_WIDEN_F);
     f.slack = _mm_set1_ps(ATRBVH_TRAV_SLACK_F);
+#if defined(__GNUC__) || defined(__clang__)
+    /* Hide the constants' values from GCC: otherwise it rebuilds the
+     * broadcasts from scalar constants in every node pair (two
+     * instructions each) instead of keeping them in registers.  The
+     * values and operations are unchanged. */
+    __asm__("" : "+x"(f.widen), "+x"(f.slack));
+#endif
+    f.tlo4 = f.thi4 = _mm_setzero_ps();
     return f;
+}
+
+/* The limits atrbvh_trav_box2_f uses: set before the first pair and again
+ * whenever the upper one changes (after a leaf). */
+ATRBVH_TRAV_HOT void atrbvh_trav_fray_limits(atrbvh_trav_fray *f, float tlo,
+                                             float thi)
+{
+    f->tlo4 = _mm_set1_ps(tlo);
+    f->thi4 = _mm_set1_ps(thi);
 }
 
 ATRBVH_TRAV_HOT int atrbvh_trav_box_f(const float *b,
@@ -353,10 +372,11 @@ ATRBVH_TRAV_HOT int atrbvh_trav_box_f(const float *b,
 }
 
 /* Both children at once: lane 0 the left, lane 1 the right, each lane the
- * operations of atrbvh_trav_box_f.  Bit 0: left hit, bit 1: right hit. */
+ * operations of atrbvh_trav_box_f, with the limits f->tlo4 and f->thi4
+ * (atrbvh_trav_fray_limits).  Bit 0: left hit, bit 1: right hit. */
 ATRBVH_TRAV_HOT int atrbvh_trav_box2_f(const float *bl, const float *br,
-                                       const atrbvh_trav_fray *f, float tlo,
-                                       float thi, float *nl, float *nr)
+                                       const atrbvh_trav_fray *f, float *nl,
+                                       float *nr)
 {
     __m128 l0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bl), f->o0), f->i0);
     __m128 l1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bl + 2), f->o1), f->i1);
@@ -374,8 +394,8 @@ ATRBVH_TRAV_HOT int atrbvh_trav_box2_f(const float *bl, const float *br,
     n2 = _mm_unpackhi_ps(ln, rn);
     f01 = _mm_unpacklo_ps(lf, rf);
     f2 = _mm_unpackhi_ps(lf, rf);
-    lo = _mm_max_ps(n01, _mm_set1_ps(tlo));
-    hi = _mm_min_ps(f01, _mm_set1_ps(thi));
+    lo = _mm_max_ps(n01, f->tlo4);
+    hi = _mm_min_ps(f01, f->thi4);
     lo = _mm_max_ps(_mm_movehl_ps(n01, n01), lo);
     hi = _mm_min_ps(_mm_movehl_ps(f01, f01), hi);
     lo = _mm_max_ps(n2, lo);
@@ -399,6 +419,14 @@ ATRBVH_TRAV_HOT atrbvh_trav_fray atrbvh_trav_fray_make(const atrbvh_trav_ray *r)
         f.id[k] = r->idirf[k];
     }
     return f;
+}
+
+ATRBVH_TRAV_HOT void atrbvh_trav_fray_limits(atrbvh_trav_fray *f, float tlo,
+                                             float thi)
+{
+    (void)f;
+    (void)tlo;
+    (void)thi;
 }
 
 ATRBVH_TRAV_HOT int atrbvh_trav_box_f(ATRBVH_CONST_GLOBAL float *b,
@@ -526,20 +554,20 @@ ATRBVH_FN int atrbvh_trav_triangle_hit(float v[3][3],
                                        const atrbvh_trav_ray *r, float *t,
                                        float *u, float *w)
 {
-    double a[3], b[3], c[3];
-    double ax, ay, bx, by, cx, cy, e0, e1, e2, det, tt;
-    int k;
-    for (k = 0; k < 3; k++) {
-        a[k] = (double)v[0][k] - r->o[k];
-        b[k] = (double)v[1][k] - r->o[k];
-        c[k] = (double)v[2][k] - r->o[k];
-    }
-    ax = a[r->kx] - r->sx * a[r->kz];
-    ay = a[r->ky] - r->sy * a[r->kz];
-    bx = b[r->kx] - r->sx * b[r->kz];
-    by = b[r->ky] - r->sy * b[r->kz];
-    cx = c[r->kx] - r->sx * c[r->kz];
-    cy = c[r->ky] - r->sy * c[r->kz];
+    /* only the six sheared coordinates and the three z ones: no arrays
+     * indexed by kx, ky, kz (stores and reloads per triangle) */
+    int kx = r->kx, ky = r->ky, kz = r->kz;
+    double ox = r->orgd[kx], oy = r->orgd[ky], oz = r->orgd[kz];
+    double az = (double)v[0][kz] - oz;
+    double bz = (double)v[1][kz] - oz;
+    double cz = (double)v[2][kz] - oz;
+    double ax = ((double)v[0][kx] - ox) - r->sx * az;
+    double ay = ((double)v[0][ky] - oy) - r->sy * az;
+    double bx = ((double)v[1][kx] - ox) - r->sx * bz;
+    double by = ((double)v[1][ky] - oy) - r->sy * bz;
+    double cx = ((double)v[2][kx] - ox) - r->sx * cz;
+    double cy = ((double)v[2][ky] - oy) - r->sy * cz;
+    double e0, e1, e2, det, tt;
     /* e0 weighs vertex 0 (edge 1-2), e1 vertex 1, e2 vertex 2. */
     e0 = cx * by - cy * bx;
     e1 = ax * cy - ay * cx;
@@ -550,9 +578,9 @@ ATRBVH_FN int atrbvh_trav_triangle_hit(float v[3][3],
     det = e0 + e1 + e2;
     if (det == 0.0 || !(det == det))
         return 0;
-    tt = e0 * (r->sz * a[r->kz]);
-    tt = tt + e1 * (r->sz * b[r->kz]);
-    tt = tt + e2 * (r->sz * c[r->kz]);
+    tt = e0 * (r->sz * az);
+    tt = tt + e1 * (r->sz * bz);
+    tt = tt + e2 * (r->sz * cz);
     tt = tt / det;
     if (!(atrbvh_trav_abs(tt) <= (double)ATRBVH_TRAV_FLT_MAX))
         return 0;
@@ -653,9 +681,10 @@ ATRBVH_TRAV_HOT int atrbvh_trav_children(ATRBVH_CONST_GLOBAL atrbvh_node *nodes,
 {
     if (use_float) {
 #ifdef ATRBVH_TRAV_SSE
+        (void)tlo;
+        (void)thi;
         return atrbvh_trav_box2_f((const float *)&nodes[l],
-                                  (const float *)&nodes[rr], f, tlo, thi, nl,
-                                  nr);
+                                  (const float *)&nodes[rr], f, nl, nr);
 #else
         int hl = atrbvh_trav_box_f((ATRBVH_CONST_GLOBAL float *)&nodes[l], f,
                                    tlo, thi, nl);
@@ -686,12 +715,16 @@ ATRBVH_TRAV_HOT int atrbvh_trav_loop(const atrbvh_trav_scene *s,
     atrbvh_trav_fray f = atrbvh_trav_fray_make(r);
     float thi = best->tlim;
     int ret;
+    atrbvh_trav_fray_limits(&f, tlo, thi);
     for (;;) {
         ATRBVH_CONST_GLOBAL atrbvh_node *n = &nodes[cur];
         atrbvh_u32 ncount = n->count, nindex = n->index;
         if (ncount > 0u) {
             int done = atrbvh_trav_leaf(s, n, r, any, best);
-            thi = best->tlim;
+            if (best->tlim != thi) {
+                thi = best->tlim;
+                atrbvh_trav_fray_limits(&f, tlo, thi);
+            }
             if (done) {
                 ret = 1;
                 break;
