@@ -1,58 +1,132 @@
+# regenerate: gnuplot scaling.gp (in this folder)
+if (!exists('outsuffix')) outsuffix = ''
 set terminal pngcairo size 900,600 font 'sans,10'
-set output 'scaling.png'
-set title 'Build time against triangle count (log-log)'
+set output 'scaling.png'.outsuffix
 set xlabel 'triangles'
-set ylabel 'build time, ms'
-set logscale xy
 set grid
-set key top left
-set format x '10^{%L}'
-plot 'scaling.dat' index 0 using 1:2 with linespoints lw 2 title 'builtin:sphere LBVH: N^{0.98}', \
-  'scaling.dat' index 1 using 1:2 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): N^{1.06}', \
-  'scaling.dat' index 2 using 1:2 with linespoints lw 2 title 'bunny.ply LBVH: N^{1.00}', \
-  'scaling.dat' index 3 using 1:2 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): N^{0.93}'
-set terminal svg size 900,600 dynamic font 'sans,10'
-set output 'scaling.svg'
-replot
-unset output
-reset
-set terminal pngcairo size 900,600 font 'sans,10'
-set output 'scaling-stages.png'
-set title 'Build time per stage, bunny.ply ATRBVH(9,2): N^{0.93} (log-log)'
-set xlabel 'triangles'
-set ylabel 'ms'
-set logscale xy
-set grid
-set key top left
-set format x '10^{%L}'
-plot 'scaling.dat' index 3 using 1:3 with linespoints title 'bounds', \
-  'scaling.dat' index 3 using 1:4 with linespoints title 'morton', \
-  'scaling.dat' index 3 using 1:5 with linespoints title 'sort', \
-  'scaling.dat' index 3 using 1:6 with linespoints title 'hierarchy', \
-  'scaling.dat' index 3 using 1:7 with linespoints title 'refit', \
-  'scaling.dat' index 3 using 1:8 with linespoints title 'optimise', \
-  'scaling.dat' index 3 using 1:9 with linespoints title 'collapse', \
-  'scaling.dat' index 3 using 1:10 with linespoints title 'layout'
-set terminal svg size 900,600 dynamic font 'sans,10'
-set output 'scaling-stages.svg'
-replot
-unset output
-reset
-set terminal pngcairo size 900,600 font 'sans,10'
-set output 'scaling-memory.png'
-set title 'Peak library memory during the build, bytes per triangle'
-set xlabel 'triangles'
-set ylabel 'bytes per triangle'
 set logscale x
-set grid
-set key top right
-set yrange [0:*]
-set format x '10^{%L}'
-plot 'scaling.dat' index 0 using 1:11 with linespoints lw 2 title 'builtin:sphere LBVH: N^{0.98}', \
-  'scaling.dat' index 1 using 1:11 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): N^{1.06}', \
-  'scaling.dat' index 2 using 1:11 with linespoints lw 2 title 'bunny.ply LBVH: N^{1.00}', \
-  'scaling.dat' index 3 using 1:11 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): N^{0.93}'
+set format x '10^%L'
+set title 'Build time against triangle count (log-log; each line a base scene and configuration)'
+set ylabel 'build time, ms (median)'
+set logscale y
+set key top left
+plot 'scaling.dat' index 0 using 1:2 with linespoints lw 2 title 'builtin:sphere LBVH: ~N^0.93 from 1e5' noenhanced, \
+  'scaling.dat' index 1 using 1:2 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): ~N^1.06 from 1e5' noenhanced, \
+  'scaling.dat' index 2 using 1:2 with linespoints lw 2 title 'bunny.ply LBVH: ~N^1.02 from 1e5' noenhanced, \
+  'scaling.dat' index 3 using 1:2 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): ~N^1.02 from 1e5' noenhanced
 set terminal svg size 900,600 dynamic font 'sans,10'
-set output 'scaling-memory.svg'
+set output 'scaling.svg'.outsuffix
 replot
 unset output
+reset
+set terminal pngcairo size 900,600 font 'sans,10'
+set output 'scaling-stages-builtin_sphere-LBVH.png'.outsuffix
+set xlabel 'triangles'
+set grid
+set logscale x
+set format x '10^%L'
+set title 'Build time of each stage against triangle count (log-log): builtin:sphere, LBVH' noenhanced
+set ylabel 'stage time, ms (median)'
+set logscale y
+set key top left
+plot 'scaling.dat' index 0 using 1:($3 > 0 ? $3 : NaN) with linespoints title 'bounds' noenhanced, \
+  'scaling.dat' index 0 using 1:($4 > 0 ? $4 : NaN) with linespoints title 'morton' noenhanced, \
+  'scaling.dat' index 0 using 1:($5 > 0 ? $5 : NaN) with linespoints title 'sort' noenhanced, \
+  'scaling.dat' index 0 using 1:($6 > 0 ? $6 : NaN) with linespoints title 'hierarchy' noenhanced, \
+  'scaling.dat' index 0 using 1:($7 > 0 ? $7 : NaN) with linespoints title 'refit' noenhanced, \
+  'scaling.dat' index 0 using 1:($8 > 0 ? $8 : NaN) with linespoints title 'optimise' noenhanced, \
+  'scaling.dat' index 0 using 1:($9 > 0 ? $9 : NaN) with linespoints title 'collapse' noenhanced, \
+  'scaling.dat' index 0 using 1:($10 > 0 ? $10 : NaN) with linespoints title 'layout' noenhanced
+set terminal svg size 900,600 dynamic font 'sans,10'
+set output 'scaling-stages-builtin_sphere-LBVH.svg'.outsuffix
+replot
+unset output
+reset
+set terminal pngcairo size 900,600 font 'sans,10'
+set output 'scaling-stages-builtin_sphere-ATRBVH_9_2_.png'.outsuffix
+set xlabel 'triangles'
+set grid
+set logscale x
+set format x '10^%L'
+set title 'Build time of each stage against triangle count (log-log): builtin:sphere, ATRBVH(9,2)' noenhanced
+set ylabel 'stage time, ms (median)'
+set logscale y
+set key top left
+plot 'scaling.dat' index 1 using 1:($3 > 0 ? $3 : NaN) with linespoints title 'bounds' noenhanced, \
+  'scaling.dat' index 1 using 1:($4 > 0 ? $4 : NaN) with linespoints title 'morton' noenhanced, \
+  'scaling.dat' index 1 using 1:($5 > 0 ? $5 : NaN) with linespoints title 'sort' noenhanced, \
+  'scaling.dat' index 1 using 1:($6 > 0 ? $6 : NaN) with linespoints title 'hierarchy' noenhanced, \
+  'scaling.dat' index 1 using 1:($7 > 0 ? $7 : NaN) with linespoints title 'refit' noenhanced, \
+  'scaling.dat' index 1 using 1:($8 > 0 ? $8 : NaN) with linespoints title 'optimise' noenhanced, \
+  'scaling.dat' index 1 using 1:($9 > 0 ? $9 : NaN) with linespoints title 'collapse' noenhanced, \
+  'scaling.dat' index 1 using 1:($10 > 0 ? $10 : NaN) with linespoints title 'layout' noenhanced
+set terminal svg size 900,600 dynamic font 'sans,10'
+set output 'scaling-stages-builtin_sphere-ATRBVH_9_2_.svg'.outsuffix
+replot
+unset output
+reset
+set terminal pngcairo size 900,600 font 'sans,10'
+set output 'scaling-stages-bunny-LBVH.png'.outsuffix
+set xlabel 'triangles'
+set grid
+set logscale x
+set format x '10^%L'
+set title 'Build time of each stage against triangle count (log-log): ../shared/scenes/bunny.ply, LBVH' noenhanced
+set ylabel 'stage time, ms (median)'
+set logscale y
+set key top left
+plot 'scaling.dat' index 2 using 1:($3 > 0 ? $3 : NaN) with linespoints title 'bounds' noenhanced, \
+  'scaling.dat' index 2 using 1:($4 > 0 ? $4 : NaN) with linespoints title 'morton' noenhanced, \
+  'scaling.dat' index 2 using 1:($5 > 0 ? $5 : NaN) with linespoints title 'sort' noenhanced, \
+  'scaling.dat' index 2 using 1:($6 > 0 ? $6 : NaN) with linespoints title 'hierarchy' noenhanced, \
+  'scaling.dat' index 2 using 1:($7 > 0 ? $7 : NaN) with linespoints title 'refit' noenhanced, \
+  'scaling.dat' index 2 using 1:($8 > 0 ? $8 : NaN) with linespoints title 'optimise' noenhanced, \
+  'scaling.dat' index 2 using 1:($9 > 0 ? $9 : NaN) with linespoints title 'collapse' noenhanced, \
+  'scaling.dat' index 2 using 1:($10 > 0 ? $10 : NaN) with linespoints title 'layout' noenhanced
+set terminal svg size 900,600 dynamic font 'sans,10'
+set output 'scaling-stages-bunny-LBVH.svg'.outsuffix
+replot
+unset output
+reset
+set terminal pngcairo size 900,600 font 'sans,10'
+set output 'scaling-stages-bunny-ATRBVH_9_2_.png'.outsuffix
+set xlabel 'triangles'
+set grid
+set logscale x
+set format x '10^%L'
+set title 'Build time of each stage against triangle count (log-log): ../shared/scenes/bunny.ply, ATRBVH(9,2)' noenhanced
+set ylabel 'stage time, ms (median)'
+set logscale y
+set key top left
+plot 'scaling.dat' index 3 using 1:($3 > 0 ? $3 : NaN) with linespoints title 'bounds' noenhanced, \
+  'scaling.dat' index 3 using 1:($4 > 0 ? $4 : NaN) with linespoints title 'morton' noenhanced, \
+  'scaling.dat' index 3 using 1:($5 > 0 ? $5 : NaN) with linespoints title 'sort' noenhanced, \
+  'scaling.dat' index 3 using 1:($6 > 0 ? $6 : NaN) with linespoints title 'hierarchy' noenhanced, \
+  'scaling.dat' index 3 using 1:($7 > 0 ? $7 : NaN) with linespoints title 'refit' noenhanced, \
+  'scaling.dat' index 3 using 1:($8 > 0 ? $8 : NaN) with linespoints title 'optimise' noenhanced, \
+  'scaling.dat' index 3 using 1:($9 > 0 ? $9 : NaN) with linespoints title 'collapse' noenhanced, \
+  'scaling.dat' index 3 using 1:($10 > 0 ? $10 : NaN) with linespoints title 'layout' noenhanced
+set terminal svg size 900,600 dynamic font 'sans,10'
+set output 'scaling-stages-bunny-ATRBVH_9_2_.svg'.outsuffix
+replot
+unset output
+reset
+set terminal pngcairo size 900,600 font 'sans,10'
+set output 'scaling-memory.png'.outsuffix
+set xlabel 'triangles'
+set grid
+set logscale x
+set format x '10^%L'
+set title 'Peak library memory during the build, bytes per triangle (each line a base scene and configuration)'
+set ylabel 'bytes per triangle'
+set yrange [0:*]
+set key top right
+plot 'scaling.dat' index 0 using 1:11 with linespoints lw 2 title 'builtin:sphere LBVH: ~N^0.93 from 1e5' noenhanced, \
+  'scaling.dat' index 1 using 1:11 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): ~N^1.06 from 1e5' noenhanced, \
+  'scaling.dat' index 2 using 1:11 with linespoints lw 2 title 'bunny.ply LBVH: ~N^1.02 from 1e5' noenhanced, \
+  'scaling.dat' index 3 using 1:11 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): ~N^1.02 from 1e5' noenhanced
+set terminal svg size 900,600 dynamic font 'sans,10'
+set output 'scaling-memory.svg'.outsuffix
+replot
+unset output
+reset
