@@ -51,6 +51,12 @@ static atrbvh_status parse_header(const unsigned char *h, uint64_t size,
     if (version == FILE_VERSION ? flags != 0 : (flags & ~FILE_FLAG_SPLIT) != 0)
         return FAIL_AT(16, "byte 16: unknown flags 0x%08x for version %u",
                        flags, version);
+    /* One encoding per tree: a tree without splitting is version 1, so a
+     * version 2 file has the split flag (and saving what was loaded gives
+     * the same bytes back). */
+    if (version == FILE_VERSION_SPLIT && !(flags & FILE_FLAG_SPLIT))
+        return FAIL_AT(16, "byte 16: version 2 without the split flag (a "
+                           "tree without splitting is version 1)");
     fh->split = (flags & FILE_FLAG_SPLIT) != 0;
     fh->method = get_u32(h + 20);
     if (fh->method > (uint32_t)ATRBVH_METHOD_ATRBVH)

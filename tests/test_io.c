@@ -568,6 +568,9 @@ START_TEST(structural_errors)
     wr32(c + 8, 3);
     TRY("version 3");
     memcpy(c, d, n);
+    wr32(c + 8, 2); /* flags stay 0 */
+    TRY("version 2 without the split flag");
+    memcpy(c, d, n);
     wr32(c + 16, 4);
     TRY("flags");
     memcpy(c, d, n);
