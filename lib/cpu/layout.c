@@ -136,6 +136,106 @@ static atrbvh_box gather(const layout_ctx *c, uint32_t node, uint32_t *out)
     }
 }
 
+/* Ranges (cpu.h): emitted leaf `node` at `at`, the leaves of positions
+ * prim_at .. prim_at+count-1, in order: the same primitives and the same
+ * fold as gather()'s walk. */
+static inline void range_leaf(layout_ctx *c, uint32_t node, uint32_t at,
+                              uint32_t prim_at)
+{
+    const atrbvh_i_tree *t = c->t;
+    const uint32_t cnt = t->count[node];
+    const uint32_t *src = t->leaf_prim + prim_at;
+    uint32_t *dst = c->prims + prim_at;
+    uint32_t k;
+    atrbvh_box b;
+    if (c->box) {
+        for (k = 0; k < cnt; k++)
+            dst[k] = src[k];
+        b = atrbvh_i_is_leaf(t, node) ? leaf_box(c, node) : c->box[node];
+    } else if (c->g->type != ATRBVH_GEOMETRY_BOXES) {
+        dst[0] = src[0];
+        b = triangle_box(c, src[0]);
+        for (k = 1; k < cnt; k++) {
+            dst[k] = src[k];
+            b = atrbvh_box_union(b, triangle_box(c, src[k]));
+        }
+    } else {
+        for (k = 0; k < cnt; k++)
+            dst[k] = src[k];
+        b = leaf_box(c, t->n - 1 + prim_at);
+        for (k = 1; k < cnt; k++)
+            b = atrbvh_box_union(b, leaf_box(c, t->n - 1 + prim_at + k));
+    }
+    c->nodes[at] = atrbvh_layout_node(b, c->size[node], cnt, at, prim_at, 0);
+}
+
+/* Depth of the explicit stack of emit_small (a Karras tree of 64-bit keys
+ * is far shallower; deeper subtrees go on by recursion). */
+#define SMALL_STACK 128
+
+static void emit(layout_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at);
+
+/* Ranges without kept boxes: the subtree of `node` at `at` in one
+ * preorder loop (each internal node's right child is pushed, its left
+ * taken next), every node written but an internal node's box; then its
+ * output positions backwards, where both children of an internal node
+ * are done: the box, the union of the left's and the right's as emit()
+ * takes it. */
+static void emit_small(layout_ctx *c, uint32_t node, uint32_t at,
+                       uint32_t prim_at)
+{
+    const atrbvh_i_tree *t = c->t;
+    const uint32_t first = at, end = at + (c->size[node] & ATRBVH_SIZE_MASK);
+    struct {
+        uint32_t node, at, prim;
+    } st[SMALL_STACK];
+    int sp = 0;
+    uint32_t p;
+    for (;;) {
+        const uint32_t size = c->size[node];
+        if (size & ATRBVH_SIZE_LEAF) {
+            range_leaf(c, node, at, prim_at);
+            if (sp == 0)
+                break;
+            sp--;
+            node = st[sp].node;
+            at = st[sp].at;
+            prim_at = st[sp].prim;
+        } else {
+            const uint32_t l = t->left[node], r = t->right[node];
+            const uint32_t right_at = atrbvh_layout_right_pos(at, c->size[l]);
+            const uint32_t right_prim =
+                atrbvh_layout_right_prim(prim_at, t->count[l]);
+            atrbvh_node *o = &c->nodes[at];
+            o->index = right_at;
+            o->count = 0u;
+            if (sp == SMALL_STACK) {
+                emit(c, r, right_at, right_prim);
+            } else {
+                st[sp].node = r;
+                st[sp].at = right_at;
+                st[sp].prim = right_prim;
+                sp++;
+            }
+            node = l;
+            at = at + 1;
+        }
+    }
+    for (p = end; p-- > first;) {
+        atrbvh_node *o = &c->nodes[p];
+        if (o->count == 0u) {
+            const atrbvh_node *nl = o + 1, *nr = &c->nodes[o->index];
+            int k;
+            for (k = 0; k < 3; k++) {
+                /* atrbvh_box_union(left, right), coordinate by
+                 * coordinate */
+                o->min[k] = nl->min[k] < nr->min[k] ? nl->min[k] : nr->min[k];
+                o->max[k] = nl->max[k] > nr->max[k] ? nl->max[k] : nr->max[k];
+            }
+        }
+    }
+}
+
 /* Writes `node` at output position `at` with its primitives from
  * `prim_at` (shared/stages.h's placement rule), then its children; the
  * node's box is written after theirs. */
@@ -145,33 +245,12 @@ static void emit(layout_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at)
     const int leaf = (c->size[node] & ATRBVH_SIZE_LEAF) != 0;
     const uint32_t l = leaf ? 0 : t->left[node], r = leaf ? 0 : t->right[node];
     atrbvh_box b;
+    if (c->ranges && !c->box && t->count[node] <= TASK_CUTOFF) {
+        emit_small(c, node, at, prim_at);
+        return;
+    }
     if (leaf && c->ranges) {
-        /* The leaves of positions prim_at .. prim_at+count-1, in order:
-         * the same primitives and the same fold as gather()'s walk. */
-        const uint32_t cnt = t->count[node];
-        const uint32_t *src = t->leaf_prim + prim_at;
-        uint32_t *dst = c->prims + prim_at;
-        uint32_t k;
-        if (c->box) {
-            for (k = 0; k < cnt; k++)
-                dst[k] = src[k];
-            b = atrbvh_i_is_leaf(t, node) ? leaf_box(c, node) : c->box[node];
-        } else if (c->g->type != ATRBVH_GEOMETRY_BOXES) {
-            dst[0] = src[0];
-            b = triangle_box(c, src[0]);
-            for (k = 1; k < cnt; k++) {
-                dst[k] = src[k];
-                b = atrbvh_box_union(b, triangle_box(c, src[k]));
-            }
-        } else {
-            for (k = 0; k < cnt; k++)
-                dst[k] = src[k];
-            b = leaf_box(c, t->n - 1 + prim_at);
-            for (k = 1; k < cnt; k++)
-                b = atrbvh_box_union(b, leaf_box(c, t->n - 1 + prim_at + k));
-        }
-        c->nodes[at] = atrbvh_layout_node(b, c->size[node], cnt, at, prim_at,
-                                          0);
+        range_leaf(c, node, at, prim_at);
         return;
     }
     if (leaf) {
