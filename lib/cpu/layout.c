@@ -9,7 +9,12 @@
  * for a leaf: its primitives are the sorted positions prim_at ..
  * prim_at+count-1, in order, so they are copied from leaf_prim and their
  * boxes folded in that order (the parent links are released then,
- * collapse.c); other trees are walked (gather()).
+ * collapse.c); other trees are walked (gather()).  Such a subtree of up
+ * to TASK_CUTOFF primitives without kept boxes is emitted by one loop
+ * (emit_small) and its internal boxes by one backward pass over its
+ * output: measured on the dragon, one thread, callgrind, the layout went
+ * from about 269 to 134 instructions per triangle with the range copy,
+ * the lean triangle box and this loop together.
  *
  * The node boxes of an LBVH without kept ids: the collapse stage released
  * the node box array (the memory plan, backend.c), so the layout makes
