@@ -18,6 +18,11 @@
  * the second arrival, which reads them); with one thread it is a plain
  * increment.
  *
+ * An LBVH's stage also takes the collapse stage's work (climb_sizes): its
+ * sizes and costs in the same climb, so the tree is not walked again.
+ * Callgrind, dragon, one thread: refit 135 -> 202 and collapse 161 -> 0
+ * instructions per triangle.
+ *
  * Measured on the dragon (871,414 triangles), one thread, callgrind: the
  * recursive post-order of OpenMP tasks this replaces ran ~128M
  * instructions; see the commit message for this walk's figures.
