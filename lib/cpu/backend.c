@@ -42,16 +42,19 @@ static void cpu_close(atrbvh_device *dev)
  *              the order array)                                  84     92
  *   refit      node boxes 48 (the primitive boxes gathered in
  *              place into the leaves), tree 28, costs 16 (none
- *              for an LBVH: its slot stays for the sizes)        84     92
+ *              for an LBVH: its slot takes the collapse sizes,
+ *              computed in the refit's climb, refit.c)           84     92
  *   optimise   the same, per-thread treelet scratch               -     92
  *   collapse   costs recomputed bottom-up, sizes 8 into the
  *              cost slot                                         84     92
  *   layout     tree 28, the output; an LBVH's node boxes were
  *              released at the end of the collapse (the layout
- *              recomputes them) and its sizes are in the cost
+ *              recomputes them), and its parent links (the
+ *              hierarchy's tree needs none, layout.c) on a
+ *              transient scratch, and its sizes are in the cost
  *              slot 8; an optimised tree's sizes moved into the
  *              leaves' half of the node boxes and the cost slot
- *              was freed (on a handle it stays: 92+out)      36+out 76+out
+ *              was freed (on a handle it stays: 92+out)      28+out 76+out
  *
  * Roles never live together share a slot, so what a device handle keeps
  * between builds is not more than the peak: the slots an LBVH's layout
@@ -154,6 +157,9 @@ atrbvh_status atrbvh_i_cpu_tree_arrays(atrbvh_i_cpu_run *c, uint32_t n,
     atrbvh_i_tree *t = &c->tree;
     const size_t nodes = 2 * (size_t)n - 1, inner = n > 1 ? n - 1 : 1;
     t->n = n;
+    /* The hierarchy stage comes after the morton stage; set_tree (a
+     * caller's topology) has no keys. */
+    c->ranges = c->keys != NULL;
     t->left = atrbvh_i_scratch_get(s, CPU_LEFT, inner, sizeof *t->left);
     t->right = atrbvh_i_scratch_get(s, CPU_RIGHT, inner, sizeof *t->right);
     t->parent = atrbvh_i_scratch_get(s, CPU_PARENT, nodes, sizeof *t->parent);

@@ -10,7 +10,12 @@
  * C(v) = min(ci*A(v) + C(l) + C(r), ct*A(v)*N(v)).  (The reference kept
  * only nodes whose parent's both children collapse; we do not.)
  *
- * Bottom-up in post-order, OpenMP tasks above TASK_CUTOFF primitives.
+ * An LBVH's sizes are already there: its refit computed them in the same
+ * climb as the boxes (refit.c's climb_sizes, the same rule and
+ * arithmetic as decide() below); this stage then only releases memory.
+ *
+ * Otherwise bottom-up in post-order, OpenMP tasks above TASK_CUTOFF
+ * primitives.
  * The subtree costs are recomputed on the way up (the refit's rule on the
  * same boxes and counts: the same doubles the refit or a treelet
  * write-back stored), so the cost array is not read and the sizes take
@@ -74,19 +79,23 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
     (void)dev;
     atrbvh_i_scratch_done(c->scratch, CPU_COST);
     c->tree.cost = NULL;
-    c->size = atrbvh_i_scratch_get(c->scratch, CPU_SIZE,
-                                   2 * (size_t)run->n - 1, sizeof *c->size);
-    if (!c->size)
-        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
-                             "cannot allocate the collapse flags");
-    x.t = &c->tree;
-    x.p = &run->cfg->cost;
-    x.size = c->size;
+    if (run->cfg->method != ATRBVH_METHOD_LBVH || !c->size) {
+        /* (an LBVH's refit computed the sizes: refit.c's climb_sizes) */
+        c->size = atrbvh_i_scratch_get(c->scratch, CPU_SIZE,
+                                       2 * (size_t)run->n - 1,
+                                       sizeof *c->size);
+        if (!c->size)
+            return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                                 "cannot allocate the collapse flags");
+        x.t = &c->tree;
+        x.p = &run->cfg->cost;
+        x.size = c->size;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(run->cfg->threads)
 #pragma omp single
 #endif
-    (void)decide(&x, 0);
+        (void)decide(&x, 0);
+    }
     run->node_count = c->size[0] & ATRBVH_SIZE_MASK;
     if (!c->kept_ids && run->cfg->method != ATRBVH_METHOD_LBVH &&
         c->scratch->transient) {
@@ -105,6 +114,13 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
         /* the layout recomputes the boxes (layout.c says when it can) */
         atrbvh_i_scratch_release(c->scratch, CPU_BOX);
         c->tree.box = NULL;
+    }
+    if (c->ranges && run->cfg->method == ATRBVH_METHOD_LBVH &&
+        c->scratch->transient) {
+        /* The layout of a hierarchy's own tree needs no parent links
+         * (cpu.h's ranges) */
+        atrbvh_i_scratch_release(c->scratch, CPU_PARENT);
+        c->tree.parent = NULL;
     }
     return ATRBVH_OK;
 }

@@ -55,6 +55,11 @@ typedef struct atrbvh_i_cpu_run {
     /* collapse: the sizes moved into the leaves' half of tree.box, whose
      * boxes the layout then recomputes (layout.c) */
     int sizes_in_leaf_boxes;
+    /* The hierarchy stage's tree, not (yet) restructured: every subtree
+     * holds the leaves of a contiguous range of sorted positions, in
+     * order, so a node's primitives start at its output prim_at
+     * (layout.c).  Not so for set_tree's or an optimised tree. */
+    int ranges;
 } atrbvh_i_cpu_run;
 
 /* The tree's topology arrays for n leaves in the device's scratch slots
@@ -117,6 +122,12 @@ void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
 void atrbvh_i_refit(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
                     const uint32_t *order, const atrbvh_cost_params *cost,
                     int threads);
+/* The same without costs (t->cost NULL), and the collapse sizes of every
+ * node into `size` (2n-1 entries; cpu/collapse.c's rule and arithmetic):
+ * the LBVH's refit and collapse in one climb. */
+void atrbvh_i_refit_sizes(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
+                          const uint32_t *order, const atrbvh_cost_params *p,
+                          int threads, uint32_t *size);
 /* TRBVH or ATRBVH treelet restructuring in place; per-thread scratch from
  * slot CPU_OPTIMISE of `scratch`.  Progress by round through `run` (may
  * be NULL). */
