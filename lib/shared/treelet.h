@@ -523,7 +523,8 @@ ATRBVH_FN void atrbvh_soa_set(atrbvh_box_soa *s, atrbvh_u32 k, atrbvh_box b)
 
 /* out[a] = atrbvh_box_area(atrbvh_box_union(q, box of slot a)) for a in
  * lo .. hi-1, q the first union operand; out needs ATRBVH_SOA_PAD - 1
- * entries of room past hi.  On x86 CPUs four at a time with SSE2: MINPS
+ * entries of room past hi.  On x86 CPUs four at a time with SSE2 (the
+ * upper pair of the last four skipped when not wanted): MINPS
  * and MAXPS are q < b ? q : b and q > b ? q : b, lane for lane the scalar
  * expressions, and the double arithmetic is the same IEEE operations in
  * the same order, so the bits are the same as the scalar loop's (which
@@ -552,6 +553,9 @@ ATRBVH_FN void atrbvh_union_areas(const atrbvh_box_soa *s, atrbvh_box q,
         t = _mm_add_pd(t, _mm_mul_pd(dy, dz));
         t = _mm_add_pd(t, _mm_mul_pd(dz, dx));
         _mm_storeu_pd(out + a, _mm_mul_pd(two, t));
+        /* The upper two lanes only when one of them is wanted. */
+        if (hi - a <= 2u)
+            break;
         dx = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(x1, x1)),
                         _mm_cvtps_pd(_mm_movehl_ps(x0, x0)));
         dy = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(y1, y1)),
@@ -1078,6 +1082,9 @@ ATRBVH_FN void atrbvh_agg_union_areas(const atrbvh_agg_scratch *s,
         t = _mm_add_pd(t, _mm_mul_pd(dy, dz));
         t = _mm_add_pd(t, _mm_mul_pd(dz, dx));
         _mm_storeu_pd(out + a, _mm_mul_pd(two, t));
+        /* The upper two lanes only when one of them is wanted. */
+        if (hi - a <= 2u)
+            break;
         dx = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(x1, x1)),
                         _mm_cvtps_pd(_mm_movehl_ps(x0, x0)));
         dy = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(y1, y1)),
