@@ -15,7 +15,8 @@
  *
  * The pieces, in the order the driver uses them:
  *   atrbvh_treelet_form      - pick the n leaves (largest area first)
- *   atrbvh_treelet_gather    - copy their box, count, cost
+ *   atrbvh_treelet_gather    - copy their box, count, cost (TRBVH; ATRBVH
+ *                              reads them in place)
  *   atrbvh_trbvh_dp          - TRBVH: optimal topology by subset DP
  *   atrbvh_agglomerate       - ATRBVH: greedy agglomerative topology
  *   atrbvh_treelet_evaluate  - exact boxes, counts, costs of a topology
@@ -603,18 +604,23 @@ ATRBVH_FN void atrbvh_union_areas(const atrbvh_box_soa *s, atrbvh_box q,
  * of slot i; the cluster of the last slot m-1 moves into slot i (nothing
  * moves when i = m-1).  Merge q (0-based) is local internal node q; its
  * cost is atrbvh_node_cost over the two clusters (left first).  The last
- * merge is the root.  Returns the root's cost.
+ * merge is the root.  Returns the root's cost.  The leaves come from
+ * the tree in place (t->box/cost/count of tl->leaf[a]) when t is not
+ * null, else from lv (atrbvh_agglomerate: gathered by
+ * atrbvh_treelet_gather); the values, hence the result, are the same.
  *
  * The minimum search keeps each row's minimum (and its lowest column) and
  * updates them incrementally after a merge, so a step costs O(m) plus a
  * rescan of the few rows whose minimum was in a changed column, instead of
  * an O(m^2) scan; the pair chosen is exactly the lowest-linear-index
  * minimum of the full scan (the test compares with a naive scan). */
-ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
-                                    atrbvh_u32 n,
-                                    const atrbvh_treelet_leaves *lv,
-                                    ATRBVH_GLOBAL double *dist,
-                                    atrbvh_treelet_topo *topo)
+ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
+                                       atrbvh_u32 n,
+                                       const atrbvh_treelet_tree *t,
+                                       const atrbvh_treelet *tl,
+                                       const atrbvh_treelet_leaves *lv,
+                                       ATRBVH_GLOBAL double *dist,
+                                       atrbvh_treelet_topo *topo)
 {
     atrbvh_box box[ATRBVH_TREELET_MAX];
     double cost[ATRBVH_TREELET_MAX];
@@ -627,12 +633,24 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
     atrbvh_u32 m, a, b, q = 0;
     double root_cost = 0.0;
 
-    for (a = 0; a < n; a++) {
-        box[a] = lv->box[a];
-        atrbvh_soa_set(&soa, a, box[a]);
-        cost[a] = lv->cost[a];
-        count[a] = lv->count[a];
-        code[a] = a;
+    if (t) {
+        /* What atrbvh_treelet_gather would copy, read in place. */
+        for (a = 0; a < n; a++) {
+            atrbvh_u32 node = tl->leaf[a];
+            box[a] = t->box[node];
+            atrbvh_soa_set(&soa, a, box[a]);
+            cost[a] = t->cost[node];
+            count[a] = t->count[node];
+            code[a] = a;
+        }
+    } else {
+        for (a = 0; a < n; a++) {
+            box[a] = lv->box[a];
+            atrbvh_soa_set(&soa, a, box[a]);
+            cost[a] = lv->cost[a];
+            count[a] = lv->count[a];
+            code[a] = a;
+        }
     }
     /* Lanes read past the end, never used: any finite value. */
     for (a = n; a < n + ATRBVH_SOA_PAD; a++)
@@ -747,6 +765,16 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
     }
     topo->root = n - 2u;
     return root_cost;
+}
+
+/* The agglomeration over gathered leaves (atrbvh_treelet_gather). */
+ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
+                                    atrbvh_u32 n,
+                                    const atrbvh_treelet_leaves *lv,
+                                    ATRBVH_GLOBAL double *dist,
+                                    atrbvh_treelet_topo *topo)
+{
+    return atrbvh_agglomerate_at(p, n, 0, 0, lv, dist, topo);
 }
 
 /* ------------------------------------------------------ evaluate, write */
@@ -875,12 +903,12 @@ ATRBVH_FN int atrbvh_treelet_process_tl(const atrbvh_treelet_tree *t,
     tl->n = 0;
     if (atrbvh_treelet_form(t, root, n, tl) < 3u)
         return 0;
-    atrbvh_treelet_gather(t, tl, &lv);
     /* A quick reject: the DP's optimum (and the agglomerative root merge)
      * is what evaluate recomputes (the same sums in the same order), so
      * nothing strictly cheaper exists when it finds none. */
     if (agglomerative) {
-        found = atrbvh_agglomerate(p, tl->n, &lv, dist, &topo);
+        /* The leaves read from the tree in place (no gather). */
+        found = atrbvh_agglomerate_at(p, tl->n, t, tl, 0, dist, &topo);
         if (!(found < t->cost[root]))
             return 0;
         /* The merges already hold evaluate's boxes, counts and costs (the
@@ -888,6 +916,7 @@ ATRBVH_FN int atrbvh_treelet_process_tl(const atrbvh_treelet_tree *t,
         atrbvh_treelet_preorder(tl->n, &topo);
         cost = found;
     } else {
+        atrbvh_treelet_gather(t, tl, &lv);
         found = atrbvh_trbvh_dp(p, tl->n, &lv, s, &topo);
         if (!(found < t->cost[root]))
             return 0;
