@@ -652,8 +652,11 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
             code[a] = a;
         }
     }
-    /* Lanes read past the end, never used: any finite value. */
-    for (a = n; a < n + ATRBVH_SOA_PAD; a++)
+    /* Lanes read past the end, never used: any finite value.  Every
+     * union_areas call below has hi <= n-1, and the SSE2 loop reads
+     * lanes in fours from 0, so up to lane (n+2)/4*4 - 1 (none past the
+     * slots for n = 9, 16, 32); the scalar loop reads none. */
+    for (a = n; a < ((n + 2u) & ~3u); a++)
         atrbvh_soa_set(&soa, a, box[0]);
     /* The matrix row by row, each row's minimum found on the way (strict
      * <: the lowest column among equals, as atrbvh_row_min). */
@@ -738,8 +741,17 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
          * below j hold neither column. */
         atrbvh_union_areas(&soa, merged, 0, last, area_of);
         jrow = dist + j * (j - 1u) / 2u;
+#if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
+        /* By pairs: j is small, a library memcpy (what the compiler
+         * makes of the plain loop) costs more than the copy. */
+        for (a = 0; a + 1u < j; a += 2u)
+            _mm_storeu_pd(jrow + a, _mm_loadu_pd(area_of + a));
+        if (a < j)
+            jrow[a] = area_of[a];
+#else
         for (a = 0; a < j; a++)
             jrow[a] = area_of[a];
+#endif
         for (r = j + 1u; r < last; r++) {
             ATRBVH_GLOBAL double *row = dist + r * (r - 1u) / 2u;
             double v = area_of[r];
