@@ -695,7 +695,12 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
         }
         j = rcol[i];
         merged = atrbvh_box_union(box[j], box[i]);
-        area = atrbvh_box_area(merged);
+        /* The merged area is the pair's distance, already computed: the
+         * union may have been taken in the other operand order, which
+         * changes a coordinate (MINSS/MAXSS or ?:) only in the sign of a
+         * zero, hence the area only in the sign of a zero, which no
+         * comparison below or in the callers distinguishes. */
+        area = best;
         topo->left[q] = code[j];
         topo->right[q] = code[i];
         root_cost = atrbvh_node_cost(p, area, count[j] + count[i], cost[j],
@@ -1219,7 +1224,12 @@ ATRBVH_FN double atrbvh_agg_cluster(const atrbvh_treelet_tree *t,
         }
         j = rcol[i];
         merged = atrbvh_box_union(box[j], box[i]);
-        area = atrbvh_box_area(merged);
+        /* The merged area is the pair's distance, already computed: the
+         * union may have been taken in the other operand order, which
+         * changes a coordinate (MINSS/MAXSS or ?:) only in the sign of a
+         * zero, hence the area only in the sign of a zero, which no
+         * comparison below or in the callers distinguishes. */
+        area = best;
         s->left[q] = code[j];
         s->right[q] = code[i];
         root_cost = atrbvh_node_cost(p, area, count[j] + count[i], cost[j],
