@@ -522,6 +522,18 @@ ATRBVH_FN void atrbvh_soa_set(atrbvh_box_soa *s, atrbvh_u32 k, atrbvh_box b)
     s->c[5][k] = b.max[2];
 }
 
+ATRBVH_FN atrbvh_box atrbvh_soa_get(const atrbvh_box_soa *s, atrbvh_u32 k)
+{
+    atrbvh_box b;
+    b.min[0] = s->c[0][k];
+    b.min[1] = s->c[1][k];
+    b.min[2] = s->c[2][k];
+    b.max[0] = s->c[3][k];
+    b.max[1] = s->c[4][k];
+    b.max[2] = s->c[5][k];
+    return b;
+}
+
 /* out[a] = atrbvh_box_area(atrbvh_box_union(q, box of slot a)) for a in
  * lo .. hi-1, q the first union operand; out needs ATRBVH_SOA_PAD - 1
  * entries of room past hi.  On x86 CPUs four at a time with SSE2 (the
@@ -622,13 +634,12 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
                                        ATRBVH_GLOBAL double *dist,
                                        atrbvh_treelet_topo *topo)
 {
-    atrbvh_box box[ATRBVH_TREELET_MAX];
     double cost[ATRBVH_TREELET_MAX];
     atrbvh_u32 count[ATRBVH_TREELET_MAX];
     atrbvh_u32 code[ATRBVH_TREELET_MAX];
     double rmin[ATRBVH_TREELET_MAX];     /* row minimum, rows 1..m-1   */
     atrbvh_u32 rcol[ATRBVH_TREELET_MAX]; /* its column (lowest if tied) */
-    atrbvh_box_soa soa;                  /* box[], by coordinate      */
+    atrbvh_box_soa soa;                  /* the cluster boxes         */
     double area_of[ATRBVH_TREELET_MAX + ATRBVH_SOA_PAD];
     atrbvh_u32 m, a, b, q = 0;
     double root_cost = 0.0;
@@ -637,16 +648,14 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
         /* What atrbvh_treelet_gather would copy, read in place. */
         for (a = 0; a < n; a++) {
             atrbvh_u32 node = tl->leaf[a];
-            box[a] = t->box[node];
-            atrbvh_soa_set(&soa, a, box[a]);
+            atrbvh_soa_set(&soa, a, t->box[node]);
             cost[a] = t->cost[node];
             count[a] = t->count[node];
             code[a] = a;
         }
     } else {
         for (a = 0; a < n; a++) {
-            box[a] = lv->box[a];
-            atrbvh_soa_set(&soa, a, box[a]);
+            atrbvh_soa_set(&soa, a, lv->box[a]);
             cost[a] = lv->cost[a];
             count[a] = lv->count[a];
             code[a] = a;
@@ -657,14 +666,14 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
      * lanes in fours from 0, so up to lane (n+2)/4*4 - 1 (none past the
      * slots for n = 9, 16, 32); the scalar loop reads none. */
     for (a = n; a < ((n + 2u) & ~3u); a++)
-        atrbvh_soa_set(&soa, a, box[0]);
+        atrbvh_soa_set(&soa, a, atrbvh_soa_get(&soa, 0));
     /* The matrix row by row, each row's minimum found on the way (strict
      * <: the lowest column among equals, as atrbvh_row_min). */
     for (a = 1; a < n; a++) {
         ATRBVH_GLOBAL double *row = dist + a * (a - 1u) / 2u;
         double bv;
         atrbvh_u32 bc = 0;
-        atrbvh_union_areas(&soa, box[a], 0, a, area_of);
+        atrbvh_union_areas(&soa, atrbvh_soa_get(&soa, a), 0, a, area_of);
         bv = area_of[0];
         row[0] = bv;
         for (b = 1; b < a; b++) {
@@ -694,7 +703,8 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
             }
         }
         j = rcol[i];
-        merged = atrbvh_box_union(box[j], box[i]);
+        merged = atrbvh_box_union(atrbvh_soa_get(&soa, j),
+                                  atrbvh_soa_get(&soa, i));
         /* The merged area is the pair's distance, already computed: the
          * union may have been taken in the other operand order, which
          * changes a coordinate (MINSS/MAXSS or ?:) only in the sign of a
@@ -705,7 +715,6 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
         topo->right[q] = code[i];
         root_cost = atrbvh_node_cost(p, area, count[j] + count[i], cost[j],
                                      cost[i], &collapsed);
-        box[j] = merged;
         atrbvh_soa_set(&soa, j, merged);
         cost[j] = root_cost;
         count[j] += count[i];
@@ -724,8 +733,7 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
         if (i != last) {
             ATRBVH_GLOBAL double *irow = dist + i * (i - 1u) / 2u;
             ATRBVH_GLOBAL double *lrow = dist + last * (last - 1u) / 2u;
-            box[i] = box[last];
-            atrbvh_soa_set(&soa, i, box[i]);
+            atrbvh_soa_set(&soa, i, atrbvh_soa_get(&soa, last));
             cost[i] = cost[last];
             count[i] = count[last];
             code[i] = code[last];
