@@ -673,6 +673,25 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
         ATRBVH_GLOBAL double *row = dist + a * (a - 1u) / 2u;
         double bv;
         atrbvh_u32 bc = 0;
+#if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
+        /* Straight into the row: the SSE2 loop writes at most one entry
+         * past it, the next row's first, which that row then writes; the
+         * last row (nothing after it) goes through area_of. */
+        if (a + 1u < n) {
+            atrbvh_union_areas(&soa, atrbvh_soa_get(&soa, a), 0, a, row);
+            bv = row[0];
+            for (b = 1; b < a; b++) {
+                double d = row[b];
+                if (d < bv) {
+                    bv = d;
+                    bc = b;
+                }
+            }
+            rmin[a] = bv;
+            rcol[a] = bc;
+            continue;
+        }
+#endif
         atrbvh_union_areas(&soa, atrbvh_soa_get(&soa, a), 0, a, area_of);
         bv = area_of[0];
         row[0] = bv;
