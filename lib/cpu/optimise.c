@@ -35,14 +35,18 @@ typedef struct opt_worker {
     double *dist;               /* n(n-1)/2 distances (ATRBVH)          */
     uint64_t treelets;          /* treelets processed                   */
     uint64_t applied;           /* of which restructured                */
-    uint64_t skipped;           /* TRBVH: known unchanged, not processed */
+    uint64_t skipped;           /* known unchanged, not processed       */
 } opt_worker;
 
 #include <string.h>
 
-/* The TRBVH marks hold a round + 1 in a byte. */
+/* The skip marks hold a round + 1 in a byte. */
 #if ATRBVH_ROUNDS_MAX > 254
 #error "optimise.c: rounds no longer fit the byte marks"
+#endif
+/* The adaptive sizes take process()'s fixed-size path. */
+#if ATRBVH_AUTO_MAX > ATRBVH_TREELET_MAX
+#error "optimise.c: the adaptive size exceeds the fixed-size path"
 #endif
 
 /* Subtrees smaller than this are walked serially inside one task. */
@@ -58,9 +62,10 @@ typedef struct walk_ctx {
     unsigned n;
     uint32_t gamma;
     opt_worker *workers;
-    /* TRBVH only (NULL otherwise): per internal node, the last round + 1
-     * in which its subtree changed (chg) and in which it was processed
-     * without a change since (same), 0 for never; see process(). */
+    /* TRBVH and ATRBVH up to ATRBVH_TREELET_MAX leaves or adaptive (NULL
+     * otherwise): per internal node, the last round + 1 in which its
+     * subtree changed (chg) and in which it was processed without a
+     * change since (same), 0 for never; see process(). */
     unsigned char *chg, *same;
     /* Progress inside a round: treelets done of about `crown`; only the
      * calling thread (OpenMP thread 0) reports, every `step` treelets.
@@ -108,7 +113,7 @@ static int in_crown(const walk_ctx *c, uint32_t node)
     return node < c->t.n_internal && c->t.count[node] >= c->gamma;
 }
 
-static void process(walk_ctx *c, uint32_t node)
+static void process(walk_ctx *c, uint32_t node, unsigned n)
 {
     opt_worker *w = c->workers;
     atrbvh_treelet tl;
@@ -123,9 +128,11 @@ static void process(walk_ctx *c, uint32_t node)
 #ifdef _OPENMP
     w += omp_get_thread_num();
 #endif
-    /* TRBVH: skip a treelet that is known to change nothing.  A treelet
-     * is a pure function of its root's subtree (refresh, form, DP, the
-     * strict comparison), so when the node was processed without a change
+    /* Skip a treelet that is known to change nothing.  A treelet is a
+     * pure function of its root's subtree (refresh, form, the TRBVH DP or
+     * the ATRBVH agglomeration, the strict comparison; the adaptive size
+     * is a function of the root's primitive count; nothing depends on the
+     * round or on gamma), so when the node was processed without a change
      * in an earlier round and nothing in its subtree changed since, it
      * would again change nothing.  chg is carried up the post-order walk
      * (children are final before their parent; a child outside the crown
@@ -152,7 +159,7 @@ static void process(walk_ctx *c, uint32_t node)
      * Pedrini 2015), write back if strictly cheaper - all of it
      * shared/treelet.h's atrbvh_treelet_process, which the OpenCL kernel
      * calls too. */
-    applied = atrbvh_treelet_process_tl(&c->t, c->cost, node, c->n,
+    applied = atrbvh_treelet_process_tl(&c->t, c->cost, node, n,
                                         c->method == ATRBVH_METHOD_ATRBVH,
                                         w->trbvh, w->dist, &tl);
     if (c->chg) {
@@ -173,7 +180,7 @@ static void process(walk_ctx *c, uint32_t node)
     progress(c);
 }
 
-/* ATRBVH treelets above 32 leaves and the adaptive size: process()'s
+/* ATRBVH treelets above 32 leaves: process()'s
  * bookkeeping around atrbvh_atrbvh_process (shared/treelet.h, which the
  * OpenCL kernel calls too).  Kept out of process() so that the fixed-size
  * path's code and registers stay what they were. */
@@ -200,12 +207,16 @@ static void process_agg(walk_ctx *c, uint32_t node)
     progress(c);
 }
 
-/* One crown node: up to ATRBVH_TREELET_MAX leaves process(), above (and
- * ATRBVH_TREELET_AUTO) process_agg(). */
+/* One crown node: up to ATRBVH_TREELET_MAX leaves and the adaptive size
+ * (9, 16 or 32 leaves: atrbvh_atrbvh_process's choice, the same
+ * fixed-size path) process(), above process_agg(). */
 static void visit(walk_ctx *c, uint32_t node)
 {
     if (c->n <= ATRBVH_TREELET_MAX)
-        process(c, node);
+        process(c, node, c->n);
+    else if (c->n == ATRBVH_TREELET_AUTO)
+        process(c, node,
+                atrbvh_treelet_auto_size(c->t.count[node], c->gamma));
     else
         process_agg(c, node);
 }
@@ -331,9 +342,11 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     off_split = off_count + ALIGN64(subsets * sizeof(uint32_t));
     off_dist = off_split + ALIGN64(subsets * sizeof(uint32_t));
     stride = off_dist + ALIGN64(pairs * sizeof(double));
-    /* TRBVH: after the workers' parts, two marks per internal node (chg,
-     * same: see process()), rounds + 1 <= 65 fitting a byte. */
-    if (cfg->method == ATRBVH_METHOD_TRBVH)
+    /* After the workers' parts, two marks per internal node (chg, same:
+     * see process()), rounds + 1 <= 65 fitting a byte; not for ATRBVH
+     * treelets above ATRBVH_TREELET_MAX leaves (process_agg). */
+    if (cfg->method == ATRBVH_METHOD_TRBVH || n <= ATRBVH_TREELET_MAX ||
+        n == ATRBVH_TREELET_AUTO)
         marks = (size_t)(t->n - 1u);
     if (!atrbvh_i_mul_size((size_t)threads, stride, &total) ||
         marks > ((size_t)-1 - total) / 2u)

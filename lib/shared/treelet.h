@@ -15,7 +15,8 @@
  *
  * The pieces, in the order the driver uses them:
  *   atrbvh_treelet_form      - pick the n leaves (largest area first)
- *   atrbvh_treelet_gather    - copy their box, count, cost
+ *   atrbvh_treelet_gather    - copy their box, count, cost (TRBVH; ATRBVH
+ *                              reads them in place)
  *   atrbvh_trbvh_dp          - TRBVH: optimal topology by subset DP
  *   atrbvh_agglomerate       - ATRBVH: greedy agglomerative topology
  *   atrbvh_treelet_evaluate  - exact boxes, counts, costs of a topology
@@ -521,9 +522,22 @@ ATRBVH_FN void atrbvh_soa_set(atrbvh_box_soa *s, atrbvh_u32 k, atrbvh_box b)
     s->c[5][k] = b.max[2];
 }
 
+ATRBVH_FN atrbvh_box atrbvh_soa_get(const atrbvh_box_soa *s, atrbvh_u32 k)
+{
+    atrbvh_box b;
+    b.min[0] = s->c[0][k];
+    b.min[1] = s->c[1][k];
+    b.min[2] = s->c[2][k];
+    b.max[0] = s->c[3][k];
+    b.max[1] = s->c[4][k];
+    b.max[2] = s->c[5][k];
+    return b;
+}
+
 /* out[a] = atrbvh_box_area(atrbvh_box_union(q, box of slot a)) for a in
  * lo .. hi-1, q the first union operand; out needs ATRBVH_SOA_PAD - 1
- * entries of room past hi.  On x86 CPUs four at a time with SSE2: MINPS
+ * entries of room past hi.  On x86 CPUs four at a time with SSE2 (the
+ * upper pair of the last four skipped when not wanted): MINPS
  * and MAXPS are q < b ? q : b and q > b ? q : b, lane for lane the scalar
  * expressions, and the double arithmetic is the same IEEE operations in
  * the same order, so the bits are the same as the scalar loop's (which
@@ -552,6 +566,9 @@ ATRBVH_FN void atrbvh_union_areas(const atrbvh_box_soa *s, atrbvh_box q,
         t = _mm_add_pd(t, _mm_mul_pd(dy, dz));
         t = _mm_add_pd(t, _mm_mul_pd(dz, dx));
         _mm_storeu_pd(out + a, _mm_mul_pd(two, t));
+        /* The upper two lanes only when one of them is wanted. */
+        if (hi - a <= 2u)
+            break;
         dx = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(x1, x1)),
                         _mm_cvtps_pd(_mm_movehl_ps(x0, x0)));
         dy = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(y1, y1)),
@@ -599,47 +616,83 @@ ATRBVH_FN void atrbvh_union_areas(const atrbvh_box_soa *s, atrbvh_box q,
  * of slot i; the cluster of the last slot m-1 moves into slot i (nothing
  * moves when i = m-1).  Merge q (0-based) is local internal node q; its
  * cost is atrbvh_node_cost over the two clusters (left first).  The last
- * merge is the root.  Returns the root's cost.
+ * merge is the root.  Returns the root's cost.  The leaves come from
+ * the tree in place (t->box/cost/count of tl->leaf[a]) when t is not
+ * null, else from lv (atrbvh_agglomerate: gathered by
+ * atrbvh_treelet_gather); the values, hence the result, are the same.
  *
  * The minimum search keeps each row's minimum (and its lowest column) and
  * updates them incrementally after a merge, so a step costs O(m) plus a
  * rescan of the few rows whose minimum was in a changed column, instead of
  * an O(m^2) scan; the pair chosen is exactly the lowest-linear-index
  * minimum of the full scan (the test compares with a naive scan). */
-ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
-                                    atrbvh_u32 n,
-                                    const atrbvh_treelet_leaves *lv,
-                                    ATRBVH_GLOBAL double *dist,
-                                    atrbvh_treelet_topo *topo)
+ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
+                                       atrbvh_u32 n,
+                                       const atrbvh_treelet_tree *t,
+                                       const atrbvh_treelet *tl,
+                                       const atrbvh_treelet_leaves *lv,
+                                       ATRBVH_GLOBAL double *dist,
+                                       atrbvh_treelet_topo *topo)
 {
-    atrbvh_box box[ATRBVH_TREELET_MAX];
     double cost[ATRBVH_TREELET_MAX];
     atrbvh_u32 count[ATRBVH_TREELET_MAX];
     atrbvh_u32 code[ATRBVH_TREELET_MAX];
     double rmin[ATRBVH_TREELET_MAX];     /* row minimum, rows 1..m-1   */
     atrbvh_u32 rcol[ATRBVH_TREELET_MAX]; /* its column (lowest if tied) */
-    atrbvh_box_soa soa;                  /* box[], by coordinate      */
+    atrbvh_box_soa soa;                  /* the cluster boxes         */
     double area_of[ATRBVH_TREELET_MAX + ATRBVH_SOA_PAD];
     atrbvh_u32 m, a, b, q = 0;
     double root_cost = 0.0;
 
-    for (a = 0; a < n; a++) {
-        box[a] = lv->box[a];
-        atrbvh_soa_set(&soa, a, box[a]);
-        cost[a] = lv->cost[a];
-        count[a] = lv->count[a];
-        code[a] = a;
+    if (t) {
+        /* What atrbvh_treelet_gather would copy, read in place. */
+        for (a = 0; a < n; a++) {
+            atrbvh_u32 node = tl->leaf[a];
+            atrbvh_soa_set(&soa, a, t->box[node]);
+            cost[a] = t->cost[node];
+            count[a] = t->count[node];
+            code[a] = a;
+        }
+    } else {
+        for (a = 0; a < n; a++) {
+            atrbvh_soa_set(&soa, a, lv->box[a]);
+            cost[a] = lv->cost[a];
+            count[a] = lv->count[a];
+            code[a] = a;
+        }
     }
-    /* Lanes read past the end, never used: any finite value. */
-    for (a = n; a < n + ATRBVH_SOA_PAD; a++)
-        atrbvh_soa_set(&soa, a, box[0]);
+    /* Lanes read past the end, never used: any finite value.  Every
+     * union_areas call below has hi <= n-1, and the SSE2 loop reads
+     * lanes in fours from 0, so up to lane (n+2)/4*4 - 1 (none past the
+     * slots for n = 9, 16, 32); the scalar loop reads none. */
+    for (a = n; a < ((n + 2u) & ~3u); a++)
+        atrbvh_soa_set(&soa, a, atrbvh_soa_get(&soa, 0));
     /* The matrix row by row, each row's minimum found on the way (strict
      * <: the lowest column among equals, as atrbvh_row_min). */
     for (a = 1; a < n; a++) {
         ATRBVH_GLOBAL double *row = dist + a * (a - 1u) / 2u;
         double bv;
         atrbvh_u32 bc = 0;
-        atrbvh_union_areas(&soa, box[a], 0, a, area_of);
+#if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
+        /* Straight into the row: the SSE2 loop writes at most one entry
+         * past it, the next row's first, which that row then writes; the
+         * last row (nothing after it) goes through area_of. */
+        if (a + 1u < n) {
+            atrbvh_union_areas(&soa, atrbvh_soa_get(&soa, a), 0, a, row);
+            bv = row[0];
+            for (b = 1; b < a; b++) {
+                double d = row[b];
+                if (d < bv) {
+                    bv = d;
+                    bc = b;
+                }
+            }
+            rmin[a] = bv;
+            rcol[a] = bc;
+            continue;
+        }
+#endif
+        atrbvh_union_areas(&soa, atrbvh_soa_get(&soa, a), 0, a, area_of);
         bv = area_of[0];
         row[0] = bv;
         for (b = 1; b < a; b++) {
@@ -669,13 +722,18 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
             }
         }
         j = rcol[i];
-        merged = atrbvh_box_union(box[j], box[i]);
-        area = atrbvh_box_area(merged);
+        merged = atrbvh_box_union(atrbvh_soa_get(&soa, j),
+                                  atrbvh_soa_get(&soa, i));
+        /* The merged area is the pair's distance, already computed: the
+         * union may have been taken in the other operand order, which
+         * changes a coordinate (MINSS/MAXSS or ?:) only in the sign of a
+         * zero, hence the area only in the sign of a zero, which no
+         * comparison below or in the callers distinguishes. */
+        area = best;
         topo->left[q] = code[j];
         topo->right[q] = code[i];
         root_cost = atrbvh_node_cost(p, area, count[j] + count[i], cost[j],
                                      cost[i], &collapsed);
-        box[j] = merged;
         atrbvh_soa_set(&soa, j, merged);
         cost[j] = root_cost;
         count[j] += count[i];
@@ -694,8 +752,7 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
         if (i != last) {
             ATRBVH_GLOBAL double *irow = dist + i * (i - 1u) / 2u;
             ATRBVH_GLOBAL double *lrow = dist + last * (last - 1u) / 2u;
-            box[i] = box[last];
-            atrbvh_soa_set(&soa, i, box[i]);
+            atrbvh_soa_set(&soa, i, atrbvh_soa_get(&soa, last));
             cost[i] = cost[last];
             count[i] = count[last];
             code[i] = code[last];
@@ -716,8 +773,17 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
          * below j hold neither column. */
         atrbvh_union_areas(&soa, merged, 0, last, area_of);
         jrow = dist + j * (j - 1u) / 2u;
+#if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
+        /* By pairs: j is small, a library memcpy (what the compiler
+         * makes of the plain loop) costs more than the copy. */
+        for (a = 0; a + 1u < j; a += 2u)
+            _mm_storeu_pd(jrow + a, _mm_loadu_pd(area_of + a));
+        if (a < j)
+            jrow[a] = area_of[a];
+#else
         for (a = 0; a < j; a++)
             jrow[a] = area_of[a];
+#endif
         for (r = j + 1u; r < last; r++) {
             ATRBVH_GLOBAL double *row = dist + r * (r - 1u) / 2u;
             double v = area_of[r];
@@ -743,6 +809,16 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
     }
     topo->root = n - 2u;
     return root_cost;
+}
+
+/* The agglomeration over gathered leaves (atrbvh_treelet_gather). */
+ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
+                                    atrbvh_u32 n,
+                                    const atrbvh_treelet_leaves *lv,
+                                    ATRBVH_GLOBAL double *dist,
+                                    atrbvh_treelet_topo *topo)
+{
+    return atrbvh_agglomerate_at(p, n, 0, 0, lv, dist, topo);
 }
 
 /* ------------------------------------------------------ evaluate, write */
@@ -871,12 +947,12 @@ ATRBVH_FN int atrbvh_treelet_process_tl(const atrbvh_treelet_tree *t,
     tl->n = 0;
     if (atrbvh_treelet_form(t, root, n, tl) < 3u)
         return 0;
-    atrbvh_treelet_gather(t, tl, &lv);
     /* A quick reject: the DP's optimum (and the agglomerative root merge)
      * is what evaluate recomputes (the same sums in the same order), so
      * nothing strictly cheaper exists when it finds none. */
     if (agglomerative) {
-        found = atrbvh_agglomerate(p, tl->n, &lv, dist, &topo);
+        /* The leaves read from the tree in place (no gather). */
+        found = atrbvh_agglomerate_at(p, tl->n, t, tl, 0, dist, &topo);
         if (!(found < t->cost[root]))
             return 0;
         /* The merges already hold evaluate's boxes, counts and costs (the
@@ -884,6 +960,7 @@ ATRBVH_FN int atrbvh_treelet_process_tl(const atrbvh_treelet_tree *t,
         atrbvh_treelet_preorder(tl->n, &topo);
         cost = found;
     } else {
+        atrbvh_treelet_gather(t, tl, &lv);
         found = atrbvh_trbvh_dp(p, tl->n, &lv, s, &topo);
         if (!(found < t->cost[root]))
             return 0;
@@ -1078,6 +1155,9 @@ ATRBVH_FN void atrbvh_agg_union_areas(const atrbvh_agg_scratch *s,
         t = _mm_add_pd(t, _mm_mul_pd(dy, dz));
         t = _mm_add_pd(t, _mm_mul_pd(dz, dx));
         _mm_storeu_pd(out + a, _mm_mul_pd(two, t));
+        /* The upper two lanes only when one of them is wanted. */
+        if (hi - a <= 2u)
+            break;
         dx = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(x1, x1)),
                         _mm_cvtps_pd(_mm_movehl_ps(x0, x0)));
         dy = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(y1, y1)),
@@ -1171,7 +1251,12 @@ ATRBVH_FN double atrbvh_agg_cluster(const atrbvh_treelet_tree *t,
         }
         j = rcol[i];
         merged = atrbvh_box_union(box[j], box[i]);
-        area = atrbvh_box_area(merged);
+        /* The merged area is the pair's distance, already computed: the
+         * union may have been taken in the other operand order, which
+         * changes a coordinate (MINSS/MAXSS or ?:) only in the sign of a
+         * zero, hence the area only in the sign of a zero, which no
+         * comparison below or in the callers distinguishes. */
+        area = best;
         s->left[q] = code[j];
         s->right[q] = code[i];
         root_cost = atrbvh_node_cost(p, area, count[j] + count[i], cost[j],
