@@ -11,21 +11,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.09698516:61.0377691]
-set xtics (10, 20, 50)
+set xrange [2.85690752:54.2037835]
+set xtics (5, 10, 20, 50)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 7.80782025,103.086451 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.914936,71.3951472 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 19.8773234,73.0450257 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 23.7519545,70.3663757 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 22.8182133,67.0641732 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 29.7114967,66.2620175 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 37.201553,69.0782932 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.3362698,68.7352597 left font ',8' noenhanced front
-set label 'embree_low' at 6.47448512,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 20.12124,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 14.5225078,77.7503047 left font ',8' noenhanced front
+set label 'LBVH' at 3.7935276,103.086451 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 24.5588575,71.3951472 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 12.9624988,73.0450257 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 16.3834859,67.6582542 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.9445242,72.4804162 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.0986664,66.2620175 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 30.1395806,69.0782932 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 10.1845228,68.7352597 left font ',8' noenhanced front
+set label 'embree_low' at 4.57147932,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 17.0904347,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 11.9412494,77.7503047 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -45,21 +45,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.09698516:61.0377691]
-set xtics (10, 20, 50)
-set yrange [2.60374318:3.97543412]
+set xrange [2.85690752:54.2037835]
+set xtics (5, 10, 20, 50)
+set yrange [2.80105276:4.24836426]
 unset label
-set label 'LBVH' at 7.80782025,2.82275409 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 34.1372548,3.65646621 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 14.7847828,3.58950657 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 23.7519545,3.55303157 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 16.6101908,3.65843727 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 25.2669154,3.6990235 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 37.201553,3.75149737 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 21.9965649,3.77301297 left font ',8' noenhanced front
-set label 'embree_low' at 6.47448512,2.73335178 left font ',8' noenhanced front
-set label 'embree_medium' at 20.12124,3.81342338 left font ',8' noenhanced front
-set label 'embree_high' at 14.5225078,3.76962587 left font ',8' noenhanced front
+set label 'LBVH' at 3.7935276,2.97300057 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 24.7497985,3.93065745 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 9.12686805,3.76574641 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 16.3834859,3.7552604 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.9445242,3.81184291 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 15.7310192,3.88573573 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 30.1395806,3.88012953 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 10.1845228,3.86861158 left font ',8' noenhanced front
+set label 'embree_low' at 4.57147932,2.9378066 left font ',8' noenhanced front
+set label 'embree_medium' at 17.0904347,4.07742196 left font ',8' noenhanced front
+set label 'embree_high' at 16.9596438,4.02488087 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 0 using 2:4 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:4 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -78,21 +78,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.09698516:61.0377691]
-set xtics (10, 20, 50)
+set xrange [2.85690752:54.2037835]
+set xtics (5, 10, 20, 50)
 set yrange [61.6488455:110.063549]
 unset label
-set label 'LBVH' at 7.80782025,104.26217 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.914936,72.0854584 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 20.0076231,72.3902199 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 23.7519545,74.5369382 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 16.502017,74.0498997 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 21.4872048,70.9812889 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 37.201553,70.3405519 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 22.1407566,67.6701241 left font ',8' noenhanced front
-set label 'embree_low' at 5.62596454,105.921569 left font ',8' noenhanced front
-set label 'embree_medium' at 19.9902004,64.9849474 left font ',8' noenhanced front
-set label 'embree_high' at 14.5225078,66.2234631 left font ',8' noenhanced front
+set label 'LBVH' at 3.7935276,104.26217 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 24.5588575,72.0854584 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 13.0632801,72.3902199 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 16.2570897,75.7754539 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.9445242,74.0498997 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 15.7310192,70.9812889 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 30.1395806,70.3405519 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.6173155,68.9086397 left font ',8' noenhanced front
+set label 'embree_low' at 4.57147932,104.345277 left font ',8' noenhanced front
+set label 'embree_medium' at 17.0904347,66.2234631 left font ',8' noenhanced front
+set label 'embree_high' at 12.0340906,64.9849474 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -112,21 +112,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.09698516:61.0377691]
-set xtics (10, 20, 50)
+set xrange [2.85690752:54.2037835]
+set xtics (5, 10, 20, 50)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 7.80782025,103.086451 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.914936,71.3951472 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 19.8773234,73.0450257 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 23.7519545,70.3663757 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 22.8182133,67.0641732 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 29.7114967,66.2620175 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 37.201553,69.0782932 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.3362698,68.7352597 left font ',8' noenhanced front
-set label 'embree_low' at 6.47448512,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 20.12124,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 14.5225078,77.7503047 left font ',8' noenhanced front
+set label 'LBVH' at 3.7935276,103.086451 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 24.5588575,71.3951472 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 12.9624988,73.0450257 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 16.3834859,67.6582542 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.9445242,72.4804162 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.0986664,66.2620175 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 30.1395806,69.0782932 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 10.1845228,68.7352597 left font ',8' noenhanced front
+set label 'embree_low' at 4.57147932,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 17.0904347,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 11.9412494,77.7503047 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -139,21 +139,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.09698516:61.0377691]
-set xtics (10, 20, 50)
+set xrange [2.85690752:54.2037835]
+set xtics (5, 10, 20, 50)
 set yrange [61.6488455:110.063549]
 unset label
-set label 'LBVH' at 7.80782025,104.26217 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.914936,72.0854584 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 20.0076231,72.3902199 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 23.7519545,74.5369382 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 16.502017,74.0498997 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 21.4872048,70.9812889 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 37.201553,70.3405519 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 22.1407566,67.6701241 left font ',8' noenhanced front
-set label 'embree_low' at 5.62596454,105.921569 left font ',8' noenhanced front
-set label 'embree_medium' at 19.9902004,64.9849474 left font ',8' noenhanced front
-set label 'embree_high' at 14.5225078,66.2234631 left font ',8' noenhanced front
+set label 'LBVH' at 3.7935276,104.26217 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 24.5588575,72.0854584 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 13.0632801,72.3902199 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 16.2570897,75.7754539 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.9445242,74.0498997 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 15.7310192,70.9812889 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 30.1395806,70.3405519 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.6173155,68.9086397 left font ',8' noenhanced front
+set label 'embree_low' at 4.57147932,104.345277 left font ',8' noenhanced front
+set label 'embree_medium' at 17.0904347,66.2234631 left font ',8' noenhanced front
+set label 'embree_high' at 12.0340906,64.9849474 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
@@ -171,21 +171,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.09698516:61.0377691]
-set xtics (10, 20, 50)
+set xrange [2.85690752:54.2037835]
+set xtics (5, 10, 20, 50)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 7.80782025,103.086451 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.914936,71.3951472 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 19.8773234,73.0450257 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 23.7519545,70.3663757 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 22.8182133,67.0641732 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 29.7114967,66.2620175 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 37.201553,69.0782932 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.3362698,68.7352597 left font ',8' noenhanced front
-set label 'embree_low' at 6.47448512,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 20.12124,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 14.5225078,77.7503047 left font ',8' noenhanced front
+set label 'LBVH' at 3.7935276,103.086451 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 24.5588575,71.3951472 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 12.9624988,73.0450257 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 16.3834859,67.6582542 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.9445242,72.4804162 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.0986664,66.2620175 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 30.1395806,69.0782932 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 10.1845228,68.7352597 left font ',8' noenhanced front
+set label 'embree_low' at 4.57147932,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 17.0904347,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 11.9412494,77.7503047 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -198,21 +198,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.09698516:61.0377691]
-set xtics (10, 20, 50)
+set xrange [2.85690752:54.2037835]
+set xtics (5, 10, 20, 50)
 set yrange [61.6488455:110.063549]
 unset label
-set label 'LBVH' at 7.80782025,104.26217 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.914936,72.0854584 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 20.0076231,72.3902199 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 23.7519545,74.5369382 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 16.502017,74.0498997 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 21.4872048,70.9812889 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 37.201553,70.3405519 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 22.1407566,67.6701241 left font ',8' noenhanced front
-set label 'embree_low' at 5.62596454,105.921569 left font ',8' noenhanced front
-set label 'embree_medium' at 19.9902004,64.9849474 left font ',8' noenhanced front
-set label 'embree_high' at 14.5225078,66.2234631 left font ',8' noenhanced front
+set label 'LBVH' at 3.7935276,104.26217 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 24.5588575,72.0854584 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 13.0632801,72.3902199 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 16.2570897,75.7754539 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.9445242,74.0498997 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 15.7310192,70.9812889 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 30.1395806,70.3405519 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.6173155,68.9086397 left font ',8' noenhanced front
+set label 'embree_low' at 4.57147932,104.345277 left font ',8' noenhanced front
+set label 'embree_medium' at 17.0904347,66.2234631 left font ',8' noenhanced front
+set label 'embree_high' at 12.0340906,64.9849474 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot

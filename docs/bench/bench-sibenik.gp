@@ -11,21 +11,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.72324437:64.6242362]
+set xrange [3.20020668:62.1273975]
 set xtics (5, 10, 20, 50)
 set yrange [47.9814666:83.2675029]
 unset label
-set label 'LBVH' at 8.38025628,67.05137 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.8386623,53.2352437 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 14.7178691,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 21.3938983,53.2017634 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 21.6413906,49.8495043 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 18.3662802,50.716222 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.577391,51.3155803 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 12.233439,51.3573403 left font ',8' noenhanced front
-set label 'embree_low' at 4.90166689,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 13.0673721,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 24.2560494,54.6804169 left font ',8' noenhanced front
+set label 'LBVH' at 4.2587864,67.05137 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 29.5305633,53.2352437 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 10.2629308,52.9793966 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 19.3494568,52.9555818 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 21.0716844,49.8495043 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 18.4302896,50.716222 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.3876225,51.3155803 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7359829,51.3573403 left font ',8' noenhanced front
+set label 'embree_low' at 5.1121232,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 20.4078718,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 14.1139782,54.6804169 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -45,21 +45,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.72324437:64.6242362]
+set xrange [3.20020668:62.1273975]
 set xtics (5, 10, 20, 50)
-set yrange [2.83865464:4.04353184]
+set yrange [2.82649484:4.0514234]
 unset label
-set label 'LBVH' at 8.38025628,3.08633193 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 34.0937647,3.54136687 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 20.8384322,3.50949691 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 25.7740049,3.70305964 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 21.6413906,3.87917722 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 26.4571702,3.80077874 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.577391,3.90122351 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 18.5181863,3.91857884 left font ',8' noenhanced front
-set label 'embree_low' at 4.90166689,2.95250131 left font ',8' noenhanced front
-set label 'embree_medium' at 19.2963112,3.66539771 left font ',8' noenhanced front
-set label 'embree_high' at 24.2560494,3.54955106 left font ',8' noenhanced front
+set label 'LBVH' at 4.2587864,3.21786349 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 29.7619567,3.78688905 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 10.2629308,3.7773617 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 19.5010739,3.84202941 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 21.0716844,3.89145477 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 26.9323361,3.74149799 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.3876225,3.90015121 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 18.0565048,3.93808218 left font ',8' noenhanced front
+set label 'embree_low' at 5.1121232,2.94223612 left font ',8' noenhanced front
+set label 'embree_medium' at 13.504544,3.72499718 left font ',8' noenhanced front
+set label 'embree_high' at 20.10042,3.71873006 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 0 using 2:4 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:4 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -78,21 +78,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.72324437:64.6242362]
+set xrange [3.20020668:62.1273975]
 set xtics (5, 10, 20, 50)
 set yrange [62.1382942:98.008445]
 unset label
-set label 'LBVH' at 8.38025628,82.6306345 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 34.0937647,67.7362841 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 20.6825112,69.7282285 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 25.5811541,66.6016754 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 21.6413906,65.0839533 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 26.2592077,68.8978606 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.577391,65.5275998 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 12.233439,66.3071656 left font ',8' noenhanced front
-set label 'embree_low' at 4.90166689,93.771813 left font ',8' noenhanced front
-set label 'embree_medium' at 13.0673721,68.1161557 left font ',8' noenhanced front
-set label 'embree_high' at 17.2608323,67.1985472 left font ',8' noenhanced front
+set label 'LBVH' at 4.2587864,82.6306345 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 29.7619567,67.7362841 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 14.6159514,69.7282285 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 13.2411867,67.5192839 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 20.9078561,66.0015618 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 26.7229424,68.8978606 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.3876225,65.5275998 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7359829,66.3071656 left font ',8' noenhanced front
+set label 'embree_low' at 5.1121232,93.771813 left font ',8' noenhanced front
+set label 'embree_medium' at 20.4078718,69.9513728 left font ',8' noenhanced front
+set label 'embree_high' at 20.10042,69.0337643 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -112,21 +112,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.72324437:64.6242362]
+set xrange [3.20020668:62.1273975]
 set xtics (5, 10, 20, 50)
 set yrange [47.9814666:83.2675029]
 unset label
-set label 'LBVH' at 8.38025628,67.05137 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.8386623,53.2352437 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 14.7178691,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 21.3938983,53.2017634 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 21.6413906,49.8495043 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 18.3662802,50.716222 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.577391,51.3155803 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 12.233439,51.3573403 left font ',8' noenhanced front
-set label 'embree_low' at 4.90166689,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 13.0673721,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 24.2560494,54.6804169 left font ',8' noenhanced front
+set label 'LBVH' at 4.2587864,67.05137 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 29.5305633,53.2352437 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 10.2629308,52.9793966 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 19.3494568,52.9555818 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 21.0716844,49.8495043 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 18.4302896,50.716222 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.3876225,51.3155803 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7359829,51.3573403 left font ',8' noenhanced front
+set label 'embree_low' at 5.1121232,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 20.4078718,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 14.1139782,54.6804169 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -139,21 +139,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.72324437:64.6242362]
+set xrange [3.20020668:62.1273975]
 set xtics (5, 10, 20, 50)
 set yrange [62.1382942:98.008445]
 unset label
-set label 'LBVH' at 8.38025628,82.6306345 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 34.0937647,67.7362841 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 20.6825112,69.7282285 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 25.5811541,66.6016754 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 21.6413906,65.0839533 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 26.2592077,68.8978606 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.577391,65.5275998 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 12.233439,66.3071656 left font ',8' noenhanced front
-set label 'embree_low' at 4.90166689,93.771813 left font ',8' noenhanced front
-set label 'embree_medium' at 13.0673721,68.1161557 left font ',8' noenhanced front
-set label 'embree_high' at 17.2608323,67.1985472 left font ',8' noenhanced front
+set label 'LBVH' at 4.2587864,82.6306345 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 29.7619567,67.7362841 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 14.6159514,69.7282285 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 13.2411867,67.5192839 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 20.9078561,66.0015618 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 26.7229424,68.8978606 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.3876225,65.5275998 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7359829,66.3071656 left font ',8' noenhanced front
+set label 'embree_low' at 5.1121232,93.771813 left font ',8' noenhanced front
+set label 'embree_medium' at 20.4078718,69.9513728 left font ',8' noenhanced front
+set label 'embree_high' at 20.10042,69.0337643 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
@@ -171,21 +171,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.72324437:64.6242362]
+set xrange [3.20020668:62.1273975]
 set xtics (5, 10, 20, 50)
 set yrange [47.9814666:83.2675029]
 unset label
-set label 'LBVH' at 8.38025628,67.05137 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.8386623,53.2352437 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 14.7178691,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 21.3938983,53.2017634 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 21.6413906,49.8495043 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 18.3662802,50.716222 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.577391,51.3155803 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 12.233439,51.3573403 left font ',8' noenhanced front
-set label 'embree_low' at 4.90166689,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 13.0673721,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 24.2560494,54.6804169 left font ',8' noenhanced front
+set label 'LBVH' at 4.2587864,67.05137 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 29.5305633,53.2352437 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 10.2629308,52.9793966 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 19.3494568,52.9555818 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 21.0716844,49.8495043 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 18.4302896,50.716222 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.3876225,51.3155803 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7359829,51.3573403 left font ',8' noenhanced front
+set label 'embree_low' at 5.1121232,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 20.4078718,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 14.1139782,54.6804169 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -198,21 +198,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.72324437:64.6242362]
+set xrange [3.20020668:62.1273975]
 set xtics (5, 10, 20, 50)
 set yrange [62.1382942:98.008445]
 unset label
-set label 'LBVH' at 8.38025628,82.6306345 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 34.0937647,67.7362841 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 20.6825112,69.7282285 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 25.5811541,66.6016754 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 21.6413906,65.0839533 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 26.2592077,68.8978606 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.577391,65.5275998 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 12.233439,66.3071656 left font ',8' noenhanced front
-set label 'embree_low' at 4.90166689,93.771813 left font ',8' noenhanced front
-set label 'embree_medium' at 13.0673721,68.1161557 left font ',8' noenhanced front
-set label 'embree_high' at 17.2608323,67.1985472 left font ',8' noenhanced front
+set label 'LBVH' at 4.2587864,82.6306345 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 29.7619567,67.7362841 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 14.6159514,69.7282285 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 13.2411867,67.5192839 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 20.9078561,66.0015618 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 26.7229424,68.8978606 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.3876225,65.5275998 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7359829,66.3071656 left font ',8' noenhanced front
+set label 'embree_low' at 5.1121232,93.771813 left font ',8' noenhanced front
+set label 'embree_medium' at 20.4078718,69.9513728 left font ',8' noenhanced front
+set label 'embree_high' at 20.10042,69.0337643 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot

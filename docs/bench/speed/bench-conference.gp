@@ -11,20 +11,20 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [19.0346858:232.498609]
+set xrange [17.1670688:296.973398]
 set xtics (20, 50, 100, 200)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 27.1193907,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 81.4920902,38.1056054 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 104.434217,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 141.146411,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 104.079067,33.8832374 left font ',8' noenhanced front
-set label 'embree_low' at 24.2250765,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 98.1926803,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 72.358151,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 21.2153434,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 49.825549,36.836494 left font ',8' noenhanced front
+set label 'LBVH' at 22.5932368,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 58.8115455,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 74.2612752,34.0661051 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 168.199426,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 118.022404,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 31.9747895,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 103.138605,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 70.4335614,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 42.2800396,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 91.7117131,38.1056054 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
