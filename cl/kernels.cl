@@ -171,24 +171,16 @@ __kernel void sort_scatter(__global const ulong *src_k,
 #define ATRBVH_CL_HIER_SIDE 128u
 
 /* Internal node of split s from its neighbours ps (-1: none) and ns (n-1:
- * none) with their deltas (lib/cpu/hierarchy.c's emit). */
+ * none) with their deltas (shared/arith.h's atrbvh_hier_node). */
 static void hier_emit(__global uint *left, __global uint *right,
                       __global uint *count, __global uint *parent, long n,
                       long s, long ps, int dps, long ns, int dns)
 {
-    long l = ps + 1, r = ns;
-    uint id, lc, rc;
-    if (ps < 0)
-        id = ns == n - 1 ? 0u : (uint)r;
-    else if (ns == n - 1)
-        id = (uint)l;
-    else
-        id = dns > dps ? (uint)r : (uint)l;
-    lc = (uint)(l == s ? s + n - 1 : s);
-    rc = (uint)(s + 1 == r ? s + n : s + 1);
+    uint lc, rc, c;
+    uint id = atrbvh_hier_node(n, s, ps, dps, ns, dns, &lc, &rc, &c);
     left[id] = lc;
     right[id] = rc;
-    count[id] = (uint)(r - l + 1);
+    count[id] = c;
     parent[lc] = id;
     parent[rc] = id;
 }

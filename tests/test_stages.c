@@ -99,8 +99,8 @@ START_TEST(radix_sort_is_stable_and_sorted)
 }
 END_TEST
 
-/* The hierarchy stage against atrbvh_karras_node (the OpenCL backend's
- * per-node search, and the definition of the numbering): every child,
+/* The hierarchy stage against atrbvh_karras_node (Karras 2012's per-node
+ * search, the definition of the numbering): every child,
  * parent and count, for every block split of the CPU's stack passes,
  * over keys with long runs of equal keys (the position tie rule), few
  * distinct bits, and random keys. */

@@ -48,19 +48,11 @@ typedef struct hier_entry {
 static inline void emit(atrbvh_i_tree *t, int64_t n, int64_t s, int64_t ps,
                         int dps, int64_t ns, int dns)
 {
-    const int64_t l = ps + 1, r = ns;
-    uint32_t id, lc, rc;
-    if (ps < 0)
-        id = ns == n - 1 ? 0u : (uint32_t)r;
-    else if (ns == n - 1)
-        id = (uint32_t)l;
-    else
-        id = dns > dps ? (uint32_t)r : (uint32_t)l;
-    lc = (uint32_t)(l == s ? s + n - 1 : s);
-    rc = (uint32_t)(s + 1 == r ? s + n : s + 1);
+    uint32_t lc, rc, c;
+    const uint32_t id = atrbvh_hier_node(n, s, ps, dps, ns, dns, &lc, &rc, &c);
     t->left[id] = lc;
     t->right[id] = rc;
-    t->count[id] = (uint32_t)(r - l + 1);
+    t->count[id] = c;
     t->parent[lc] = id;
     t->parent[rc] = id;
 }

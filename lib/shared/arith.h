@@ -293,4 +293,27 @@ ATRBVH_FN void atrbvh_karras_node(ATRBVH_CONST_GLOBAL atrbvh_u64 *keys,
     *count = (atrbvh_u32)(hi - lo + 1);
 }
 
+/* The same tree by nearest smaller deltas (lib/cpu/hierarchy.c and the
+ * hierarchy kernels): the internal node of split s spans the leaves
+ * ps + 1 .. ns, where ps is the nearest split to its left with a smaller
+ * delta (-1: none) and ns the nearest to its right (n - 1: none), dps and
+ * dns their deltas.  Returns its id in the Karras numbering (the end of
+ * its range next to its parent's split) and writes its children (tree
+ * numbering: leaves from n - 1) and primitive count. */
+ATRBVH_FN atrbvh_u32 atrbvh_hier_node(atrbvh_i64 n, atrbvh_i64 s,
+                                      atrbvh_i64 ps, int dps, atrbvh_i64 ns,
+                                      int dns, atrbvh_u32 *left,
+                                      atrbvh_u32 *right, atrbvh_u32 *count)
+{
+    const atrbvh_i64 l = ps + 1, r = ns;
+    *left = (atrbvh_u32)(l == s ? s + n - 1 : s);
+    *right = (atrbvh_u32)(s + 1 == r ? s + n : s + 1);
+    *count = (atrbvh_u32)(r - l + 1);
+    if (ps < 0)
+        return ns == n - 1 ? 0u : (atrbvh_u32)r;
+    if (ns == n - 1)
+        return (atrbvh_u32)l;
+    return dns > dps ? (atrbvh_u32)r : (atrbvh_u32)l;
+}
+
 #endif
