@@ -215,8 +215,9 @@ static void bench_opts(bench_cl *b, cli_opt *table)
         {.name = "--configs", .kind = CLI_OPT_STRING, .arg = "LIST",
          .dest = &b->configs,
          .help = "comma-separated: lbvh, trbvh[:N[:R]],\n"
-                 "atrbvh[:N[:R]], fast, balanced, high, embree,\n"
-                 "embree_low, embree_medium, embree_high; @cpu or\n"
+                 "atrbvh[:N[:R]] (N a size or auto), fast,\n"
+                 "balanced, high, embree, embree_low,\n"
+                 "embree_medium, embree_high; @cpu or\n"
                  "@opencl after one picks its backend\n"
                  "(default " DEFAULT_CONFIGS ")"},
         {.name = "--methods", .kind = CLI_OPT_STRING, .arg = "LIST",
