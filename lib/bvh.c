@@ -64,16 +64,22 @@ atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *b)
     atrbvh_i_free(depth);
     if (i < m)
         return ATRBVH_ERR_BACKEND;
+    atrbvh_i_bvh_set_stats(b, leaves, deepest, largest);
+    return ATRBVH_OK;
+}
+
+void atrbvh_i_bvh_set_stats(atrbvh_bvh *b, size_t leaves, unsigned depth,
+                            unsigned largest)
+{
     b->stats.nodes = b->node_count;
     b->stats.leaves = leaves;
     /* a split tree references some primitives more than once */
     b->stats.primitives = b->split_prims ? b->split_prims : b->prim_count;
-    b->stats.max_depth = deepest;
+    b->stats.max_depth = depth;
     b->stats.max_leaf_primitives = largest;
     b->stats.sah = atrbvh_sah(b->nodes, b->node_count, b->stats.ci,
                               b->stats.ct);
     b->stats.sah_built = b->stats.sah; /* atrbvh_refit's drift reference */
-    return ATRBVH_OK;
 }
 
 void atrbvh_bvh_free(atrbvh_bvh *bvh)

@@ -222,14 +222,6 @@ atrbvh_status atrbvh_i_bvh_measure(atrbvh_bvh *b)
             if (b->nodes[i].count > largest)
                 largest = b->nodes[i].count;
         }
-    b->stats.nodes = b->node_count;
-    b->stats.leaves = leaves;
-    /* a split tree references some primitives more than once */
-    b->stats.primitives = b->split_prims ? b->split_prims : b->prim_count;
-    b->stats.max_depth = depth;
-    b->stats.max_leaf_primitives = largest;
-    b->stats.sah = atrbvh_sah(b->nodes, b->node_count, b->stats.ci,
-                              b->stats.ct);
-    b->stats.sah_built = b->stats.sah; /* atrbvh_refit's drift reference */
+    atrbvh_i_bvh_set_stats(b, leaves, depth, largest);
     return ATRBVH_OK;
 }

@@ -166,6 +166,9 @@ atrbvh_status atrbvh_i_bvh_measure(atrbvh_bvh *bvh);
  * the general walk takes 12) measures it; ATRBVH_ERR_BACKEND when the
  * array is not such a tree, ATRBVH_ERR_NOMEM. */
 atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *bvh);
+/* The statistics both measures end with: counts, depth, SAH (bvh.c). */
+void atrbvh_i_bvh_set_stats(atrbvh_bvh *b, size_t leaves, unsigned depth,
+                            unsigned largest);
 /* Structural check of a node array (used on load and, in debug builds,
  * after every build): every child index in range and after its parent,
  * leaf ranges tiling the index array in order, child boxes inside parents
