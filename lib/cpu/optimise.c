@@ -113,21 +113,31 @@ static int in_crown(const walk_ctx *c, uint32_t node)
     return node < c->t.n_internal && c->t.count[node] >= c->gamma;
 }
 
-static void process(walk_ctx *c, uint32_t node, unsigned n)
+/* This thread's worker, or NULL when the build is being cancelled. */
+static opt_worker *worker(walk_ctx *c)
 {
-    opt_worker *w = c->workers;
-    atrbvh_treelet tl;
-    int cancel, applied;
-    unsigned char r1 = (unsigned char)(c->round + 1u);
+    int cancel;
 #ifdef _OPENMP
 #pragma omp atomic read
 #endif
     cancel = c->cancel;
     if (cancel)
-        return; /* the build is being cancelled: its tree is dropped */
+        return NULL;
 #ifdef _OPENMP
-    w += omp_get_thread_num();
+    return c->workers + omp_get_thread_num();
+#else
+    return c->workers;
 #endif
+}
+
+static void process(walk_ctx *c, uint32_t node, unsigned n)
+{
+    opt_worker *w = worker(c);
+    atrbvh_treelet tl;
+    int applied;
+    unsigned char r1 = (unsigned char)(c->round + 1u);
+    if (!w)
+        return; /* the build is being cancelled: its tree is dropped */
     /* Skip a treelet that is known to change nothing.  A treelet is a
      * pure function of its root's subtree (refresh, form, the TRBVH DP or
      * the ATRBVH agglomeration, the strict comparison; the adaptive size
@@ -189,17 +199,10 @@ __attribute__((noinline))
 #endif
 static void process_agg(walk_ctx *c, uint32_t node)
 {
-    opt_worker *w = c->workers;
-    int cancel, applied;
-#ifdef _OPENMP
-#pragma omp atomic read
-#endif
-    cancel = c->cancel;
-    if (cancel)
+    opt_worker *w = worker(c);
+    int applied;
+    if (!w)
         return; /* the build is being cancelled: its tree is dropped */
-#ifdef _OPENMP
-    w += omp_get_thread_num();
-#endif
     applied = atrbvh_atrbvh_process(&c->t, c->cost, node, c->n, c->gamma,
                                     w->trbvh, &w->agg);
     w->treelets++;
