@@ -1032,6 +1032,70 @@ START_TEST(sliver_false_hit)
 }
 END_TEST
 
+/* Hits just behind the origin (found by fuzz_build), each in one leaf with
+ * a primitive ahead: a flat box at z = -1e-30, and a triangle of the plane
+ * z = y, which a ray from (0, -1e-30, 0) along +z crosses at z = -1e-30.
+ * With a direction of 1e16 the exact distance, -1e-46, rounds to -0.0f, which passed t >= tmin = 0: the box behind was reported at
+ * t = -0 by a tree whose root leaf also held a real hit ahead, and not by
+ * its one-primitive tree (its root box behind the origin); the triangle
+ * was hit at -0 by both.  Now the limits are compared in double, before
+ * rounding. */
+START_TEST(behind_origin_underflow)
+{
+    static const float boxes[12] = {
+        -1.0f, -1.0f, -1e-30f, 1.0f, 1.0f, -1e-30f, /* flat, behind */
+        -1.0f, -1.0f, 0.5f,    1.0f, 1.0f, 1.0f};   /* ahead */
+    static const float tris[18] = {
+        -1e-20f, -1e-20f, -1e-20f, 1e-20f, -1e-20f, -1e-20f,
+        0.0f,    1e-20f,  1e-20f,  /* the plane z = y */
+        -1e-20f, -1e-20f, 2.5e-21f, 1e-20f, -1e-20f, 2.5e-21f,
+        0.0f,    1e-20f,  2.5e-21f}; /* ahead */
+    atrbvh_geometry g[2];
+    int kind, k;
+    g[0] = atrbvh_geometry_boxes(boxes, 2);
+    g[1] = atrbvh_geometry_triangles(tris, 6, NULL, 2);
+    for (kind = 0; kind < 2; kind++) {
+        atrbvh_ray ray;
+        atrbvh_hit h;
+        ray.origin[0] = 0.0f;
+        ray.origin[1] = -1e-30f;
+        ray.origin[2] = 0.0f;
+        ray.dir[0] = 0.0f;
+        ray.dir[1] = 0.0f;
+        ray.dir[2] = 1e16f;
+        ray.tmin = 0.0f;
+        ray.tmax = INFINITY;
+        for (k = 0; k < 3; k++) {
+            atrbvh_build_options o;
+            atrbvh_bvh *b;
+            size_t nodes;
+            atrbvh_build_options_init(&o);
+            o.method = (atrbvh_method)k;
+            /* both in the root's leaf: the boxes overlap enough that the
+             * SAH keeps one leaf (checked below) */
+            o.max_leaf_size = 2;
+            b = tu_build(&g[kind], &o);
+            atrbvh_bvh_nodes(b, &nodes);
+            ck_assert_uint_eq(nodes, 1);
+            ck_assert(atrbvh_intersect(b, &g[kind], &ray, &h));
+            ck_assert_msg(h.primitive == 1 && h.t > 0.0f,
+                          "%s, %s: hit %u at t = %a, behind the origin",
+                          kind ? "triangles" : "boxes", METHOD_NAMES[k],
+                          h.primitive, (double)h.t);
+            ck_assert(atrbvh_occluded(b, &g[kind], &ray));
+            /* only the primitive behind: nothing is hit */
+            ray.tmax = h.t * 0.5f;
+            ck_assert_msg(!atrbvh_intersect(b, &g[kind], &ray, &h) &&
+                              !atrbvh_occluded(b, &g[kind], &ray),
+                          "%s, %s: hit behind the origin",
+                          kind ? "triangles" : "boxes", METHOD_NAMES[k]);
+            ray.tmax = INFINITY;
+            atrbvh_bvh_free(b);
+        }
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("extremes");
@@ -1046,6 +1110,7 @@ int main(void)
     tcase_add_test(num, whole_float_range);
     tcase_add_loop_test(num, translated, 0, 6);
     tcase_add_test(num, sliver_false_hit);
+    tcase_add_test(num, behind_origin_underflow);
     suite_add_tcase(s, num);
     tcase_set_timeout(deg, 600);
     tcase_add_loop_test(deg, flat, 1, 4);

@@ -472,10 +472,13 @@ ATRBVH_FN int atrbvh_trav_node_hit(ATRBVH_CONST_GLOBAL atrbvh_node *n,
     return atrbvh_trav_node_hit_d(n, r, tlo, thi, tnear);
 }
 
-/* Exact ray/box primitive test: entry and exit distances. */
+/* Exact ray/box primitive test: entry and exit distances, in double.
+ * The caller compares them with the ray's limits before rounding to
+ * float: a box just behind the origin has distances of about -1e-63 for
+ * coordinates near 1e-29, which round to -0.0f and would pass t >= 0. */
 ATRBVH_FN int atrbvh_trav_box_interval(const float *b,
-                                       const atrbvh_trav_ray *r, float *t0,
-                                       float *t1)
+                                       const atrbvh_trav_ray *r, double *t0,
+                                       double *t1)
 {
     double lo = -ATRBVH_TRAV_INF, hi = ATRBVH_TRAV_INF;
     int k;
@@ -487,8 +490,8 @@ ATRBVH_FN int atrbvh_trav_box_interval(const float *b,
         lo = tn > lo ? tn : lo;
         hi = tf < hi ? tf : hi;
     }
-    *t0 = atrbvh_trav_dist_float(lo);
-    *t1 = atrbvh_trav_dist_float(hi);
+    *t0 = lo;
+    *t1 = hi;
     return lo <= hi;
 }
 
@@ -582,7 +585,10 @@ ATRBVH_FN int atrbvh_trav_triangle_hit(float v[3][3],
     tt = tt + e1 * (r->sz * bz);
     tt = tt + e2 * (r->sz * cz);
     tt = tt / det;
-    if (!(atrbvh_trav_abs(tt) <= (double)ATRBVH_TRAV_FLT_MAX))
+    /* tmin in double: a hit just behind the origin (tt about -1e-50)
+     * rounds to -0.0f, which t >= tmin would take. */
+    if (!(tt >= (double)r->tmin) ||
+        !(atrbvh_trav_abs(tt) <= (double)ATRBVH_TRAV_FLT_MAX))
         return 0;
     *t = (float)tt;
     if (!(atrbvh_trav_absf(*t) <= ATRBVH_TRAV_FLT_MAX) ||
@@ -621,18 +627,29 @@ ATRBVH_FN int atrbvh_trav_leaf(const atrbvh_trav_scene *s,
                 continue;
             }
         } else {
-            float box[6], t0, t1;
+            float box[6], f0, f1;
+            double t0, t1, tmin = (double)r->tmin;
             atrbvh_fetch_box(s->box_data, s->box_stride, (atrbvh_u64)prim,
                              box);
             if (!atrbvh_trav_box_interval(box, r, &t0, &t1))
                 continue;
+            /* the box is hit where the ray enters or leaves it; against
+             * tmin in double (see atrbvh_trav_box_interval), against
+             * tmax in float like every other hit */
+            f0 = atrbvh_trav_dist_float(t0);
+            f1 = atrbvh_trav_dist_float(t1);
             if (any) {
-                if ((t0 >= r->tmin && t0 <= r->tmax) ||
-                    (t1 >= r->tmin && t1 <= r->tmax))
+                if ((t0 >= tmin && f0 <= r->tmax) ||
+                    (t1 >= tmin && f1 <= r->tmax))
                     return 1;
                 continue;
             }
-            t = t0 >= r->tmin ? t0 : t1;
+            if (t0 >= tmin)
+                t = f0;
+            else if (t1 >= tmin)
+                t = f1;
+            else
+                continue;
             if (!(atrbvh_trav_absf(t) <= ATRBVH_TRAV_FLT_MAX))
                 continue;
         }
