@@ -149,7 +149,7 @@ int main(int argc, char **argv)
     }
     printf("# embree-alone %s: %zu triangles, threads %s, median of %d "
            "after a warm-up, %s\n",
-           sc.name, sc.triangle_count, threads ? argv[2] : "all", repeat,
+           argv[1], sc.triangle_count, threads ? argv[2] : "all", repeat,
            RTC_VERSION_STRING);
     for (j = 0; j < 3; j++) {
         for (k = -1; k < repeat; k++) {
