@@ -354,9 +354,12 @@ __kernel void opt_round(__global uint *left, __global uint *right,
                         __global atrbvh_box *box, __global double *cost,
                         __global const uint *list, __global const uint *needed,
                         __global uint *counter, __global uchar *scratch,
+                        __global uchar *marks, __global uint *tally,
                         atrbvh_kargs_optimise a)
 {
-    uint w = (uint)get_global_id(0), k;
+    uint w = (uint)get_global_id(0), k, done = 0u, applied = 0u,
+         skipped = 0u;
+    atrbvh_treelet_marks m;
     atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
                                              a.max_leaf);
     atrbvh_treelet_tree t;
@@ -384,6 +387,11 @@ __kernel void opt_round(__global uint *left, __global uint *right,
     t.box = box;
     t.cost = cost;
     t.n_internal = a.n_internal;
+    /* The skip marks: chg, then same, one byte per internal node each
+     * (a.marks: TRBVH, ATRBVH up to 32 leaves or adaptive, as on the
+     * CPU; a one-word dummy otherwise). */
+    m.chg = marks;
+    m.same = marks + (a.marks ? a.n_internal : 0u);
     /* A contiguous share of the start list (neighbouring nodes: their walks
      * meet soon, on data still in cache, as the CPU's post-order walk of a
      * subtree does), not every workers-th entry. */
@@ -392,12 +400,23 @@ __kernel void opt_round(__global uint *left, __global uint *right,
         uint x = list[k];
         for (;;) {
             uint up;
-            if (a.agglomerative)
-                atrbvh_atrbvh_process(&t, &p, x, a.treelet_size, a.gamma, s,
-                                      &agg);
+            int r;
+            if (a.marks)
+                r = atrbvh_treelet_process_marked(
+                    &t, &p, x,
+                    a.treelet_size == ATRBVH_TREELET_AUTO
+                        ? atrbvh_treelet_auto_size(t.count[x], a.gamma)
+                        : a.treelet_size,
+                    (int)a.agglomerative, s, agg.dist, m, a.round);
             else
-                atrbvh_treelet_process(&t, &p, x, a.treelet_size, 0, s,
-                                       agg.dist);
+                r = atrbvh_atrbvh_process(&t, &p, x, a.treelet_size, a.gamma,
+                                          s, &agg);
+            if (r == ATRBVH_TREELET_SKIPPED) {
+                skipped++;
+            } else {
+                done++;
+                applied += (uint)r;
+            }
             if (x == 0u)
                 break;
             up = t.parent[x]; /* volatile, as every tree read here */
@@ -411,6 +430,10 @@ __kernel void opt_round(__global uint *left, __global uint *right,
             x = up;
         }
     }
+    /* The build's treelet counts (the host zeroes them per build). */
+    atomic_add(&tally[0], done);
+    atomic_add(&tally[1], applied);
+    atomic_add(&tally[2], skipped);
 }
 
 /* ---------------------------------------------------------------- collapse */

@@ -63,6 +63,7 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
     memset(&c->build_times, 0, sizeof c->build_times);
     c->times = &c->build_times;
     c->has_ids = 0;
+    c->opt_treelets = c->opt_applied = c->opt_skipped = 0;
     run->state = c;
     return ATRBVH_OK;
 }
@@ -349,7 +350,8 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_cl_device *c = cl_of(dev);
     const atrbvh_i_config *cfg = run->cfg;
     atrbvh_kargs_optimise a;
-    cl_uint workers_max, round, zero = 0;
+    cl_uint workers_max, round, zero = 0, tally[3];
+    size_t marks;
     if (cfg->method == ATRBVH_METHOD_LBVH || cfg->rounds == 0 ||
         run->n < 2 ||
         run->n < (cfg->treelet_size == ATRBVH_TREELET_AUTO ? cfg->gamma
@@ -363,6 +365,15 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     a.n_internal = run->n - 1;
     a.treelet_size = cfg->treelet_size;
     a.agglomerative = cfg->method == ATRBVH_METHOD_ATRBVH;
+    /* The skip marks where the CPU keeps them: TRBVH, ATRBVH up to
+     * ATRBVH_TREELET_MAX leaves or adaptive (two bytes per internal
+     * node, zero before the first round; one dummy word otherwise). */
+    a.marks = !a.agglomerative || cfg->treelet_size <= ATRBVH_TREELET_MAX ||
+              cfg->treelet_size == ATRBVH_TREELET_AUTO;
+    if (a.marks) /* whole words for the fill: n_internal < 2^31 */
+        marks = (2u * (size_t)a.n_internal + 3u) & ~(size_t)3u;
+    else
+        marks = 4;
     scratch_layout(cfg, &a);
     /* Enough persistent workers to fill the device, scratch bounded. */
     workers_max = c->compute_units * 64u;
@@ -379,6 +390,10 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
                                 error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_LIST_COUNT, 1, 4, "walk start count",
                                 error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_MARKS, marks, 1, "skip marks", error));
+    CL_CHECK(atrbvh_i_cl_zero(c, B_MARKS, marks, "skip marks", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_TALLY, 3, 4, "treelet counts", error));
+    CL_CHECK(atrbvh_i_cl_zero(c, B_TALLY, 3 * 4, "treelet counts", error));
     for (round = 0; round < cfg->rounds; round++) {
         cl_ulong gamma = (cl_ulong)cfg->gamma << (round < 40u ? round : 40u);
         if (atrbvh_i_stage_progress(run, round, cfg->rounds)) {
@@ -391,6 +406,7 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
         if (gamma > run->n)
             break; /* no crown left (the root's count is n) */
         a.gamma = (atrbvh_u32)gamma;
+        a.round = round;
         CL_CHECK(atrbvh_i_cl_upload(c, B_LIST_COUNT, &zero, 4,
                                     "walk start count", error));
         CL_RUN(c, K_OPT_PREPARE, a.n_internal, error, CL_BUF(B_LEFT),
@@ -405,7 +421,7 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
                    CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
                    CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_LIST),
                    CL_BUF(B_NEEDED), CL_BUF(B_COUNTER), CL_BUF(B_SCRATCH),
-                   CL_VAL(a));
+                   CL_BUF(B_MARKS), CL_BUF(B_TALLY), CL_VAL(a));
         }
         /* The round's tree for the pipeline's capture (a blocking read
          * on the in-order queue sees the launch done). */
@@ -417,6 +433,11 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
                                  (unsigned)round + 1);
         }
     }
+    CL_CHECK(atrbvh_i_cl_download(c, B_TALLY, tally, sizeof tally,
+                                  "treelet counts", error));
+    c->opt_treelets = tally[0];
+    c->opt_applied = tally[1];
+    c->opt_skipped = tally[2];
     return atrbvh_i_cl_finish(c, error);
 }
 

@@ -68,6 +68,8 @@ typedef struct atrbvh_kargs_optimise {
     atrbvh_u32 treelet_size;
     atrbvh_u32 agglomerative; /* 1: ATRBVH, 0: TRBVH                       */
     atrbvh_u32 workers;
+    atrbvh_u32 round;     /* from 0 (the skip marks)                      */
+    atrbvh_u32 marks;     /* 1: skip marks (atrbvh_treelet_process_marked) */
 } atrbvh_kargs_optimise;
 
 /* intersect_closest, intersect_any (atrbvh_trav_scene's scalars) */
@@ -110,7 +112,7 @@ ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_sort) == 16, kargs_sort);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_tree) == 32, kargs_tree);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_tree, n) == 16,
                      kargs_tree_n);
-ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_optimise) == 88, kargs_optimise);
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_optimise) == 96, kargs_optimise);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_optimise, collapse) == 56,
                      kargs_optimise_collapse);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_trace) == 80, kargs_trace);
