@@ -279,13 +279,16 @@ __kernel void hierarchy(__global const ulong *keys, __global uint *left,
 
 /* ------------------------------------------------------------------- refit */
 /* One item per leaf: set the leaf, then walk up; at each parent the second
- * arrival computes it from both children. `counter` zeroed by the host. */
+ * arrival computes it from both children. `counter` zeroed by the host.
+ * a.sizes (an LBVH): the collapse sizes in the same climb
+ * (atrbvh_refit_node_size; the collapse kernel is not launched), as the
+ * CPU's refit does. */
 __kernel void refit(__global atrbvh_box *box, __global uint *count,
                     __global double *cost, __global const uint *left,
                     __global const uint *right, __global const uint *parent,
                     __global const atrbvh_box *prim_boxes,
                     __global const uint *order, __global uint *counter,
-                    atrbvh_kargs_tree a)
+                    __global uint *size, atrbvh_kargs_tree a)
 {
     uint i = (uint)get_global_id(0), node;
     atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
@@ -298,6 +301,8 @@ __kernel void refit(__global atrbvh_box *box, __global uint *count,
     box[node] = b;
     count[node] = 1u;
     cost[node] = atrbvh_refit_leaf_cost(&p, b);
+    if (a.sizes)
+        size[node] = 1u | ATRBVH_SIZE_LEAF;
     while (node != 0u) {
         uint up = parent[node], l, r, c;
         double co;
@@ -307,10 +312,17 @@ __kernel void refit(__global atrbvh_box *box, __global uint *count,
         mem_fence(CLK_GLOBAL_MEM_FENCE); /* the sibling's writes after */
         l = left[up];
         r = right[up];
-        atrbvh_refit_node(&p, load_box_v(box, l), load_u32_v(count, l),
-                          load_f64_v(cost, l), load_box_v(box, r),
-                          load_u32_v(count, r), load_f64_v(cost, r), &b, &c,
-                          &co);
+        if (a.sizes)
+            size[up] = atrbvh_refit_node_size(
+                &p, load_box_v(box, l), load_u32_v(count, l),
+                load_f64_v(cost, l), load_u32_v(size, l), load_box_v(box, r),
+                load_u32_v(count, r), load_f64_v(cost, r),
+                load_u32_v(size, r), &b, &c, &co);
+        else
+            atrbvh_refit_node(&p, load_box_v(box, l), load_u32_v(count, l),
+                              load_f64_v(cost, l), load_box_v(box, r),
+                              load_u32_v(count, r), load_f64_v(cost, r), &b,
+                              &c, &co);
         box[up] = b;
         count[up] = c;
         cost[up] = co;

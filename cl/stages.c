@@ -315,9 +315,16 @@ static atrbvh_status st_refit(atrbvh_device *dev, atrbvh_i_run *run,
                                 error));
     CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4, "node counters",
                               error));
+    /* An LBVH's collapse sizes in the same climb (st_collapse then only
+     * reads the root's); B_SIZE takes the keys' buffer, free since the
+     * hierarchy, so this creates none (an optimised tree's refit passes
+     * it unused). */
+    a.sizes = run->cfg->method == ATRBVH_METHOD_LBVH;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_SIZE, nodes, 4, "subtree sizes", error));
     CL_RUN(c, K_REFIT, run->n, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
            CL_BUF(B_COST), CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT),
-           CL_BUF(B_BOXES), CL_BUF(B_ORDER), CL_BUF(B_COUNTER), CL_VAL(a));
+           CL_BUF(B_BOXES), CL_BUF(B_ORDER), CL_BUF(B_COUNTER), CL_BUF(B_SIZE),
+           CL_VAL(a));
     return atrbvh_i_cl_finish(c, error);
 }
 
@@ -450,11 +457,15 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
     size_t nodes = tree_nodes(run);
     cl_uint root_size = 0;
     CL_CHECK(atrbvh_i_cl_buffer(c, B_SIZE, nodes, 4, "subtree sizes", error));
-    CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4, "node counters",
-                              error));
-    CL_RUN(c, K_COLLAPSE, run->n, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
-           CL_BUF(B_COST), CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT),
-           CL_BUF(B_SIZE), CL_BUF(B_COUNTER), CL_VAL(a));
+    if (run->cfg->method != ATRBVH_METHOD_LBVH) {
+        /* (an LBVH's refit computed the sizes: st_refit) */
+        CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4, "node counters",
+                                  error));
+        CL_RUN(c, K_COLLAPSE, run->n, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
+               CL_BUF(B_COST), CL_BUF(B_LEFT), CL_BUF(B_RIGHT),
+               CL_BUF(B_PARENT), CL_BUF(B_SIZE), CL_BUF(B_COUNTER),
+               CL_VAL(a));
+    }
     CL_CHECK(atrbvh_i_cl_download(c, B_SIZE, &root_size, 4, "subtree sizes",
                                   error));
     run->node_count = root_size & ATRBVH_SIZE_MASK;

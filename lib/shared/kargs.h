@@ -50,6 +50,8 @@ typedef struct atrbvh_kargs_tree {
     atrbvh_u32 collapse;
     atrbvh_u32 max_leaf;
     atrbvh_u32 has_ids;   /* hierarchy: 1 when kept ids map the leaves */
+    atrbvh_u32 sizes;     /* refit: 1 for the collapse sizes too (LBVH) */
+    atrbvh_u32 pad0;
 } atrbvh_kargs_tree;
 
 /* opt_prepare, opt_round: one round */
@@ -109,7 +111,7 @@ ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_morton) == 56, kargs_morton);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_morton, n) == 48,
                      kargs_morton_n);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_sort) == 16, kargs_sort);
-ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_tree) == 32, kargs_tree);
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_tree) == 40, kargs_tree);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_tree, n) == 16,
                      kargs_tree_n);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_optimise) == 96, kargs_optimise);
