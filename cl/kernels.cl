@@ -579,6 +579,12 @@ __kernel void layout(__global const atrbvh_box *box, __global const uint *count,
                                         0u);
         if (cur >= first) {
             prims[prim] = leaf_prim[cur - first];
+        } else if (a.ranges) {
+            /* the hierarchy's tree: the leaf's primitives are those of
+             * sorted positions prim .. prim + count - 1, in order */
+            uint k, m = count[cur];
+            for (k = 0u; k < m; k++)
+                prims[prim + k] = leaf_prim[prim + k];
         } else {
             /* a collapsed leaf: its primitives left to right (the CPU's
              * gather); `pos` is the leaf's node throughout */

@@ -128,6 +128,8 @@ typedef struct atrbvh_cl_device {
     atrbvh_cl_times *times; /* where finished launches are added */
     atrbvh_cl_times build_times; /* the last build's */
     cl_uint has_ids;        /* this build: B_IDS maps leaves   */
+    cl_uint ranges;         /* this build: the hierarchy stage's
+                               tree (set_tree's is not)          */
     /* The last build's optimise stage (tests, measurements): treelets
      * processed, of which written back, and treelets skipped by the skip
      * marks (atrbvh_treelet_process_marked). */

@@ -46,6 +46,10 @@ static atrbvh_kargs_tree tree_args(const atrbvh_cl_device *c,
     a.collapse = run->cfg->cost.collapse != 0;
     a.max_leaf = run->cfg->cost.max_leaf;
     a.has_ids = c->has_ids;
+    /* An LBVH from the hierarchy: a subtree's leaves are the sorted
+     * positions of its primitives' output range, in order (the CPU's
+     * layout uses the same fact, lib/cpu/layout.c's ranges). */
+    a.ranges = c->ranges && run->cfg->method == ATRBVH_METHOD_LBVH;
     return a;
 }
 
@@ -63,6 +67,7 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
     memset(&c->build_times, 0, sizeof c->build_times);
     c->times = &c->build_times;
     c->has_ids = 0;
+    c->ranges = 0;
     c->opt_treelets = c->opt_applied = c->opt_skipped = 0;
     run->state = c;
     return ATRBVH_OK;
@@ -292,6 +297,7 @@ static atrbvh_status st_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
            CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_BUF(B_JUMP),
            CL_VAL(blocks), CL_VAL(a));
+    c->ranges = 1;
     CL_RUN(c, K_HIERARCHY, 1, error, CL_BUF(B_KEYS), CL_BUF(B_LEFT),
            CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),

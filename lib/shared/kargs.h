@@ -51,7 +51,9 @@ typedef struct atrbvh_kargs_tree {
     atrbvh_u32 max_leaf;
     atrbvh_u32 has_ids;   /* hierarchy: 1 when kept ids map the leaves */
     atrbvh_u32 sizes;     /* refit: 1 for the collapse sizes too (LBVH) */
-    atrbvh_u32 pad0;
+    atrbvh_u32 ranges;    /* layout: 1 when every subtree holds the leaves
+                             of a range of sorted positions, in order (the
+                             hierarchy's tree, not optimised) */
 } atrbvh_kargs_tree;
 
 /* opt_prepare, opt_round: one round */
