@@ -279,13 +279,16 @@ __kernel void hierarchy(__global const ulong *keys, __global uint *left,
 
 /* ------------------------------------------------------------------- refit */
 /* One item per leaf: set the leaf, then walk up; at each parent the second
- * arrival computes it from both children. `counter` zeroed by the host. */
+ * arrival computes it from both children. `counter` zeroed by the host.
+ * a.sizes (an LBVH): the collapse sizes in the same climb
+ * (atrbvh_refit_node_size; the collapse kernel is not launched), as the
+ * CPU's refit does. */
 __kernel void refit(__global atrbvh_box *box, __global uint *count,
                     __global double *cost, __global const uint *left,
                     __global const uint *right, __global const uint *parent,
                     __global const atrbvh_box *prim_boxes,
                     __global const uint *order, __global uint *counter,
-                    atrbvh_kargs_tree a)
+                    __global uint *size, atrbvh_kargs_tree a)
 {
     uint i = (uint)get_global_id(0), node;
     atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
@@ -298,6 +301,8 @@ __kernel void refit(__global atrbvh_box *box, __global uint *count,
     box[node] = b;
     count[node] = 1u;
     cost[node] = atrbvh_refit_leaf_cost(&p, b);
+    if (a.sizes)
+        size[node] = 1u | ATRBVH_SIZE_LEAF;
     while (node != 0u) {
         uint up = parent[node], l, r, c;
         double co;
@@ -307,10 +312,17 @@ __kernel void refit(__global atrbvh_box *box, __global uint *count,
         mem_fence(CLK_GLOBAL_MEM_FENCE); /* the sibling's writes after */
         l = left[up];
         r = right[up];
-        atrbvh_refit_node(&p, load_box_v(box, l), load_u32_v(count, l),
-                          load_f64_v(cost, l), load_box_v(box, r),
-                          load_u32_v(count, r), load_f64_v(cost, r), &b, &c,
-                          &co);
+        if (a.sizes)
+            size[up] = atrbvh_refit_node_size(
+                &p, load_box_v(box, l), load_u32_v(count, l),
+                load_f64_v(cost, l), load_u32_v(size, l), load_box_v(box, r),
+                load_u32_v(count, r), load_f64_v(cost, r),
+                load_u32_v(size, r), &b, &c, &co);
+        else
+            atrbvh_refit_node(&p, load_box_v(box, l), load_u32_v(count, l),
+                              load_f64_v(cost, l), load_box_v(box, r),
+                              load_u32_v(count, r), load_f64_v(cost, r), &b,
+                              &c, &co);
         box[up] = b;
         count[up] = c;
         cost[up] = co;
@@ -354,9 +366,12 @@ __kernel void opt_round(__global uint *left, __global uint *right,
                         __global atrbvh_box *box, __global double *cost,
                         __global const uint *list, __global const uint *needed,
                         __global uint *counter, __global uchar *scratch,
+                        __global uchar *marks, __global uint *tally,
                         atrbvh_kargs_optimise a)
 {
-    uint w = (uint)get_global_id(0), k;
+    uint w = (uint)get_global_id(0), k, done = 0u, applied = 0u,
+         skipped = 0u;
+    atrbvh_treelet_marks m;
     atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
                                              a.max_leaf);
     atrbvh_treelet_tree t;
@@ -384,6 +399,11 @@ __kernel void opt_round(__global uint *left, __global uint *right,
     t.box = box;
     t.cost = cost;
     t.n_internal = a.n_internal;
+    /* The skip marks: chg, then same, one byte per internal node each
+     * (a.marks: TRBVH, ATRBVH up to 32 leaves or adaptive, as on the
+     * CPU; a one-word dummy otherwise). */
+    m.chg = marks;
+    m.same = marks + (a.marks ? a.n_internal : 0u);
     /* A contiguous share of the start list (neighbouring nodes: their walks
      * meet soon, on data still in cache, as the CPU's post-order walk of a
      * subtree does), not every workers-th entry. */
@@ -392,12 +412,23 @@ __kernel void opt_round(__global uint *left, __global uint *right,
         uint x = list[k];
         for (;;) {
             uint up;
-            if (a.agglomerative)
-                atrbvh_atrbvh_process(&t, &p, x, a.treelet_size, a.gamma, s,
-                                      &agg);
+            int r;
+            if (a.marks)
+                r = atrbvh_treelet_process_marked(
+                    &t, &p, x,
+                    a.treelet_size == ATRBVH_TREELET_AUTO
+                        ? atrbvh_treelet_auto_size(t.count[x], a.gamma)
+                        : a.treelet_size,
+                    (int)a.agglomerative, s, agg.dist, m, a.round);
             else
-                atrbvh_treelet_process(&t, &p, x, a.treelet_size, 0, s,
-                                       agg.dist);
+                r = atrbvh_atrbvh_process(&t, &p, x, a.treelet_size, a.gamma,
+                                          s, &agg);
+            if (r == ATRBVH_TREELET_SKIPPED) {
+                skipped++;
+            } else {
+                done++;
+                applied += (uint)r;
+            }
             if (x == 0u)
                 break;
             up = t.parent[x]; /* volatile, as every tree read here */
@@ -411,6 +442,10 @@ __kernel void opt_round(__global uint *left, __global uint *right,
             x = up;
         }
     }
+    /* The build's treelet counts (the host zeroes them per build). */
+    atomic_add(&tally[0], done);
+    atomic_add(&tally[1], applied);
+    atomic_add(&tally[2], skipped);
 }
 
 /* ---------------------------------------------------------------- collapse */
@@ -544,6 +579,12 @@ __kernel void layout(__global const atrbvh_box *box, __global const uint *count,
                                         0u);
         if (cur >= first) {
             prims[prim] = leaf_prim[cur - first];
+        } else if (a.ranges) {
+            /* the hierarchy's tree: the leaf's primitives are those of
+             * sorted positions prim .. prim + count - 1, in order */
+            uint k, m = count[cur];
+            for (k = 0u; k < m; k++)
+                prims[prim + k] = leaf_prim[prim + k];
         } else {
             /* a collapsed leaf: its primitives left to right (the CPU's
              * gather); `pos` is the leaf's node throughout */

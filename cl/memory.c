@@ -11,7 +11,8 @@
  * scratch pair is dead once the keys are sorted, the keys once the
  * hierarchy is built, so the bottom-up arrival counters (refit, optimise,
  * collapse) take the scratch keys' buffer, the optimise stage's crown
- * children the scratch order's and the collapse sizes the keys'; a
+ * children the scratch order's, the optimise stage's skip marks and
+ * the collapse sizes the keys'; a
  * handle keeps 20 bytes per primitive less and a build touches that much
  * less memory.
  *
@@ -35,6 +36,7 @@ static int home_of(int slot)
     case B_NEEDED: /* the optimise stage */
         return B_ORDER_TMP;
     case B_SIZE: /* the collapse and the layout */
+    case B_MARKS: /* the optimise stage */
         return B_KEYS; /* morton to hierarchy */
     default:
         return slot;

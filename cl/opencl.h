@@ -81,6 +81,8 @@ enum {
     B_LIST,       /* optimise: walk starts                */
     B_LIST_COUNT,
     B_SCRATCH,    /* optimise: per-worker treelet tables  */
+    B_MARKS,      /* optimise: skip marks, 2 bytes a node */
+    B_TALLY,      /* optimise: treelet counts             */
     B_SIZE,       /* collapse: output nodes per subtree   */
     B_JUMP,       /* hierarchy leftovers; layout subtrees */
     B_FLAG,       /* layout: their count                  */
@@ -126,6 +128,12 @@ typedef struct atrbvh_cl_device {
     atrbvh_cl_times *times; /* where finished launches are added */
     atrbvh_cl_times build_times; /* the last build's */
     cl_uint has_ids;        /* this build: B_IDS maps leaves   */
+    cl_uint ranges;         /* this build: the hierarchy stage's
+                               tree (set_tree's is not)          */
+    /* The last build's optimise stage (tests, measurements): treelets
+     * processed, of which written back, and treelets skipped by the skip
+     * marks (atrbvh_treelet_process_marked). */
+    cl_uint opt_treelets, opt_applied, opt_skipped;
 } atrbvh_cl_device;
 
 /* error.c */

@@ -46,6 +46,10 @@ static atrbvh_kargs_tree tree_args(const atrbvh_cl_device *c,
     a.collapse = run->cfg->cost.collapse != 0;
     a.max_leaf = run->cfg->cost.max_leaf;
     a.has_ids = c->has_ids;
+    /* An LBVH from the hierarchy: a subtree's leaves are the sorted
+     * positions of its primitives' output range, in order (the CPU's
+     * layout uses the same fact, lib/cpu/layout.c's ranges). */
+    a.ranges = c->ranges && run->cfg->method == ATRBVH_METHOD_LBVH;
     return a;
 }
 
@@ -63,6 +67,8 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
     memset(&c->build_times, 0, sizeof c->build_times);
     c->times = &c->build_times;
     c->has_ids = 0;
+    c->ranges = 0;
+    c->opt_treelets = c->opt_applied = c->opt_skipped = 0;
     run->state = c;
     return ATRBVH_OK;
 }
@@ -291,6 +297,7 @@ static atrbvh_status st_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
            CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_BUF(B_JUMP),
            CL_VAL(blocks), CL_VAL(a));
+    c->ranges = 1;
     CL_RUN(c, K_HIERARCHY, 1, error, CL_BUF(B_KEYS), CL_BUF(B_LEFT),
            CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
@@ -314,9 +321,16 @@ static atrbvh_status st_refit(atrbvh_device *dev, atrbvh_i_run *run,
                                 error));
     CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4, "node counters",
                               error));
+    /* An LBVH's collapse sizes in the same climb (st_collapse then only
+     * reads the root's); B_SIZE takes the keys' buffer, free since the
+     * hierarchy, so this creates none (an optimised tree's refit passes
+     * it unused). */
+    a.sizes = run->cfg->method == ATRBVH_METHOD_LBVH;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_SIZE, nodes, 4, "subtree sizes", error));
     CL_RUN(c, K_REFIT, run->n, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
            CL_BUF(B_COST), CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT),
-           CL_BUF(B_BOXES), CL_BUF(B_ORDER), CL_BUF(B_COUNTER), CL_VAL(a));
+           CL_BUF(B_BOXES), CL_BUF(B_ORDER), CL_BUF(B_COUNTER), CL_BUF(B_SIZE),
+           CL_VAL(a));
     return atrbvh_i_cl_finish(c, error);
 }
 
@@ -349,7 +363,8 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_cl_device *c = cl_of(dev);
     const atrbvh_i_config *cfg = run->cfg;
     atrbvh_kargs_optimise a;
-    cl_uint workers_max, round, zero = 0;
+    cl_uint workers_max, round, zero = 0, tally[3];
+    size_t marks;
     if (cfg->method == ATRBVH_METHOD_LBVH || cfg->rounds == 0 ||
         run->n < 2 ||
         run->n < (cfg->treelet_size == ATRBVH_TREELET_AUTO ? cfg->gamma
@@ -363,6 +378,15 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     a.n_internal = run->n - 1;
     a.treelet_size = cfg->treelet_size;
     a.agglomerative = cfg->method == ATRBVH_METHOD_ATRBVH;
+    /* The skip marks where the CPU keeps them: TRBVH, ATRBVH up to
+     * ATRBVH_TREELET_MAX leaves or adaptive (two bytes per internal
+     * node, zero before the first round; one dummy word otherwise). */
+    a.marks = !a.agglomerative || cfg->treelet_size <= ATRBVH_TREELET_MAX ||
+              cfg->treelet_size == ATRBVH_TREELET_AUTO;
+    if (a.marks) /* whole words for the fill: n_internal < 2^31 */
+        marks = (2u * (size_t)a.n_internal + 3u) & ~(size_t)3u;
+    else
+        marks = 4;
     scratch_layout(cfg, &a);
     /* Enough persistent workers to fill the device, scratch bounded. */
     workers_max = c->compute_units * 64u;
@@ -379,6 +403,10 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
                                 error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_LIST_COUNT, 1, 4, "walk start count",
                                 error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_MARKS, marks, 1, "skip marks", error));
+    CL_CHECK(atrbvh_i_cl_zero(c, B_MARKS, marks, "skip marks", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_TALLY, 3, 4, "treelet counts", error));
+    CL_CHECK(atrbvh_i_cl_zero(c, B_TALLY, 3 * 4, "treelet counts", error));
     for (round = 0; round < cfg->rounds; round++) {
         cl_ulong gamma = (cl_ulong)cfg->gamma << (round < 40u ? round : 40u);
         if (atrbvh_i_stage_progress(run, round, cfg->rounds)) {
@@ -391,6 +419,7 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
         if (gamma > run->n)
             break; /* no crown left (the root's count is n) */
         a.gamma = (atrbvh_u32)gamma;
+        a.round = round;
         CL_CHECK(atrbvh_i_cl_upload(c, B_LIST_COUNT, &zero, 4,
                                     "walk start count", error));
         CL_RUN(c, K_OPT_PREPARE, a.n_internal, error, CL_BUF(B_LEFT),
@@ -405,7 +434,7 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
                    CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
                    CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_LIST),
                    CL_BUF(B_NEEDED), CL_BUF(B_COUNTER), CL_BUF(B_SCRATCH),
-                   CL_VAL(a));
+                   CL_BUF(B_MARKS), CL_BUF(B_TALLY), CL_VAL(a));
         }
         /* The round's tree for the pipeline's capture (a blocking read
          * on the in-order queue sees the launch done). */
@@ -417,6 +446,11 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
                                  (unsigned)round + 1);
         }
     }
+    CL_CHECK(atrbvh_i_cl_download(c, B_TALLY, tally, sizeof tally,
+                                  "treelet counts", error));
+    c->opt_treelets = tally[0];
+    c->opt_applied = tally[1];
+    c->opt_skipped = tally[2];
     return atrbvh_i_cl_finish(c, error);
 }
 
@@ -429,11 +463,15 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
     size_t nodes = tree_nodes(run);
     cl_uint root_size = 0;
     CL_CHECK(atrbvh_i_cl_buffer(c, B_SIZE, nodes, 4, "subtree sizes", error));
-    CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4, "node counters",
-                              error));
-    CL_RUN(c, K_COLLAPSE, run->n, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
-           CL_BUF(B_COST), CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT),
-           CL_BUF(B_SIZE), CL_BUF(B_COUNTER), CL_VAL(a));
+    if (run->cfg->method != ATRBVH_METHOD_LBVH) {
+        /* (an LBVH's refit computed the sizes: st_refit) */
+        CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4, "node counters",
+                                  error));
+        CL_RUN(c, K_COLLAPSE, run->n, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
+               CL_BUF(B_COST), CL_BUF(B_LEFT), CL_BUF(B_RIGHT),
+               CL_BUF(B_PARENT), CL_BUF(B_SIZE), CL_BUF(B_COUNTER),
+               CL_VAL(a));
+    }
     CL_CHECK(atrbvh_i_cl_download(c, B_SIZE, &root_size, 4, "subtree sizes",
                                   error));
     run->node_count = root_size & ATRBVH_SIZE_MASK;

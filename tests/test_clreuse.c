@@ -68,6 +68,77 @@ START_TEST(second_build_creates_no_buffer)
 }
 END_TEST
 
+/* The optimise stage's skip marks (atrbvh_treelet_process_marked, on the
+ * device as on the CPU): from the second round on, treelets known to
+ * change nothing are skipped, the tree still the CPU's; one round skips
+ * none; ATRBVH above 32 leaves keeps no marks; a second build on the
+ * same handle starts from clean marks (the same counts again). */
+static void opt_counts(atrbvh_device *dev, const atrbvh_geometry *g,
+                       atrbvh_method method, unsigned treelet,
+                       unsigned rounds, unsigned long out[3])
+{
+    const atrbvh_cl_device *c = (const atrbvh_cl_device *)dev->impl;
+    atrbvh_build_options o;
+    atrbvh_bvh *x, *y;
+    atrbvh_error e;
+    atrbvh_build_options_init(&o);
+    o.method = method;
+    o.treelet_size = treelet;
+    o.rounds = rounds;
+    x = tu_build(g, &o);
+    o.device = dev;
+    y = tu_build(g, &o);
+    ck_assert_msg(atrbvh_compare(x, y, &e) == 0, "%s", e.text);
+    out[0] = c->opt_treelets;
+    out[1] = c->opt_applied;
+    out[2] = c->opt_skipped;
+    atrbvh_bvh_free(x);
+    atrbvh_bvh_free(y);
+}
+
+START_TEST(skip_marks_on_the_device)
+{
+    atrbvh_device *dev = NULL;
+    atrbvh_error e;
+    unsigned n = 20000;
+    float *v;
+    atrbvh_geometry g;
+    unsigned long a[3], b[3];
+    atrbvh_status st = atrbvh_device_open("opencl", &dev, &e);
+    if (st == ATRBVH_ERR_UNSUPPORTED) {
+        fprintf(stderr, "SKIP skip_marks_on_the_device: %s\n", e.text);
+        return;
+    }
+    ck_assert_msg(st == ATRBVH_OK, "%s", e.text);
+    v = tu_random_triangles(n, 7, 3.0f, 1.0f);
+    g = atrbvh_geometry_triangles(v, 3 * n, NULL, n);
+    /* ATRBVH(9, 2) */
+    opt_counts(dev, &g, ATRBVH_METHOD_ATRBVH, 9, 2, a);
+    ck_assert(a[0] > 0 && a[1] > 0 && a[1] <= a[0]);
+    ck_assert_msg(a[2] > 0, "ATRBVH(9,2): no treelet skipped");
+    /* again on the same handle: the marks start clean */
+    opt_counts(dev, &g, ATRBVH_METHOD_ATRBVH, 9, 2, b);
+    ck_assert_msg(a[0] == b[0] && a[1] == b[1] && a[2] == b[2],
+                  "second build: %lu/%lu/%lu treelets/applied/skipped, "
+                  "first %lu/%lu/%lu",
+                  b[0], b[1], b[2], a[0], a[1], a[2]);
+    /* TRBVH(7, 3) and the adaptive size */
+    opt_counts(dev, &g, ATRBVH_METHOD_TRBVH, 7, 3, a);
+    ck_assert_msg(a[0] > 0 && a[2] > 0, "TRBVH(7,3): %lu/%lu", a[0], a[2]);
+    opt_counts(dev, &g, ATRBVH_METHOD_ATRBVH, ATRBVH_TREELET_AUTO, 4, a);
+    ck_assert_msg(a[0] > 0 && a[2] > 0, "ATRBVH(auto,4): %lu/%lu", a[0],
+                  a[2]);
+    /* one round: nothing known yet */
+    opt_counts(dev, &g, ATRBVH_METHOD_ATRBVH, 9, 1, a);
+    ck_assert(a[0] > 0 && a[2] == 0);
+    /* above 32 leaves: no marks */
+    opt_counts(dev, &g, ATRBVH_METHOD_ATRBVH, 48, 2, a);
+    ck_assert(a[0] > 0 && a[2] == 0);
+    free(v);
+    atrbvh_device_close(dev);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("clreuse");
@@ -75,6 +146,7 @@ int main(void)
     SRunner *sr;
     int failed;
     tcase_add_test(tc, second_build_creates_no_buffer);
+    tcase_add_test(tc, skip_marks_on_the_device);
     tcase_set_timeout(tc, 300);
     suite_add_tcase(s, tc);
     sr = srunner_create(s);

@@ -490,6 +490,52 @@ START_TEST(kernel_times_and_device)
 }
 END_TEST
 
+/* An LBVH's collapse sizes come out of the refit kernel's climb
+ * (atrbvh_refit_node_size), as on the CPU: the collapse kernel is not
+ * launched, and the tree is the CPU's, with and without collapse and with
+ * a leaf limit; an optimised build still launches it. */
+static int launched(const atrbvh_bvh *b, const char *kernel)
+{
+    const char *name;
+    double ms;
+    size_t i;
+    for (i = 0; atrbvh_bvh_kernel_time(b, i, &name, &ms); i++)
+        if (strcmp(name, kernel) == 0)
+            return 1;
+    return 0;
+}
+
+START_TEST(lbvh_refit_takes_the_collapse)
+{
+    float *v = tu_random_triangles(30000, 11, 1.0f, 0.0f);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 90000, NULL, 30000);
+    atrbvh_build_options o;
+    atrbvh_bvh *b, *c;
+    char msg[256];
+    int k;
+    REQUIRE_DEVICE();
+    for (k = 0; k < 4; k++) {
+        atrbvh_build_options_init(&o);
+        o.method = k < 3 ? ATRBVH_METHOD_LBVH : ATRBVH_METHOD_ATRBVH;
+        o.collapse = k != 1;
+        if (k == 2)
+            o.max_leaf_size = 2;
+        b = tu_build(&g, &o);
+        o.backend = ATRBVH_BACKEND_OPENCL;
+        c = tu_build(&g, &o);
+        ck_assert_msg(tu_same_bvh(b, c, msg, sizeof msg), "case %d: %s", k,
+                      msg);
+        ck_assert(launched(c, "refit"));
+        ck_assert_msg(launched(c, "collapse") == (k == 3),
+                      "case %d: collapse kernel %slaunched", k,
+                      k == 3 ? "not " : "");
+        atrbvh_bvh_free(b);
+        atrbvh_bvh_free(c);
+    }
+    free(v);
+}
+END_TEST
+
 static Suite *opencl_suite(void)
 {
     Suite *s = suite_create("opencl");
@@ -515,6 +561,7 @@ static Suite *opencl_suite(void)
     tcase_add_test(tc, no_environment);
     tcase_add_test(tc, device_handle);
     tcase_add_test(tc, kernel_times_and_device);
+    tcase_add_test(tc, lbvh_refit_takes_the_collapse);
     tcase_set_timeout(tc, 120);
     suite_add_tcase(s, tc);
     return s;

@@ -65,8 +65,9 @@ typedef struct walk_ctx {
     /* TRBVH and ATRBVH up to ATRBVH_TREELET_MAX leaves or adaptive (NULL
      * otherwise): per internal node, the last round + 1 in which its
      * subtree changed (chg) and in which it was processed without a
-     * change since (same), 0 for never; see process(). */
-    unsigned char *chg, *same;
+     * change since (same), 0 for never; see shared/treelet.h's
+     * atrbvh_treelet_process_marked. */
+    atrbvh_treelet_marks marks;
     /* Progress inside a round: treelets done of about `crown`; only the
      * calling thread (OpenMP thread 0) reports, every `step` treelets.
      * Progress and cancellation never change what a treelet computes. */
@@ -133,60 +134,23 @@ static opt_worker *worker(walk_ctx *c)
 static void process(walk_ctx *c, uint32_t node, unsigned n)
 {
     opt_worker *w = worker(c);
-    atrbvh_treelet tl;
     int applied;
-    unsigned char r1 = (unsigned char)(c->round + 1u);
     if (!w)
         return; /* the build is being cancelled: its tree is dropped */
-    /* Skip a treelet that is known to change nothing.  A treelet is a
-     * pure function of its root's subtree (refresh, form, the TRBVH DP or
-     * the ATRBVH agglomeration, the strict comparison; the adaptive size
-     * is a function of the root's primitive count; nothing depends on the
-     * round or on gamma), so when the node was processed without a change
-     * in an earlier round and nothing in its subtree changed since, it
-     * would again change nothing.  chg is carried up the post-order walk
-     * (children are final before their parent; a child outside the crown
-     * was not touched this round except through a write-back, which marks
-     * it); a write-back marks the ids it reused, so a
-     * node's `same` never outlives its content.  Skipping changes no
-     * bit of the tree, only the work done. */
-    if (c->chg) {
-        uint32_t l = c->t.left[node], r = c->t.right[node];
-        unsigned char ch = c->chg[node];
-        if (l < c->t.n_internal && c->chg[l] > ch)
-            ch = c->chg[l];
-        if (r < c->t.n_internal && c->chg[r] > ch)
-            ch = c->chg[r];
-        c->chg[node] = ch;
-        if (c->same[node] != 0 && ch <= c->same[node]) {
-            w->skipped++;
-            progress(c);
-            return;
-        }
-    }
     /* One treelet: form, new topology (TRBVH: the subset DP of Karras &
      * Aila 2013; ATRBVH: the agglomerative clustering of Domingues &
-     * Pedrini 2015), write back if strictly cheaper - all of it
-     * shared/treelet.h's atrbvh_treelet_process, which the OpenCL kernel
-     * calls too. */
-    applied = atrbvh_treelet_process_tl(&c->t, c->cost, node, n,
-                                        c->method == ATRBVH_METHOD_ATRBVH,
-                                        w->trbvh, w->dist, &tl);
-    if (c->chg) {
-        /* A write-back reused the treelet's internal ids (the root's
-         * too) for new nodes: changed, and not known unchanged. */
-        if (applied) {
-            uint32_t k;
-            for (k = 0; k + 1u < tl.n; k++) {
-                c->chg[tl.internal[k]] = r1;
-                c->same[tl.internal[k]] = 0;
-            }
-        } else {
-            c->same[node] = r1;
-        }
+     * Pedrini 2015), write back if strictly cheaper, or skip it when the
+     * marks say that it would change nothing - all of it shared/treelet.h's
+     * atrbvh_treelet_process_marked, which the OpenCL kernel calls too. */
+    applied = atrbvh_treelet_process_marked(
+        &c->t, c->cost, node, n, c->method == ATRBVH_METHOD_ATRBVH, w->trbvh,
+        w->dist, c->marks, (atrbvh_u32)c->round);
+    if (applied == ATRBVH_TREELET_SKIPPED) {
+        w->skipped++;
+    } else {
+        w->treelets++;
+        w->applied += (uint64_t)applied;
     }
-    w->treelets++;
-    w->applied += (uint64_t)applied;
     progress(c);
 }
 
@@ -346,8 +310,9 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     off_dist = off_split + ALIGN64(subsets * sizeof(uint32_t));
     stride = off_dist + ALIGN64(pairs * sizeof(double));
     /* After the workers' parts, two marks per internal node (chg, same:
-     * see process()), rounds + 1 <= 65 fitting a byte; not for ATRBVH
-     * treelets above ATRBVH_TREELET_MAX leaves (process_agg). */
+     * atrbvh_treelet_process_marked), rounds + 1 <= 65 fitting a byte;
+     * not for ATRBVH treelets above ATRBVH_TREELET_MAX leaves
+     * (process_agg). */
     if (cfg->method == ATRBVH_METHOD_TRBVH || n <= ATRBVH_TREELET_MAX ||
         n == ATRBVH_TREELET_AUTO)
         marks = (size_t)(t->n - 1u);
@@ -382,11 +347,11 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         if (cfg->method == ATRBVH_METHOD_ATRBVH)
             atrbvh_agg_layout(base + off_dist, nmax, &workers[k].agg);
     }
-    c.chg = c.same = NULL;
+    c.marks.chg = c.marks.same = NULL;
     if (marks > 0u) {
-        c.chg = block + (size_t)threads * stride;
-        c.same = c.chg + marks;
-        memset(c.chg, 0, 2u * marks);
+        c.marks.chg = block + (size_t)threads * stride;
+        c.marks.same = c.marks.chg + marks;
+        memset(c.marks.chg, 0, 2u * marks);
     }
 
     c.t.left = t->left;

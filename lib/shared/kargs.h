@@ -50,6 +50,10 @@ typedef struct atrbvh_kargs_tree {
     atrbvh_u32 collapse;
     atrbvh_u32 max_leaf;
     atrbvh_u32 has_ids;   /* hierarchy: 1 when kept ids map the leaves */
+    atrbvh_u32 sizes;     /* refit: 1 for the collapse sizes too (LBVH) */
+    atrbvh_u32 ranges;    /* layout: 1 when every subtree holds the leaves
+                             of a range of sorted positions, in order (the
+                             hierarchy's tree, not optimised) */
 } atrbvh_kargs_tree;
 
 /* opt_prepare, opt_round: one round */
@@ -68,6 +72,8 @@ typedef struct atrbvh_kargs_optimise {
     atrbvh_u32 treelet_size;
     atrbvh_u32 agglomerative; /* 1: ATRBVH, 0: TRBVH                       */
     atrbvh_u32 workers;
+    atrbvh_u32 round;     /* from 0 (the skip marks)                      */
+    atrbvh_u32 marks;     /* 1: skip marks (atrbvh_treelet_process_marked) */
 } atrbvh_kargs_optimise;
 
 /* intersect_closest, intersect_any (atrbvh_trav_scene's scalars) */
@@ -107,10 +113,10 @@ ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_morton) == 56, kargs_morton);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_morton, n) == 48,
                      kargs_morton_n);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_sort) == 16, kargs_sort);
-ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_tree) == 32, kargs_tree);
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_tree) == 40, kargs_tree);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_tree, n) == 16,
                      kargs_tree_n);
-ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_optimise) == 88, kargs_optimise);
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_optimise) == 96, kargs_optimise);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_optimise, collapse) == 56,
                      kargs_optimise_collapse);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_trace) == 80, kargs_trace);

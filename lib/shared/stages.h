@@ -210,6 +210,30 @@ ATRBVH_FN atrbvh_u32 atrbvh_collapse_size(const atrbvh_cost_params *p,
     return 1u + (size_l & ATRBVH_SIZE_MASK) + (size_r & ATRBVH_SIZE_MASK);
 }
 
+/* The LBVH's refit and collapse in one climb: atrbvh_refit_node's box,
+ * count and cost, and the node's collapse size from the same cost
+ * decision (what atrbvh_collapse_size computes again from them).  The
+ * refit kernel calls it for an LBVH, whose collapse stage then has
+ * nothing to do (lib/cpu/refit.c's climb_sizes does the same on the
+ * CPU). */
+ATRBVH_FN atrbvh_u32 atrbvh_refit_node_size(const atrbvh_cost_params *p,
+                                            atrbvh_box bl, atrbvh_u32 nl,
+                                            double cl, atrbvh_u32 size_l,
+                                            atrbvh_box br, atrbvh_u32 nr,
+                                            double cr, atrbvh_u32 size_r,
+                                            atrbvh_box *box,
+                                            atrbvh_u32 *count, double *cost)
+{
+    int collapsed;
+    *box = atrbvh_box_union(bl, br);
+    *count = nl + nr;
+    *cost = atrbvh_node_cost(p, atrbvh_box_area(*box), *count, cl, cr,
+                             &collapsed);
+    if (collapsed)
+        return 1u | ATRBVH_SIZE_LEAF;
+    return 1u + (size_l & ATRBVH_SIZE_MASK) + (size_r & ATRBVH_SIZE_MASK);
+}
+
 /* ------------------------------------------------------------------ layout */
 /* The depth-first placement rule of the output (lib/cpu/collapse.c's
  * top-down emission, which cl/kernels.cl's layout_top/layout mirror): a node

@@ -984,6 +984,75 @@ ATRBVH_FN int atrbvh_treelet_process(const atrbvh_treelet_tree *t,
                                      &tl);
 }
 
+/* ------------------------------------------------------ skip marks */
+/* Skipping treelets known to change nothing (TRBVH, and ATRBVH up to
+ * ATRBVH_TREELET_MAX leaves or adaptive; both backends, the same marks).
+ * A treelet is a pure function of its root's subtree (refresh, form, the
+ * TRBVH DP or the ATRBVH agglomeration, the strict comparison; the
+ * adaptive size is a function of the root's primitive count; nothing
+ * depends on the round or on gamma), so when the root was processed
+ * without a change in an earlier round and nothing in its subtree changed
+ * since, it would again change nothing.
+ *
+ * Two bytes per internal node, zero before the first round: chg, the last
+ * round + 1 in which the node's subtree changed, and same, the last round
+ * + 1 in which it was processed without a change since (0: never).  chg
+ * is carried up as the walk goes (children are final before their parent,
+ * on the CPU by the post-order walk, on OpenCL by the arrival counters; a
+ * child outside the crown was not touched this round except through a
+ * write-back, which marks it); a write-back marks every id it reused, so
+ * a node's `same` never outlives its content.  Skipping changes no bit of
+ * the tree, only the work done.  On OpenCL the marks are volatile (a
+ * child's marks were written by another work-item of the launch, handed
+ * over like the tree's arrays). */
+typedef struct atrbvh_treelet_marks {
+    ATRBVH_SHARED_GLOBAL unsigned char *chg;
+    ATRBVH_SHARED_GLOBAL unsigned char *same;
+} atrbvh_treelet_marks;
+
+/* The value atrbvh_treelet_process_marked returns for a skipped treelet. */
+#define ATRBVH_TREELET_SKIPPED (-1)
+
+/* atrbvh_treelet_process_tl behind the skip marks, in round `round`
+ * (from 0; rounds fit a byte, ATRBVH_ROUNDS_MAX): ATRBVH_TREELET_SKIPPED
+ * when the treelet is known to change nothing (nothing computed), else
+ * what atrbvh_treelet_process_tl returns, the marks updated.  The CPU
+ * driver (optimise.c) and the opt_round kernel both call this. */
+ATRBVH_FN int atrbvh_treelet_process_marked(const atrbvh_treelet_tree *t,
+                                            const atrbvh_cost_params *p,
+                                            atrbvh_u32 root, atrbvh_u32 n,
+                                            int agglomerative,
+                                            atrbvh_trbvh_scratch s,
+                                            ATRBVH_GLOBAL double *dist,
+                                            atrbvh_treelet_marks m,
+                                            atrbvh_u32 round)
+{
+    atrbvh_treelet tl;
+    atrbvh_u32 l = t->left[root], r = t->right[root], k;
+    unsigned char ch = m.chg[root], r1 = (unsigned char)(round + 1u);
+    int applied;
+    if (l < t->n_internal && m.chg[l] > ch)
+        ch = m.chg[l];
+    if (r < t->n_internal && m.chg[r] > ch)
+        ch = m.chg[r];
+    m.chg[root] = ch;
+    if (m.same[root] != 0 && ch <= m.same[root])
+        return ATRBVH_TREELET_SKIPPED;
+    applied = atrbvh_treelet_process_tl(t, p, root, n, agglomerative, s, dist,
+                                        &tl);
+    if (applied) {
+        /* A write-back reused the treelet's internal ids (the root's
+         * too) for new nodes: changed, and not known unchanged. */
+        for (k = 0; k + 1u < tl.n; k++) {
+            m.chg[tl.internal[k]] = r1;
+            m.same[tl.internal[k]] = 0;
+        }
+    } else {
+        m.same[root] = r1;
+    }
+    return applied;
+}
+
 /* ------------------------------------------------- ATRBVH, any size */
 /* Treelets of more than ATRBVH_TREELET_MAX leaves (up to ATRBVH_ATRBVH_MAX)
  * and the adaptive size.  The functions above keep their private arrays
