@@ -647,11 +647,7 @@ static Suite *clrays_suite(void)
 
 int main(void)
 {
-    int failed;
-    SRunner *sr = srunner_create(clrays_suite());
-    srunner_run_all(sr, CK_ENV);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
+    int status = tu_run(clrays_suite());
     atrbvh_device_close(cl_dev);
-    return failed == 0 ? 0 : 1;
+    return status;
 }

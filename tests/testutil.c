@@ -362,3 +362,80 @@ atrbvh_bvh *tu_build(const atrbvh_geometry *g, const atrbvh_build_options *o)
                   e.text);
     return b;
 }
+
+tu_alloc_counts tu_alloc = {0, -1, 0, 0, 0};
+
+void *tu_count_malloc(size_t n)
+{
+    void *p;
+    if (tu_alloc.countdown == 0)
+        return NULL;
+    if (tu_alloc.countdown > 0)
+        tu_alloc.countdown--;
+    tu_alloc.allocations++;
+    if (n > tu_alloc.largest)
+        tu_alloc.largest = n;
+    tu_alloc.total_bytes += n;
+    p = malloc(n);
+    if (p)
+        tu_alloc.outstanding++;
+    return p;
+}
+
+void tu_count_free(void *p)
+{
+    if (p)
+        tu_alloc.outstanding--;
+    free(p);
+}
+
+void tu_count_reset(long countdown)
+{
+    tu_alloc.outstanding = 0;
+    tu_alloc.countdown = countdown;
+    tu_alloc.allocations = 0;
+    tu_alloc.largest = 0;
+    tu_alloc.total_bytes = 0;
+}
+
+uint32_t tu_rd32(const unsigned char *p)
+{
+    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 |
+           (uint32_t)p[3] << 24;
+}
+
+void tu_wr32(unsigned char *p, uint32_t v)
+{
+    p[0] = (unsigned char)v;
+    p[1] = (unsigned char)(v >> 8);
+    p[2] = (unsigned char)(v >> 16);
+    p[3] = (unsigned char)(v >> 24);
+}
+
+uint32_t tu_crc32(const unsigned char *p, size_t n)
+{
+    uint32_t c = 0xffffffffu;
+    size_t i;
+    int k;
+    for (i = 0; i < n; i++) {
+        c ^= p[i];
+        for (k = 0; k < 8; k++)
+            c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
+    }
+    return ~c;
+}
+
+void tu_fix_crc(unsigned char *d, size_t n)
+{
+    tu_wr32(d + n - 4, tu_crc32(d, n - 4));
+}
+
+int tu_run(Suite *s)
+{
+    SRunner *sr = srunner_create(s);
+    int failed;
+    srunner_run_all(sr, CK_ENV);
+    failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+}
