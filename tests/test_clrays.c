@@ -172,18 +172,11 @@ static void corner(const atrbvh_geometry *g, size_t i, unsigned c, float p[3])
 {
     int k;
     if (g->type == ATRBVH_GEOMETRY_BOXES) {
-        size_t bs = g->box_stride ? g->box_stride : 24;
-        const float *b = (const float *)((const char *)g->boxes + i * bs);
+        const float *b = tu_box(g, i);
         for (k = 0; k < 3; k++)
             p[k] = (c >> k) & 1u ? b[3 + k] : b[k];
     } else {
-        size_t vs = g->vertex_stride ? g->vertex_stride : 12;
-        size_t is = g->index_stride ? g->index_stride : 12;
-        size_t v = g->indices
-                       ? ((const uint32_t *)((const char *)g->indices +
-                                             i * is))[c % 3u]
-                       : 3 * i + c % 3u;
-        const float *q = (const float *)((const char *)g->vertices + v * vs);
+        const float *q = tu_vertex(g, i, (int)(c % 3u));
         for (k = 0; k < 3; k++)
             p[k] = q[k];
     }

@@ -61,14 +61,9 @@ static double now_s(void)
 /* ------------------------------------------------------- primitive access */
 static void prim_vertices(const atrbvh_geometry *g, size_t i, double v[3][3])
 {
-    size_t vs = g->vertex_stride ? g->vertex_stride : 12;
-    size_t is = g->index_stride ? g->index_stride : 12;
     int c, k;
     for (c = 0; c < 3; c++) {
-        size_t id = g->indices ? ((const uint32_t *)((const char *)g->indices +
-                                                     i * is))[c]
-                               : 3 * i + (size_t)c;
-        const float *p = (const float *)((const char *)g->vertices + id * vs);
+        const float *p = tu_vertex(g, i, c);
         for (k = 0; k < 3; k++)
             v[c][k] = p[k];
     }
@@ -79,8 +74,7 @@ static void prim_bounds(const atrbvh_geometry *g, size_t i, double lo[3],
 {
     int k, c;
     if (g->type == ATRBVH_GEOMETRY_BOXES) {
-        size_t bs = g->box_stride ? g->box_stride : 24;
-        const float *b = (const float *)((const char *)g->boxes + i * bs);
+        const float *b = tu_box(g, i);
         for (k = 0; k < 3; k++) {
             lo[k] = b[k];
             hi[k] = b[k + 3];
@@ -106,8 +100,7 @@ static atrbvh_geometry single(const atrbvh_geometry *g, size_t i)
     atrbvh_geometry s = *g;
     s.primitive_count = 1;
     if (g->type == ATRBVH_GEOMETRY_BOXES) {
-        s.boxes = (const float *)((const char *)g->boxes +
-                                  i * (g->box_stride ? g->box_stride : 24));
+        s.boxes = tu_box(g, i);
     } else if (g->indices) {
         s.indices = (const uint32_t *)((const char *)g->indices +
                                        i * (g->index_stride ? g->index_stride

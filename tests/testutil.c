@@ -23,14 +23,29 @@ static int failf(char *msg, size_t len, const char *fmt, ...)
     return 0;
 }
 
+const float *tu_vertex(const atrbvh_geometry *g, size_t i, int c)
+{
+    size_t vs = g->vertex_stride ? g->vertex_stride : 12;
+    size_t is = g->index_stride ? g->index_stride : 12;
+    size_t v = g->indices
+                   ? ((const uint32_t *)((const char *)g->indices + i * is))[c]
+                   : 3 * i + (size_t)c;
+    return (const float *)((const char *)g->vertices + v * vs);
+}
+
+const float *tu_box(const atrbvh_geometry *g, size_t i)
+{
+    size_t bs = g->box_stride ? g->box_stride : 24;
+    return (const float *)((const char *)g->boxes + i * bs);
+}
+
 /* Box of primitive i, straight from the geometry. */
 static void prim_box(const atrbvh_geometry *g, size_t i, float lo[3],
                      float hi[3])
 {
     int k, c;
     if (g->type == ATRBVH_GEOMETRY_BOXES) {
-        size_t stride = g->box_stride ? g->box_stride : 24;
-        const float *b = (const float *)((const char *)g->boxes + i * stride);
+        const float *b = tu_box(g, i);
         for (k = 0; k < 3; k++) {
             lo[k] = b[k];
             hi[k] = b[k + 3];
@@ -42,12 +57,7 @@ static void prim_box(const atrbvh_geometry *g, size_t i, float lo[3],
         hi[k] = -INFINITY;
     }
     for (c = 0; c < 3; c++) {
-        size_t vs = g->vertex_stride ? g->vertex_stride : 12;
-        size_t is = g->index_stride ? g->index_stride : 12;
-        size_t v = g->indices
-                       ? ((const uint32_t *)((const char *)g->indices + i * is))[c]
-                       : 3 * i + (size_t)c;
-        const float *p = (const float *)((const char *)g->vertices + v * vs);
+        const float *p = tu_vertex(g, i, c);
         for (k = 0; k < 3; k++) {
             if (p[k] < lo[k])
                 lo[k] = p[k];
@@ -70,20 +80,14 @@ static int prim_valid(const atrbvh_geometry *g, size_t i)
 {
     int k, c;
     if (g->type == ATRBVH_GEOMETRY_BOXES) {
-        size_t stride = g->box_stride ? g->box_stride : 24;
-        const float *b = (const float *)((const char *)g->boxes + i * stride);
+        const float *b = tu_box(g, i);
         for (k = 0; k < 6; k++)
             if (!isfinite(b[k]))
                 return 0;
         return 1;
     }
     for (c = 0; c < 3; c++) {
-        size_t vs = g->vertex_stride ? g->vertex_stride : 12;
-        size_t is = g->index_stride ? g->index_stride : 12;
-        size_t v = g->indices
-                       ? ((const uint32_t *)((const char *)g->indices + i * is))[c]
-                       : 3 * i + (size_t)c;
-        const float *p = (const float *)((const char *)g->vertices + v * vs);
+        const float *p = tu_vertex(g, i, c);
         for (k = 0; k < 3; k++)
             if (!isfinite(p[k]))
                 return 0;

@@ -21,6 +21,11 @@
 int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
                  size_t msg_len);
 
+/* Primitive i of g as the library reads it (strides, indices): vertex c
+ * (0..2) of a triangle, or the box's 6 floats (min x, y, z, max x, y, z). */
+const float *tu_vertex(const atrbvh_geometry *g, size_t i, int c);
+const float *tu_box(const atrbvh_geometry *g, size_t i);
+
 /* Bit-for-bit equality of two builds (nodes, indices, SAH); 1 if equal,
  * else 0 with the first difference in msg. */
 int tu_same_bvh(const atrbvh_bvh *a, const atrbvh_bvh *b, char *msg,
