@@ -182,26 +182,6 @@ static void corner(const atrbvh_geometry *g, size_t i, unsigned c, float p[3])
     }
 }
 
-static void bounds(const atrbvh_geometry *g, float lo[3], float hi[3])
-{
-    size_t i;
-    unsigned c;
-    int k;
-    for (k = 0; k < 3; k++) {
-        lo[k] = INFINITY;
-        hi[k] = -INFINITY;
-    }
-    for (i = 0; i < g->primitive_count; i++)
-        for (c = 0; c < 8; c++) {
-            float p[3];
-            corner(g, i, c, p);
-            for (k = 0; k < 3; k++) {
-                lo[k] = p[k] < lo[k] ? p[k] : lo[k];
-                hi[k] = p[k] > hi[k] ? p[k] : hi[k];
-            }
-        }
-}
-
 /* n rays of several kinds (see the file comment) plus the degenerate
  * ones; returns the count (n + 8). */
 static size_t make_rays(const atrbvh_geometry *g, size_t n, uint64_t seed,
@@ -212,7 +192,7 @@ static size_t make_rays(const atrbvh_geometry *g, size_t n, uint64_t seed,
     size_t i, m = 0;
     int k;
     tu_rng_seed(&rng, seed);
-    bounds(g, lo, hi);
+    tu_bounds(g, lo, hi);
     for (k = 0; k < 3; k++)
         ext[k] = hi[k] - lo[k] > 0.0f ? hi[k] - lo[k] : 1.0f;
     for (i = 0; i < n; i++) {

@@ -67,6 +67,26 @@ static void prim_box(const atrbvh_geometry *g, size_t i, float lo[3],
     }
 }
 
+void tu_bounds(const atrbvh_geometry *g, float lo[3], float hi[3])
+{
+    size_t i;
+    int k;
+    for (k = 0; k < 3; k++) {
+        lo[k] = INFINITY;
+        hi[k] = -INFINITY;
+    }
+    for (i = 0; i < g->primitive_count; i++) {
+        float plo[3], phi[3];
+        prim_box(g, i, plo, phi);
+        for (k = 0; k < 3; k++) {
+            if (plo[k] < lo[k])
+                lo[k] = plo[k];
+            if (phi[k] > hi[k])
+                hi[k] = phi[k];
+        }
+    }
+}
+
 static long double area_ld(const float lo[3], const float hi[3])
 {
     long double dx = (long double)hi[0] - lo[0], dy = (long double)hi[1] - lo[1],

@@ -25,6 +25,8 @@ int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
  * (0..2) of a triangle, or the box's 6 floats (min x, y, z, max x, y, z). */
 const float *tu_vertex(const atrbvh_geometry *g, size_t i, int c);
 const float *tu_box(const atrbvh_geometry *g, size_t i);
+/* The box around every primitive of g (NaN coordinates ignored). */
+void tu_bounds(const atrbvh_geometry *g, float lo[3], float hi[3]);
 
 /* Bit-for-bit equality of two builds (nodes, indices, SAH); 1 if equal,
  * else 0 with the first difference in msg. */
