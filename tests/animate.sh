@@ -3,48 +3,9 @@
 # policies, --json, --plot, usage errors.  Run by `make check` with
 # ATRBVH_BUILDDIR and ATRBVH_SRCDIR set.
 
-BUILDDIR=${ATRBVH_BUILDDIR:-.}
-TOOL=$BUILDDIR/tools/atrbvh
-
-if [ ! -x "$TOOL" ]; then
-    echo "animate.sh: $TOOL not built" >&2
-    exit 99
-fi
-if ! command -v python3 >/dev/null 2>&1; then
-    echo "animate.sh: python3 not found; skipped"
-    exit 77
-fi
-
-T=$(mktemp -d "${TMPDIR:-/tmp}/atrbvh_animate.XXXXXX") || exit 99
-trap 'rm -rf "$T"' EXIT INT TERM
-
-failures=0
-checks=0
-fail() {
-    echo "FAIL: $*" >&2
-    failures=$((failures + 1))
-}
-
-# run RC ARGS...: output in $T/out, $T/err; a failing status comes with
-# exactly one "atrbvh: " line on stderr.
-run() {
-    want=$1
-    shift
-    checks=$((checks + 1))
-    "$TOOL" "$@" >"$T/out" 2>"$T/err"
-    rc=$?
-    if [ "$rc" -ne "$want" ]; then
-        fail "atrbvh $* exited $rc, expected $want; stderr: $(cat "$T/err")"
-        return 1
-    fi
-    if [ "$want" -ne 0 ]; then
-        if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q '^atrbvh: ' "$T/err"; then
-            fail "atrbvh $*: stderr is not one 'atrbvh: ' line: $(cat "$T/err")"
-            return 1
-        fi
-    fi
-    return 0
-}
+# shellcheck source-path=SCRIPTDIR source=common.sh
+. "$(dirname "$0")/common.sh"
+setup animate python3
 
 # py SCRIPT: python3 over $T/out's JSON as `d`; a failing assert fails.
 py() {
@@ -144,5 +105,4 @@ run 1 animate builtin:sphere:100 --frames 2
 run 1 animate builtin:wave:abc --frames 2
 run 1 animate scene.ply --frames 2
 
-echo "animate.sh: $checks checks, $failures failed"
-[ "$failures" -eq 0 ]
+finish

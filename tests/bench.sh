@@ -5,48 +5,10 @@
 # size: IHDR bytes, and libpng reads it back).  Tiny scenes, --repeat 1.
 # Run by `make check` with ATRBVH_BUILDDIR set.
 
-BUILDDIR=${ATRBVH_BUILDDIR:-.}
-TOOL=$BUILDDIR/tools/atrbvh
+# shellcheck source-path=SCRIPTDIR source=common.sh
+. "$(dirname "$0")/common.sh"
 PNGCHECK=$BUILDDIR/tests/pngcheck
-
-if [ ! -x "$TOOL" ]; then
-    echo "bench.sh: $TOOL not built" >&2
-    exit 99
-fi
-if ! command -v python3 >/dev/null 2>&1; then
-    echo "bench.sh: no python3, skipped" >&2
-    exit 77
-fi
-
-T=$(mktemp -d "${TMPDIR:-/tmp}/atrbvh_bench.XXXXXX") || exit 99
-trap 'rm -rf "$T"' EXIT INT TERM
-
-failures=0
-checks=0
-fail() {
-    echo "FAIL: $*" >&2
-    failures=$((failures + 1))
-}
-
-# run RC ARGS...: exit status RC; a failure is one "atrbvh: " line.
-run() {
-    want=$1
-    shift
-    checks=$((checks + 1))
-    "$TOOL" "$@" >"$T/out" 2>"$T/err"
-    rc=$?
-    if [ "$rc" -ne "$want" ]; then
-        fail "atrbvh $* exited $rc, expected $want; stderr: $(cat "$T/err")"
-        return 1
-    fi
-    if [ "$want" -ne 0 ]; then
-        if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q '^atrbvh: ' "$T/err"; then
-            fail "atrbvh $*: stderr is not one 'atrbvh: ' line: $(cat "$T/err")"
-            return 1
-        fi
-    fi
-    return 0
-}
+setup bench python3
 
 SCENE=builtin:sphere:3000
 TINY="--repeat 1 --width 24 --height 16 --viewpoints 2 --spp 1"
@@ -297,5 +259,4 @@ run 2 trace builtin:city:2000 --eye 1,2,x
 run 2 render builtin:city:2000 -o "$T/x.png" --eye 1,2,3 --look-at 1,2,3
 run 2 bench builtin:city:2000 --fov 0
 
-echo "bench.sh: $checks runs, $failures failures"
-[ "$failures" -eq 0 ]
+finish

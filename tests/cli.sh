@@ -3,49 +3,10 @@
 # --version everywhere, JSON output, NaN handling, save/info/compare.
 # Run by `make check` with ATRBVH_BUILDDIR and ATRBVH_SRCDIR set.
 
-BUILDDIR=${ATRBVH_BUILDDIR:-.}
-SRCDIR=${ATRBVH_SRCDIR:-.}
-TOOL=$BUILDDIR/tools/atrbvh
+# shellcheck source-path=SCRIPTDIR source=common.sh
+. "$(dirname "$0")/common.sh"
 DATA=$SRCDIR/data
-
-if [ ! -x "$TOOL" ]; then
-    echo "cli.sh: $TOOL not built" >&2
-    exit 99
-fi
-
-T=$(mktemp -d "${TMPDIR:-/tmp}/atrbvh_cli.XXXXXX") || exit 99
-trap 'rm -rf "$T"' EXIT INT TERM
-
-failures=0
-checks=0
-
-fail() {
-    echo "FAIL: $*" >&2
-    failures=$((failures + 1))
-}
-
-# run RC ARGS... : runs the tool, output in $T/out and $T/err, and checks
-# the exit status.  A failing status (1, 2) must come with exactly one line
-# on stderr starting "atrbvh: ".
-run() {
-    want=$1
-    shift
-    checks=$((checks + 1))
-    "$TOOL" "$@" >"$T/out" 2>"$T/err"
-    rc=$?
-    if [ "$rc" -ne "$want" ]; then
-        fail "atrbvh $* exited $rc, expected $want; stderr: $(cat "$T/err")"
-        return 1
-    fi
-    if [ "$want" -ne 0 ]; then
-        lines=$(wc -l <"$T/err")
-        if [ "$lines" -ne 1 ] || ! grep -q '^atrbvh: ' "$T/err"; then
-            fail "atrbvh $*: stderr is not one 'atrbvh: ' line: $(cat "$T/err")"
-            return 1
-        fi
-    fi
-    return 0
-}
+setup cli
 
 # out_has / err_has PATTERN (grep -E)
 out_has() {
@@ -380,5 +341,4 @@ else
     echo "cli.sh: script(1) missing, progress on a terminal not checked"
 fi
 
-echo "cli.sh: $checks runs, $failures failures"
-[ "$failures" -eq 0 ]
+finish

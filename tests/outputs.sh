@@ -15,50 +15,14 @@
 #  - --threads above ATRBVH_MAX_THREADS is a usage error.
 # Run by `make check` with ATRBVH_BUILDDIR and ATRBVH_SRCDIR set.
 
-BUILDDIR=${ATRBVH_BUILDDIR:-.}
-TOOL=$BUILDDIR/tools/atrbvh
-
-if [ ! -x "$TOOL" ]; then
-    echo "outputs.sh: $TOOL not built" >&2
-    exit 99
-fi
-
-T=$(mktemp -d "${TMPDIR:-/tmp}/atrbvh_outputs.XXXXXX") || exit 99
+# shellcheck source-path=SCRIPTDIR source=common.sh
+. "$(dirname "$0")/common.sh"
 MNT=
 cleanup() {
     [ -n "$MNT" ] && umount "$MNT" 2>/dev/null
     rm -rf "$T"
 }
-trap cleanup EXIT INT TERM
-
-failures=0
-checks=0
-
-fail() {
-    echo "FAIL: $*" >&2
-    failures=$((failures + 1))
-}
-
-# run RC ARGS... : the tool's exit status must be RC; a failure comes with
-# exactly one "atrbvh: " line on stderr.  Output in $T/out, $T/err.
-run() {
-    want=$1
-    shift
-    checks=$((checks + 1))
-    "$TOOL" "$@" >"$T/out" 2>"$T/err"
-    rc=$?
-    if [ "$rc" -ne "$want" ]; then
-        fail "atrbvh $* exited $rc, expected $want; stderr: $(cat "$T/err")"
-        return 1
-    fi
-    if [ "$want" -ne 0 ]; then
-        if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q '^atrbvh: ' "$T/err"; then
-            fail "atrbvh $*: stderr is not one 'atrbvh: ' line: $(cat "$T/err")"
-            return 1
-        fi
-    fi
-    return 0
-}
+setup outputs
 
 err_has() {
     grep -Fq -- "$1" "$T/err" || fail "stderr lacks '$1': $(cat "$T/err")"
@@ -272,5 +236,4 @@ run 2 build $SMALL --threads 100000 && err_has "--threads"
 run 2 build $SMALL --threads 2147483647 && err_has "--threads"
 run 0 build $SMALL --threads 2
 
-echo "outputs.sh: $checks checks, $failures failures"
-[ "$failures" -eq 0 ]
+finish

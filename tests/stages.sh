@@ -7,51 +7,15 @@
 # dump writing never loses a file.
 # Run by `make check` with ATRBVH_BUILDDIR and ATRBVH_SRCDIR set.
 
-BUILDDIR=${ATRBVH_BUILDDIR:-.}
-SRCDIR=${ATRBVH_SRCDIR:-.}
-TOOL=$BUILDDIR/tools/atrbvh
+# shellcheck source-path=SCRIPTDIR source=common.sh
+. "$(dirname "$0")/common.sh"
 EDIT="python3 $SRCDIR/tests/npy_edit.py"
+setup stages python3
 
-if [ ! -x "$TOOL" ]; then
-    echo "stages.sh: $TOOL not built" >&2
-    exit 99
-fi
-if ! command -v python3 >/dev/null 2>&1; then
-    echo "stages.sh: no python3, skipped" >&2
-    exit 77
-fi
-
-T=$(mktemp -d "${TMPDIR:-/tmp}/atrbvh_stages.XXXXXX") || exit 99
-trap 'rm -rf "$T"' EXIT INT TERM
-
-failures=0
-checks=0
-
-fail() {
-    echo "FAIL: $*" >&2
-    failures=$((failures + 1))
-}
-
-# run RC ARGS... : the exit status must be RC; a status 1 or 2 with an
-# error comes with exactly one "atrbvh: " line on stderr (check's
-# "different" is a report on stdout, not an error).
-run() {
-    want=$1
-    shift
-    checks=$((checks + 1))
-    "$TOOL" "$@" >"$T/out" 2>"$T/err"
-    rc=$?
-    if [ "$rc" -ne "$want" ]; then
-        fail "atrbvh $* exited $rc, expected $want; stderr: $(cat "$T/err"); stdout: $(tail -3 "$T/out")"
-        return 1
-    fi
-    if [ "$want" -eq 2 ] || { [ "$want" -eq 1 ] && [ "$1" != check ]; }; then
-        if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q '^atrbvh: ' "$T/err"; then
-            fail "atrbvh $*: stderr is not one 'atrbvh: ' line: $(cat "$T/err")"
-            return 1
-        fi
-    fi
-    return 0
+# A status 1 or 2 with an error comes with exactly one "atrbvh: " line on
+# stderr; check's "different" (1) is a report on stdout, not an error.
+error_line() {
+    [ "$1" -eq 2 ] || { [ "$1" -eq 1 ] && [ "$2" != check ]; }
 }
 
 SCENE=builtin:city:1500
@@ -294,5 +258,4 @@ grep -q -- '--dump' "$T/out" || fail "help stages lacks --dump"
 run 0 help check
 grep -q -- '--tolerance-ulps' "$T/out" || fail "help check lacks --tolerance-ulps"
 
-echo "stages.sh: $checks checks, $failures failures"
-[ "$failures" -eq 0 ]
+finish

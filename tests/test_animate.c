@@ -18,29 +18,6 @@
 #include "atrbvh.h"
 #include "testutil.h"
 
-/* ------------------------------------------------- counting allocator */
-static long outstanding, countdown = -1;
-static size_t total_bytes;
-static void *count_malloc(size_t n)
-{
-    void *p;
-    if (countdown == 0)
-        return NULL;
-    if (countdown > 0)
-        countdown--;
-    total_bytes += n;
-    p = malloc(n);
-    if (p)
-        outstanding++;
-    return p;
-}
-static void count_free(void *p)
-{
-    if (p)
-        outstanding--;
-    free(p);
-}
-
 enum { T = 3000 };
 
 /* A deforming soup: frame 0 is tu_random_triangles; frame f moves every
@@ -408,16 +385,15 @@ START_TEST(allocation_failure_keeps_tree)
         atrbvh_status st;
         snap s;
         snap_take(&s, b);
-        atrbvh_set_allocator(count_malloc, count_free);
-        outstanding = 0;
-        countdown = k;
+        atrbvh_set_allocator(tu_count_malloc, tu_count_free);
+        tu_count_reset(k);
         st = with_device ? atrbvh_device_open("cpu", &d, &e) : ATRBVH_OK;
         o.device = d;
         if (st == ATRBVH_OK)
             st = which ? atrbvh_reoptimise(b, &g, &o, &e)
                        : atrbvh_refit(b, &g, &o, &e);
         atrbvh_device_close(d);
-        countdown = -1;
+        tu_alloc.countdown = -1;
         atrbvh_set_allocator(NULL, NULL);
         o.device = NULL;
         if (st == ATRBVH_OK) {
@@ -429,8 +405,8 @@ START_TEST(allocation_failure_keeps_tree)
         }
         ck_assert_msg(st == ATRBVH_ERR_NOMEM, "allocation %ld: %s", k, e.text);
         ck_assert_msg(snap_same(&s, b), "allocation %ld changed the tree", k);
-        ck_assert_msg(outstanding == 0, "allocation %ld: %ld leaked", k,
-                      outstanding);
+        ck_assert_msg(tu_alloc.outstanding == 0, "allocation %ld: %ld leaked",
+                      k, tu_alloc.outstanding);
         snap_free(&s);
     }
     atrbvh_bvh_free(b);
@@ -458,28 +434,29 @@ START_TEST(frames_allocate_no_scratch)
     o.device = d;
     frame_of(base, v, T, 0);
     b = tu_build(&g, &o);
-    atrbvh_set_allocator(count_malloc, count_free);
-    total_bytes = 0;
+    atrbvh_set_allocator(tu_count_malloc, tu_count_free);
+    tu_alloc.total_bytes = 0;
     frame_of(base, v, T, 1);
     ck_assert_int_eq(atrbvh_refit(b, &g, &o, &e), ATRBVH_OK);
-    ck_assert_uint_gt(total_bytes, (size_t)T); /* the boxes' scratch */
+    ck_assert_uint_gt(tu_alloc.total_bytes, (size_t)T); /* the boxes' scratch */
     for (f = 2; f < 5; f++) {
-        total_bytes = 0;
+        tu_alloc.total_bytes = 0;
         frame_of(base, v, T, f);
         ck_assert_int_eq(atrbvh_refit(b, &g, &o, &e), ATRBVH_OK);
-        ck_assert_uint_eq(total_bytes, 0);
+        ck_assert_uint_eq(tu_alloc.total_bytes, 0);
     }
-    total_bytes = 0;
+    tu_alloc.total_bytes = 0;
     ck_assert_int_eq(atrbvh_reoptimise(b, &g, &o, &e), ATRBVH_OK);
-    first = total_bytes;
+    first = tu_alloc.total_bytes;
     for (f = 5; f < 10; f++) {
-        total_bytes = 0;
+        tu_alloc.total_bytes = 0;
         frame_of(base, v, T, f);
         ck_assert_int_eq(atrbvh_refit(b, &g, &o, &e), ATRBVH_OK);
         ck_assert_int_eq(atrbvh_reoptimise(b, &g, &o, &e), ATRBVH_OK);
-        ck_assert_msg(total_bytes < (size_t)T,
+        ck_assert_msg(tu_alloc.total_bytes < (size_t)T,
                       "frame %d allocated %lu bytes (first %lu)", f,
-                      (unsigned long)total_bytes, (unsigned long)first);
+                      (unsigned long)tu_alloc.total_bytes,
+                      (unsigned long)first);
     }
     atrbvh_set_allocator(NULL, NULL);
     atrbvh_bvh_free(b);
@@ -533,15 +510,15 @@ START_TEST(cross_backend)
             /* The OpenCL device's frames allocate no host array of the
              * primitive count either. */
             frame_of(base, v, T, 5 * f + 1);
-            atrbvh_set_allocator(count_malloc, count_free);
-            total_bytes = 0;
+            atrbvh_set_allocator(tu_count_malloc, tu_count_free);
+            tu_alloc.total_bytes = 0;
             ck_assert_int_eq(atrbvh_refit(b, &g, &og, &e), ATRBVH_OK);
-            ck_assert_uint_eq(total_bytes, 0);
+            ck_assert_uint_eq(tu_alloc.total_bytes, 0);
             ck_assert_int_eq(atrbvh_reoptimise(b, &g, &og, &e), ATRBVH_OK);
             atrbvh_set_allocator(NULL, NULL);
-            ck_assert_msg(total_bytes < (size_t)T,
+            ck_assert_msg(tu_alloc.total_bytes < (size_t)T,
                           "OpenCL frame %d allocated %lu bytes", f,
-                          (unsigned long)total_bytes);
+                          (unsigned long)tu_alloc.total_bytes);
             ck_assert_int_eq(atrbvh_refit(a, &g, &oc, &e), ATRBVH_OK);
             ck_assert_int_eq(atrbvh_reoptimise(a, &g, &oc, &e), ATRBVH_OK);
             ck_assert_msg(tu_same_bvh(a, b, msg, sizeof msg), "%s", msg);
@@ -575,10 +552,5 @@ static Suite *suite(void)
 
 int main(void)
 {
-    SRunner *r = srunner_create(suite());
-    int failed;
-    srunner_run_all(r, CK_NORMAL);
-    failed = srunner_ntests_failed(r);
-    srunner_free(r);
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return tu_run(suite());
 }

@@ -226,8 +226,6 @@ int main(void)
     Suite *s = suite_create("build");
     TCase *tc = tcase_create("synthetic");
     TCase *real = tcase_create("real");
-    SRunner *sr;
-    int failed;
     tcase_set_timeout(tc, 600);
     tcase_add_test(tc, random_soups);
     tcase_add_test(tc, builtin_scenes);
@@ -238,9 +236,5 @@ int main(void)
     tcase_set_timeout(real, 1800);
     tcase_add_test(real, real_scenes);
     suite_add_tcase(s, real);
-    sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return tu_run(s);
 }

@@ -172,41 +172,14 @@ static void corner(const atrbvh_geometry *g, size_t i, unsigned c, float p[3])
 {
     int k;
     if (g->type == ATRBVH_GEOMETRY_BOXES) {
-        size_t bs = g->box_stride ? g->box_stride : 24;
-        const float *b = (const float *)((const char *)g->boxes + i * bs);
+        const float *b = tu_box(g, i);
         for (k = 0; k < 3; k++)
             p[k] = (c >> k) & 1u ? b[3 + k] : b[k];
     } else {
-        size_t vs = g->vertex_stride ? g->vertex_stride : 12;
-        size_t is = g->index_stride ? g->index_stride : 12;
-        size_t v = g->indices
-                       ? ((const uint32_t *)((const char *)g->indices +
-                                             i * is))[c % 3u]
-                       : 3 * i + c % 3u;
-        const float *q = (const float *)((const char *)g->vertices + v * vs);
+        const float *q = tu_vertex(g, i, (int)(c % 3u));
         for (k = 0; k < 3; k++)
             p[k] = q[k];
     }
-}
-
-static void bounds(const atrbvh_geometry *g, float lo[3], float hi[3])
-{
-    size_t i;
-    unsigned c;
-    int k;
-    for (k = 0; k < 3; k++) {
-        lo[k] = INFINITY;
-        hi[k] = -INFINITY;
-    }
-    for (i = 0; i < g->primitive_count; i++)
-        for (c = 0; c < 8; c++) {
-            float p[3];
-            corner(g, i, c, p);
-            for (k = 0; k < 3; k++) {
-                lo[k] = p[k] < lo[k] ? p[k] : lo[k];
-                hi[k] = p[k] > hi[k] ? p[k] : hi[k];
-            }
-        }
 }
 
 /* n rays of several kinds (see the file comment) plus the degenerate
@@ -219,7 +192,7 @@ static size_t make_rays(const atrbvh_geometry *g, size_t n, uint64_t seed,
     size_t i, m = 0;
     int k;
     tu_rng_seed(&rng, seed);
-    bounds(g, lo, hi);
+    tu_bounds(g, lo, hi);
     for (k = 0; k < 3; k++)
         ext[k] = hi[k] - lo[k] > 0.0f ? hi[k] - lo[k] : 1.0f;
     for (i = 0; i < n; i++) {
@@ -647,11 +620,7 @@ static Suite *clrays_suite(void)
 
 int main(void)
 {
-    int failed;
-    SRunner *sr = srunner_create(clrays_suite());
-    srunner_run_all(sr, CK_ENV);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
+    int status = tu_run(clrays_suite());
     atrbvh_device_close(cl_dev);
-    return failed == 0 ? 0 : 1;
+    return status;
 }

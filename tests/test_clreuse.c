@@ -143,15 +143,9 @@ int main(void)
 {
     Suite *s = suite_create("clreuse");
     TCase *tc = tcase_create("buffers");
-    SRunner *sr;
-    int failed;
     tcase_add_test(tc, second_build_creates_no_buffer);
     tcase_add_test(tc, skip_marks_on_the_device);
     tcase_set_timeout(tc, 300);
     suite_add_tcase(s, tc);
-    sr = srunner_create(s);
-    srunner_run_all(sr, CK_ENV);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed ? 1 : 0;
+    return tu_run(s);
 }

@@ -175,15 +175,9 @@ int main(void)
 {
     Suite *s = suite_create("collapse");
     TCase *tc = tcase_create("collapse");
-    SRunner *sr;
-    int failed;
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, matches_exhaustive_search);
     tcase_add_test(tc, never_raises_sah);
     suite_add_tcase(s, tc);
-    sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return tu_run(s);
 }

@@ -15,31 +15,6 @@
 #include "scene.h"
 #include "testutil.h"
 
-/* ------------------------------------------------- counting allocator */
-static long outstanding, countdown = -1;
-static size_t largest, total_bytes;
-static void *count_malloc(size_t n)
-{
-    void *p;
-    if (countdown == 0)
-        return NULL;
-    if (countdown > 0)
-        countdown--;
-    if (n > largest)
-        largest = n;
-    total_bytes += n;
-    p = malloc(n);
-    if (p)
-        outstanding++;
-    return p;
-}
-static void count_free(void *p)
-{
-    if (p)
-        outstanding--;
-    free(p);
-}
-
 enum { T = 4000 };
 
 static atrbvh_geometry soup(float **v, size_t n, uint64_t seed)
@@ -105,11 +80,11 @@ START_TEST(reuse_allocates_no_scratch)
     ref = tu_build(&g, &o);
     ck_assert_int_eq(atrbvh_device_open("cpu", &d, &e), ATRBVH_OK);
     o.device = d;
-    atrbvh_set_allocator(count_malloc, count_free);
-    total_bytes = 0;
+    atrbvh_set_allocator(tu_count_malloc, tu_count_free);
+    tu_alloc.total_bytes = 0;
     ck_assert_int_eq(atrbvh_build(&g, &o, &a, &e), ATRBVH_OK);
-    first_bytes = total_bytes;
-    total_bytes = 0;
+    first_bytes = tu_alloc.total_bytes;
+    tu_alloc.total_bytes = 0;
     ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_OK);
     atrbvh_set_allocator(NULL, NULL);
     ck_assert_msg(tu_same_bvh(ref, a, msg, sizeof msg), "%s", msg);
@@ -119,11 +94,11 @@ START_TEST(reuse_allocates_no_scratch)
     output = nodes * (sizeof(atrbvh_node) + 12) + prims * 4 + 4096 +
              (2 * (size_t)T - 1) * sizeof(float) * 6;
     /* The first build made the scratch: keys, boxes, the binary tree. */
-    ck_assert_uint_gt(first_bytes, total_bytes + (size_t)T * 30);
-    ck_assert_msg(total_bytes <= output,
+    ck_assert_uint_gt(first_bytes, tu_alloc.total_bytes + (size_t)T * 30);
+    ck_assert_msg(tu_alloc.total_bytes <= output,
                   "second build allocated %lu bytes (output, walk and node "
                   "boxes %lu)",
-                  (unsigned long)total_bytes, (unsigned long)output);
+                  (unsigned long)tu_alloc.total_bytes, (unsigned long)output);
     atrbvh_bvh_free(a);
     atrbvh_bvh_free(b);
     atrbvh_bvh_free(ref);
@@ -158,14 +133,13 @@ START_TEST(allocation_failure_open_build_close)
         }
         atrbvh_device_close(probe);
     }
-    atrbvh_set_allocator(count_malloc, count_free);
+    atrbvh_set_allocator(tu_count_malloc, tu_count_free);
     for (k = 0; !done; k++) {
         atrbvh_device *d = NULL;
         atrbvh_bvh *b = NULL;
         atrbvh_error e;
         atrbvh_status st;
-        outstanding = 0;
-        countdown = k;
+        tu_count_reset(k);
         st = atrbvh_device_open(spec, &d, &e);
         if (st == ATRBVH_OK) {
             o.device = d;
@@ -183,9 +157,10 @@ START_TEST(allocation_failure_open_build_close)
         } else {
             ck_assert_ptr_null(d);
         }
-        countdown = -1;
-        ck_assert_msg(outstanding == 0, "allocation %ld: %ld blocks leaked",
-                      k, outstanding);
+        tu_alloc.countdown = -1;
+        ck_assert_msg(tu_alloc.outstanding == 0,
+                      "allocation %ld: %ld blocks leaked", k,
+                      tu_alloc.outstanding);
         if (st == ATRBVH_OK)
             done = 1;
         else
@@ -210,15 +185,15 @@ typedef union sized {
 static void *sized_malloc(size_t n)
 {
     sized *h;
-    if (countdown == 0)
+    if (tu_alloc.countdown == 0)
         return NULL;
-    if (countdown > 0)
-        countdown--;
+    if (tu_alloc.countdown > 0)
+        tu_alloc.countdown--;
     h = malloc(sizeof *h + n);
     if (!h)
         return NULL;
     h->size = n;
-    outstanding++;
+    tu_alloc.outstanding++;
     held += n;
     if (held > peak)
         peak = held;
@@ -231,7 +206,7 @@ static void sized_free(void *p)
         return;
     h = (sized *)p - 1;
     held -= h->size;
-    outstanding--;
+    tu_alloc.outstanding--;
     free(h);
 }
 
@@ -261,7 +236,7 @@ START_TEST(peak_memory_lbvh)
     o.max_leaf_size = 8;
     o.threads = 2;
     atrbvh_set_allocator(sized_malloc, sized_free);
-    outstanding = 0;
+    tu_alloc.outstanding = 0;
     base = held;
     ck_assert_int_eq(atrbvh_device_open("cpu", &d, &e), ATRBVH_OK);
     for (k = 0; k < 3; k++) { /* no handle, first and second on one */
@@ -291,7 +266,7 @@ START_TEST(peak_memory_lbvh)
     }
     atrbvh_device_close(d);
     atrbvh_set_allocator(NULL, NULL);
-    ck_assert_int_eq(outstanding, 0);
+    ck_assert_int_eq(tu_alloc.outstanding, 0);
     scene_free(&sc);
 }
 END_TEST
@@ -320,8 +295,7 @@ START_TEST(allocation_failure_lbvh_and_invalid)
         atrbvh_bvh *b = NULL;
         atrbvh_error e;
         atrbvh_status st;
-        outstanding = 0;
-        countdown = k;
+        tu_count_reset(k);
         o.device = NULL;
         st = atrbvh_build(&g1, &o, &b, &e);
         atrbvh_bvh_free(b);
@@ -342,9 +316,10 @@ START_TEST(allocation_failure_lbvh_and_invalid)
             atrbvh_bvh_free(b);
             atrbvh_device_close(d);
         }
-        countdown = -1;
-        ck_assert_msg(outstanding == 0, "allocation %ld: %ld blocks leaked",
-                      k, outstanding);
+        tu_alloc.countdown = -1;
+        ck_assert_msg(tu_alloc.outstanding == 0,
+                      "allocation %ld: %ld blocks leaked", k,
+                      tu_alloc.outstanding);
         if (st == ATRBVH_OK)
             done = 1;
         else
@@ -507,7 +482,7 @@ START_TEST(cancel_everywhere)
     size_t s;
     atrbvh_build_options_init(&o);
     o.threads = 2;
-    atrbvh_set_allocator(count_malloc, count_free);
+    atrbvh_set_allocator(tu_count_malloc, tu_count_free);
     for (s = 0; s <= sizeof stages / sizeof *stages; s++) {
         atrbvh_bvh *b = (atrbvh_bvh *)&o;
         atrbvh_error e;
@@ -519,14 +494,14 @@ START_TEST(cancel_everywhere)
             p.cancel_after = 0.5; /* inside the optimise stage */
         o.progress = on_progress;
         o.progress_user = &p;
-        outstanding = 0;
+        tu_alloc.outstanding = 0;
         ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_ERR_CANCELLED);
         ck_assert_ptr_null(b);
         ck_assert_int_eq(p.cancels, 1);
         ck_assert_int_eq(e.status, ATRBVH_ERR_CANCELLED);
         ck_assert_msg(strstr(e.text, "cancel"), "%s", e.text);
-        ck_assert_msg(outstanding == 0, "cancel at %s: %ld leaked",
-                      p.cancel_at ? p.cancel_at : "0.5", outstanding);
+        ck_assert_msg(tu_alloc.outstanding == 0, "cancel at %s: %ld leaked",
+                      p.cancel_at ? p.cancel_at : "0.5", tu_alloc.outstanding);
     }
     atrbvh_set_allocator(NULL, NULL);
     free(v);
@@ -701,17 +676,17 @@ START_TEST(capture_every_stage)
         }
     }
     /* The callback can cancel, after any stage; nothing leaks. */
-    atrbvh_set_allocator(count_malloc, count_free);
+    atrbvh_set_allocator(tu_count_malloc, tu_count_free);
     for (i = 1; i <= sizeof expect / sizeof *expect; i++) {
         cap_log c3;
         memset(&c3, 0, sizeof c3);
         c3.stop_at = (int)i;
         o.capture_user = &c3;
-        outstanding = 0;
+        tu_alloc.outstanding = 0;
         ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_ERR_CANCELLED);
         ck_assert_ptr_null(b);
         ck_assert_msg(strstr(e.text, expect[i - 1]), "%s", e.text);
-        ck_assert_int_eq(outstanding, 0);
+        ck_assert_int_eq(tu_alloc.outstanding, 0);
     }
     atrbvh_set_allocator(NULL, NULL);
     atrbvh_bvh_free(ref);
@@ -741,10 +716,5 @@ static Suite *suite(void)
 
 int main(void)
 {
-    SRunner *r = srunner_create(suite());
-    int failed;
-    srunner_run_all(r, CK_NORMAL);
-    failed = srunner_ntests_failed(r);
-    srunner_free(r);
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return tu_run(suite());
 }

@@ -127,38 +127,12 @@ START_TEST(indices_and_strides)
 }
 END_TEST
 
-/* Counting allocator: outstanding blocks, and a countdown to failure. */
-static long outstanding, countdown = -1, allocations;
-static size_t largest;
-static void *count_malloc(size_t n)
-{
-    if (countdown == 0)
-        return NULL;
-    if (countdown > 0)
-        countdown--;
-    allocations++;
-    if (n > largest)
-        largest = n;
-    {
-        void *p = malloc(n);
-        if (p)
-            outstanding++;
-        return p;
-    }
-}
-static void count_free(void *p)
-{
-    if (p)
-        outstanding--;
-    free(p);
-}
-
 START_TEST(sizes_overflow)
 {
     float v[9] = {0};
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3, NULL, 1);
-    atrbvh_set_allocator(count_malloc, count_free);
-    allocations = 0;
+    atrbvh_set_allocator(tu_count_malloc, tu_count_free);
+    tu_alloc.allocations = 0;
     g.primitive_count = ATRBVH_MAX_PRIMITIVES + 1;
     EXPECT(&g, NULL, ATRBVH_ERR_TOO_LARGE, "exceed the limit");
     g.primitive_count = 1;
@@ -169,7 +143,7 @@ START_TEST(sizes_overflow)
     /* Claims 2^30 unindexed triangles over 3 vertices: rejected before any
      * allocation. */
     EXPECT(&g, NULL, ATRBVH_ERR_INVALID_ARGUMENT, "vertex_count is 3");
-    ck_assert_int_eq(allocations, 0);
+    ck_assert_int_eq(tu_alloc.allocations, 0);
     atrbvh_set_allocator(NULL, NULL);
 }
 END_TEST
@@ -266,32 +240,32 @@ static void fail_each_allocation_on(atrbvh_backend backend, atrbvh_method m,
     o.max_leaf_size = leaf == 2 ? 3 : 0;
     if (skip)
         v[9 * 17] = NAN;
-    atrbvh_set_allocator(count_malloc, count_free);
+    atrbvh_set_allocator(tu_count_malloc, tu_count_free);
     for (k = 0;; k++) {
         atrbvh_bvh *b = NULL;
         atrbvh_error e;
         atrbvh_status s;
-        outstanding = 0;
-        countdown = k;
+        tu_count_reset(k);
         s = atrbvh_build(&g, &o, &b, &e);
-        countdown = -1;
+        tu_alloc.countdown = -1;
         if (s == ATRBVH_ERR_UNSUPPORTED && backend != ATRBVH_BACKEND_CPU &&
             k == 0) {
-            ck_assert_int_eq(outstanding, 0);
+            ck_assert_int_eq(tu_alloc.outstanding, 0);
             break;
         }
         if (s == ATRBVH_OK) {
             char msg[256];
             ck_assert_msg(tu_check_bvh(b, &g, msg, sizeof msg), "%s", msg);
             atrbvh_bvh_free(b);
-            ck_assert_int_eq(outstanding, 0);
+            ck_assert_int_eq(tu_alloc.outstanding, 0);
             break;
         }
         ck_assert_msg(s == ATRBVH_ERR_NOMEM, "allocation %ld: %s (%s)", k,
                       atrbvh_strerror(s), e.text);
         ck_assert_ptr_null(b);
-        ck_assert_msg(outstanding == 0, "allocation %ld failed: %ld leaked", k,
-                      outstanding);
+        ck_assert_msg(tu_alloc.outstanding == 0,
+                      "allocation %ld failed: %ld leaked", k,
+                      tu_alloc.outstanding);
         ck_assert_int_gt((int)strlen(e.text), 0);
     }
     if (backend == ATRBVH_BACKEND_CPU)
@@ -352,12 +326,11 @@ START_TEST(allocation_failure_load)
     snprintf(path, sizeof path, "%s/atrbvh_errors_%ld.bvh",
              tmp && *tmp ? tmp : "/tmp", (long)getpid());
     ck_assert_int_eq(atrbvh_save(b, path, &e), ATRBVH_OK);
-    atrbvh_set_allocator(count_malloc, count_free);
+    atrbvh_set_allocator(tu_count_malloc, tu_count_free);
     for (pass = 0; pass < 3; pass++) {
         for (k = 0;; k++) {
             atrbvh_status s;
-            outstanding = 0;
-            countdown = k;
+            tu_count_reset(k);
             l = NULL;
             if (pass == 0) {
                 s = atrbvh_save_memory(b, &data, &size, &e);
@@ -366,22 +339,24 @@ START_TEST(allocation_failure_load)
             } else {
                 s = atrbvh_load(path, &l, &e);
             }
-            countdown = -1;
+            tu_alloc.countdown = -1;
             if (s == ATRBVH_OK) {
                 if (pass == 0) {
-                    ck_assert_int_eq(outstanding, 1);
+                    ck_assert_int_eq(tu_alloc.outstanding, 1);
                 } else {
                     ck_assert_int_eq(atrbvh_compare(b, l, &e), 0);
                     atrbvh_bvh_free(l);
-                    ck_assert_int_eq(outstanding, 0);
+                    ck_assert_int_eq(tu_alloc.outstanding, 0);
                 }
                 break;
             }
             ck_assert_msg(s == ATRBVH_ERR_NOMEM, "pass %d allocation %ld: %s",
                           pass, k, e.text);
             ck_assert_ptr_null(l);
-            ck_assert_msg(outstanding == 0, "pass %d allocation %ld: %ld "
-                          "leaked", pass, k, outstanding);
+            ck_assert_msg(tu_alloc.outstanding == 0,
+                          "pass %d allocation %ld: %ld "
+                          "leaked",
+                          pass, k, tu_alloc.outstanding);
             ck_assert_msg(strstr(e.text, "memory") != NULL, "%s", e.text);
         }
         ck_assert_int_gt(k, 0);
@@ -398,8 +373,6 @@ int main(void)
 {
     Suite *s = suite_create("errors");
     TCase *tc = tcase_create("errors");
-    SRunner *sr;
-    int failed;
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, null_and_empty);
     tcase_add_test(tc, nonfinite);
@@ -411,9 +384,5 @@ int main(void)
     tcase_add_loop_test(tc, allocation_failure_all, 0, 9);
     tcase_add_test(tc, allocation_failure_load);
     suite_add_tcase(s, tc);
-    sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return tu_run(s);
 }

@@ -61,14 +61,9 @@ static double now_s(void)
 /* ------------------------------------------------------- primitive access */
 static void prim_vertices(const atrbvh_geometry *g, size_t i, double v[3][3])
 {
-    size_t vs = g->vertex_stride ? g->vertex_stride : 12;
-    size_t is = g->index_stride ? g->index_stride : 12;
     int c, k;
     for (c = 0; c < 3; c++) {
-        size_t id = g->indices ? ((const uint32_t *)((const char *)g->indices +
-                                                     i * is))[c]
-                               : 3 * i + (size_t)c;
-        const float *p = (const float *)((const char *)g->vertices + id * vs);
+        const float *p = tu_vertex(g, i, c);
         for (k = 0; k < 3; k++)
             v[c][k] = p[k];
     }
@@ -79,8 +74,7 @@ static void prim_bounds(const atrbvh_geometry *g, size_t i, double lo[3],
 {
     int k, c;
     if (g->type == ATRBVH_GEOMETRY_BOXES) {
-        size_t bs = g->box_stride ? g->box_stride : 24;
-        const float *b = (const float *)((const char *)g->boxes + i * bs);
+        const float *b = tu_box(g, i);
         for (k = 0; k < 3; k++) {
             lo[k] = b[k];
             hi[k] = b[k + 3];
@@ -106,8 +100,7 @@ static atrbvh_geometry single(const atrbvh_geometry *g, size_t i)
     atrbvh_geometry s = *g;
     s.primitive_count = 1;
     if (g->type == ATRBVH_GEOMETRY_BOXES) {
-        s.boxes = (const float *)((const char *)g->boxes +
-                                  i * (g->box_stride ? g->box_stride : 24));
+        s.boxes = tu_box(g, i);
     } else if (g->indices) {
         s.indices = (const uint32_t *)((const char *)g->indices +
                                        i * (g->index_stride ? g->index_stride
@@ -826,13 +819,6 @@ START_TEST(nonfinite_boxes_and_indexed)
 END_TEST
 
 /* --------------------------------------------------- limits, allocation */
-static long allocations;
-static void *count_malloc(size_t n)
-{
-    allocations++;
-    return malloc(n);
-}
-
 START_TEST(beyond_the_limit)
 {
     /* Counts past ATRBVH_MAX_PRIMITIVES are refused before any
@@ -848,7 +834,7 @@ START_TEST(beyond_the_limit)
     gs[0] = atrbvh_geometry_triangles(v, 3, NULL, 1);
     gs[1] = atrbvh_geometry_triangles(v, 3, idx, 1);
     gs[2] = atrbvh_geometry_boxes(v, 1);
-    atrbvh_set_allocator(count_malloc, free);
+    atrbvh_set_allocator(tu_count_malloc, tu_count_free);
     for (c = 0; c < sizeof counts / sizeof *counts; c++)
         for (k = 0; k < 3; k++) {
             atrbvh_bvh *b = NULL;
@@ -860,10 +846,10 @@ START_TEST(beyond_the_limit)
                 atrbvh_build_options o;
                 atrbvh_build_options_init(&o);
                 o.method = METHODS[m];
-                allocations = 0;
+                tu_alloc.allocations = 0;
                 ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e),
                                  ATRBVH_ERR_TOO_LARGE);
-                ck_assert_int_eq(allocations, 0);
+                ck_assert_int_eq(tu_alloc.allocations, 0);
                 ck_assert_ptr_null(b);
                 ck_assert_msg(strstr(e.text, "limit") != NULL, "%s", e.text);
             }
@@ -1103,8 +1089,7 @@ int main(void)
     TCase *deg = tcase_create("degenerate");
     TCase *pol = tcase_create("policy");
     TCase *big = tcase_create("large");
-    SRunner *sr;
-    int failed;
+    int status;
     tcase_set_timeout(num, 600);
     tcase_add_loop_test(num, scaled, 0, 8);
     tcase_add_test(num, whole_float_range);
@@ -1127,12 +1112,9 @@ int main(void)
     tcase_add_test(big, morton_collisions);
     tcase_add_test(big, largest_scene);
     suite_add_tcase(s, big);
-    sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
+    status = tu_run(s);
     printf("extremes: %zu case builds checked, %zu rays (%zu also checked "
            "independently)\n",
            cases_total, rays_total, rays_independent);
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return status;
 }

@@ -48,29 +48,10 @@
  * for the fixed-size BVH object itself (a few hundred bytes), which can
  * exceed the smallest files. */
 #define ALLOC_BOUND(n) ((n) > 512 ? (n) : 512)
-static size_t largest_request;
-static size_t live_blocks;
-
-static void *counting_malloc(size_t n)
-{
-    if (n > largest_request)
-        largest_request = n;
-    live_blocks++;
-    return malloc(n);
-}
-
-static void counting_free(void *p)
-{
-    if (p)
-        live_blocks--;
-    free(p);
-}
-
 static void counting_on(void)
 {
-    largest_request = 0;
-    live_blocks = 0;
-    atrbvh_set_allocator(counting_malloc, counting_free);
+    tu_count_reset(-1);
+    atrbvh_set_allocator(tu_count_malloc, tu_count_free);
 }
 
 static void counting_off(void)
@@ -79,47 +60,15 @@ static void counting_off(void)
 }
 
 /* ----------------------------------------- independent format helpers */
-static uint32_t crc32_ref(const unsigned char *p, size_t n)
-{
-    uint32_t c = 0xffffffffu;
-    size_t i;
-    int k;
-    for (i = 0; i < n; i++) {
-        c ^= p[i];
-        for (k = 0; k < 8; k++)
-            c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
-    }
-    return ~c;
-}
-
-static uint32_t rd32(const unsigned char *p)
-{
-    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 |
-           (uint32_t)p[3] << 24;
-}
-
 static uint64_t rd64(const unsigned char *p)
 {
-    return rd32(p) | (uint64_t)rd32(p + 4) << 32;
-}
-
-static void wr32(unsigned char *p, uint32_t v)
-{
-    p[0] = (unsigned char)v;
-    p[1] = (unsigned char)(v >> 8);
-    p[2] = (unsigned char)(v >> 16);
-    p[3] = (unsigned char)(v >> 24);
+    return tu_rd32(p) | (uint64_t)tu_rd32(p + 4) << 32;
 }
 
 static void wr64(unsigned char *p, uint64_t v)
 {
-    wr32(p, (uint32_t)v);
-    wr32(p + 4, (uint32_t)(v >> 32));
-}
-
-static void fix_crc(unsigned char *d, size_t n)
-{
-    wr32(d + n - 4, crc32_ref(d, n - 4));
+    tu_wr32(p, (uint32_t)v);
+    tu_wr32(p + 4, (uint32_t)(v >> 32));
 }
 
 /* ---------------------------------------------------------- builders */
@@ -192,30 +141,30 @@ START_TEST(round_trip_memory)
             /* the documented layout, read independently */
             ck_assert_uint_eq(n, 96 + 32 * nn + 4 * np + 4);
             ck_assert(memcmp(d, "ATRBVH\0\n", 8) == 0);
-            ck_assert_uint_eq(rd32(d + 8), 1);
-            ck_assert_uint_eq(rd32(d + 12), 96);
-            ck_assert_uint_eq(rd32(d + 16), 0);
-            ck_assert_uint_eq(rd32(d + 20), ATRBVH_METHOD_LBVH);
+            ck_assert_uint_eq(tu_rd32(d + 8), 1);
+            ck_assert_uint_eq(tu_rd32(d + 12), 96);
+            ck_assert_uint_eq(tu_rd32(d + 16), 0);
+            ck_assert_uint_eq(tu_rd32(d + 20), ATRBVH_METHOD_LBVH);
             ck_assert_uint_eq(rd64(d + 32), nn);
             ck_assert_uint_eq(rd64(d + 40), np);
             ck_assert_uint_eq(rd64(d + 48), sizes[s]);
-            ck_assert_uint_eq(rd32(d + n - 4), crc32_ref(d, n - 4));
+            ck_assert_uint_eq(tu_rd32(d + n - 4), tu_crc32(d, n - 4));
             for (i = 0; i < nn; i++) {
                 const unsigned char *q = d + 96 + 32 * i;
                 uint32_t bits;
                 memcpy(&bits, &nodes[i].min[1], 4);
-                ck_assert_uint_eq(rd32(q + 4), bits);
+                ck_assert_uint_eq(tu_rd32(q + 4), bits);
                 memcpy(&bits, &nodes[i].max[2], 4);
-                ck_assert_uint_eq(rd32(q + 20), bits);
-                ck_assert_uint_eq(rd32(q + 24), nodes[i].index);
-                ck_assert_uint_eq(rd32(q + 28), nodes[i].count);
+                ck_assert_uint_eq(tu_rd32(q + 20), bits);
+                ck_assert_uint_eq(tu_rd32(q + 24), nodes[i].index);
+                ck_assert_uint_eq(tu_rd32(q + 28), nodes[i].count);
             }
             for (i = 0; i < np; i++)
-                ck_assert_uint_eq(rd32(d + 96 + 32 * nn + 4 * i), prims[i]);
+                ck_assert_uint_eq(tu_rd32(d + 96 + 32 * nn + 4 * i), prims[i]);
             /* load: identical, and saves to the same bytes */
             counting_on();
             ck_assert_int_eq(atrbvh_load_memory(d, n, &l, &e), ATRBVH_OK);
-            ck_assert_uint_le(largest_request, ALLOC_BOUND(n));
+            ck_assert_uint_le(tu_alloc.largest, ALLOC_BOUND(n));
             counting_off();
             ck_assert_int_eq(atrbvh_compare(b, l, &e), 0);
             ck_assert_msg(tu_same_bvh(b, l, msg, sizeof msg), "%s", msg);
@@ -260,7 +209,7 @@ START_TEST(round_trip_file)
     same_stats(b, l);
     /* the file holds exactly save_memory's bytes */
     save_mem(b, &d, &n);
-    ck_assert_uint_le(largest_request, ALLOC_BOUND(n));
+    ck_assert_uint_le(tu_alloc.largest, ALLOC_BOUND(n));
     fd = malloc(n + 16);
     f = fopen(path, "rb");
     ck_assert_ptr_nonnull(f);
@@ -328,14 +277,14 @@ static int load_corrupt(const unsigned char *d, size_t n, size_t off,
     atrbvh_status s;
     counting_on();
     s = atrbvh_load_memory(d, n, &l, &e);
-    ck_assert_msg(largest_request <= ALLOC_BOUND(n),
+    ck_assert_msg(tu_alloc.largest <= ALLOC_BOUND(n),
                   "byte %zu: an allocation of %zu bytes for %zu bytes of data",
-                  off, largest_request, n);
+                  off, tu_alloc.largest, n);
     if (s != ATRBVH_OK) {
         counting_off();
         ck_assert_ptr_null(l);
-        ck_assert_msg(live_blocks == 0, "byte %zu: %zu blocks leaked", off,
-                      live_blocks);
+        ck_assert_msg(tu_alloc.outstanding == 0, "byte %zu: %ld blocks leaked",
+                      off, tu_alloc.outstanding);
         ck_assert_int_eq(e.status, s);
         ck_assert_msg(s == ATRBVH_ERR_FORMAT, "byte %zu: status %d (%s)", off,
                       (int)s, e.text);
@@ -385,7 +334,7 @@ START_TEST(single_byte_corruption)
                 load_corrupt(c, n, off, b, 0); /* stale checksum */
             if (off >= n - 4)
                 continue; /* fixing the checksum would undo it */
-            fix_crc(c, n);
+            tu_fix_crc(c, n);
             if (load_corrupt(c, n, off, b, 1))
                 loaded++;
             else
@@ -417,7 +366,7 @@ START_TEST(truncation)
         ck_assert_int_eq(atrbvh_load_memory(t, len, &l, &e),
                          ATRBVH_ERR_FORMAT);
         counting_off();
-        ck_assert_uint_eq(largest_request, 0);
+        ck_assert_uint_eq(tu_alloc.largest, 0);
         ck_assert_ptr_null(l);
         ck_assert_msg(strstr(e.text, "truncated") != NULL, "%zu: %s", len,
                       e.text);
@@ -457,14 +406,14 @@ START_TEST(huge_counts)
             atrbvh_status s;
             memcpy(c, d, n);
             wr64(c + fields[f], huge[i]);
-            fix_crc(c, n);
+            tu_fix_crc(c, n);
             counting_on();
             s = atrbvh_load_memory(c, n, &l, &e);
             counting_off();
-            ck_assert_msg(largest_request <= ALLOC_BOUND(n),
+            ck_assert_msg(tu_alloc.largest <= ALLOC_BOUND(n),
                           "count %llu at byte %zu: allocated %zu",
                           (unsigned long long)huge[i], fields[f],
-                          largest_request);
+                          tu_alloc.largest);
             if (fields[f] == 48 && huge[i] <= ((uint64_t)1 << 30) &&
                 huge[i] >= 30) {
                 /* a large input count with few primitives kept is valid */
@@ -511,7 +460,7 @@ START_TEST(structural_errors)
     c = malloc(n);
 #define TRY(expect_word)                                                       \
     do {                                                                       \
-        fix_crc(c, n);                                                         \
+        tu_fix_crc(c, n);                                                      \
         ck_assert_int_eq(atrbvh_load_memory(c, n, &l, &e), ATRBVH_ERR_FORMAT); \
         ck_assert_msg(strstr(e.text, (expect_word)) != NULL, "'%s' lacks '%s'", \
                       e.text, (expect_word));                                  \
@@ -519,11 +468,11 @@ START_TEST(structural_errors)
     ck_assert_uint_eq(nodes[0].count, 0);
     /* root's right child out of range */
     memcpy(c, d, n);
-    wr32(c + 96 + 24, 4000);
+    tu_wr32(c + 96 + 24, 4000);
     TRY("node 0 at byte 96: right child 4000 out of range");
     /* right child pointing at the left child */
     memcpy(c, d, n);
-    wr32(c + 96 + 24, 1);
+    tu_wr32(c + 96 + 24, 1);
     TRY("right child 1 out of range");
     /* a leaf's range beyond the indices */
     {
@@ -531,10 +480,10 @@ START_TEST(structural_errors)
         for (i = 0; i < nn && nodes[i].count == 0; i++)
             ;
         memcpy(c, d, n);
-        wr32(c + 96 + 32 * i + 24, (uint32_t)np);
+        tu_wr32(c + 96 + 32 * i + 24, (uint32_t)np);
         TRY("beyond");
         memcpy(c, d, n);
-        wr32(c + 96 + 32 * i + 28, 0); /* the leaf becomes internal */
+        tu_wr32(c + 96 + 32 * i + 28, 0); /* the leaf becomes internal */
         TRY("out of range");
     }
     /* a duplicated primitive */
@@ -543,21 +492,21 @@ START_TEST(structural_errors)
     TRY("referenced twice");
     /* an index beyond the input count */
     memcpy(c, d, n);
-    wr32(c + 96 + 32 * nn + 8, 16);
+    tu_wr32(c + 96 + 32 * nn + 8, 16);
     TRY("primitive index 2 at byte");
     /* NaN and inverted boxes */
     memcpy(c, d, n);
-    wr32(c + 96 + 32 * 3 + 8, 0x7fc00000u);
+    tu_wr32(c + 96 + 32 * 3 + 8, 0x7fc00000u);
     TRY("node 3 at byte 192: min[2] is not finite");
     memcpy(c, d, n);
-    wr32(c + 96 + 32 * 3 + 16, 0xff800000u);
+    tu_wr32(c + 96 + 32 * 3 + 16, 0xff800000u);
     TRY("max[1] is not finite");
     memcpy(c, d, n);
     {
         float lo = 100.0f;
         uint32_t bits;
         memcpy(&bits, &lo, 4);
-        wr32(c + 96 + 32 * 2, bits);
+        tu_wr32(c + 96 + 32 * 2, bits);
     }
     TRY("node 2 at byte 160: min[0] 100 is above max[0]");
     /* header fields */
@@ -565,16 +514,16 @@ START_TEST(structural_errors)
     c[3] = 'X';
     TRY("magic");
     memcpy(c, d, n);
-    wr32(c + 8, 3);
+    tu_wr32(c + 8, 3);
     TRY("version 3");
     memcpy(c, d, n);
-    wr32(c + 8, 2); /* flags stay 0 */
+    tu_wr32(c + 8, 2); /* flags stay 0 */
     TRY("version 2 without the split flag");
     memcpy(c, d, n);
-    wr32(c + 16, 4);
+    tu_wr32(c + 16, 4);
     TRY("flags");
     memcpy(c, d, n);
-    wr32(c + 20, 3);
+    tu_wr32(c + 20, 3);
     TRY("method 3");
     memcpy(c, d, n);
     wr64(c + 32, 0);
@@ -586,7 +535,7 @@ START_TEST(structural_errors)
     wr64(c + 56, 0x7ff0000000000000ull);
     TRY("ci");
     memcpy(c, d, n);
-    wr32(c + 84, 1);
+    tu_wr32(c + 84, 1);
     TRY("reserved");
     free(c);
     free(d);
@@ -619,8 +568,8 @@ START_TEST(compare_names_difference)
         float f = nodes[5].max[1] + 0.5f;
         uint32_t bits;
         memcpy(&bits, &f, 4);
-        wr32(c + 96 + 32 * 5 + 16, bits);
-        fix_crc(c, n);
+        tu_wr32(c + 96 + 32 * 5 + 16, bits);
+        tu_fix_crc(c, n);
         ck_assert_int_eq(atrbvh_load_memory(c, n, &l, &e), ATRBVH_OK);
         ck_assert_int_ne(atrbvh_compare(b, l, &e), 0);
         snprintf(want, sizeof want, "node 5 differs: max[1] %.9g vs %.9g",
@@ -647,7 +596,7 @@ START_TEST(compare_names_difference)
             memcpy(&bits, &ci, 8);
             wr64(c + 56, bits);
         }
-        fix_crc(c, n);
+        tu_fix_crc(c, n);
         ck_assert_int_eq(atrbvh_load_memory(c, n, &l, &e), ATRBVH_OK);
         ck_assert_int_ne(atrbvh_compare(b, l, &e), 0);
         ck_assert_msg(strstr(e.text, "ci differs"), "%s", e.text);
@@ -658,11 +607,11 @@ START_TEST(compare_names_difference)
     {
         unsigned char t[4];
         unsigned char *p = c + 96 + 32 * nn;
-        uint32_t a = rd32(p + 4 * 7), z = rd32(p + 4 * 9);
+        uint32_t a = tu_rd32(p + 4 * 7), z = tu_rd32(p + 4 * 9);
         memcpy(t, p + 4 * 7, 4);
         memcpy(p + 4 * 7, p + 4 * 9, 4);
         memcpy(p + 4 * 9, t, 4);
-        fix_crc(c, n);
+        tu_fix_crc(c, n);
         ck_assert_int_eq(atrbvh_load_memory(c, n, &l, &e), ATRBVH_OK);
         ck_assert_int_ne(atrbvh_compare(b, l, &e), 0);
         snprintf(want, sizeof want, "primitive index 7 differs: %u vs %u",
@@ -728,8 +677,8 @@ START_TEST(deep_tree_traversal)
             }
     }
     memcpy(d, "ATRBVH\0\n", 8);
-    wr32(d + 8, 1);
-    wr32(d + 12, 96);
+    tu_wr32(d + 8, 1);
+    tu_wr32(d + 12, 96);
     wr64(d + 32, nn);
     wr64(d + 40, leaves);
     wr64(d + 48, leaves);
@@ -764,14 +713,14 @@ START_TEST(deep_tree_traversal)
         for (a = 0; a < 6; a++) {
             uint32_t bits;
             memcpy(&bits, &b[a], 4);
-            wr32(q + 4 * a, bits);
+            tu_wr32(q + 4 * a, bits);
         }
-        wr32(q + 24, idx);
-        wr32(q + 28, cnt);
+        tu_wr32(q + 24, idx);
+        tu_wr32(q + 28, cnt);
     }
     for (i = 0; i < leaves; i++)
-        wr32(d + 96 + 32 * nn + 4 * i, (uint32_t)i);
-    fix_crc(d, n);
+        tu_wr32(d + 96 + 32 * nn + 4 * i, (uint32_t)i);
+    tu_fix_crc(d, n);
     ck_assert_msg(atrbvh_load_memory(d, n, &deep, &e) == ATRBVH_OK, "%s",
                   e.text);
     atrbvh_bvh_stats(deep, &st);
@@ -1161,10 +1110,5 @@ static Suite *suite(void)
 
 int main(void)
 {
-    SRunner *sr = srunner_create(suite());
-    int failed;
-    srunner_run_all(sr, CK_NORMAL);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return tu_run(suite());
 }

@@ -33,6 +33,7 @@
 #include <unistd.h>
 
 #include "scene.h"
+#include "testutil.h"
 
 static char tmpdir[256];
 
@@ -1199,8 +1200,7 @@ int main(void)
     TCase *obj = tcase_create("obj");
     TCase *gen = tcase_create("builtin");
     TCase *cam = tcase_create("camera");
-    SRunner *sr;
-    int failed;
+    int status;
     if (!make_tmpdir())
         return EXIT_FAILURE;
     tcase_set_timeout(ply, 60);
@@ -1232,10 +1232,7 @@ int main(void)
     tcase_add_test(cam, camera_frames_box);
     tcase_add_test(cam, camera_deterministic_and_distinct);
     suite_add_tcase(s, cam);
-    sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
+    status = tu_run(s);
     remove_tmpdir();
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return status;
 }

@@ -1257,10 +1257,5 @@ static Suite *optimise_suite(void)
 
 int main(void)
 {
-    SRunner *sr = srunner_create(optimise_suite());
-    int failed;
-    srunner_run_all(sr, CK_ENV);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return tu_run(optimise_suite());
 }

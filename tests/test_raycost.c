@@ -35,23 +35,11 @@ typedef struct scene_t {
 
 static void scene_make(scene_t *s, size_t n, uint64_t seed)
 {
-    size_t i;
-    int k;
     s->n = n;
     s->v = tu_random_triangles(n, seed, 10.0f, 0.0f);
     ck_assert(s->v != NULL);
     s->g = atrbvh_geometry_triangles(s->v, 3 * n, NULL, n);
-    for (k = 0; k < 3; k++) {
-        s->lo[k] = INFINITY;
-        s->hi[k] = -INFINITY;
-    }
-    for (i = 0; i < 3 * n; i++)
-        for (k = 0; k < 3; k++) {
-            if (s->v[3 * i + k] < s->lo[k])
-                s->lo[k] = s->v[3 * i + k];
-            if (s->v[3 * i + k] > s->hi[k])
-                s->hi[k] = s->v[3 * i + k];
-        }
+    tu_bounds(&s->g, s->lo, s->hi);
 }
 
 /* Rays from inside and outside the scene box; a quarter aimed away from
@@ -564,10 +552,5 @@ static Suite *suite(void)
 
 int main(void)
 {
-    SRunner *sr = srunner_create(suite());
-    int failed;
-    srunner_run_all(sr, CK_NORMAL);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return tu_run(suite());
 }

@@ -497,38 +497,6 @@ START_TEST(skip_invalid_with_split)
 }
 END_TEST
 
-static uint32_t rd32(const unsigned char *p)
-{
-    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 |
-           (uint32_t)p[3] << 24;
-}
-
-static void wr32(unsigned char *p, uint32_t v)
-{
-    p[0] = (unsigned char)v;
-    p[1] = (unsigned char)(v >> 8);
-    p[2] = (unsigned char)(v >> 16);
-    p[3] = (unsigned char)(v >> 24);
-}
-
-static uint32_t crc32_ref(const unsigned char *p, size_t n)
-{
-    uint32_t c = 0xffffffffu;
-    size_t i;
-    int k;
-    for (i = 0; i < n; i++) {
-        c ^= p[i];
-        for (k = 0; k < 8; k++)
-            c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
-    }
-    return ~c;
-}
-
-static void fix_crc(unsigned char *d, size_t n)
-{
-    wr32(d + n - 4, crc32_ref(d, n - 4));
-}
-
 START_TEST(save_load_versions)
 {
     const size_t nt = 800;
@@ -549,8 +517,8 @@ START_TEST(save_load_versions)
     /* split: version 2, the split flag; loads back equal */
     ck_assert_int_eq(atrbvh_save_memory(b, &data, &size, &e), ATRBVH_OK);
     c = data;
-    ck_assert_uint_eq(rd32(c + 8), 2);
-    ck_assert_uint_eq(rd32(c + 16), 1);
+    ck_assert_uint_eq(tu_rd32(c + 8), 2);
+    ck_assert_uint_eq(tu_rd32(c + 16), 1);
     ck_assert_int_eq(atrbvh_load_memory(data, size, &l, &e), ATRBVH_OK);
     ck_assert_msg(atrbvh_compare(b, l, &e) == 0, "%s", e.text);
     ck_assert_int_eq(atrbvh_bvh_stats(b, &sb), ATRBVH_OK);
@@ -561,17 +529,17 @@ START_TEST(save_load_versions)
     check_split_tree(l, v, nt, 0.5);
     atrbvh_bvh_free(l);
     /* the same bytes as version 1 (flags 0): a shared primitive fails */
-    wr32(c + 8, 1);
-    wr32(c + 16, 0);
-    fix_crc(c, size);
+    tu_wr32(c + 8, 1);
+    tu_wr32(c + 16, 0);
+    tu_fix_crc(c, size);
     ck_assert_int_eq(atrbvh_load_memory(data, size, &l, &e),
                      ATRBVH_ERR_FORMAT);
     ck_assert_msg(strstr(e.text, "referenced twice") ||
                       strstr(e.text, "input primitive count"),
                   "%s", e.text);
     /* version 2 with the flag, a primitive twice in one leaf: fails */
-    wr32(c + 8, 2);
-    wr32(c + 16, 1);
+    tu_wr32(c + 8, 2);
+    tu_wr32(c + 16, 1);
     nodes = atrbvh_bvh_nodes(b, &nn);
     (void)atrbvh_bvh_primitive_indices(b, &np);
     for (i = 0; i < nn; i++)
@@ -582,13 +550,13 @@ START_TEST(save_load_versions)
         }
     ck_assert_uint_lt(i, nn);
     memcpy(c + 96 + 32 * nn + 4 * leaf_b, c + 96 + 32 * nn + 4 * leaf_a, 4);
-    fix_crc(c, size);
+    tu_fix_crc(c, size);
     ck_assert_int_eq(atrbvh_load_memory(data, size, &l, &e),
                      ATRBVH_ERR_FORMAT);
     ck_assert_ptr_nonnull(strstr(e.text, "twice"));
     /* an unknown flag of version 2 */
-    wr32(c + 16, 3);
-    fix_crc(c, size);
+    tu_wr32(c + 16, 3);
+    tu_fix_crc(c, size);
     ck_assert_int_eq(atrbvh_load_memory(data, size, &l, &e),
                      ATRBVH_ERR_FORMAT);
     ck_assert_ptr_nonnull(strstr(e.text, "flags"));
@@ -597,8 +565,8 @@ START_TEST(save_load_versions)
     /* unsplit: still version 1, flags 0, and loads */
     ck_assert_int_eq(atrbvh_save_memory(plain, &data, &size, &e), ATRBVH_OK);
     c = data;
-    ck_assert_uint_eq(rd32(c + 8), 1);
-    ck_assert_uint_eq(rd32(c + 16), 0);
+    ck_assert_uint_eq(tu_rd32(c + 8), 1);
+    ck_assert_uint_eq(tu_rd32(c + 16), 0);
     ck_assert_int_eq(atrbvh_load_memory(data, size, &l, &e), ATRBVH_OK);
     ck_assert_msg(atrbvh_compare(plain, l, &e) == 0, "%s", e.text);
     atrbvh_bvh_free(l);
@@ -626,28 +594,6 @@ START_TEST(refit_refuses_split_trees)
 }
 END_TEST
 
-/* Counting allocator: outstanding blocks, and a countdown to failure
- * (the library's allocator is process-wide: set only around the loop). */
-static long outstanding, countdown = -1;
-static void *count_malloc(size_t n)
-{
-    void *p;
-    if (countdown == 0)
-        return NULL;
-    if (countdown > 0)
-        countdown--;
-    p = malloc(n);
-    if (p)
-        outstanding++;
-    return p;
-}
-static void count_free(void *p)
-{
-    if (p)
-        outstanding--;
-    free(p);
-}
-
 /* Each allocation of a split build (threads 1 and 3, skip_invalid on and
  * off) failing in turn: ATRBVH_ERR_NOMEM with nothing leaked, until the
  * build succeeds. */
@@ -663,29 +609,28 @@ START_TEST(allocation_failures)
         long k;
         o.threads = variant ? 3 : 1;
         o.skip_invalid = 1;
-        atrbvh_set_allocator(count_malloc, count_free);
+        atrbvh_set_allocator(tu_count_malloc, tu_count_free);
         for (k = 0;; k++) {
             atrbvh_bvh *b = NULL;
             atrbvh_error e;
             atrbvh_status st;
-            outstanding = 0;
-            countdown = k;
+            tu_count_reset(k);
             st = atrbvh_build(&g, &o, &b, &e);
-            countdown = -1;
+            tu_alloc.countdown = -1;
             if (st == ATRBVH_OK) {
                 size_t np;
                 (void)atrbvh_bvh_primitive_indices(b, &np);
                 ck_assert_uint_gt(np, nt);
                 atrbvh_bvh_free(b);
-                ck_assert_int_eq(outstanding, 0);
+                ck_assert_int_eq(tu_alloc.outstanding, 0);
                 break;
             }
             ck_assert_msg(st == ATRBVH_ERR_NOMEM, "allocation %ld: %s (%s)",
                           k, atrbvh_strerror(st), e.text);
             ck_assert_ptr_null(b);
-            ck_assert_msg(outstanding == 0, "allocation %ld failed: %ld "
-                                            "leaked",
-                          k, outstanding);
+            ck_assert_msg(tu_alloc.outstanding == 0,
+                          "allocation %ld failed: %ld leaked", k,
+                          tu_alloc.outstanding);
         }
         atrbvh_set_allocator(NULL, NULL);
         ck_assert_int_gt(k, 8); /* the split's own allocations among them */
@@ -715,10 +660,5 @@ static Suite *suite(void)
 
 int main(void)
 {
-    SRunner *r = srunner_create(suite());
-    int failed;
-    srunner_run_all(r, CK_NORMAL);
-    failed = srunner_ntests_failed(r);
-    srunner_free(r);
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return tu_run(suite());
 }

@@ -205,16 +205,10 @@ int main(void)
 {
     Suite *s = suite_create("stages");
     TCase *tc = tcase_create("stages");
-    SRunner *sr;
-    int failed;
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, radix_sort_is_stable_and_sorted);
     tcase_add_test(tc, morton_keys);
     tcase_add_test(tc, hierarchy_is_karras);
     suite_add_tcase(s, tc);
-    sr = srunner_create(s);
-    srunner_run_all(sr, CK_NORMAL);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return tu_run(s);
 }

@@ -151,15 +151,9 @@ int main(void)
 {
     Suite *s = suite_create("threads");
     TCase *tc = tcase_create("opencl");
-    SRunner *sr;
-    int failed;
     tcase_add_test(tc, threads_open_build_close);
     tcase_add_test(tc, threads_share_one_device);
     tcase_set_timeout(tc, 600);
     suite_add_tcase(s, tc);
-    sr = srunner_create(s);
-    srunner_run_all(sr, CK_ENV);
-    failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed ? 1 : 0;
+    return tu_run(s);
 }

@@ -23,14 +23,29 @@ static int failf(char *msg, size_t len, const char *fmt, ...)
     return 0;
 }
 
+const float *tu_vertex(const atrbvh_geometry *g, size_t i, int c)
+{
+    size_t vs = g->vertex_stride ? g->vertex_stride : 12;
+    size_t is = g->index_stride ? g->index_stride : 12;
+    size_t v = g->indices
+                   ? ((const uint32_t *)((const char *)g->indices + i * is))[c]
+                   : 3 * i + (size_t)c;
+    return (const float *)((const char *)g->vertices + v * vs);
+}
+
+const float *tu_box(const atrbvh_geometry *g, size_t i)
+{
+    size_t bs = g->box_stride ? g->box_stride : 24;
+    return (const float *)((const char *)g->boxes + i * bs);
+}
+
 /* Box of primitive i, straight from the geometry. */
 static void prim_box(const atrbvh_geometry *g, size_t i, float lo[3],
                      float hi[3])
 {
     int k, c;
     if (g->type == ATRBVH_GEOMETRY_BOXES) {
-        size_t stride = g->box_stride ? g->box_stride : 24;
-        const float *b = (const float *)((const char *)g->boxes + i * stride);
+        const float *b = tu_box(g, i);
         for (k = 0; k < 3; k++) {
             lo[k] = b[k];
             hi[k] = b[k + 3];
@@ -42,17 +57,32 @@ static void prim_box(const atrbvh_geometry *g, size_t i, float lo[3],
         hi[k] = -INFINITY;
     }
     for (c = 0; c < 3; c++) {
-        size_t vs = g->vertex_stride ? g->vertex_stride : 12;
-        size_t is = g->index_stride ? g->index_stride : 12;
-        size_t v = g->indices
-                       ? ((const uint32_t *)((const char *)g->indices + i * is))[c]
-                       : 3 * i + (size_t)c;
-        const float *p = (const float *)((const char *)g->vertices + v * vs);
+        const float *p = tu_vertex(g, i, c);
         for (k = 0; k < 3; k++) {
             if (p[k] < lo[k])
                 lo[k] = p[k];
             if (p[k] > hi[k])
                 hi[k] = p[k];
+        }
+    }
+}
+
+void tu_bounds(const atrbvh_geometry *g, float lo[3], float hi[3])
+{
+    size_t i;
+    int k;
+    for (k = 0; k < 3; k++) {
+        lo[k] = INFINITY;
+        hi[k] = -INFINITY;
+    }
+    for (i = 0; i < g->primitive_count; i++) {
+        float plo[3], phi[3];
+        prim_box(g, i, plo, phi);
+        for (k = 0; k < 3; k++) {
+            if (plo[k] < lo[k])
+                lo[k] = plo[k];
+            if (phi[k] > hi[k])
+                hi[k] = phi[k];
         }
     }
 }
@@ -70,20 +100,14 @@ static int prim_valid(const atrbvh_geometry *g, size_t i)
 {
     int k, c;
     if (g->type == ATRBVH_GEOMETRY_BOXES) {
-        size_t stride = g->box_stride ? g->box_stride : 24;
-        const float *b = (const float *)((const char *)g->boxes + i * stride);
+        const float *b = tu_box(g, i);
         for (k = 0; k < 6; k++)
             if (!isfinite(b[k]))
                 return 0;
         return 1;
     }
     for (c = 0; c < 3; c++) {
-        size_t vs = g->vertex_stride ? g->vertex_stride : 12;
-        size_t is = g->index_stride ? g->index_stride : 12;
-        size_t v = g->indices
-                       ? ((const uint32_t *)((const char *)g->indices + i * is))[c]
-                       : 3 * i + (size_t)c;
-        const float *p = (const float *)((const char *)g->vertices + v * vs);
+        const float *p = tu_vertex(g, i, c);
         for (k = 0; k < 3; k++)
             if (!isfinite(p[k]))
                 return 0;
@@ -361,4 +385,81 @@ atrbvh_bvh *tu_build(const atrbvh_geometry *g, const atrbvh_build_options *o)
     ck_assert_msg(s == ATRBVH_OK, "build failed: %s (%s)", atrbvh_strerror(s),
                   e.text);
     return b;
+}
+
+tu_alloc_counts tu_alloc = {0, -1, 0, 0, 0};
+
+void *tu_count_malloc(size_t n)
+{
+    void *p;
+    if (tu_alloc.countdown == 0)
+        return NULL;
+    if (tu_alloc.countdown > 0)
+        tu_alloc.countdown--;
+    tu_alloc.allocations++;
+    if (n > tu_alloc.largest)
+        tu_alloc.largest = n;
+    tu_alloc.total_bytes += n;
+    p = malloc(n);
+    if (p)
+        tu_alloc.outstanding++;
+    return p;
+}
+
+void tu_count_free(void *p)
+{
+    if (p)
+        tu_alloc.outstanding--;
+    free(p);
+}
+
+void tu_count_reset(long countdown)
+{
+    tu_alloc.outstanding = 0;
+    tu_alloc.countdown = countdown;
+    tu_alloc.allocations = 0;
+    tu_alloc.largest = 0;
+    tu_alloc.total_bytes = 0;
+}
+
+uint32_t tu_rd32(const unsigned char *p)
+{
+    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 |
+           (uint32_t)p[3] << 24;
+}
+
+void tu_wr32(unsigned char *p, uint32_t v)
+{
+    p[0] = (unsigned char)v;
+    p[1] = (unsigned char)(v >> 8);
+    p[2] = (unsigned char)(v >> 16);
+    p[3] = (unsigned char)(v >> 24);
+}
+
+uint32_t tu_crc32(const unsigned char *p, size_t n)
+{
+    uint32_t c = 0xffffffffu;
+    size_t i;
+    int k;
+    for (i = 0; i < n; i++) {
+        c ^= p[i];
+        for (k = 0; k < 8; k++)
+            c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
+    }
+    return ~c;
+}
+
+void tu_fix_crc(unsigned char *d, size_t n)
+{
+    tu_wr32(d + n - 4, tu_crc32(d, n - 4));
+}
+
+int tu_run(Suite *s)
+{
+    SRunner *sr = srunner_create(s);
+    int failed;
+    srunner_run_all(sr, CK_ENV);
+    failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed ? EXIT_FAILURE : EXIT_SUCCESS;
 }

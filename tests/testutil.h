@@ -5,6 +5,7 @@
 #ifndef ATRBVH_TESTUTIL_H
 #define ATRBVH_TESTUTIL_H
 
+#include <check.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -19,6 +20,13 @@
  * relative.  Returns 1 when all hold; else 0 with the reason in msg. */
 int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
                  size_t msg_len);
+
+/* Primitive i of g as the library reads it (strides, indices): vertex c
+ * (0..2) of a triangle, or the box's 6 floats (min x, y, z, max x, y, z). */
+const float *tu_vertex(const atrbvh_geometry *g, size_t i, int c);
+const float *tu_box(const atrbvh_geometry *g, size_t i);
+/* The box around every primitive of g (NaN coordinates ignored). */
+void tu_bounds(const atrbvh_geometry *g, float lo[3], float hi[3]);
 
 /* Bit-for-bit equality of two builds (nodes, indices, SAH); 1 if equal,
  * else 0 with the first difference in msg. */
@@ -46,5 +54,36 @@ float *tu_random_triangles(size_t n, uint64_t seed, float scale, float offset);
 
 /* Builds with options (threads set), failing the current test on error. */
 atrbvh_bvh *tu_build(const atrbvh_geometry *g, const atrbvh_build_options *o);
+
+/* A counting allocator, to pass to atrbvh_set_allocator(tu_count_malloc,
+ * tu_count_free), counting into tu_alloc.  A request fails (NULL) when the
+ * countdown is at 0; one that does not fail by it counts in allocations,
+ * largest and total_bytes, and a block returned in outstanding until freed.
+ * The library's allocator is process-wide: set it only around the code
+ * measured, and back to atrbvh_set_allocator(NULL, NULL) after. */
+typedef struct tu_alloc_counts {
+    long outstanding;   /* blocks allocated and not yet freed */
+    long countdown;     /* requests left before they fail; -1: none fails */
+    long allocations;   /* requests that did not fail by the countdown */
+    size_t largest;     /* the largest of those requests, in bytes */
+    size_t total_bytes; /* their bytes, all together */
+} tu_alloc_counts;
+extern tu_alloc_counts tu_alloc;
+void *tu_count_malloc(size_t n);
+void tu_count_free(void *p);
+/* All counts to zero; the countdown as given (-1: no request fails). */
+void tu_count_reset(long countdown);
+
+/* Little-endian 32-bit words of the file formats, and their CRC-32
+ * (IEEE, bitwise), written here independently of the library. */
+uint32_t tu_rd32(const unsigned char *p);
+void tu_wr32(unsigned char *p, uint32_t v);
+uint32_t tu_crc32(const unsigned char *p, size_t n);
+/* Rewrites the last 4 bytes of d[0..n) as the CRC-32 of those before. */
+void tu_fix_crc(unsigned char *d, size_t n);
+
+/* Runs every test of s (verbosity CK_VERBOSITY, default normal);
+ * EXIT_SUCCESS when all passed, else EXIT_FAILURE. */
+int tu_run(Suite *s);
 
 #endif

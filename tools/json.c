@@ -40,54 +40,54 @@ static void before_value(json_writer *w)
     }
 }
 
-void json_begin_object(json_writer *w)
+/* Objects and arrays: the opening character, one more level; the closing
+ * one after the last member's line. */
+static void begin_level(json_writer *w, int open)
 {
     before_value(w);
-    fputc('{', w->f);
+    fputc(open, w->f);
     if (w->depth < JSON_MAX_DEPTH) {
         w->count[w->depth] = 0;
         w->depth++;
     }
+}
+
+static void end_level(json_writer *w, int close)
+{
+    int had = 0;
+    if (w->depth > 0) {
+        had = w->count[w->depth - 1] > 0;
+        w->depth--;
+    }
+    if (had)
+        indent(w);
+    fputc(close, w->f);
+}
+
+void json_begin_object(json_writer *w)
+{
+    begin_level(w, '{');
 }
 
 void json_end_object(json_writer *w)
 {
-    int had = 0;
-    if (w->depth > 0) {
-        had = w->count[w->depth - 1] > 0;
-        w->depth--;
-    }
-    if (had)
-        indent(w);
-    fputc('}', w->f);
+    end_level(w, '}');
     if (w->depth == 0)
         fputc('\n', w->f);
 }
 
-/* Length of the valid UTF-8 sequence at s (1..4), or 0 if invalid. */
 /* Arrays: the same layout as objects, without keys. */
 void json_begin_array(json_writer *w)
 {
-    before_value(w);
-    fputc('[', w->f);
-    if (w->depth < JSON_MAX_DEPTH) {
-        w->count[w->depth] = 0;
-        w->depth++;
-    }
+    begin_level(w, '[');
 }
 
 void json_end_array(json_writer *w)
 {
-    int had = 0;
-    if (w->depth > 0) {
-        had = w->count[w->depth - 1] > 0;
-        w->depth--;
-    }
-    if (had)
-        indent(w);
-    fputc(']', w->f);
+    end_level(w, ']');
 }
 
+/* Length of the valid UTF-8 sequence at s (1..4), or 0 if invalid. */
 static size_t utf8_len(const unsigned char *s)
 {
     unsigned c = s[0];

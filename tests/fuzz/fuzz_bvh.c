@@ -6,27 +6,7 @@
  * object).  Mutating the checksum is hopeless, so the first byte of the
  * input says whether to fix the CRC up before loading. */
 #include "fuzz_common.h"
-
-static size_t largest;
-static void *counting_malloc(size_t n)
-{
-    if (n > largest)
-        largest = n;
-    return malloc(n);
-}
-
-static uint32_t crc32_ref(const unsigned char *p, size_t n)
-{
-    uint32_t c = 0xffffffffu;
-    size_t i;
-    int k;
-    for (i = 0; i < n; i++) {
-        c ^= p[i];
-        for (k = 0; k < 8; k++)
-            c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
-    }
-    return ~c;
-}
+#include "testutil.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -40,19 +20,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     n = size - 1;
     d = malloc(n ? n : 1);
     memcpy(d, data + 1, n);
-    if ((data[0] & 1) && n >= 4) {
-        uint32_t c = crc32_ref(d, n - 4);
-        d[n - 4] = (unsigned char)c;
-        d[n - 3] = (unsigned char)(c >> 8);
-        d[n - 2] = (unsigned char)(c >> 16);
-        d[n - 1] = (unsigned char)(c >> 24);
-    }
-    largest = 0;
-    atrbvh_set_allocator(counting_malloc, free);
+    if ((data[0] & 1) && n >= 4)
+        tu_fix_crc(d, n);
+    tu_count_reset(-1);
+    atrbvh_set_allocator(tu_count_malloc, tu_count_free);
     st = atrbvh_load_memory(d, n, &b, &e);
     atrbvh_set_allocator(NULL, NULL);
-    FUZZ_CHECK(largest <= (n > 512 ? n : 512), "allocated %zu for %zu bytes",
-               largest, n);
+    FUZZ_CHECK(tu_alloc.largest <= (n > 512 ? n : 512),
+               "allocated %zu for %zu bytes", tu_alloc.largest, n);
     if (st != ATRBVH_OK) {
         FUZZ_CHECK(b == NULL, "failed but returned a BVH");
         FUZZ_CHECK(st == ATRBVH_ERR_FORMAT || st == ATRBVH_ERR_NOMEM,

@@ -35,7 +35,7 @@ for h in $harnesses; do
     src="tests/fuzz/fuzz_$h.c"
     bin="$out/fuzz_$h"
     extra=""
-    [ "$h" = build ] && extra="tests/testutil.c $(pkg-config --cflags --libs check 2>/dev/null || echo -lcheck)"
+    case $h in build | bvh) extra="tests/testutil.c $(pkg-config --cflags --libs check 2>/dev/null || echo -lcheck)" ;; esac
     # shellcheck disable=SC2086
     if ! $CC $CFLAGS -o "$bin" "$src" $LIB $SCENE $extra -lm 2>"$out/cc-$h.log"; then
         cat "$out/cc-$h.log"
