@@ -1,0 +1,100 @@
+#!/bin/sh
+# speed.sh - the build-speed section of docs/benchmarks.md end to end on a
+# tiny scene: tools/embree-alone (the standalone rtcBuildBVH timing) prints
+# one positive median per Embree quality, and docs/speed_tables.py turns a
+# bench CSV, the scaling CSV and that output into the section, leaving the
+# rest of the document as it was, with every ratio and ns/triangle cell
+# recomputed here from the CSV.  Skipped without Embree or python3.
+# Run by `make check` with ATRBVH_BUILDDIR and ATRBVH_SRCDIR set.
+
+# shellcheck source-path=SCRIPTDIR source=common.sh
+. "$(dirname "$0")/common.sh"
+ALONE=$BUILDDIR/tools/embree-alone
+setup speed python3
+if [ ! -x "$ALONE" ]; then
+    echo "speed.sh: built without Embree (no tools/embree-alone), skipped" >&2
+    exit 77
+fi
+
+SCENE=builtin:sphere:4000
+OUT=$T/out.d
+mkdir -p "$OUT" || exit 99
+
+# ------------------------------------------------------- embree-alone
+checks=$((checks + 1))
+if "$ALONE" "$SCENE" 2 3 >"$OUT/embree-alone.txt" 2>"$T/alone.err"; then
+    grep -q "^# embree-alone $SCENE:" "$OUT/embree-alone.txt" ||
+        fail "embree-alone: no '# embree-alone $SCENE:' header"
+    for q in low medium high; do
+        grep -Eq "^embree_$q [0-9]+\.[0-9]+ ms" "$OUT/embree-alone.txt" ||
+            fail "embree-alone: no median for embree_$q"
+        grep -Eq "^embree_$q 0\.0+ ms" "$OUT/embree-alone.txt" &&
+            fail "embree-alone: embree_$q took no time"
+    done
+else
+    fail "embree-alone $SCENE 2 3 failed: $(cat "$T/alone.err")"
+fi
+checks=$((checks + 1))
+"$ALONE" builtin:nothing 2 3 >/dev/null 2>"$T/alone.err" &&
+    fail "embree-alone accepted an unknown scene"
+
+# ------------------------------------------------- the CSVs and the doc
+run 0 bench "$SCENE" --no-rays --repeat 1 --threads 2 \
+    --configs lbvh,atrbvh:9:2,atrbvh:16:3,trbvh:7:3,embree \
+    --csv "$OUT/speed.csv"
+run 0 bench --scaling builtin:sphere --configs lbvh --threads 2 \
+    --repeat 1 --sizes 60000,120000 --csv "$OUT/speed-scaling.csv"
+printf 'date: test\nload before: 0 0 0\n' >"$OUT/speed-machine.txt"
+printf '# before\n<!-- BEGIN SPEED -->\nold text\n<!-- END SPEED -->\n# after\n' \
+    >"$T/doc.md"
+
+checks=$((checks + 1))
+if python3 "$SRCDIR/docs/speed_tables.py" "$OUT" "$T/doc.md" 2>"$T/py.err"; then
+    python3 - "$OUT" "$T/doc.md" "$SCENE" <<'PY' || fail "speed_tables.py: the section does not match its inputs"
+import csv, math, os, re, sys
+out, doc, S = sys.argv[1], sys.argv[2], sys.argv[3]
+text = open(doc).read()
+assert text.startswith("# before\n<!-- BEGIN SPEED -->\n"), "text before the section changed"
+assert text.endswith("<!-- END SPEED -->\n# after\n"), "text after the section changed"
+assert "old text" not in text, "the old section is still there"
+rows = list(csv.DictReader(open(os.path.join(out, "speed.csv"))))
+def ms(method, ts=None):
+    for r in rows:
+        if r["method"] == method and (ts is None or r["treelet_size"] == ts):
+            return float(r["build_ms"]), r
+    raise AssertionError("no %s row" % method)
+lb, r = ms("lbvh")
+lo, _ = ms("embree_low")
+me, _ = ms("embree_medium")
+at, _ = ms("atrbvh", "9")
+tr, _ = ms("trbvh", "7")
+line = [l for l in text.splitlines() if l.startswith("| %s | " % S)][0]
+cells = [c.strip().strip("*") for c in line.strip("|").split("|")]
+assert cells[1] == r["triangles"], cells
+for got, want in ((cells[2], lb / lo), (cells[3], at / me), (cells[4], tr / me)):
+    assert got == "%.2f" % want, (got, want)
+# a missed goal is bold, a met one is not
+assert ("**" in line.split("|")[3]) == (lb / lo > 0.8), line
+# the cross-check row of each quality: bench / alone
+alone = dict(re.findall(r"^(embree_\w+) ([0-9.]+) ms", open(os.path.join(out, "embree-alone.txt")).read(), re.M))
+for q in ("low", "medium", "high"):
+    b, _ = ms("embree_" + q)
+    want = "| %s | %s | %.1f | %.1f | %.2f |" % (S, q, b, float(alone["embree_" + q]), b / float(alone["embree_" + q]))
+    assert want in text, want
+# ns per triangle of the LBVH: total and every stage from the CSV
+n = float(r["triangles"])
+stages = ["bounds", "morton", "sort", "hierarchy", "refit", "optimise", "collapse", "layout"]
+want = "| %s | LBVH | %.0f | %s |" % (S, lb * 1e6 / n, " | ".join("%.0f" % (float(r[s + "_ms"]) * 1e6 / n) for s in stages))
+assert want in text, want
+# the growth exponent from the two scaling points
+sc = [x for x in csv.DictReader(open(os.path.join(out, "speed-scaling.csv"))) if x["method"] == "lbvh"]
+assert len(sc) == 2, sc
+(n0, t0), (n1, t1) = [(float(x["triangles"]), float(x["build_ms"])) for x in sc]
+k = math.log(t1 / t0) / math.log(n1 / n0)
+m = re.search(r"LBVH time ~ N\^(-?[0-9.]+) from 10\^5 \(2 points", text)
+assert m and abs(float(m.group(1)) - k) < 0.0015, (m and m.group(1), k)
+PY
+else
+    fail "speed_tables.py failed: $(cat "$T/py.err")"
+fi
+finish
