@@ -391,6 +391,25 @@ static int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
                     continue;
                 }
                 _mm_storeu_ps(t4, lo);
+                {
+                    /* two hits, the most common case: the nearer
+                     * visited, the other pushed */
+                    int l0 = m & 1 ? 0 : m & 2 ? 1 : 2;
+                    int rest = m & ~(1 << l0);
+                    if (!(rest & (rest - 1))) {
+                        int l1 = rest & 2 ? 1 : rest & 4 ? 2 : 3;
+                        if (t4[l1] < t4[l0]) {
+                            int sw = l0;
+                            l0 = l1;
+                            l1 = sw;
+                        }
+                        stack_node[sp] = n->child[l1];
+                        stack_t[sp] = t4[l1];
+                        sp++;
+                        cur = n->child[l0];
+                        continue;
+                    }
+                }
                 for (lane = 0; lane < 4; lane++) {
                     if (!(m >> lane & 1))
                         continue;
