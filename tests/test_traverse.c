@@ -1369,6 +1369,54 @@ START_TEST(wide_after_refit)
 }
 END_TEST
 
+/* Batches on several threads at once on a fresh tree: each may make the
+ * wide copy, one keeps it (the others free theirs: LeakSanitizer in the
+ * suite), and all give the counted batch's hits. */
+START_TEST(wide_concurrent_first_use)
+{
+    mesh m = soup(2000, 51, 10.0f, -5.0f);
+    atrbvh_geometry g = mesh_geometry(&m);
+    config c = {ATRBVH_METHOD_LBVH, 1, 4};
+    size_t n = 4096, i;
+    atrbvh_ray *rays = malloc(n * sizeof *rays);
+    atrbvh_hit *ref = malloc(n * sizeof *ref);
+    atrbvh_hit *hits = malloc(8 * n * sizeof *hits);
+    int round;
+    ck_assert(rays && ref && hits);
+    for (round = 0; round < 4; round++) {
+        atrbvh_bvh *b = build_config(&g, &c);
+        atrbvh_trace_stats ts;
+        atrbvh_error e;
+        int k, fails = 0;
+        grazing_rays(&m, b, n, 970 + (uint64_t)round, rays);
+        atrbvh_trace_stats_init(&ts);
+        ck_assert_int_eq(atrbvh_intersect_batch_stats(NULL, b, &g, rays, n,
+                                                      ref, 1, &ts, &e),
+                         ATRBVH_OK);
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(4) schedule(static, 1) reduction(+ : fails)
+#endif
+        for (k = 0; k < 8; k++) {
+            atrbvh_error ke;
+            if (atrbvh_intersect_batch(b, &g, rays, n, hits + (size_t)k * n, 1,
+                                       &ke) != ATRBVH_OK)
+                fails++;
+        }
+        ck_assert_int_eq(fails, 0);
+        for (k = 0; k < 8; k++)
+            for (i = 0; i < n; i++)
+                ck_assert_msg(memcmp(&hits[(size_t)k * n + i], &ref[i],
+                                     sizeof *ref) == 0,
+                              "round %d call %d ray %zu differs", round, k, i);
+        atrbvh_bvh_free(b);
+    }
+    free(rays);
+    free(ref);
+    free(hits);
+    mesh_free(&m);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("traverse");
@@ -1395,6 +1443,7 @@ static Suite *suite(void)
     t = tcase_create("wide");
     tcase_add_test(t, wide_batches);
     tcase_add_test(t, wide_after_refit);
+    tcase_add_test(t, wide_concurrent_first_use);
     tcase_set_timeout(t, 600);
     suite_add_tcase(s, t);
     return s;
