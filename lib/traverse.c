@@ -158,7 +158,9 @@ static void closest(const atrbvh_trav_scene *s, const atrbvh_ray *ray,
  * runs. */
 #ifdef ATRBVH_TRAV_SSE
 typedef struct wide_node {
-    float bmin[3][4], bmax[3][4]; /* axis, lane */
+    /* b[4 * axis + lane]: the lanes' minima; b[12 + 4 * axis + lane]:
+     * their maxima */
+    float b[24];
     /* >= 0: a wide node; < 0: ~(index of a binary leaf); lanes past
      * `lanes` unused */
     int32_t child[4];
@@ -207,7 +209,11 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
     if (node_count < 3 || nodes[0].count != 0u)
         return NULL;
     for (i = 0; i < node_count; i++) {
-        if (!box_finite(&nodes[i]))
+        /* finite and min <= max: the near plane of each axis is then
+         * known from the direction's sign (wide_run) */
+        if (!box_finite(&nodes[i]) || !(nodes[i].min[0] <= nodes[i].max[0]) ||
+            !(nodes[i].min[1] <= nodes[i].max[1]) ||
+            !(nodes[i].min[2] <= nodes[i].max[2]))
             return NULL;
         if (nodes[i].count == 0u) {
             if ((size_t)nodes[i].index <= i + 1 ||
@@ -254,8 +260,8 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
         for (lane = 0; lane < 4; lane++) {
             const atrbvh_node *c = &nodes[list[lane < lanes ? lane : 0]];
             for (axis = 0; axis < 3; axis++) {
-                w[i].bmin[axis][lane] = c->min[axis];
-                w[i].bmax[axis][lane] = c->max[axis];
+                w[i].b[4 * axis + lane] = c->min[axis];
+                w[i].b[12 + 4 * axis + lane] = c->max[axis];
             }
         }
         for (lane = 0; lane < 4; lane++) {
@@ -340,6 +346,11 @@ static int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
     __m128 widen = _mm_set1_ps(ATRBVH_TRAV_WIDEN_F);
     __m128 slack = _mm_set1_ps(ATRBVH_TRAV_SLACK_F);
     __m128 tlo4, thi4;
+    /* where each axis's near and far planes are, past its minima in
+     * wide_node.b: the minima (0) or the maxima (12) by the sign of the
+     * direction */
+    int nxo = r->idirf[0] < 0.0f ? 12 : 0, nyo = r->idirf[1] < 0.0f ? 12 : 0;
+    int nzo = r->idirf[2] < 0.0f ? 12 : 0;
     if (!(tlo == tlo))
         tlo = r->tmin;
     best->t = r->tmax;
@@ -366,19 +377,25 @@ static int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
             }
         } else {
             const wide_node *n = &w[cur];
-            __m128 x0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n->bmin[0]), ox), ix);
-            __m128 x1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n->bmax[0]), ox), ix);
-            __m128 y0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n->bmin[1]), oy), iy);
-            __m128 y1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n->bmax[1]), oy), iy);
-            __m128 z0 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n->bmin[2]), oz), iz);
-            __m128 z1 = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n->bmax[2]), oz), iz);
-            __m128 lo = _mm_max_ps(_mm_min_ps(x0, x1), tlo4);
-            __m128 hi = _mm_min_ps(_mm_max_ps(x0, x1), thi4);
+            const float *bx = n->b, *by = n->b + 4, *bz = n->b + 8;
+            /* the near and far distances of each slab: for a box with
+             * min <= max, (min - o) * id <= (max - o) * id exactly when
+             * id > 0 (rounding is monotone), so these are the values
+             * the binary test's min and max pick (but for the sign of a
+             * zero, which no comparison sees) */
+            __m128 xn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bx + nxo), ox), ix);
+            __m128 xf = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bx + (12 - nxo)), ox), ix);
+            __m128 yn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(by + nyo), oy), iy);
+            __m128 yf = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(by + (12 - nyo)), oy), iy);
+            __m128 zn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bz + nzo), oz), iz);
+            __m128 zf = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bz + (12 - nzo)), oz), iz);
+            __m128 lo = _mm_max_ps(xn, tlo4);
+            __m128 hi = _mm_min_ps(xf, thi4);
             int m;
-            lo = _mm_max_ps(_mm_min_ps(y0, y1), lo);
-            hi = _mm_min_ps(_mm_max_ps(y0, y1), hi);
-            lo = _mm_max_ps(_mm_min_ps(z0, z1), lo);
-            hi = _mm_min_ps(_mm_max_ps(z0, z1), hi);
+            lo = _mm_max_ps(yn, lo);
+            hi = _mm_min_ps(yf, hi);
+            lo = _mm_max_ps(zn, lo);
+            hi = _mm_min_ps(zf, hi);
             hi = _mm_add_ps(_mm_mul_ps(hi, widen), slack);
             m = _mm_movemask_ps(_mm_cmple_ps(lo, hi)) & n->mask;
             if (m) {
