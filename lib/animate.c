@@ -263,6 +263,7 @@ atrbvh_status atrbvh_refit(atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
     st = check_args(fn, bvh, geometry, options, &req, &in, error);
     if (st != ATRBVH_OK)
         return st;
+    atrbvh_i_bvh_drop_wide(bvh); /* the nodes change */
     st = dev_get(&a, &req, 0, error);
     if (st != ATRBVH_OK)
         return st;
@@ -488,6 +489,7 @@ atrbvh_status atrbvh_reoptimise(atrbvh_bvh *bvh,
     st = check_args(fn, bvh, geometry, options, &req, &in, error);
     if (st != ATRBVH_OK)
         return st;
+    atrbvh_i_bvh_drop_wide(bvh); /* the nodes change */
     if (bvh->prim_count > (size_t)ATRBVH_SIZE_MASK)
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, NO_INDEX,
                              "%s: %lu primitives", fn,

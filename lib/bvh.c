@@ -86,6 +86,7 @@ void atrbvh_bvh_free(atrbvh_bvh *bvh)
 {
     if (!bvh)
         return;
+    atrbvh_i_bvh_drop_wide(bvh);
     atrbvh_i_free(bvh->nodes);
     atrbvh_i_free(bvh->prim_indices);
     atrbvh_i_free(bvh->device);

@@ -114,7 +114,15 @@ struct atrbvh_bvh {
     size_t split_prims;   /* a split tree (its leaves may share a
                              primitive): the distinct primitives it
                              references; 0: every primitive once       */
+    void *wide; /* the 4-wide copy of the tree the uncounted ray batches
+                   make on first use (lib/traverse.c); NULL: none yet.
+                   Whatever changes the nodes drops it first
+                   (atrbvh_i_bvh_drop_wide). */
 };
+
+/* Frees the 4-wide copy of the tree (lib/traverse.c); the next uncounted
+ * ray batch makes a new one. */
+void atrbvh_i_bvh_drop_wide(atrbvh_bvh *bvh);
 
 /* The device and per-kernel device times of an OpenCL build (allocated
  * separately: CPU builds and loaded files stay small). */

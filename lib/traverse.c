@@ -134,6 +134,411 @@ static void closest(const atrbvh_trav_scene *s, const atrbvh_ray *ray,
                         &hit->t, &hit->u, &hit->v, &hit->primitive);
 }
 
+/* ------------------------------------------------------------ 4-wide
+ * The uncounted batch calls (atrbvh_intersect_batch,
+ * atrbvh_occluded_batch) trace the rays that take the single-precision
+ * node test over a 4-wide copy of the tree, made once per call: each wide
+ * node holds up to four nodes of the binary tree (a node and its
+ * descendants, the internal one with the largest box opened first), their
+ * boxes laid out so that one SSE operation takes the same slab of all
+ * four.  Every box is tested with exactly the operations of
+ * atrbvh_trav_box2_f on the same floats (subtraction, multiplication,
+ * min, max, the same widening), so a box is hit in the wide traversal
+ * exactly when it is hit in the binary one; the boxes are all finite (else
+ * no wide copy is made), so no NaN arises and the order of the min/max
+ * reductions does not change their values.  The leaves are the binary
+ * tree's, tested by atrbvh_trav_leaf.  The hit does not depend on the
+ * order in which nodes are visited (closest hit: smallest t, ties to the
+ * lower index; any hit: whether one exists), so the wide traversal returns
+ * the binary one's hit, bit for bit.  The counted calls (the _stats ones)
+ * keep the binary traversal: box_tests and prim_tests count its work.
+ * Without SSE, for rays that take the double test, trees with a non-finite
+ * box, deeper than WIDE_MAX_DEPTH wide levels, or malformed (a child
+ * index out of order), and when memory is short, the binary traversal
+ * runs. */
+#ifdef ATRBVH_TRAV_SSE
+typedef struct wide_node {
+    /* b[4 * axis + lane]: the lanes' minima; b[12 + 4 * axis + lane]:
+     * their maxima */
+    float b[24];
+    /* >= 0: a wide node; < 0: ~(index of a binary leaf); lanes past
+     * `lanes` unused */
+    int32_t child[4];
+    int32_t mask; /* bit i: lane i used */
+    int32_t depth, pad[2]; /* wide depth (during the build only) */
+} wide_node;
+
+/* A wide node pushes at most 3 entries and pops one: 3 * depth + 1 entries
+ * for a tree of wide depth `depth`. */
+#define WIDE_MAX_DEPTH 80
+#define WIDE_STACK (3 * WIDE_MAX_DEPTH + 4)
+/* Batches below this many rays take the binary traversal (the copy costs
+ * about as much as tracing a few rays per node). */
+#define WIDE_MIN_RAYS 1024u
+
+/* Whether the six floats of a box are finite: x - x is 0 for a finite x
+ * and NaN for an infinite or NaN one, and NaN survives the sum. */
+static int box_finite(const atrbvh_node *n)
+{
+    float z = (n->min[0] - n->min[0]) + (n->min[1] - n->min[1]) +
+              (n->min[2] - n->min[2]) + (n->max[0] - n->max[0]) +
+              (n->max[1] - n->max[1]) + (n->max[2] - n->max[2]);
+    return z == 0.0f;
+}
+
+/* Whether box a lies inside box b (the library's trees: a child's box
+ * inside its parent's, exactly).  Then the rounded slab distances of a's
+ * planes lie within b's (x -> (x - o) * id rounded is monotone), so a ray
+ * that misses b misses a too: wide_run does not test the root's box. */
+static int box_inside(const atrbvh_node *a, const atrbvh_node *b)
+{
+    int k;
+    for (k = 0; k < 3; k++)
+        if (!(a->min[k] >= b->min[k] && a->max[k] <= b->max[k]))
+            return 0;
+    return 1;
+}
+
+static double box_half_area(const atrbvh_node *n)
+{
+    double dx = (double)n->max[0] - n->min[0];
+    double dy = (double)n->max[1] - n->min[1];
+    double dz = (double)n->max[2] - n->min[2];
+    return dx * dy + dy * dz + dz * dx;
+}
+
+/* The 4-wide copy of a binary tree whose root is internal, or NULL (see
+ * above; *nomem 1 when memory was short).  Wide nodes are numbered breadth
+ * first; while being filled, child[] holds binary indices. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline)) /* its own entry in profiles */
+#endif
+static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
+                            int *nomem)
+{
+    size_t internal = 0, i, n_wide = 1, k;
+    wide_node *w;
+    *nomem = 0;
+    if (node_count < 3 || nodes[0].count != 0u)
+        return NULL;
+    for (i = 0; i < node_count; i++) {
+        /* finite and min <= max: the near plane of each axis is then
+         * known from the direction's sign (wide_run) */
+        if (!box_finite(&nodes[i]) || !(nodes[i].min[0] <= nodes[i].max[0]) ||
+            !(nodes[i].min[1] <= nodes[i].max[1]) ||
+            !(nodes[i].min[2] <= nodes[i].max[2]))
+            return NULL;
+        if (nodes[i].count == 0u) {
+            if ((size_t)nodes[i].index <= i + 1 ||
+                (size_t)nodes[i].index >= node_count ||
+                !box_inside(&nodes[i + 1], &nodes[i]) ||
+                !box_inside(&nodes[nodes[i].index], &nodes[i]))
+                return NULL;
+            internal++;
+        }
+    }
+    if (node_count > (size_t)INT32_MAX)
+        return NULL;
+    w = atrbvh_i_alloc_array(internal, sizeof *w);
+    if (!w) {
+        *nomem = 1;
+        return NULL;
+    }
+    w[0].child[0] = 0; /* binary node of wide node 0 */
+    w[0].depth = 1;
+    for (i = 0; i < n_wide; i++) {
+        uint32_t list[4];
+        int lanes = 2, lane, axis;
+        uint32_t b = (uint32_t)w[i].child[0];
+        list[0] = b + 1u;
+        list[1] = nodes[b].index;
+        while (lanes < 4) {
+            int best = -1;
+            double best_area = -1.0;
+            for (lane = 0; lane < lanes; lane++) {
+                double a;
+                if (nodes[list[lane]].count != 0u)
+                    continue;
+                a = box_half_area(&nodes[list[lane]]);
+                if (a > best_area) {
+                    best_area = a;
+                    best = lane;
+                }
+            }
+            if (best < 0)
+                break;
+            b = list[best];
+            list[best] = b + 1u;
+            list[lanes++] = nodes[b].index;
+        }
+        w[i].mask = (1 << lanes) - 1;
+        for (lane = 0; lane < 4; lane++) {
+            const atrbvh_node *c = &nodes[list[lane < lanes ? lane : 0]];
+            for (axis = 0; axis < 3; axis++) {
+                w[i].b[4 * axis + lane] = c->min[axis];
+                w[i].b[12 + 4 * axis + lane] = c->max[axis];
+            }
+        }
+        for (lane = 0; lane < 4; lane++) {
+            const atrbvh_node *c;
+            if (lane >= lanes) {
+                w[i].child[lane] = 0;
+                continue;
+            }
+            c = &nodes[list[lane]];
+            if (c->count != 0u) {
+                w[i].child[lane] = ~(int32_t)list[lane];
+                continue;
+            }
+            /* a tree has at most `internal` internal nodes: more wide
+             * nodes means a malformed tree (a node reached twice) */
+            if (n_wide >= internal || w[i].depth >= WIDE_MAX_DEPTH) {
+                atrbvh_i_free(w);
+                return NULL;
+            }
+            w[n_wide].child[0] = (int32_t)list[lane];
+            w[n_wide].depth = w[i].depth + 1;
+            w[i].child[lane] = (int32_t)n_wide;
+            n_wide++;
+        }
+    }
+    for (k = 0; k < n_wide; k++)
+        w[k].depth = 0;
+    return w;
+}
+
+/* Stands for "no wide copy can be made of this tree" in bvh->wide. */
+static const wide_node wide_none;
+
+/* The tree's wide copy, made on first use and kept in bvh->wide (a
+ * batch running on another thread may make it at the same time: the first
+ * to store it wins, the other frees its own); NULL when the tree cannot
+ * have one or memory is short. */
+static const wide_node *wide_get(const atrbvh_bvh *bvh)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    /* the object is never const: the API's const says that the tree the
+     * caller sees does not change, which holds */
+    void **slot = &((atrbvh_bvh *)(uintptr_t)bvh)->wide;
+    void *w = __atomic_load_n(slot, __ATOMIC_ACQUIRE), *expected = NULL;
+    int nomem;
+    if (!w) {
+        w = wide_make(bvh->nodes, bvh->node_count, &nomem);
+        if (!w) {
+            if (nomem)
+                return NULL;
+            w = (void *)(uintptr_t)&wide_none;
+        }
+        if (!__atomic_compare_exchange_n(slot, &expected, w, 0,
+                                         __ATOMIC_ACQ_REL,
+                                         __ATOMIC_ACQUIRE)) {
+            if (w != (const void *)&wide_none)
+                atrbvh_i_free(w);
+            w = expected;
+        }
+    }
+    return w == (const void *)&wide_none ? NULL : (const wide_node *)w;
+#else
+    (void)bvh;
+    return NULL;
+#endif
+}
+
+/* atrbvh_trav_run over the wide copy, for a ray with use_float. */
+static int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
+                    const atrbvh_trav_ray *r, int any, atrbvh_trav_best *best)
+{
+    int32_t stack_node[WIDE_STACK];
+    float stack_t[WIDE_STACK];
+    unsigned sp = 0;
+    int32_t cur = 0;
+    float tlo = r->tmin - atrbvh_trav_absf(r->tmin) * ATRBVH_TRAV_PRUNE_SLACK;
+    float thi;
+    __m128 ox = _mm_set1_ps(r->orgf[0]), oy = _mm_set1_ps(r->orgf[1]);
+    __m128 oz = _mm_set1_ps(r->orgf[2]);
+    __m128 ix = _mm_set1_ps(r->idirf[0]), iy = _mm_set1_ps(r->idirf[1]);
+    __m128 iz = _mm_set1_ps(r->idirf[2]);
+    __m128 widen = _mm_set1_ps(ATRBVH_TRAV_WIDEN_F);
+    __m128 slack = _mm_set1_ps(ATRBVH_TRAV_SLACK_F);
+    __m128 tlo4, thi4;
+    /* where each axis's near and far planes are, past its minima in
+     * wide_node.b: the minima (0) or the maxima (12) by the sign of the
+     * direction */
+    int nxo = r->idirf[0] < 0.0f ? 12 : 0, nyo = r->idirf[1] < 0.0f ? 12 : 0;
+    int nzo = r->idirf[2] < 0.0f ? 12 : 0;
+    if (!(tlo == tlo))
+        tlo = r->tmin;
+    best->t = r->tmax;
+    best->u = best->v = 0.0f;
+    best->prim = ATRBVH_NO_HIT;
+    best->tlim = atrbvh_trav_widen_limit(r->tmax);
+    best->box_tests = best->prim_tests = 0u;
+    /* no test of the root's box: it holds every box of the copy (see
+     * box_inside), so the first node's tests reject the rays it would */
+#if defined(__GNUC__) || defined(__clang__)
+    __asm__("" : "+x"(widen), "+x"(slack));
+#endif
+    thi = best->tlim;
+    tlo4 = _mm_set1_ps(tlo);
+    thi4 = _mm_set1_ps(thi);
+    for (;;) {
+        if (cur < 0) {
+            int done = atrbvh_trav_leaf(s, &s->nodes[~cur], r, any, best);
+            if (done)
+                return 1;
+            if (best->tlim != thi) {
+                thi = best->tlim;
+                thi4 = _mm_set1_ps(thi);
+            }
+        } else {
+            const wide_node *n = &w[cur];
+            const float *bx = n->b, *by = n->b + 4, *bz = n->b + 8;
+            /* the near and far distances of each slab: for a box with
+             * min <= max, (min - o) * id <= (max - o) * id exactly when
+             * id > 0 (rounding is monotone), so these are the values
+             * the binary test's min and max pick (but for the sign of a
+             * zero, which no comparison sees) */
+            __m128 xn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bx + nxo), ox), ix);
+            __m128 xf = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bx + (12 - nxo)), ox), ix);
+            __m128 yn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(by + nyo), oy), iy);
+            __m128 yf = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(by + (12 - nyo)), oy), iy);
+            __m128 zn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bz + nzo), oz), iz);
+            __m128 zf = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bz + (12 - nzo)), oz), iz);
+            __m128 lo = _mm_max_ps(xn, tlo4);
+            __m128 hi = _mm_min_ps(xf, thi4);
+            int m;
+            lo = _mm_max_ps(yn, lo);
+            hi = _mm_min_ps(yf, hi);
+            lo = _mm_max_ps(zn, lo);
+            hi = _mm_min_ps(zf, hi);
+            hi = _mm_add_ps(_mm_mul_ps(hi, widen), slack);
+            m = _mm_movemask_ps(_mm_cmple_ps(lo, hi)) & n->mask;
+            if (m) {
+                float t4[4];
+                int32_t c[4];
+                float ct[4];
+                int cnt = 0, lane, a, b2;
+                if (!(m & (m - 1))) {
+                    cur = n->child[m & 1 ? 0 : m & 2 ? 1 : m & 4 ? 2 : 3];
+                    continue;
+                }
+                _mm_storeu_ps(t4, lo);
+                {
+                    /* two hits, the most common case: the nearer
+                     * visited, the other pushed */
+                    int l0 = m & 1 ? 0 : m & 2 ? 1 : 2;
+                    int rest = m & ~(1 << l0);
+                    if (!(rest & (rest - 1))) {
+                        int l1 = rest & 2 ? 1 : rest & 4 ? 2 : 3;
+                        if (t4[l1] < t4[l0]) {
+                            int sw = l0;
+                            l0 = l1;
+                            l1 = sw;
+                        }
+                        stack_node[sp] = n->child[l1];
+                        stack_t[sp] = t4[l1];
+                        sp++;
+                        cur = n->child[l0];
+                        continue;
+                    }
+                }
+                for (lane = 0; lane < 4; lane++) {
+                    if (!(m >> lane & 1))
+                        continue;
+                    /* insertion by descending entry distance */
+                    b2 = cnt++;
+                    for (a = b2; a > 0 && ct[a - 1] < t4[lane]; a--) {
+                        ct[a] = ct[a - 1];
+                        c[a] = c[a - 1];
+                    }
+                    ct[a] = t4[lane];
+                    c[a] = n->child[lane];
+                }
+                /* sp + 3 <= WIDE_STACK: 3 per wide level, see
+                 * WIDE_MAX_DEPTH */
+                for (a = 0; a < cnt - 1; a++) {
+                    stack_node[sp] = c[a];
+                    stack_t[sp] = ct[a];
+                    sp++;
+                }
+                cur = c[cnt - 1];
+                continue;
+            }
+        }
+        while (sp > 0u && !(stack_t[sp - 1u] <= thi))
+            sp--;
+        if (sp == 0u)
+            return any ? 0 : best->prim != ATRBVH_NO_HIT;
+        sp--;
+        cur = stack_node[sp];
+    }
+}
+#endif
+
+/* atrbvh_trav_closest and atrbvh_trav_any with the wide copy `w` (NULL:
+ * none) for the rays that take the float test. */
+static void wide_closest(const atrbvh_trav_scene *s, const void *w,
+                         const atrbvh_ray *ray, atrbvh_hit *hit)
+{
+#ifdef ATRBVH_TRAV_SSE
+    atrbvh_trav_ray r;
+    atrbvh_trav_best best;
+    if (w) {
+        hit->t = ray->tmax;
+        hit->u = hit->v = 0.0f;
+        hit->primitive = ATRBVH_NO_HIT;
+        if (!atrbvh_trav_setup(ray->origin, ray->dir, ray->tmin, ray->tmax,
+                               &r))
+            return;
+        if (!s->float_slabs)
+            r.use_float = 0;
+        if (!(r.use_float ? wide_run(s, (const wide_node *)w, &r, 0, &best)
+                          : atrbvh_trav_run(s, &r, 0, &best)))
+            return;
+        hit->t = best.t;
+        hit->u = best.u;
+        hit->v = best.v;
+        hit->primitive = best.prim;
+        return;
+    }
+#else
+    (void)w;
+#endif
+    closest(s, ray, hit);
+}
+
+static int wide_any(const atrbvh_trav_scene *s, const void *w,
+                    const atrbvh_ray *ray)
+{
+#ifdef ATRBVH_TRAV_SSE
+    atrbvh_trav_ray r;
+    atrbvh_trav_best best;
+    if (w) {
+        if (!atrbvh_trav_setup(ray->origin, ray->dir, ray->tmin, ray->tmax,
+                               &r))
+            return 0;
+        if (!s->float_slabs)
+            r.use_float = 0;
+        return r.use_float ? wide_run(s, (const wide_node *)w, &r, 1, &best)
+                           : atrbvh_trav_run(s, &r, 1, &best);
+    }
+#else
+    (void)w;
+#endif
+    return atrbvh_trav_any(s, ray->origin, ray->dir, ray->tmin, ray->tmax);
+}
+
+void atrbvh_i_bvh_drop_wide(atrbvh_bvh *bvh)
+{
+#ifdef ATRBVH_TRAV_SSE
+    if (bvh->wide && bvh->wide != (const void *)&wide_none)
+        atrbvh_i_free(bvh->wide);
+#else
+    atrbvh_i_free(bvh->wide);
+#endif
+    bvh->wide = NULL;
+}
+
 /* The single-ray calls make the batch calls' checks (one ray, the output
  * pointer, threads 0), with no error to fill: a failed check is a miss. */
 int atrbvh_intersect(const atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
@@ -228,7 +633,8 @@ atrbvh_status atrbvh_i_trav_check(const atrbvh_bvh *bvh,
 /* One batch on the CPU: closest hits into `hits` or any hits into
  * `occluded`; with `cost` each ray's counts, and the sums into *boxes and
  * *prims (integer sums: the same for every thread count). */
-static void cpu_batch(const atrbvh_trav_scene *s, const atrbvh_ray *rays,
+static void cpu_batch(const atrbvh_bvh *bvh, const atrbvh_trav_scene *s,
+                      const atrbvh_ray *rays,
                       size_t count, atrbvh_hit *hits, uint8_t *occluded,
                       atrbvh_ray_cost *cost, int threads, uint64_t *boxes,
                       uint64_t *prims)
@@ -241,17 +647,22 @@ static void cpu_batch(const atrbvh_trav_scene *s, const atrbvh_ray *rays,
     (void)threads;
 #endif
     if (!boxes) {
+        const void *w = NULL;
+#ifdef ATRBVH_TRAV_SSE
+        if (s->float_slabs && count >= WIDE_MIN_RAYS)
+            w = wide_get(bvh);
+#else
+        (void)bvh;
+#endif
 #ifdef _OPENMP
 #pragma omp parallel for schedule(dynamic, 64) num_threads(nt)
 #endif
         for (i = 0; i < n; i++) {
             const atrbvh_ray *r = &rays[i];
             if (hits)
-                closest(s, r, &hits[i]);
+                wide_closest(s, w, r, &hits[i]);
             else
-                occluded[i] = (uint8_t)(atrbvh_trav_any(s, r->origin, r->dir,
-                                                        r->tmin,
-                                                        r->tmax) != 0);
+                occluded[i] = (uint8_t)(wide_any(s, w, r) != 0);
         }
         return;
     }
@@ -295,7 +706,7 @@ atrbvh_status atrbvh_intersect_batch(const atrbvh_bvh *bvh,
         return st;
     atrbvh_i_clear_error(error);
     trav_scene(bvh, geometry, &s); /* checked */
-    cpu_batch(&s, rays, count, hits, NULL, NULL, threads, NULL, NULL);
+    cpu_batch(bvh, &s, rays, count, hits, NULL, NULL, threads, NULL, NULL);
     return ATRBVH_OK;
 }
 
@@ -313,7 +724,8 @@ atrbvh_status atrbvh_occluded_batch(const atrbvh_bvh *bvh,
         return st;
     atrbvh_i_clear_error(error);
     trav_scene(bvh, geometry, &s); /* checked */
-    cpu_batch(&s, rays, count, NULL, occluded, NULL, threads, NULL, NULL);
+    cpu_batch(bvh, &s, rays, count, NULL, occluded, NULL, threads, NULL,
+                  NULL);
     return ATRBVH_OK;
 }
 
@@ -375,7 +787,7 @@ static atrbvh_status batch(atrbvh_device *dev, const atrbvh_bvh *bvh,
         return ATRBVH_OK;
     if (!dev || !dev->backend->trace) {
         trav_scene(bvh, geometry, &s); /* checked */
-        cpu_batch(&s, rays, count, any ? NULL : hits, any ? occluded : NULL,
+        cpu_batch(bvh, &s, rays, count, any ? NULL : hits, any ? occluded : NULL,
                   cost, threads, stats ? &nb : NULL, stats ? &np : NULL);
     } else {
         st = atrbvh_i_check_geometry(geometry, &in, error);

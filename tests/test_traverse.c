@@ -1186,6 +1186,237 @@ START_TEST(threads_limit)
 }
 END_TEST
 
+/* ------------------------------------------------------ 4-wide batches */
+/* The uncounted batch calls trace the rays with nonzero direction
+ * components over a 4-wide copy of the tree (lib/traverse.c); rays whose
+ * float slab tests are most at risk graze boxes: aimed at primitives'
+ * vertices (on the boxes of every node holding them) and at corners and
+ * edge midpoints of the tree's own node boxes.  Those batches must give
+ * what testing every primitive gives, and what the counted batch (binary
+ * traversal) gives, bit for bit. */
+static void grazing_rays(const mesh *m, const atrbvh_bvh *b, size_t n,
+                         uint64_t seed, atrbvh_ray *rays)
+{
+    float lo[3], hi[3];
+    size_t i, node_count;
+    const atrbvh_node *nodes = atrbvh_bvh_nodes(b, &node_count);
+    tu_rng r;
+    scene_box(m, lo, hi);
+    tu_rng_seed(&r, seed);
+    for (i = 0; i < n; i++) {
+        atrbvh_ray *ray = &rays[i];
+        float target[3];
+        int k, kind = (int)(i % 4);
+        if (kind == 0) { /* the tests' mix */
+            random_ray(m, lo, hi, &r, ray);
+            continue;
+        }
+        for (k = 0; k < 3; k++) {
+            float ext = hi[k] - lo[k];
+            ray->origin[k] = lo[k] - ext + 3.0f * ext * tu_rng_float(&r);
+        }
+        if (kind == 1) {
+            prim_point(m, &r, target);
+        } else {
+            const atrbvh_node *nd =
+                &nodes[(size_t)(tu_rng_next(&r) % node_count)];
+            unsigned corner = (unsigned)(tu_rng_next(&r) & 7u);
+            for (k = 0; k < 3; k++)
+                target[k] = corner >> k & 1u ? nd->max[k] : nd->min[k];
+            if (kind == 3) { /* the midpoint of an edge */
+                int a = (int)(tu_rng_next(&r) % 3);
+                target[a] = 0.5f * (nd->min[a] + nd->max[a]);
+            }
+        }
+        for (k = 0; k < 3; k++) {
+            ray->dir[k] = target[k] - ray->origin[k];
+            if (ray->dir[k] == 0.0f)
+                ray->dir[k] = 0.25f;
+        }
+        ray->tmin = tu_rng_float(&r) < 0.8f ? 0.0f : 0.1f * tu_rng_float(&r);
+        /* ending just past, at or just before the target */
+        ray->tmax = tu_rng_float(&r) < 0.5f
+                        ? INFINITY
+                        : 0.999999f + 2e-6f * tu_rng_float(&r);
+    }
+}
+
+static void check_wide(const mesh *m, const atrbvh_bvh *b,
+                       const reference *ref, size_t n, uint64_t seed,
+                       const char *what)
+{
+    atrbvh_geometry g = mesh_geometry(m);
+    atrbvh_ray *rays = malloc(n * sizeof *rays);
+    atrbvh_hit *hits = malloc(n * sizeof *hits), *bin = malloc(n * sizeof *bin);
+    uint8_t *occ = malloc(n), *bocc = malloc(n);
+    atrbvh_trace_stats ts;
+    atrbvh_error e;
+    size_t i, nhit = 0;
+    ck_assert(rays && hits && bin && occ && bocc);
+    grazing_rays(m, b, n, seed, rays);
+    ck_assert_int_eq(atrbvh_intersect_batch(b, &g, rays, n, hits, 2, &e),
+                     ATRBVH_OK);
+    ck_assert_int_eq(atrbvh_occluded_batch(b, &g, rays, n, occ, 2, &e),
+                     ATRBVH_OK);
+    atrbvh_trace_stats_init(&ts);
+    ck_assert_int_eq(atrbvh_intersect_batch_stats(NULL, b, &g, rays, n, bin, 1,
+                                                  &ts, &e),
+                     ATRBVH_OK);
+    ck_assert_int_eq(atrbvh_occluded_batch_stats(NULL, b, &g, rays, n, bocc, 1,
+                                                 &ts, &e),
+                     ATRBVH_OK);
+    for (i = 0; i < n; i++) {
+        ck_assert_msg(memcmp(&hits[i], &bin[i], sizeof *hits) == 0 &&
+                          occ[i] == bocc[i],
+                      "%s ray %zu: the batch gives prim %u t %a occluded %u, "
+                      "the counted batch prim %u t %a occluded %u",
+                      what, i, hits[i].primitive, (double)hits[i].t, occ[i],
+                      bin[i].primitive, (double)bin[i].t, bocc[i]);
+        nhit += hits[i].primitive != ATRBVH_NO_HIT;
+        if (ref) {
+            atrbvh_hit eh;
+            int ehit = ref_intersect(ref, &rays[i], &eh);
+            ck_assert_msg(ehit == (hits[i].primitive != ATRBVH_NO_HIT) &&
+                              same_hit(&hits[i], &eh),
+                          "%s ray %zu (o %a %a %a d %a %a %a t %g..%g): "
+                          "batch prim %u t %a, all primitives prim %u t %a",
+                          what, i, (double)rays[i].origin[0],
+                          (double)rays[i].origin[1], (double)rays[i].origin[2],
+                          (double)rays[i].dir[0], (double)rays[i].dir[1],
+                          (double)rays[i].dir[2], (double)rays[i].tmin,
+                          (double)rays[i].tmax, hits[i].primitive,
+                          (double)hits[i].t, eh.primitive, (double)eh.t);
+            ck_assert_msg(occ[i] == (uint8_t)ref_occluded(ref, &rays[i]),
+                          "%s ray %zu: occluded %u, all primitives differ",
+                          what, i, occ[i]);
+        }
+    }
+    /* the mix must hit and miss */
+    ck_assert_msg(nhit > n / 20 && nhit < n, "%s: %zu hits of %zu", what, nhit,
+                  n);
+    free(rays);
+    free(hits);
+    free(bin);
+    free(occ);
+    free(bocc);
+}
+
+START_TEST(wide_batches)
+{
+    mesh ms[5];
+    const char *names[5] = {"soup 600", "icosphere", "cube", "terrain",
+                            "boxes"};
+    int s;
+    ms[0] = soup(600, 41, 10.0f, -5.0f);
+    ms[1] = icosphere(3);
+    ms[2] = grid_cube(8);
+    ms[3] = terrain(16, 7);
+    ms[4] = random_boxes(400, 42);
+    for (s = 0; s < 5; s++) {
+        atrbvh_geometry g = mesh_geometry(&ms[s]);
+        reference ref = ref_make(&ms[s]);
+        size_t c;
+        for (c = 0; c < sizeof configs / sizeof *configs; c++) {
+            char what[128];
+            atrbvh_bvh *b = build_config(&g, &configs[c]);
+            if (!b)
+                continue;
+            snprintf(what, sizeof what, "%s method %d collapse %d max_leaf %u",
+                     names[s], (int)configs[c].method, configs[c].collapse,
+                     configs[c].max_leaf);
+            /* against every primitive for two trees, against the binary
+             * traversal for all */
+            check_wide(&ms[s], b, c == 3 || c == 5 ? &ref : NULL,
+                       c == 3 || c == 5 ? 2048 : 8192, 900 + c, what);
+            atrbvh_bvh_free(b);
+        }
+        ref_free(&ref);
+        mesh_free(&ms[s]);
+    }
+}
+END_TEST
+
+/* The wide copy is made by the first batch and kept: refit and reoptimise
+ * must drop it, or the next batch would trace the old boxes. */
+START_TEST(wide_after_refit)
+{
+    mesh m = icosphere(3);
+    atrbvh_geometry g = mesh_geometry(&m);
+    config c = {ATRBVH_METHOD_LBVH, 1, 8};
+    atrbvh_bvh *b = build_config(&g, &c);
+    reference ref;
+    atrbvh_error e;
+    size_t i;
+    int step;
+    check_wide(&m, b, NULL, 4096, 950, "icosphere before the move");
+    for (step = 0; step < 2; step++) {
+        /* move the sphere away by twice its radius and squash it */
+        for (i = 0; i < m.nv; i++) {
+            m.v[3 * i] += 2.0f;
+            m.v[3 * i + 1] *= 0.5f;
+        }
+        ck_assert_int_eq(step == 0 ? atrbvh_refit(b, &g, NULL, &e)
+                                   : atrbvh_reoptimise(b, &g, NULL, &e),
+                         ATRBVH_OK);
+        ref = ref_make(&m);
+        check_wide(&m, b, &ref, 2048, 960 + (uint64_t)step,
+                   step == 0 ? "icosphere after refit"
+                             : "icosphere after reoptimise");
+        ref_free(&ref);
+    }
+    atrbvh_bvh_free(b);
+    mesh_free(&m);
+}
+END_TEST
+
+/* Batches on several threads at once on a fresh tree: each may make the
+ * wide copy, one keeps it (the others free theirs: LeakSanitizer in the
+ * suite), and all give the counted batch's hits. */
+START_TEST(wide_concurrent_first_use)
+{
+    mesh m = soup(2000, 51, 10.0f, -5.0f);
+    atrbvh_geometry g = mesh_geometry(&m);
+    config c = {ATRBVH_METHOD_LBVH, 1, 4};
+    size_t n = 4096, i;
+    atrbvh_ray *rays = malloc(n * sizeof *rays);
+    atrbvh_hit *ref = malloc(n * sizeof *ref);
+    atrbvh_hit *hits = malloc(8 * n * sizeof *hits);
+    int round;
+    ck_assert(rays && ref && hits);
+    for (round = 0; round < 4; round++) {
+        atrbvh_bvh *b = build_config(&g, &c);
+        atrbvh_trace_stats ts;
+        atrbvh_error e;
+        int k, fails = 0;
+        grazing_rays(&m, b, n, 970 + (uint64_t)round, rays);
+        atrbvh_trace_stats_init(&ts);
+        ck_assert_int_eq(atrbvh_intersect_batch_stats(NULL, b, &g, rays, n,
+                                                      ref, 1, &ts, &e),
+                         ATRBVH_OK);
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(4) schedule(static, 1) reduction(+ : fails)
+#endif
+        for (k = 0; k < 8; k++) {
+            atrbvh_error ke;
+            if (atrbvh_intersect_batch(b, &g, rays, n, hits + (size_t)k * n, 1,
+                                       &ke) != ATRBVH_OK)
+                fails++;
+        }
+        ck_assert_int_eq(fails, 0);
+        for (k = 0; k < 8; k++)
+            for (i = 0; i < n; i++)
+                ck_assert_msg(memcmp(&hits[(size_t)k * n + i], &ref[i],
+                                     sizeof *ref) == 0,
+                              "round %d call %d ray %zu differs", round, k, i);
+        atrbvh_bvh_free(b);
+    }
+    free(rays);
+    free(ref);
+    free(hits);
+    mesh_free(&m);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("traverse");
@@ -1208,6 +1439,12 @@ static Suite *suite(void)
     tcase_add_test(t, single_call_checks);
     tcase_add_test(t, threads_limit);
     tcase_set_timeout(t, 300);
+    suite_add_tcase(s, t);
+    t = tcase_create("wide");
+    tcase_add_test(t, wide_batches);
+    tcase_add_test(t, wide_after_refit);
+    tcase_add_test(t, wide_concurrent_first_use);
+    tcase_set_timeout(t, 600);
     suite_add_tcase(s, t);
     return s;
 }
