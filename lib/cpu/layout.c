@@ -112,6 +112,48 @@ static inline atrbvh_box triangle_box(const layout_ctx *c, atrbvh_u64 prim)
     return out;
 }
 
+/* Sorted positions ahead of the current one whose triangle is prefetched:
+ * its vertices at PREFETCH, its index triple at twice that (read back at
+ * PREFETCH for the vertices' addresses).  The layout visits positions in
+ * increasing order, and the triangles of neighbouring positions are
+ * scattered over the vertex and index arrays (perf, dragon: most of
+ * range_leaf's samples were on the index and vertex loads).  Dragon, two
+ * threads, this loaded machine, fastest of 12 interleaved builds: the
+ * stage 54.7 -> 46.8 ns per triangle (8 ahead); 16 measured the same. */
+#define PREFETCH 16
+
+/* Always inlined: GCC 12 takes a function of nothing but prefetches for
+ * one without side effects and drops its calls. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((always_inline))
+#endif
+static inline void prefetch_triangle(const layout_ctx *c, uint32_t pos)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    const atrbvh_i_tree *t = c->t;
+    const atrbvh_geometry *g = c->g;
+    const float *v = g->vertices;
+    const uint32_t *ix;
+    if ((int64_t)pos + 2 * PREFETCH < (int64_t)t->n && g->indices)
+        __builtin_prefetch(g->indices +
+                           t->leaf_prim[pos + 2 * PREFETCH] * c->istride);
+    if ((int64_t)pos + PREFETCH >= (int64_t)t->n)
+        return;
+    if (g->indices) {
+        ix = g->indices + t->leaf_prim[pos + PREFETCH] * c->istride;
+        __builtin_prefetch(v + ix[0] * c->vstride);
+        __builtin_prefetch(v + ix[1] * c->vstride);
+        __builtin_prefetch(v + ix[2] * c->vstride);
+    } else {
+        __builtin_prefetch(v + 3u * (atrbvh_u64)t->leaf_prim[pos + PREFETCH] *
+                                   c->vstride);
+    }
+#else
+    (void)c;
+    (void)pos;
+#endif
+}
+
 /* Writes the primitives under `node`, left to right, from prims[at], and
  * returns their box: a stackless walk with parent links, so any depth is
  * fine. */
@@ -159,9 +201,11 @@ static inline void range_leaf(layout_ctx *c, uint32_t node, uint32_t at,
         b = atrbvh_i_is_leaf(t, node) ? leaf_box(c, node) : c->box[node];
     } else if (c->g->type != ATRBVH_GEOMETRY_BOXES) {
         dst[0] = src[0];
+        prefetch_triangle(c, prim_at);
         b = triangle_box(c, src[0]);
         for (k = 1; k < cnt; k++) {
             dst[k] = src[k];
+            prefetch_triangle(c, prim_at + k);
             b = atrbvh_box_union(b, triangle_box(c, src[k]));
         }
     } else {
