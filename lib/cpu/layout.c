@@ -127,29 +127,33 @@ static inline atrbvh_box triangle_box(const layout_ctx *c, atrbvh_u64 prim)
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((always_inline))
 #endif
-static inline void prefetch_triangle(const layout_ctx *c, uint32_t pos)
+static inline void prefetch_triangle(const uint32_t *leaf_prim, int64_t n,
+                                     const float *v, atrbvh_u64 vstride,
+                                     const uint32_t *indices,
+                                     atrbvh_u64 istride, int64_t pos)
 {
 #if defined(__GNUC__) || defined(__clang__)
-    const atrbvh_i_tree *t = c->t;
-    const atrbvh_geometry *g = c->g;
-    const float *v = g->vertices;
-    const uint32_t *ix;
-    if ((int64_t)pos + 2 * PREFETCH < (int64_t)t->n && g->indices)
-        __builtin_prefetch(g->indices +
-                           t->leaf_prim[pos + 2 * PREFETCH] * c->istride);
-    if ((int64_t)pos + PREFETCH >= (int64_t)t->n)
-        return;
-    if (g->indices) {
-        ix = g->indices + t->leaf_prim[pos + PREFETCH] * c->istride;
-        __builtin_prefetch(v + ix[0] * c->vstride);
-        __builtin_prefetch(v + ix[1] * c->vstride);
-        __builtin_prefetch(v + ix[2] * c->vstride);
-    } else {
-        __builtin_prefetch(v + 3u * (atrbvh_u64)t->leaf_prim[pos + PREFETCH] *
-                                   c->vstride);
+    if (pos + 2 * PREFETCH < n && indices)
+        __builtin_prefetch(indices + leaf_prim[pos + 2 * PREFETCH] * istride);
+    if (pos + PREFETCH < n) {
+        if (indices) {
+            const uint32_t *ix =
+                indices + leaf_prim[pos + PREFETCH] * istride;
+            __builtin_prefetch(v + ix[0] * vstride);
+            __builtin_prefetch(v + ix[1] * vstride);
+            __builtin_prefetch(v + ix[2] * vstride);
+        } else {
+            __builtin_prefetch(
+                v + 3u * (atrbvh_u64)leaf_prim[pos + PREFETCH] * vstride);
+        }
     }
 #else
-    (void)c;
+    (void)leaf_prim;
+    (void)n;
+    (void)v;
+    (void)vstride;
+    (void)indices;
+    (void)istride;
     (void)pos;
 #endif
 }
@@ -200,12 +204,19 @@ static inline void range_leaf(layout_ctx *c, uint32_t node, uint32_t at,
             dst[k] = src[k];
         b = atrbvh_i_is_leaf(t, node) ? leaf_box(c, node) : c->box[node];
     } else if (c->g->type != ATRBVH_GEOMETRY_BOXES) {
+        /* (in locals: the stores to dst could alias the fields) */
+        const uint32_t *const leaf_prim = t->leaf_prim;
+        const int64_t n = t->n;
+        const float *const v = c->g->vertices;
+        const uint32_t *const indices = c->g->indices;
+        const atrbvh_u64 vstride = c->vstride, istride = c->istride;
         dst[0] = src[0];
-        prefetch_triangle(c, prim_at);
+        prefetch_triangle(leaf_prim, n, v, vstride, indices, istride, prim_at);
         b = triangle_box(c, src[0]);
         for (k = 1; k < cnt; k++) {
             dst[k] = src[k];
-            prefetch_triangle(c, prim_at + k);
+            prefetch_triangle(leaf_prim, n, v, vstride, indices, istride,
+                              (int64_t)prim_at + k);
             b = atrbvh_box_union(b, triangle_box(c, src[k]));
         }
     } else {
