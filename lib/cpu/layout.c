@@ -254,7 +254,7 @@ static void emit_small(layout_ctx *c, uint32_t node, uint32_t at,
         uint32_t node, at, prim;
     } st[SMALL_STACK];
     int sp = 0;
-    uint32_t p;
+    uint32_t p, pf = prim_at; /* pf: the next position to prefetch */
     for (;;) {
         const uint32_t size = c->size[node];
         if (size & ATRBVH_SIZE_LEAF) {
@@ -272,16 +272,18 @@ static void emit_small(layout_ctx *c, uint32_t node, uint32_t at,
             /* The nodes ahead: a preorder meets ids of increasing
              * positions (internal ids are positions, leaves n-1 after),
              * in jumps the hardware prefetchers follow badly (perf: the
-             * loads of left, size and count were the loop's stalls). */
-            if ((int64_t)prim_at + TREE_AHEAD < (int64_t)t->n) {
-                const uint32_t ahead = prim_at + TREE_AHEAD,
-                               leaf = t->n - 1 + ahead;
-                __builtin_prefetch(&t->left[ahead]);
-                __builtin_prefetch(&t->right[ahead]);
-                __builtin_prefetch(&t->count[ahead]);
-                __builtin_prefetch(&c->size[ahead]);
+             * loads of left, size and count were the loop's stalls).
+             * One line (16 entries) of each array at a time, up to
+             * TREE_AHEAD positions ahead. */
+            while (pf < prim_at + TREE_AHEAD && pf < t->n) {
+                const uint32_t leaf = t->n - 1 + pf;
+                __builtin_prefetch(&t->left[pf]);
+                __builtin_prefetch(&t->right[pf]);
+                __builtin_prefetch(&t->count[pf]);
+                __builtin_prefetch(&c->size[pf]);
                 __builtin_prefetch(&t->count[leaf]);
                 __builtin_prefetch(&c->size[leaf]);
+                pf += 16;
             }
 #endif
             const uint32_t right_prim =
