@@ -4,11 +4,9 @@
  * box, normalised to the centroid box (Lauterbach et al. 2009; Karras
  * 2012).  The frame (lo, scale) is the pipeline's, computed once on the
  * host for every backend; the per-item rule is shared/arith.h's.  The
- * same sweep makes the OR and AND of all keys, from which the sort knows
- * the bits that vary without reading the keys again.  The sort's values,
- * the build indices (which the OpenCL morton kernel writes), are made by
- * the sort's first pass itself (sort.c): the order array is only
- * allocated here.
+ * same sweep writes the sort's values (the build indices, as the OpenCL
+ * morton kernel does) and the OR and AND of all keys, from which the sort
+ * knows the bits that vary without reading the keys again.
  */
 #include "config.h"
 
@@ -46,6 +44,7 @@ atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *dev, atrbvh_i_run *run,
             atrbvh_morton_quantise(atrbvh_box_centre(b, 1), lo1, s1),
             atrbvh_morton_quantise(atrbvh_box_centre(b, 2), lo2, s2));
         keys[i] = key;
+        order[i] = (uint32_t)i;
         key_or |= key;
         key_and &= key;
     }

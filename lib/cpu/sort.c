@@ -172,26 +172,17 @@ atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
                                        threads, varying);
 }
 
-/* identity: the values are their positions 0 .. n-1, not read but made
- * where the first pass scatters them (the morton stage then writes none:
- * one pass over 4n bytes less on each side). */
-static atrbvh_status radix_sort(uint64_t *keys, uint32_t *values,
-                                uint64_t *tmp_keys, uint32_t *tmp_values,
-                                uint32_t n, int threads, uint64_t varying,
-                                int identity)
+atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
+                                          uint64_t *tmp_keys,
+                                          uint32_t *tmp_values, uint32_t n,
+                                          int threads, uint64_t varying)
 {
     uint32_t *counts, *start;
     int blocks, top, bits, shift;
     uint32_t buckets, target;
 
-    if (n < 2 || !varying) {
-        /* all keys equal: the input order is sorted */
-        uint32_t j;
-        if (identity)
-            for (j = 0; j < n; j++)
-                values[j] = j;
-        return ATRBVH_OK;
-    }
+    if (n < 2 || !varying)
+        return ATRBVH_OK; /* all keys equal: the input order is sorted */
     blocks = threads < 1 ? 1 : threads > MAX_BLOCKS ? MAX_BLOCKS : threads;
     if ((uint32_t)blocks > n)
         blocks = (int)n;
@@ -255,22 +246,12 @@ static atrbvh_status radix_sort(uint64_t *keys, uint32_t *values,
         for (b = 0; b < blocks; b++) {
             uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
             atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo, &hi);
-            if (identity) {
-                for (j = lo; j < hi; j++) {
-                    uint32_t o = atrbvh_sort_place(
-                        c, atrbvh_sort_digit_bits(keys[j], (atrbvh_u32)shift,
-                                                  (atrbvh_u32)bits));
-                    tmp_keys[o] = keys[j];
-                    tmp_values[o] = j;
-                }
-            } else {
-                for (j = lo; j < hi; j++) {
-                    uint32_t o = atrbvh_sort_place(
-                        c, atrbvh_sort_digit_bits(keys[j], (atrbvh_u32)shift,
-                                                  (atrbvh_u32)bits));
-                    tmp_keys[o] = keys[j];
-                    tmp_values[o] = values[j];
-                }
+            for (j = lo; j < hi; j++) {
+                uint32_t o = atrbvh_sort_place(
+                    c, atrbvh_sort_digit_bits(keys[j], (atrbvh_u32)shift,
+                                              (atrbvh_u32)bits));
+                tmp_keys[o] = keys[j];
+                tmp_values[o] = values[j];
             }
         }
         /* Buckets are independent; the result lands back in keys/values. */
@@ -287,15 +268,6 @@ static atrbvh_status radix_sort(uint64_t *keys, uint32_t *values,
     atrbvh_i_free(counts);
     atrbvh_i_free(start);
     return ATRBVH_OK;
-}
-
-atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
-                                          uint64_t *tmp_keys,
-                                          uint32_t *tmp_values, uint32_t n,
-                                          int threads, uint64_t varying)
-{
-    return radix_sort(keys, values, tmp_keys, tmp_values, n, threads, varying,
-                      0);
 }
 
 /* The stage: keys (morton) sorted with their build indices. */
@@ -316,9 +288,10 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
                              "cannot allocate sort buffers for %lu "
                              "primitives",
                              (unsigned long)n);
-    /* The values are the build indices, made by the sort (identity). */
-    if (radix_sort(c->keys, c->order, tmp_keys, tmp_order, n,
-                   run->cfg->threads, c->key_varying, 1) != ATRBVH_OK)
+    /* c->order holds the build indices (morton wrote them). */
+    if (atrbvh_i_radix_sort_varying(c->keys, c->order, tmp_keys, tmp_order,
+                                    n, run->cfg->threads,
+                                    c->key_varying) != ATRBVH_OK)
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "cannot allocate sort counters for %lu "
                              "primitives",
