@@ -95,7 +95,7 @@ static void leaf_prims(atrbvh_i_tree *t, const uint32_t *order,
     if (ids)
         for (i = lo; i < hi; i++)
             leaf_prim[i] = ids[order[i]];
-    else
+    else if (leaf_prim != order) /* (the stage's: the same array) */
         for (i = lo; i < hi; i++)
             leaf_prim[i] = order[i];
 }
