@@ -9,6 +9,7 @@
 
 #include "internal.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 #if defined(__linux__)
@@ -27,7 +28,11 @@ static void advise_huge(void *p, size_t bytes)
     const uintptr_t huge = (uintptr_t)1 << 21;
     const uintptr_t lo = ((uintptr_t)p + huge - 1) & ~(huge - 1),
                     hi = ((uintptr_t)p + bytes) & ~(huge - 1);
-    if (bytes >= 4 * huge && hi > lo)
+    atrbvh_malloc_fn m;
+    /* only memory of the C library's malloc: a replaced allocator's
+     * blocks (a pool, a mapping with its own flags) are its business */
+    atrbvh_get_allocator(&m, NULL);
+    if (m == malloc && bytes >= 4 * huge && hi > lo)
         (void)madvise((void *)lo, (size_t)(hi - lo), MADV_HUGEPAGE);
 #else
     (void)p;
