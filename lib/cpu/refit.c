@@ -163,11 +163,10 @@ static ALWAYS_INLINE void climb_sizes(atrbvh_i_tree *t,
     uint32_t node = (uint32_t)(t->n - 1 + i), up;
     int64_t a = i, b = i;
     while ((up = parent[node]) != ATRBVH_U32_MAX) {
-        uint32_t l, r;
+        uint32_t l, r, cnt;
         const int right = t->left[up] != node;
         double other;
         atrbvh_box bx;
-        int collapsed;
         unsigned char *pending = (unsigned char *)(void *)&t->box[up];
         memcpy(pending + (right ? sizeof cost : 0), &cost, sizeof cost);
         if (!arrive(count, up, node, t->left, atomic, ranges, lo, hi, &a, &b))
@@ -175,16 +174,12 @@ static ALWAYS_INLINE void climb_sizes(atrbvh_i_tree *t,
         memcpy(&other, pending + (right ? 0 : sizeof other), sizeof other);
         l = t->left[up];
         r = t->right[up];
-        bx = atrbvh_box_union(t->box[l], t->box[r]);
+        /* the refit kernel's rule for an LBVH (shared/stages.h) */
+        size[up] = atrbvh_refit_node_size(
+            p, t->box[l], count[l], right ? other : cost, size[l], t->box[r],
+            count[r], right ? cost : other, size[r], &bx, &cnt, &cost);
         t->box[up] = bx;
-        count[up] = count[l] + count[r];
-        cost = right ? atrbvh_node_cost(p, atrbvh_box_area(bx), count[up],
-                                        other, cost, &collapsed)
-                     : atrbvh_node_cost(p, atrbvh_box_area(bx), count[up],
-                                        cost, other, &collapsed);
-        size[up] = collapsed ? 1u | ATRBVH_SIZE_LEAF
-                             : 1u + (size[l] & ATRBVH_SIZE_MASK) +
-                                   (size[r] & ATRBVH_SIZE_MASK);
+        count[up] = cnt;
         node = up;
     }
 }
