@@ -11,21 +11,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.33419257:65.8027084]
+set xrange [2.83718119:67.7533739]
 set xtics (5, 10, 20, 50)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 9.0949692,43.368649 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 32.8607421,38.1166438 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 20.3761397,39.0521322 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 16.2963156,38.2104198 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.3869453,37.8200069 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 30.7861492,39.2990834 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.3025618,38.7335583 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.569208,38.5681918 left font ',8' noenhanced front
-set label 'embree_low' at 4.44413467,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 14.1206833,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 22.1590571,36.8708212 left font ',8' noenhanced front
+set label 'LBVH' at 3.85177068,43.368649 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 26.3123616,38.1166438 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 13.7258096,39.0521322 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 11.7627141,38.2104198 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 12.7849762,37.8200069 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.8374794,38.9873551 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.9843649,38.7335583 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 23.5354168,38.5681918 left font ',8' noenhanced front
+set label 'embree_low' at 7.26805735,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 25.1775368,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 16.7834475,36.8708212 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -45,21 +45,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.33419257:65.8027084]
+set xrange [2.83718119:67.7533739]
 set xtics (5, 10, 20, 50)
-set yrange [4.60181927:6.20497503]
+set yrange [7.27525631:9.20456639]
 unset label
-set label 'LBVH' at 9.0949692,4.75329855 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.1196644,5.09254991 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 20.536691,4.98012249 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 16.1689146,5.17568429 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 25.4612277,5.24502042 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 31.028725,5.02849679 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.3025618,5.1709385 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 16.4287137,5.7005049 left font ',8' noenhanced front
-set label 'embree_low' at 4.44413467,4.92639571 left font ',8' noenhanced front
-set label 'embree_medium' at 21.2207152,5.96175031 left font ',8' noenhanced front
-set label 'embree_high' at 22.1590571,6.01562592 left font ',8' noenhanced front
+set label 'LBVH' at 3.85177068,8.28505023 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 26.5329941,8.76281929 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 13.7258096,8.83151512 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 17.6503003,8.76671692 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 19.3450969,8.97669512 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.8374794,8.51041737 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.9843649,8.1465144 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 23.5354168,7.81936008 left font ',8' noenhanced front
+set label 'embree_low' at 7.26805735,7.45755333 left font ',8' noenhanced front
+set label 'embree_medium' at 25.1775368,8.32442264 left font ',8' noenhanced front
+set label 'embree_high' at 24.4995725,8.22521137 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 0 using 2:4 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:4 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -78,21 +78,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.33419257:65.8027084]
+set xrange [2.83718119:67.7533739]
 set xtics (5, 10, 20, 50)
 set yrange [35.1801633:45.2835894]
 unset label
-set label 'LBVH' at 9.0949692,41.3520993 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.1196644,37.8644328 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 17.124673,37.6863385 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 23.6775586,38.3842886 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 25.6618464,37.5280925 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 31.028725,39.67856 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.3025618,38.8250365 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.569208,37.9630935 left font ',8' noenhanced front
-set label 'embree_low' at 4.44413467,44.0902713 left font ',8' noenhanced front
-set label 'embree_medium' at 14.1206833,36.1348177 left font ',8' noenhanced front
-set label 'embree_high' at 22.1590571,36.1348177 left font ',8' noenhanced front
+set label 'LBVH' at 3.85177068,41.3520993 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 26.5329941,37.8644328 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 9.40287446,38.0152873 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 17.503531,38.3842886 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 19.3450969,37.5280925 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.8374794,39.67856 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.9843649,38.8250365 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 23.3397104,38.2215532 left font ',8' noenhanced front
+set label 'embree_low' at 7.26805735,44.0902713 left font ',8' noenhanced front
+set label 'embree_medium' at 25.1775368,36.1348177 left font ',8' noenhanced front
+set label 'embree_high' at 16.7834475,36.1348177 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -112,21 +112,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.33419257:65.8027084]
+set xrange [2.83718119:67.7533739]
 set xtics (5, 10, 20, 50)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 9.0949692,43.368649 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 32.8607421,38.1166438 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 20.3761397,39.0521322 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 16.2963156,38.2104198 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.3869453,37.8200069 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 30.7861492,39.2990834 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.3025618,38.7335583 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.569208,38.5681918 left font ',8' noenhanced front
-set label 'embree_low' at 4.44413467,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 14.1206833,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 22.1590571,36.8708212 left font ',8' noenhanced front
+set label 'LBVH' at 3.85177068,43.368649 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 26.3123616,38.1166438 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 13.7258096,39.0521322 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 11.7627141,38.2104198 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 12.7849762,37.8200069 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.8374794,38.9873551 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.9843649,38.7335583 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 23.5354168,38.5681918 left font ',8' noenhanced front
+set label 'embree_low' at 7.26805735,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 25.1775368,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 16.7834475,36.8708212 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -139,21 +139,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.33419257:65.8027084]
+set xrange [2.83718119:67.7533739]
 set xtics (5, 10, 20, 50)
 set yrange [35.1801633:45.2835894]
 unset label
-set label 'LBVH' at 9.0949692,41.3520993 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.1196644,37.8644328 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 17.124673,37.6863385 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 23.6775586,38.3842886 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 25.6618464,37.5280925 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 31.028725,39.67856 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.3025618,38.8250365 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.569208,37.9630935 left font ',8' noenhanced front
-set label 'embree_low' at 4.44413467,44.0902713 left font ',8' noenhanced front
-set label 'embree_medium' at 14.1206833,36.1348177 left font ',8' noenhanced front
-set label 'embree_high' at 22.1590571,36.1348177 left font ',8' noenhanced front
+set label 'LBVH' at 3.85177068,41.3520993 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 26.5329941,37.8644328 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 9.40287446,38.0152873 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 17.503531,38.3842886 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 19.3450969,37.5280925 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.8374794,39.67856 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.9843649,38.8250365 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 23.3397104,38.2215532 left font ',8' noenhanced front
+set label 'embree_low' at 7.26805735,44.0902713 left font ',8' noenhanced front
+set label 'embree_medium' at 25.1775368,36.1348177 left font ',8' noenhanced front
+set label 'embree_high' at 16.7834475,36.1348177 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
@@ -171,21 +171,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.33419257:65.8027084]
+set xrange [2.83718119:67.7533739]
 set xtics (5, 10, 20, 50)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 9.0949692,43.368649 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 32.8607421,38.1166438 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 20.3761397,39.0521322 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 16.2963156,38.2104198 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.3869453,37.8200069 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 30.7861492,39.2990834 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.3025618,38.7335583 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.569208,38.5681918 left font ',8' noenhanced front
-set label 'embree_low' at 4.44413467,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 14.1206833,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 22.1590571,36.8708212 left font ',8' noenhanced front
+set label 'LBVH' at 3.85177068,43.368649 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 26.3123616,38.1166438 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 13.7258096,39.0521322 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 11.7627141,38.2104198 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 12.7849762,37.8200069 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.8374794,38.9873551 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.9843649,38.7335583 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 23.5354168,38.5681918 left font ',8' noenhanced front
+set label 'embree_low' at 7.26805735,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 25.1775368,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 16.7834475,36.8708212 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -198,21 +198,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.33419257:65.8027084]
+set xrange [2.83718119:67.7533739]
 set xtics (5, 10, 20, 50)
 set yrange [35.1801633:45.2835894]
 unset label
-set label 'LBVH' at 9.0949692,41.3520993 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.1196644,37.8644328 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 17.124673,37.6863385 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 23.6775586,38.3842886 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 25.6618464,37.5280925 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 31.028725,39.67856 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 36.3025618,38.8250365 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.569208,37.9630935 left font ',8' noenhanced front
-set label 'embree_low' at 4.44413467,44.0902713 left font ',8' noenhanced front
-set label 'embree_medium' at 14.1206833,36.1348177 left font ',8' noenhanced front
-set label 'embree_high' at 22.1590571,36.1348177 left font ',8' noenhanced front
+set label 'LBVH' at 3.85177068,41.3520993 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 26.5329941,37.8644328 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 9.40287446,38.0152873 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 17.503531,38.3842886 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 19.3450969,37.5280925 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.8374794,39.67856 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.9843649,38.8250365 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 23.3397104,38.2215532 left font ',8' noenhanced front
+set label 'embree_low' at 7.26805735,44.0902713 left font ',8' noenhanced front
+set label 'embree_medium' at 25.1775368,36.1348177 left font ',8' noenhanced front
+set label 'embree_high' at 16.7834475,36.1348177 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot

@@ -11,21 +11,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.85690752:54.2037835]
-set xtics (5, 10, 20, 50)
+set xrange [5.17335718:57.8545154]
+set xtics (10, 20, 50)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 3.7935276,103.086451 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 24.5588575,71.3951472 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 12.9624988,73.0450257 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 16.3834859,67.6582542 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.9445242,72.4804162 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 23.0986664,66.2620175 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 30.1395806,69.0782932 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.1845228,68.7352597 left font ',8' noenhanced front
-set label 'embree_low' at 4.57147932,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 17.0904347,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 11.9412494,77.7503047 left font ',8' noenhanced front
+set label 'LBVH' at 6.5283103,103.086451 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 31.6156383,71.3951472 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 17.9590164,73.0450257 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 15.6156381,69.012315 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 22.7042216,71.1263555 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.0065208,67.246789 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7459383,69.0782932 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.9126857,67.3811989 left font ',8' noenhanced front
+set label 'embree_low' at 7.2794063,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 13.6834982,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 20.0691279,77.7503047 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -45,21 +45,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.85690752:54.2037835]
-set xtics (5, 10, 20, 50)
-set yrange [2.80105276:4.24836426]
+set xrange [5.17335718:57.8545154]
+set xtics (10, 20, 50)
+set yrange [4.38678783:6.29188698]
 unset label
-set label 'LBVH' at 3.7935276,2.97300057 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 24.7497985,3.93065745 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 9.12686805,3.76574641 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 16.3834859,3.7552604 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.9445242,3.81184291 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 15.7310192,3.88573573 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 30.1395806,3.88012953 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.1845228,3.86861158 left font ',8' noenhanced front
-set label 'embree_low' at 4.57147932,2.9378066 left font ',8' noenhanced front
-set label 'embree_medium' at 17.0904347,4.07742196 left font ',8' noenhanced front
-set label 'embree_high' at 16.9596438,4.02488087 left font ',8' noenhanced front
+set label 'LBVH' at 6.5283103,4.78096704 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 31.6156383,5.86242332 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 13.4673636,5.729237 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 21.2650131,5.66417576 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 22.7042216,5.82905413 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 26.7623481,5.69622597 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7459383,5.76886672 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 22.597548,5.9253881 left font ',8' noenhanced front
+set label 'embree_low' at 7.2794063,4.5667972 left font ',8' noenhanced front
+set label 'embree_medium' at 19.0286954,6.11561037 left font ',8' noenhanced front
+set label 'embree_high' at 20.0691279,6.01624982 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 0 using 2:4 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:4 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -78,21 +78,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.85690752:54.2037835]
-set xtics (5, 10, 20, 50)
+set xrange [5.17335718:57.8545154]
+set xtics (10, 20, 50)
 set yrange [61.6488455:110.063549]
 unset label
-set label 'LBVH' at 3.7935276,104.26217 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 24.5588575,72.0854584 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 13.0632801,72.3902199 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 16.2570897,75.7754539 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.9445242,74.0498997 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 15.7310192,70.9812889 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 30.1395806,70.3405519 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.6173155,68.9086397 left font ',8' noenhanced front
-set label 'embree_low' at 4.57147932,104.345277 left font ',8' noenhanced front
-set label 'embree_medium' at 17.0904347,66.2234631 left font ',8' noenhanced front
-set label 'embree_high' at 12.0340906,64.9849474 left font ',8' noenhanced front
+set label 'LBVH' at 5.63356291,104.26217 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 31.6156383,72.0854584 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 18.0734861,72.3902199 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 21.1303297,75.7754539 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 22.8489368,74.0498997 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 19.6525222,70.9812889 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7459383,70.3405519 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 22.597548,67.6701241 left font ',8' noenhanced front
+set label 'embree_low' at 7.2794063,104.345277 left font ',8' noenhanced front
+set label 'embree_medium' at 13.6834982,66.2234631 left font ',8' noenhanced front
+set label 'embree_high' at 19.9420187,64.9849474 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -112,21 +112,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.85690752:54.2037835]
-set xtics (5, 10, 20, 50)
+set xrange [5.17335718:57.8545154]
+set xtics (10, 20, 50)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 3.7935276,103.086451 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 24.5588575,71.3951472 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 12.9624988,73.0450257 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 16.3834859,67.6582542 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.9445242,72.4804162 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 23.0986664,66.2620175 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 30.1395806,69.0782932 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.1845228,68.7352597 left font ',8' noenhanced front
-set label 'embree_low' at 4.57147932,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 17.0904347,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 11.9412494,77.7503047 left font ',8' noenhanced front
+set label 'LBVH' at 6.5283103,103.086451 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 31.6156383,71.3951472 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 17.9590164,73.0450257 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 15.6156381,69.012315 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 22.7042216,71.1263555 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.0065208,67.246789 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7459383,69.0782932 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.9126857,67.3811989 left font ',8' noenhanced front
+set label 'embree_low' at 7.2794063,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 13.6834982,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 20.0691279,77.7503047 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -139,21 +139,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.85690752:54.2037835]
-set xtics (5, 10, 20, 50)
+set xrange [5.17335718:57.8545154]
+set xtics (10, 20, 50)
 set yrange [61.6488455:110.063549]
 unset label
-set label 'LBVH' at 3.7935276,104.26217 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 24.5588575,72.0854584 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 13.0632801,72.3902199 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 16.2570897,75.7754539 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.9445242,74.0498997 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 15.7310192,70.9812889 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 30.1395806,70.3405519 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.6173155,68.9086397 left font ',8' noenhanced front
-set label 'embree_low' at 4.57147932,104.345277 left font ',8' noenhanced front
-set label 'embree_medium' at 17.0904347,66.2234631 left font ',8' noenhanced front
-set label 'embree_high' at 12.0340906,64.9849474 left font ',8' noenhanced front
+set label 'LBVH' at 5.63356291,104.26217 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 31.6156383,72.0854584 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 18.0734861,72.3902199 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 21.1303297,75.7754539 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 22.8489368,74.0498997 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 19.6525222,70.9812889 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7459383,70.3405519 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 22.597548,67.6701241 left font ',8' noenhanced front
+set label 'embree_low' at 7.2794063,104.345277 left font ',8' noenhanced front
+set label 'embree_medium' at 13.6834982,66.2234631 left font ',8' noenhanced front
+set label 'embree_high' at 19.9420187,64.9849474 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
@@ -171,21 +171,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.85690752:54.2037835]
-set xtics (5, 10, 20, 50)
+set xrange [5.17335718:57.8545154]
+set xtics (10, 20, 50)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 3.7935276,103.086451 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 24.5588575,71.3951472 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 12.9624988,73.0450257 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 16.3834859,67.6582542 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.9445242,72.4804162 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 23.0986664,66.2620175 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 30.1395806,69.0782932 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.1845228,68.7352597 left font ',8' noenhanced front
-set label 'embree_low' at 4.57147932,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 17.0904347,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 11.9412494,77.7503047 left font ',8' noenhanced front
+set label 'LBVH' at 6.5283103,103.086451 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 31.6156383,71.3951472 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 17.9590164,73.0450257 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 15.6156381,69.012315 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 22.7042216,71.1263555 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 23.0065208,67.246789 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7459383,69.0782932 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.9126857,67.3811989 left font ',8' noenhanced front
+set label 'embree_low' at 7.2794063,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 13.6834982,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 20.0691279,77.7503047 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -198,21 +198,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.85690752:54.2037835]
-set xtics (5, 10, 20, 50)
+set xrange [5.17335718:57.8545154]
+set xtics (10, 20, 50)
 set yrange [61.6488455:110.063549]
 unset label
-set label 'LBVH' at 3.7935276,104.26217 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 24.5588575,72.0854584 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 13.0632801,72.3902199 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 16.2570897,75.7754539 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.9445242,74.0498997 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 15.7310192,70.9812889 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 30.1395806,70.3405519 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.6173155,68.9086397 left font ',8' noenhanced front
-set label 'embree_low' at 4.57147932,104.345277 left font ',8' noenhanced front
-set label 'embree_medium' at 17.0904347,66.2234631 left font ',8' noenhanced front
-set label 'embree_high' at 12.0340906,64.9849474 left font ',8' noenhanced front
+set label 'LBVH' at 5.63356291,104.26217 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 31.6156383,72.0854584 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 18.0734861,72.3902199 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 21.1303297,75.7754539 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 22.8489368,74.0498997 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 19.6525222,70.9812889 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7459383,70.3405519 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 22.597548,67.6701241 left font ',8' noenhanced front
+set label 'embree_low' at 7.2794063,104.345277 left font ',8' noenhanced front
+set label 'embree_medium' at 13.6834982,66.2234631 left font ',8' noenhanced front
+set label 'embree_high' at 19.9420187,64.9849474 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot

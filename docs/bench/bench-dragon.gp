@@ -11,21 +11,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [51.182709:681.023782]
-set xtics (100, 200, 500)
+set xrange [48.1869613:742.013521]
+set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 72.3771683,70.0126652 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 315.414039,59.6986683 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 202.335367,62.1027229 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 180.786561,59.4901949 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 277.918718,61.7556733 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 241.590122,59.3866347 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 406.44355,60.5233863 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 161.743299,60.7547111 left font ',8' noenhanced front
-set label 'embree_low' at 65.6785368,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 289.893502,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 205.61413,57.38674 left font ',8' noenhanced front
+set label 'LBVH' at 62.7108151,70.0126652 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 313.510896,59.6986683 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 230.12608,62.1027229 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 196.884445,59.4901949 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 307.223458,61.7556733 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 357.949228,60.6771969 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 427.043994,59.8781052 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 178.729503,60.7547111 left font ',8' noenhanced front
+set label 'embree_low' at 83.0188878,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 297.267502,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 213.297041,57.38674 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -45,21 +45,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [51.182709:681.023782]
-set xtics (100, 200, 500)
-set yrange [2.0314518:2.99229843]
+set xrange [48.1869613:742.013521]
+set xtics (50, 100, 200, 500)
+set yrange [2.57462966:4.23579066]
 unset label
-set label 'LBVH' at 72.3771683,2.44858787 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 365.155598,2.57240112 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 202.335367,2.57486586 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 253.444466,2.6270601 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 277.918718,2.65865813 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 338.684907,2.5387112 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 406.44355,2.64131704 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 161.743299,2.65292825 left font ',8' noenhanced front
-set label 'embree_low' at 65.6785368,2.12224046 left font ',8' noenhanced front
-set label 'embree_medium' at 289.893502,2.78519518 left font ',8' noenhanced front
-set label 'embree_high' at 281.843638,2.87881261 left font ',8' noenhanced front
+set label 'LBVH' at 62.7108151,3.50658722 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 365.964649,4.03959054 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 230.12608,3.21019198 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 281.325496,3.83094412 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 257.01326,3.06471646 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 355.382859,3.17745283 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 430.127858,3.11773176 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 178.729503,3.11882491 left font ',8' noenhanced front
+set label 'embree_low' at 83.0188878,2.73158976 left font ',8' noenhanced front
+set label 'embree_medium' at 297.267502,3.36100362 left font ',8' noenhanced front
+set label 'embree_high' at 297.625523,3.27102157 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 0 using 2:4 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:4 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -78,21 +78,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [51.182709:681.023782]
-set xtics (100, 200, 500)
+set xrange [48.1869613:742.013521]
+set xtics (50, 100, 200, 500)
 set yrange [46.0340343:63.6489318]
 unset label
-set label 'LBVH' at 72.3771683,56.5806094 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 365.155598,50.3496993 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 148.619063,51.3385083 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 253.444466,52.2072513 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 199.599351,50.6183954 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 338.684907,52.2859771 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 406.44355,51.3500074 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 162.848699,51.9117243 left font ',8' noenhanced front
-set label 'embree_low' at 65.6785368,61.5684321 left font ',8' noenhanced front
-set label 'embree_medium' at 289.893502,47.6984341 left font ',8' noenhanced front
-set label 'embree_high' at 205.61413,47.6984341 left font ',8' noenhanced front
+set label 'LBVH' at 62.7108151,56.5806094 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 365.964649,50.3496993 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 166.113701,51.3385083 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 281.325496,52.2072513 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 216.561694,50.6183954 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 355.382859,50.9341362 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 427.043994,51.800621 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 180.020184,51.9117243 left font ',8' noenhanced front
+set label 'embree_low' at 83.0188878,61.5684321 left font ',8' noenhanced front
+set label 'embree_medium' at 297.267502,47.6984341 left font ',8' noenhanced front
+set label 'embree_high' at 213.297041,47.6984341 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -112,21 +112,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [51.182709:681.023782]
-set xtics (100, 200, 500)
+set xrange [48.1869613:742.013521]
+set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 72.3771683,70.0126652 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 315.414039,59.6986683 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 202.335367,62.1027229 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 180.786561,59.4901949 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 277.918718,61.7556733 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 241.590122,59.3866347 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 406.44355,60.5233863 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 161.743299,60.7547111 left font ',8' noenhanced front
-set label 'embree_low' at 65.6785368,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 289.893502,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 205.61413,57.38674 left font ',8' noenhanced front
+set label 'LBVH' at 62.7108151,70.0126652 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 313.510896,59.6986683 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 230.12608,62.1027229 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 196.884445,59.4901949 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 307.223458,61.7556733 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 357.949228,60.6771969 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 427.043994,59.8781052 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 178.729503,60.7547111 left font ',8' noenhanced front
+set label 'embree_low' at 83.0188878,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 297.267502,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 213.297041,57.38674 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -139,21 +139,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [51.182709:681.023782]
-set xtics (100, 200, 500)
+set xrange [48.1869613:742.013521]
+set xtics (50, 100, 200, 500)
 set yrange [46.0340343:63.6489318]
 unset label
-set label 'LBVH' at 72.3771683,56.5806094 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 365.155598,50.3496993 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 148.619063,51.3385083 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 253.444466,52.2072513 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 199.599351,50.6183954 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 338.684907,52.2859771 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 406.44355,51.3500074 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 162.848699,51.9117243 left font ',8' noenhanced front
-set label 'embree_low' at 65.6785368,61.5684321 left font ',8' noenhanced front
-set label 'embree_medium' at 289.893502,47.6984341 left font ',8' noenhanced front
-set label 'embree_high' at 205.61413,47.6984341 left font ',8' noenhanced front
+set label 'LBVH' at 62.7108151,56.5806094 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 365.964649,50.3496993 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 166.113701,51.3385083 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 281.325496,52.2072513 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 216.561694,50.6183954 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 355.382859,50.9341362 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 427.043994,51.800621 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 180.020184,51.9117243 left font ',8' noenhanced front
+set label 'embree_low' at 83.0188878,61.5684321 left font ',8' noenhanced front
+set label 'embree_medium' at 297.267502,47.6984341 left font ',8' noenhanced front
+set label 'embree_high' at 213.297041,47.6984341 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
@@ -171,21 +171,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [51.182709:681.023782]
-set xtics (100, 200, 500)
+set xrange [48.1869613:742.013521]
+set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 72.3771683,70.0126652 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 315.414039,59.6986683 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 202.335367,62.1027229 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 180.786561,59.4901949 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 277.918718,61.7556733 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 241.590122,59.3866347 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 406.44355,60.5233863 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 161.743299,60.7547111 left font ',8' noenhanced front
-set label 'embree_low' at 65.6785368,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 289.893502,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 205.61413,57.38674 left font ',8' noenhanced front
+set label 'LBVH' at 62.7108151,70.0126652 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 313.510896,59.6986683 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 230.12608,62.1027229 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 196.884445,59.4901949 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 307.223458,61.7556733 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 357.949228,60.6771969 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 427.043994,59.8781052 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 178.729503,60.7547111 left font ',8' noenhanced front
+set label 'embree_low' at 83.0188878,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 297.267502,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 213.297041,57.38674 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -198,21 +198,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [51.182709:681.023782]
-set xtics (100, 200, 500)
+set xrange [48.1869613:742.013521]
+set xtics (50, 100, 200, 500)
 set yrange [46.0340343:63.6489318]
 unset label
-set label 'LBVH' at 72.3771683,56.5806094 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 365.155598,50.3496993 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 148.619063,51.3385083 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 253.444466,52.2072513 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 199.599351,50.6183954 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 338.684907,52.2859771 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 406.44355,51.3500074 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 162.848699,51.9117243 left font ',8' noenhanced front
-set label 'embree_low' at 65.6785368,61.5684321 left font ',8' noenhanced front
-set label 'embree_medium' at 289.893502,47.6984341 left font ',8' noenhanced front
-set label 'embree_high' at 205.61413,47.6984341 left font ',8' noenhanced front
+set label 'LBVH' at 62.7108151,56.5806094 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 365.964649,50.3496993 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 166.113701,51.3385083 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 281.325496,52.2072513 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 216.561694,50.6183954 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 355.382859,50.9341362 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 427.043994,51.800621 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 180.020184,51.9117243 left font ',8' noenhanced front
+set label 'embree_low' at 83.0188878,61.5684321 left font ',8' noenhanced front
+set label 'embree_medium' at 297.267502,47.6984341 left font ',8' noenhanced front
+set label 'embree_high' at 213.297041,47.6984341 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
