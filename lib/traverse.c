@@ -344,9 +344,15 @@ static const wide_node *wide_get(const atrbvh_bvh *bvh)
 #endif
 }
 
-/* atrbvh_trav_run over the wide copy, for a ray with use_float. */
-static int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
-                    const atrbvh_trav_ray *r, int any, atrbvh_trav_best *best)
+/* The lowest lane of a nonzero 4-bit mask. */
+static const signed char wide_first_lane[16] = {0, 0, 1, 0, 2, 0, 1, 0,
+                                                3, 0, 1, 0, 2, 0, 1, 0};
+
+/* atrbvh_trav_run over the wide copy, for a ray with use_float; inlined
+ * into wide_run_closest and wide_run_any with `any` constant. */
+ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
+                             const atrbvh_trav_ray *r, int any,
+                             atrbvh_trav_best *best)
 {
     int32_t stack_node[WIDE_STACK];
     float stack_t[WIDE_STACK];
@@ -419,7 +425,21 @@ static int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
                 float ct[4];
                 int cnt = 0, lane, a, b2;
                 if (!(m & (m - 1))) {
-                    cur = n->child[m & 1 ? 0 : m & 2 ? 1 : m & 4 ? 2 : 3];
+                    cur = n->child[wide_first_lane[m]];
+                    continue;
+                }
+                if (any) {
+                    /* any hit: whether one exists does not depend on the
+                     * order, so no sorting: the lowest lane visited, the
+                     * others pushed (no distances: the limit never
+                     * changes before the query ends) */
+                    int l0 = wide_first_lane[m];
+                    m &= m - 1;
+                    do {
+                        stack_node[sp++] = n->child[wide_first_lane[m]];
+                        m &= m - 1;
+                    } while (m);
+                    cur = n->child[l0];
                     continue;
                 }
                 _mm_storeu_ps(t4, lo);
@@ -465,13 +485,26 @@ static int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
                 continue;
             }
         }
-        while (sp > 0u && !(stack_t[sp - 1u] <= thi))
-            sp--;
+        if (!any)
+            while (sp > 0u && !(stack_t[sp - 1u] <= thi))
+                sp--;
         if (sp == 0u)
             return any ? 0 : best->prim != ATRBVH_NO_HIT;
         sp--;
         cur = stack_node[sp];
     }
+}
+
+static int wide_run_closest(const atrbvh_trav_scene *s, const wide_node *w,
+                            const atrbvh_trav_ray *r, atrbvh_trav_best *best)
+{
+    return wide_run(s, w, r, 0, best);
+}
+
+static int wide_run_any(const atrbvh_trav_scene *s, const wide_node *w,
+                        const atrbvh_trav_ray *r, atrbvh_trav_best *best)
+{
+    return wide_run(s, w, r, 1, best);
 }
 #endif
 
@@ -492,7 +525,7 @@ static void wide_closest(const atrbvh_trav_scene *s, const void *w,
             return;
         if (!s->float_slabs)
             r.use_float = 0;
-        if (!(r.use_float ? wide_run(s, (const wide_node *)w, &r, 0, &best)
+        if (!(r.use_float ? wide_run_closest(s, (const wide_node *)w, &r, &best)
                           : atrbvh_trav_run(s, &r, 0, &best)))
             return;
         hit->t = best.t;
@@ -519,7 +552,7 @@ static int wide_any(const atrbvh_trav_scene *s, const void *w,
             return 0;
         if (!s->float_slabs)
             r.use_float = 0;
-        return r.use_float ? wide_run(s, (const wide_node *)w, &r, 1, &best)
+        return r.use_float ? wide_run_any(s, (const wide_node *)w, &r, &best)
                            : atrbvh_trav_run(s, &r, 1, &best);
     }
 #else
