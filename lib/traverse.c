@@ -72,6 +72,7 @@
 #include "internal.h"
 #include "shared/traverse.h"
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
@@ -304,6 +305,17 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
     }
     for (k = 0; k < n_wide; k++)
         w[k].depth = 0;
+    /* the copy has fewer nodes than the tree has internal ones (0.4 to
+     * 0.5 of them on the shared scenes): keep only those when memory
+     * allows */
+    if (n_wide < internal) {
+        wide_node *fit = atrbvh_i_alloc_array(n_wide, sizeof *w);
+        if (fit) {
+            memcpy(fit, w, n_wide * sizeof *w);
+            atrbvh_i_free(w);
+            w = fit;
+        }
+    }
     return w;
 }
 
@@ -344,9 +356,15 @@ static const wide_node *wide_get(const atrbvh_bvh *bvh)
 #endif
 }
 
-/* atrbvh_trav_run over the wide copy, for a ray with use_float. */
-static int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
-                    const atrbvh_trav_ray *r, int any, atrbvh_trav_best *best)
+/* The lowest lane of a nonzero 4-bit mask. */
+static const signed char wide_first_lane[16] = {0, 0, 1, 0, 2, 0, 1, 0,
+                                                3, 0, 1, 0, 2, 0, 1, 0};
+
+/* atrbvh_trav_run over the wide copy, for a ray with use_float; inlined
+ * into wide_run_closest and wide_run_any with `any` constant. */
+ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
+                             const atrbvh_trav_ray *r, int any,
+                             atrbvh_trav_best *best)
 {
     int32_t stack_node[WIDE_STACK];
     float stack_t[WIDE_STACK];
@@ -419,7 +437,21 @@ static int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
                 float ct[4];
                 int cnt = 0, lane, a, b2;
                 if (!(m & (m - 1))) {
-                    cur = n->child[m & 1 ? 0 : m & 2 ? 1 : m & 4 ? 2 : 3];
+                    cur = n->child[wide_first_lane[m]];
+                    continue;
+                }
+                if (any) {
+                    /* any hit: whether one exists does not depend on the
+                     * order, so no sorting: the lowest lane visited, the
+                     * others pushed (no distances: the limit never
+                     * changes before the query ends) */
+                    int l0 = wide_first_lane[m];
+                    m &= m - 1;
+                    do {
+                        stack_node[sp++] = n->child[wide_first_lane[m]];
+                        m &= m - 1;
+                    } while (m);
+                    cur = n->child[l0];
                     continue;
                 }
                 _mm_storeu_ps(t4, lo);
@@ -465,15 +497,99 @@ static int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
                 continue;
             }
         }
-        while (sp > 0u && !(stack_t[sp - 1u] <= thi))
-            sp--;
+        if (!any)
+            while (sp > 0u && !(stack_t[sp - 1u] <= thi))
+                sp--;
         if (sp == 0u)
             return any ? 0 : best->prim != ATRBVH_NO_HIT;
         sp--;
         cur = stack_node[sp];
     }
 }
+
+static int wide_run_closest(const atrbvh_trav_scene *s, const wide_node *w,
+                            const atrbvh_trav_ray *r, atrbvh_trav_best *best)
+{
+    return wide_run(s, w, r, 0, best);
+}
+
+static int wide_run_any(const atrbvh_trav_scene *s, const wide_node *w,
+                        const atrbvh_trav_ray *r, atrbvh_trav_best *best)
+{
+    return wide_run(s, w, r, 1, best);
+}
 #endif
+
+/* atrbvh_trav_setup for the batches over the wide copy.  A ray that takes
+ * the float test (tmin >= 0 and at most tmax, every direction component
+ * of magnitude within [2^-125, 2^125], the origin within +-2^126; no NaN
+ * or infinity passes these comparisons) gets the same fields from the
+ * same operations, without the loops, the finiteness tests and the sixth
+ * division (sz is 1 / dir[kz], which idird[kz] already holds); every
+ * other ray goes through atrbvh_trav_setup. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((always_inline))
+#endif
+static inline int wide_setup(const atrbvh_ray *ray, atrbvh_trav_ray *r)
+{
+    const float *o = ray->origin, *d = ray->dir;
+    float a0 = fabsf(d[0]), a1 = fabsf(d[1]), a2 = fabsf(d[2]);
+    double id0, id1, id2;
+    int kx, ky, kz;
+    if (!((ray->tmin >= 0.0f) & (ray->tmin <= ray->tmax) &
+          (a0 >= ATRBVH_TRAV_F_DIR_MIN) & (a0 <= ATRBVH_TRAV_F_DIR_MAX) &
+          (a1 >= ATRBVH_TRAV_F_DIR_MIN) & (a1 <= ATRBVH_TRAV_F_DIR_MAX) &
+          (a2 >= ATRBVH_TRAV_F_DIR_MIN) & (a2 <= ATRBVH_TRAV_F_DIR_MAX) &
+          (fabsf(o[0]) <= ATRBVH_TRAV_F_COORD_MAX) &
+          (fabsf(o[1]) <= ATRBVH_TRAV_F_COORD_MAX) &
+          (fabsf(o[2]) <= ATRBVH_TRAV_F_COORD_MAX)))
+        return atrbvh_trav_setup(o, d, ray->tmin, ray->tmax, r);
+    id0 = 1.0 / (double)d[0];
+    id1 = 1.0 / (double)d[1];
+    id2 = 1.0 / (double)d[2];
+    r->orgf[0] = o[0];
+    r->orgf[1] = o[1];
+    r->orgf[2] = o[2];
+    r->idirf[0] = (float)id0;
+    r->idirf[1] = (float)id1;
+    r->idirf[2] = (float)id2;
+    r->use_float = 1;
+    r->orgd[0] = (double)o[0];
+    r->orgd[1] = (double)o[1];
+    r->orgd[2] = (double)o[2];
+    r->idird[0] = id0;
+    r->idird[1] = id1;
+    r->idird[2] = id2;
+    r->sign[0] = id0 < 0.0;
+    r->sign[1] = id1 < 0.0;
+    r->sign[2] = id2 < 0.0;
+    r->near_at[0] = r->sign[0] ? 3 : 0;
+    r->near_at[1] = r->sign[1] ? 4 : 1;
+    r->near_at[2] = r->sign[2] ? 5 : 2;
+    r->far_at[0] = r->sign[0] ? 0 : 3;
+    r->far_at[1] = r->sign[1] ? 1 : 4;
+    r->far_at[2] = r->sign[2] ? 2 : 5;
+    r->tmin = ray->tmin;
+    r->tmax = ray->tmax;
+    /* the largest component becomes z (the first on a tie), as there */
+    kz = a1 > a0 ? 1 : 0;
+    if (a2 > (kz ? a1 : a0))
+        kz = 2;
+    kx = kz == 2 ? 0 : kz + 1;
+    ky = kx == 2 ? 0 : kx + 1;
+    if (d[kz] < 0.0f) {
+        int sw = kx;
+        kx = ky;
+        ky = sw;
+    }
+    r->kx = kx;
+    r->ky = ky;
+    r->kz = kz;
+    r->sx = (double)d[kx] / (double)d[kz];
+    r->sy = (double)d[ky] / (double)d[kz];
+    r->sz = r->idird[kz];
+    return 1;
+}
 
 /* atrbvh_trav_closest and atrbvh_trav_any with the wide copy `w` (NULL:
  * none) for the rays that take the float test. */
@@ -487,12 +603,11 @@ static void wide_closest(const atrbvh_trav_scene *s, const void *w,
         hit->t = ray->tmax;
         hit->u = hit->v = 0.0f;
         hit->primitive = ATRBVH_NO_HIT;
-        if (!atrbvh_trav_setup(ray->origin, ray->dir, ray->tmin, ray->tmax,
-                               &r))
+        if (!wide_setup(ray, &r))
             return;
         if (!s->float_slabs)
             r.use_float = 0;
-        if (!(r.use_float ? wide_run(s, (const wide_node *)w, &r, 0, &best)
+        if (!(r.use_float ? wide_run_closest(s, (const wide_node *)w, &r, &best)
                           : atrbvh_trav_run(s, &r, 0, &best)))
             return;
         hit->t = best.t;
@@ -514,12 +629,11 @@ static int wide_any(const atrbvh_trav_scene *s, const void *w,
     atrbvh_trav_ray r;
     atrbvh_trav_best best;
     if (w) {
-        if (!atrbvh_trav_setup(ray->origin, ray->dir, ray->tmin, ray->tmax,
-                               &r))
+        if (!wide_setup(ray, &r))
             return 0;
         if (!s->float_slabs)
             r.use_float = 0;
-        return r.use_float ? wide_run(s, (const wide_node *)w, &r, 1, &best)
+        return r.use_float ? wide_run_any(s, (const wide_node *)w, &r, &best)
                            : atrbvh_trav_run(s, &r, 1, &best);
     }
 #else

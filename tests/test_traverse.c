@@ -1417,6 +1417,117 @@ START_TEST(wide_concurrent_first_use)
 }
 END_TEST
 
+/* The wide batches prepare the common rays (float test) by their own
+ * code and hand the others to the shared setup: rays at and just across
+ * every limit of that choice (direction components at 2^-125 and 2^125,
+ * zeros, subnormals, infinities and NaNs; origins at 2^126; tmin negative,
+ * -0, at or past tmax; NaN limits) must give the counted batch's results
+ * bit for bit, on triangles (indexed) and boxes. */
+static void edge_ray(tu_rng *r, atrbvh_ray *ray)
+{
+    static const float dirs[] = {0.0f, -0.0f, 0x1p-125f, -0x1p-125f,
+                                 0x1.fffffep-126f, -0x1.fffffep-126f,
+                                 1e-40f, 0x1p125f, -0x1p125f,
+                                 0x1.000002p125f, -0x1p126f, INFINITY,
+                                 NAN, 0x1p-60f, -3.0e-20f};
+    static const float orgs[] = {0x1p126f, -0x1p126f, 0x1.000002p126f,
+                                 -0x1.000002p126f, INFINITY, NAN, 0x1p100f};
+    int k = (int)(tu_rng_next(r) % 3), what = (int)(tu_rng_next(r) % 6);
+    switch (what) {
+    case 0:
+    case 1:
+    case 2:
+        ray->dir[k] = dirs[tu_rng_next(r) % (sizeof dirs / sizeof *dirs)];
+        break;
+    case 3:
+        ray->origin[k] = orgs[tu_rng_next(r) % (sizeof orgs / sizeof *orgs)];
+        break;
+    case 4: {
+        static const float tmins[] = {-0.0f, -1e-30f, 0x1p-149f, -1.0f, NAN};
+        size_t j = (size_t)(tu_rng_next(r) % 7);
+        if (j < 5)
+            ray->tmin = tmins[j];
+        else if (j == 5)
+            ray->tmin = ray->tmax;
+        else
+            ray->tmin = ray->tmax == INFINITY ? INFINITY
+                                              : nextafterf(ray->tmax, 2.0f);
+        break;
+    }
+    default: {
+        static const float tmaxs[] = {NAN, -0.0f, 0.0f, 0x1p-149f};
+        ray->tmax = tmaxs[tu_rng_next(r) % 4];
+        break;
+    }
+    }
+}
+
+START_TEST(wide_setup_edges)
+{
+    mesh ms[2];
+    int s;
+    ms[0] = icosphere(3);
+    ms[1] = random_boxes(400, 43);
+    for (s = 0; s < 2; s++) {
+        atrbvh_geometry g = mesh_geometry(&ms[s]);
+        config c = {ATRBVH_METHOD_LBVH, 1, 4};
+        atrbvh_bvh *b = build_config(&g, &c);
+        size_t n = 8192, i, nhit = 0, edge_hits = 0;
+        atrbvh_ray *rays = malloc(n * sizeof *rays);
+        atrbvh_hit *hits = malloc(n * sizeof *hits);
+        atrbvh_hit *bin = malloc(n * sizeof *bin);
+        uint8_t *occ = malloc(n), *bocc = malloc(n);
+        atrbvh_trace_stats ts;
+        atrbvh_error e;
+        tu_rng r;
+        ck_assert(rays && hits && bin && occ && bocc);
+        grazing_rays(&ms[s], b, n, 990 + (uint64_t)s, rays);
+        tu_rng_seed(&r, 995 + (uint64_t)s);
+        for (i = 0; i < n; i++)
+            if (i % 4 != 0)
+                edge_ray(&r, &rays[i]);
+        ck_assert_int_eq(atrbvh_intersect_batch(b, &g, rays, n, hits, 2, &e),
+                         ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_occluded_batch(b, &g, rays, n, occ, 2, &e),
+                         ATRBVH_OK);
+        atrbvh_trace_stats_init(&ts);
+        ck_assert_int_eq(atrbvh_intersect_batch_stats(NULL, b, &g, rays, n,
+                                                      bin, 1, &ts, &e),
+                         ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_occluded_batch_stats(NULL, b, &g, rays, n,
+                                                     bocc, 1, &ts, &e),
+                         ATRBVH_OK);
+        for (i = 0; i < n; i++) {
+            ck_assert_msg(memcmp(&hits[i], &bin[i], sizeof *hits) == 0 &&
+                              occ[i] == bocc[i],
+                          "%s ray %zu (o %a %a %a d %a %a %a t %a..%a): the "
+                          "batch gives prim %u t %a occluded %u, the counted "
+                          "batch prim %u t %a occluded %u",
+                          s ? "boxes" : "icosphere", i,
+                          (double)rays[i].origin[0], (double)rays[i].origin[1],
+                          (double)rays[i].origin[2], (double)rays[i].dir[0],
+                          (double)rays[i].dir[1], (double)rays[i].dir[2],
+                          (double)rays[i].tmin, (double)rays[i].tmax,
+                          hits[i].primitive, (double)hits[i].t, occ[i],
+                          bin[i].primitive, (double)bin[i].t, bocc[i]);
+            nhit += hits[i].primitive != ATRBVH_NO_HIT;
+            edge_hits += i % 4 != 0 && hits[i].primitive != ATRBVH_NO_HIT;
+        }
+        /* the edge rays must hit too, not only miss */
+        ck_assert_msg(nhit > n / 20 && edge_hits > n / 40,
+                      "%zu hits, %zu of the edge rays, of %zu", nhit,
+                      edge_hits, n);
+        atrbvh_bvh_free(b);
+        free(rays);
+        free(hits);
+        free(bin);
+        free(occ);
+        free(bocc);
+        mesh_free(&ms[s]);
+    }
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("traverse");
@@ -1444,6 +1555,7 @@ static Suite *suite(void)
     tcase_add_test(t, wide_batches);
     tcase_add_test(t, wide_after_refit);
     tcase_add_test(t, wide_concurrent_first_use);
+    tcase_add_test(t, wide_setup_edges);
     tcase_set_timeout(t, 600);
     suite_add_tcase(s, t);
     return s;
