@@ -45,16 +45,20 @@ static void set_stats_sah(atrbvh_bvh *b, size_t leaves, unsigned depth,
  * (a deeper tree is measured by the general walk, check.c). */
 #define MEASURE_STACK 512
 
-/* A node's box as sah.c reads it. */
-static atrbvh_box node_box(const atrbvh_node *v)
+/* A node's area: atrbvh_box_area (shared/arith.h) on its box, the same
+ * operations in the same order (the same bits), read from the node's
+ * fields directly: the box copied first went through the stack
+ * (callgrind, bunny LBVH, one thread: the pass 4.77M -> 4.16M
+ * instructions). */
+static inline double node_area(const atrbvh_node *v)
 {
-    atrbvh_box b;
-    int k;
-    for (k = 0; k < 3; k++) {
-        b.min[k] = v->min[k];
-        b.max[k] = v->max[k];
-    }
-    return b;
+    const double dx = (double)v->max[0] - (double)v->min[0];
+    const double dy = (double)v->max[1] - (double)v->min[1];
+    const double dz = (double)v->max[2] - (double)v->min[2];
+    double s = dx * dy;
+    s = s + dy * dz;
+    s = s + dz * dx;
+    return 2.0 * s;
 }
 
 /* One forward pass over the layout's depth-first array: node i+1 must be
@@ -79,7 +83,7 @@ atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *b)
         return ATRBVH_ERR_BACKEND; /* node indices are 32 bits */
     for (i = 0; i < m; i++) {
         const atrbvh_node *v = &b->nodes[i];
-        const double a = atrbvh_box_area(node_box(v));
+        const double a = node_area(v);
         if (i == 0)
             root = a;
         if (depth > deepest)
