@@ -11,20 +11,20 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.30330711:45.2716037]
+set xrange [2.77569241:43.7617542]
 set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 4.25095077,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 10.2619271,38.740404 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 14.1866154,38.1317351 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 26.8598529,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 19.5721928,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 4.49367987,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 21.3982737,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 15.6186826,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 7.67994809,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 11.9108974,39.137149 left font ',8' noenhanced front
+set label 'LBVH' at 3.62052011,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 9.62642286,38.740404 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 13.0172829,38.1317351 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 25.2486486,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.2001743,38.8799201 left font ',8' noenhanced front
+set label 'embree_low' at 4.11757618,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 21.2155487,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 15.271007,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 7.00275997,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 13.6619992,39.3638605 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,20 +11,20 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [17.1670688:296.973398]
+set xrange [14.1677003:264.24443]
 set xtics (20, 50, 100, 200)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 22.5932368,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 58.8115455,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 74.2612752,34.0661051 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 168.199426,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 118.022404,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 31.9747895,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 103.138605,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 70.4335614,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 42.2800396,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 91.7117131,38.1056054 left font ',8' noenhanced front
+set label 'LBVH' at 18.7815248,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 80.1252384,38.1056054 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 102.989822,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 147.432954,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 64.3615205,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 27.9302319,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 66.1081738,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 100.367492,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 23.6145169,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 45.575957,36.836494 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
