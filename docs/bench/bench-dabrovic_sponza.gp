@@ -11,21 +11,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.17335718:57.8545154]
-set xtics (10, 20, 50)
+set xrange [4.81803082:58.8297241]
+set xtics (5, 10, 20, 50)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 6.5283103,103.086451 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 31.6156383,71.3951472 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 17.9590164,73.0450257 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 15.6156381,69.012315 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 22.7042216,71.1263555 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 23.0065208,67.246789 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 35.7459383,69.0782932 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.9126857,67.3811989 left font ',8' noenhanced front
-set label 'embree_low' at 7.2794063,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 13.6834982,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 20.0691279,77.7503047 left font ',8' noenhanced front
+set label 'LBVH' at 6.13161414,103.086451 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 33.1260115,71.3951472 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 17.8956688,73.0450257 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 22.5210096,71.7204365 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 24.8442122,67.0641732 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 19.0107194,66.2620175 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7170588,69.0782932 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.0895633,68.7352597 left font ',8' noenhanced front
+set label 'embree_low' at 6.58303657,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 18.9284731,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 13.3453975,77.7503047 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -45,21 +45,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.17335718:57.8545154]
-set xtics (10, 20, 50)
-set yrange [4.38678783:6.29188698]
+set xrange [4.81803082:58.8297241]
+set xtics (5, 10, 20, 50)
+set yrange [4.39827932:6.30818591]
 unset label
-set label 'LBVH' at 6.5283103,4.78096704 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 31.6156383,5.86242332 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 13.4673636,5.729237 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 21.2650131,5.66417576 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 22.7042216,5.82905413 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 26.7623481,5.69622597 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 35.7459383,5.76886672 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 22.597548,5.9253881 left font ',8' noenhanced front
-set label 'embree_low' at 7.2794063,4.5667972 left font ',8' noenhanced front
-set label 'embree_medium' at 19.0286954,6.11561037 left font ',8' noenhanced front
-set label 'embree_high' at 20.0691279,6.01624982 left font ',8' noenhanced front
+set label 'LBVH' at 6.0913704,4.66065275 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 33.3448645,5.84877743 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 17.8956688,5.69810817 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 16.3531402,5.88641614 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 24.6811517,5.74838758 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 22.3831808,5.89449435 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7170588,5.909632 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.0895633,5.82595933 left font ',8' noenhanced front
+set label 'embree_low' at 6.58303657,4.57874294 left font ',8' noenhanced front
+set label 'embree_medium' at 18.9284731,6.08260639 left font ',8' noenhanced front
+set label 'embree_high' at 18.1025873,5.99002605 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 0 using 2:4 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:4 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -78,21 +78,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.17335718:57.8545154]
-set xtics (10, 20, 50)
+set xrange [4.81803082:58.8297241]
+set xtics (5, 10, 20, 50)
 set yrange [61.6488455:110.063549]
 unset label
-set label 'LBVH' at 5.63356291,104.26217 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 31.6156383,72.0854584 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 18.0734861,72.3902199 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 21.1303297,75.7754539 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 22.8489368,74.0498997 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 19.6525222,70.9812889 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 35.7459383,70.3405519 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 22.597548,67.6701241 left font ',8' noenhanced front
-set label 'embree_low' at 7.2794063,104.345277 left font ',8' noenhanced front
-set label 'embree_medium' at 13.6834982,66.2234631 left font ',8' noenhanced front
-set label 'embree_high' at 19.9420187,64.9849474 left font ',8' noenhanced front
+set label 'LBVH' at 5.26292595,104.26217 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 33.1260115,72.0854584 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 18.0138998,72.3902199 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 22.5210096,75.7754539 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 24.8442122,74.0498997 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 19.0107194,70.9812889 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7170588,70.3405519 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 21.8473069,67.6701241 left font ',8' noenhanced front
+set label 'embree_low' at 6.58303657,104.345277 left font ',8' noenhanced front
+set label 'embree_medium' at 18.8042395,64.9849474 left font ',8' noenhanced front
+set label 'embree_high' at 13.3453975,66.2234631 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -112,21 +112,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.17335718:57.8545154]
-set xtics (10, 20, 50)
+set xrange [4.81803082:58.8297241]
+set xtics (5, 10, 20, 50)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 6.5283103,103.086451 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 31.6156383,71.3951472 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 17.9590164,73.0450257 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 15.6156381,69.012315 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 22.7042216,71.1263555 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 23.0065208,67.246789 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 35.7459383,69.0782932 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.9126857,67.3811989 left font ',8' noenhanced front
-set label 'embree_low' at 7.2794063,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 13.6834982,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 20.0691279,77.7503047 left font ',8' noenhanced front
+set label 'LBVH' at 6.13161414,103.086451 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 33.1260115,71.3951472 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 17.8956688,73.0450257 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 22.5210096,71.7204365 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 24.8442122,67.0641732 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 19.0107194,66.2620175 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7170588,69.0782932 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.0895633,68.7352597 left font ',8' noenhanced front
+set label 'embree_low' at 6.58303657,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 18.9284731,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 13.3453975,77.7503047 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -139,21 +139,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.17335718:57.8545154]
-set xtics (10, 20, 50)
+set xrange [4.81803082:58.8297241]
+set xtics (5, 10, 20, 50)
 set yrange [61.6488455:110.063549]
 unset label
-set label 'LBVH' at 5.63356291,104.26217 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 31.6156383,72.0854584 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 18.0734861,72.3902199 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 21.1303297,75.7754539 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 22.8489368,74.0498997 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 19.6525222,70.9812889 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 35.7459383,70.3405519 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 22.597548,67.6701241 left font ',8' noenhanced front
-set label 'embree_low' at 7.2794063,104.345277 left font ',8' noenhanced front
-set label 'embree_medium' at 13.6834982,66.2234631 left font ',8' noenhanced front
-set label 'embree_high' at 19.9420187,64.9849474 left font ',8' noenhanced front
+set label 'LBVH' at 5.26292595,104.26217 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 33.1260115,72.0854584 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 18.0138998,72.3902199 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 22.5210096,75.7754539 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 24.8442122,74.0498997 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 19.0107194,70.9812889 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7170588,70.3405519 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 21.8473069,67.6701241 left font ',8' noenhanced front
+set label 'embree_low' at 6.58303657,104.345277 left font ',8' noenhanced front
+set label 'embree_medium' at 18.8042395,64.9849474 left font ',8' noenhanced front
+set label 'embree_high' at 13.3453975,66.2234631 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
@@ -171,21 +171,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.17335718:57.8545154]
-set xtics (10, 20, 50)
+set xrange [4.81803082:58.8297241]
+set xtics (5, 10, 20, 50)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 6.5283103,103.086451 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 31.6156383,71.3951472 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 17.9590164,73.0450257 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 15.6156381,69.012315 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 22.7042216,71.1263555 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 23.0065208,67.246789 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 35.7459383,69.0782932 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.9126857,67.3811989 left font ',8' noenhanced front
-set label 'embree_low' at 7.2794063,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 13.6834982,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 20.0691279,77.7503047 left font ',8' noenhanced front
+set label 'LBVH' at 6.13161414,103.086451 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 33.1260115,71.3951472 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 17.8956688,73.0450257 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 22.5210096,71.7204365 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 24.8442122,67.0641732 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 19.0107194,66.2620175 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7170588,69.0782932 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.0895633,68.7352597 left font ',8' noenhanced front
+set label 'embree_low' at 6.58303657,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 18.9284731,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 13.3453975,77.7503047 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -198,21 +198,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.17335718:57.8545154]
-set xtics (10, 20, 50)
+set xrange [4.81803082:58.8297241]
+set xtics (5, 10, 20, 50)
 set yrange [61.6488455:110.063549]
 unset label
-set label 'LBVH' at 5.63356291,104.26217 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 31.6156383,72.0854584 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 18.0734861,72.3902199 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 21.1303297,75.7754539 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 22.8489368,74.0498997 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 19.6525222,70.9812889 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 35.7459383,70.3405519 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 22.597548,67.6701241 left font ',8' noenhanced front
-set label 'embree_low' at 7.2794063,104.345277 left font ',8' noenhanced front
-set label 'embree_medium' at 13.6834982,66.2234631 left font ',8' noenhanced front
-set label 'embree_high' at 19.9420187,64.9849474 left font ',8' noenhanced front
+set label 'LBVH' at 5.26292595,104.26217 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 33.1260115,72.0854584 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 18.0138998,72.3902199 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 22.5210096,75.7754539 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 24.8442122,74.0498997 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 19.0107194,70.9812889 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 35.7170588,70.3405519 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 21.8473069,67.6701241 left font ',8' noenhanced front
+set label 'embree_low' at 6.58303657,104.345277 left font ',8' noenhanced front
+set label 'embree_medium' at 18.8042395,64.9849474 left font ',8' noenhanced front
+set label 'embree_high' at 13.3453975,66.2234631 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot

@@ -11,21 +11,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [48.1869613:742.013521]
+set xrange [43.3297255:751.789651]
 set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 62.7108151,70.0126652 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 313.510896,59.6986683 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 230.12608,62.1027229 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 196.884445,59.4901949 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 307.223458,61.7556733 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 357.949228,60.6771969 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 427.043994,59.8781052 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 178.729503,60.7547111 left font ',8' noenhanced front
-set label 'embree_low' at 83.0188878,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 297.267502,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 213.297041,57.38674 left font ',8' noenhanced front
+set label 'LBVH' at 57.0416972,70.0126652 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 294.92073,59.8746541 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 217.618361,62.1027229 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 185.321554,59.4901949 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 290.286462,61.7556733 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 351.252238,59.3866347 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 425.545738,60.5233863 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 167.841278,60.7547111 left font ',8' noenhanced front
+set label 'embree_low' at 87.3880315,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 200.212885,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 308.313365,57.38674 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -45,21 +45,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [48.1869613:742.013521]
+set xrange [43.3297255:751.789651]
 set xtics (50, 100, 200, 500)
-set yrange [2.57462966:4.23579066]
+set yrange [2.52832186:3.21916358]
 unset label
-set label 'LBVH' at 62.7108151,3.50658722 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 365.964649,4.03959054 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 230.12608,3.21019198 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 281.325496,3.83094412 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 257.01326,3.06471646 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 355.382859,3.17745283 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 430.127858,3.11773176 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 178.729503,3.11882491 left font ',8' noenhanced front
-set label 'embree_low' at 83.0188878,2.73158976 left font ',8' noenhanced front
-set label 'embree_medium' at 297.267502,3.36100362 left font ',8' noenhanced front
-set label 'embree_high' at 297.625523,3.27102157 left font ',8' noenhanced front
+set label 'LBVH' at 57.0416972,2.66985965 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 404.279494,3.08357329 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 154.866217,2.87361555 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 268.960531,3.03870956 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 288.114715,2.90746991 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 351.252238,2.879053 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 425.545738,3.00987116 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 255.968348,2.84881369 left font ',8' noenhanced front
+set label 'embree_low' at 87.3880315,2.59359824 left font ',8' noenhanced front
+set label 'embree_medium' at 297.863355,3.1375681 left font ',8' noenhanced front
+set label 'embree_high' at 217.767047,3.07245054 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 0 using 2:4 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:4 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -78,21 +78,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [48.1869613:742.013521]
+set xrange [43.3297255:751.789651]
 set xtics (50, 100, 200, 500)
 set yrange [46.0340343:63.6489318]
 unset label
-set label 'LBVH' at 62.7108151,56.5806094 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 365.964649,50.3496993 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 166.113701,51.3385083 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 281.325496,52.2072513 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 216.561694,50.6183954 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 355.382859,50.9341362 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 427.043994,51.800621 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 180.020184,51.9117243 left font ',8' noenhanced front
-set label 'embree_low' at 83.0188878,61.5684321 left font ',8' noenhanced front
-set label 'embree_medium' at 297.267502,47.6984341 left font ',8' noenhanced front
-set label 'embree_high' at 213.297041,47.6984341 left font ',8' noenhanced front
+set label 'LBVH' at 57.0416972,56.5806094 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 404.279494,50.3496993 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 154.866217,51.3385083 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 268.960531,52.2072513 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 201.523411,50.6183954 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 291.566611,50.8112415 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 425.545738,51.3500074 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 169.10643,51.9117243 left font ',8' noenhanced front
+set label 'embree_low' at 87.3880315,61.5684321 left font ',8' noenhanced front
+set label 'embree_medium' at 200.212885,47.6984341 left font ',8' noenhanced front
+set label 'embree_high' at 308.313365,47.6984341 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -112,21 +112,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [48.1869613:742.013521]
+set xrange [43.3297255:751.789651]
 set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 62.7108151,70.0126652 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 313.510896,59.6986683 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 230.12608,62.1027229 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 196.884445,59.4901949 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 307.223458,61.7556733 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 357.949228,60.6771969 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 427.043994,59.8781052 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 178.729503,60.7547111 left font ',8' noenhanced front
-set label 'embree_low' at 83.0188878,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 297.267502,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 213.297041,57.38674 left font ',8' noenhanced front
+set label 'LBVH' at 57.0416972,70.0126652 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 294.92073,59.8746541 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 217.618361,62.1027229 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 185.321554,59.4901949 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 290.286462,61.7556733 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 351.252238,59.3866347 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 425.545738,60.5233863 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 167.841278,60.7547111 left font ',8' noenhanced front
+set label 'embree_low' at 87.3880315,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 200.212885,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 308.313365,57.38674 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -139,21 +139,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [48.1869613:742.013521]
+set xrange [43.3297255:751.789651]
 set xtics (50, 100, 200, 500)
 set yrange [46.0340343:63.6489318]
 unset label
-set label 'LBVH' at 62.7108151,56.5806094 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 365.964649,50.3496993 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 166.113701,51.3385083 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 281.325496,52.2072513 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 216.561694,50.6183954 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 355.382859,50.9341362 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 427.043994,51.800621 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 180.020184,51.9117243 left font ',8' noenhanced front
-set label 'embree_low' at 83.0188878,61.5684321 left font ',8' noenhanced front
-set label 'embree_medium' at 297.267502,47.6984341 left font ',8' noenhanced front
-set label 'embree_high' at 213.297041,47.6984341 left font ',8' noenhanced front
+set label 'LBVH' at 57.0416972,56.5806094 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 404.279494,50.3496993 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 154.866217,51.3385083 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 268.960531,52.2072513 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 201.523411,50.6183954 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 291.566611,50.8112415 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 425.545738,51.3500074 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 169.10643,51.9117243 left font ',8' noenhanced front
+set label 'embree_low' at 87.3880315,61.5684321 left font ',8' noenhanced front
+set label 'embree_medium' at 200.212885,47.6984341 left font ',8' noenhanced front
+set label 'embree_high' at 308.313365,47.6984341 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
@@ -171,21 +171,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [48.1869613:742.013521]
+set xrange [43.3297255:751.789651]
 set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 62.7108151,70.0126652 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 313.510896,59.6986683 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 230.12608,62.1027229 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 196.884445,59.4901949 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 307.223458,61.7556733 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 357.949228,60.6771969 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 427.043994,59.8781052 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 178.729503,60.7547111 left font ',8' noenhanced front
-set label 'embree_low' at 83.0188878,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 297.267502,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 213.297041,57.38674 left font ',8' noenhanced front
+set label 'LBVH' at 57.0416972,70.0126652 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 294.92073,59.8746541 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 217.618361,62.1027229 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 185.321554,59.4901949 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 290.286462,61.7556733 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 351.252238,59.3866347 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 425.545738,60.5233863 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 167.841278,60.7547111 left font ',8' noenhanced front
+set label 'embree_low' at 87.3880315,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 200.212885,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 308.313365,57.38674 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -198,21 +198,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [48.1869613:742.013521]
+set xrange [43.3297255:751.789651]
 set xtics (50, 100, 200, 500)
 set yrange [46.0340343:63.6489318]
 unset label
-set label 'LBVH' at 62.7108151,56.5806094 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 365.964649,50.3496993 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 166.113701,51.3385083 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 281.325496,52.2072513 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 216.561694,50.6183954 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 355.382859,50.9341362 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 427.043994,51.800621 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 180.020184,51.9117243 left font ',8' noenhanced front
-set label 'embree_low' at 83.0188878,61.5684321 left font ',8' noenhanced front
-set label 'embree_medium' at 297.267502,47.6984341 left font ',8' noenhanced front
-set label 'embree_high' at 213.297041,47.6984341 left font ',8' noenhanced front
+set label 'LBVH' at 57.0416972,56.5806094 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 404.279494,50.3496993 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 154.866217,51.3385083 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 268.960531,52.2072513 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 201.523411,50.6183954 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 291.566611,50.8112415 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 425.545738,51.3500074 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 169.10643,51.9117243 left font ',8' noenhanced front
+set label 'embree_low' at 87.3880315,61.5684321 left font ',8' noenhanced front
+set label 'embree_medium' at 200.212885,47.6984341 left font ',8' noenhanced front
+set label 'embree_high' at 308.313365,47.6984341 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot

@@ -11,21 +11,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.66260274:67.8807478]
-set xtics (10, 20, 50)
+set xrange [3.98594076:59.3832164]
+set xtics (5, 10, 20, 50)
 set yrange [47.9814666:83.2675029]
 unset label
-set label 'LBVH' at 8.02139184,67.05137 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 36.0768778,53.2352437 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 15.7033416,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 22.8598838,53.2017634 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 29.3207776,49.8495043 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 24.4196755,50.716222 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 41.3637823,51.3155803 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 17.7992512,51.3573403 left font ',8' noenhanced front
-set label 'embree_low' at 7.1936758,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 15.9627531,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 22.92957,54.6804169 left font ',8' noenhanced front
+set label 'LBVH' at 6.75412527,67.05137 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 34.6506277,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 14.2727618,53.8820627 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 18.9449745,52.9555818 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.9666998,50.5059887 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 27.1241656,53.4242201 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.3072579,50.4129143 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7846255,51.3573403 left font ',8' noenhanced front
+set label 'embree_low' at 5.17084111,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 22.3181758,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 18.9517334,55.8292646 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -45,21 +45,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.66260274:67.8807478]
-set xtics (10, 20, 50)
-set yrange [4.42179193:5.98652313]
+set xrange [3.98594076:59.3832164]
+set xtics (5, 10, 20, 50)
+set yrange [4.18772864:6.33988763]
 unset label
-set label 'LBVH' at 8.02139184,5.0581494 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 36.3134666,5.61558751 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 21.2533246,5.59284022 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 19.4389435,5.70647674 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 29.3207776,5.70922401 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 24.2605769,5.65697427 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 41.3637823,5.72164118 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 25.7004246,5.77396893 left font ',8' noenhanced front
-set label 'embree_low' at 7.1936758,4.56964054 left font ',8' noenhanced front
-set label 'embree_medium' at 15.9627531,5.76756955 left font ',8' noenhanced front
-set label 'embree_high' at 22.7801797,5.84174036 left font ',8' noenhanced front
+set label 'LBVH' at 6.75412527,4.89446874 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 34.6506277,5.86501571 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 14.3745815,5.90216647 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 18.9449745,5.98254369 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 21.2786209,6.12487377 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 27.1241656,5.92613083 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.5520007,6.01779877 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7846255,6.08569562 left font ',8' noenhanced front
+set label 'embree_low' at 5.17084111,4.39108225 left font ',8' noenhanced front
+set label 'embree_medium' at 22.3181758,5.51738118 left font ',8' noenhanced front
+set label 'embree_high' at 22.3417623,5.70755516 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 0 using 2:4 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:4 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -78,21 +78,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.66260274:67.8807478]
-set xtics (10, 20, 50)
+set xrange [3.98594076:59.3832164]
+set xtics (5, 10, 20, 50)
 set yrange [62.1382942:98.008445]
 unset label
-set label 'LBVH' at 8.02139184,82.6306345 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 36.3134666,67.7362841 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 21.1148554,69.7282285 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 26.8828543,65.6840669 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 21.2018014,65.0839533 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 33.3322845,68.8978606 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 41.3637823,65.5275998 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 17.7992512,66.3071656 left font ',8' noenhanced front
-set label 'embree_low' at 7.1936758,93.771813 left font ',8' noenhanced front
-set label 'embree_medium' at 15.9627531,69.9513728 left font ',8' noenhanced front
-set label 'embree_high' at 22.92957,68.1161557 left font ',8' noenhanced front
+set label 'LBVH' at 6.75412527,82.6306345 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 34.6506277,67.7362841 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 14.3745815,68.81062 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 13.4108561,67.5192839 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 21.2786209,66.0015618 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 26.9320365,68.8978606 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.5520007,65.5275998 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7846255,66.3071656 left font ',8' noenhanced front
+set label 'embree_low' at 5.17084111,93.771813 left font ',8' noenhanced front
+set label 'embree_medium' at 22.3181758,69.9513728 left font ',8' noenhanced front
+set label 'embree_high' at 16.0760907,69.9513728 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -112,21 +112,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.66260274:67.8807478]
-set xtics (10, 20, 50)
+set xrange [3.98594076:59.3832164]
+set xtics (5, 10, 20, 50)
 set yrange [47.9814666:83.2675029]
 unset label
-set label 'LBVH' at 8.02139184,67.05137 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 36.0768778,53.2352437 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 15.7033416,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 22.8598838,53.2017634 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 29.3207776,49.8495043 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 24.4196755,50.716222 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 41.3637823,51.3155803 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 17.7992512,51.3573403 left font ',8' noenhanced front
-set label 'embree_low' at 7.1936758,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 15.9627531,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 22.92957,54.6804169 left font ',8' noenhanced front
+set label 'LBVH' at 6.75412527,67.05137 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 34.6506277,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 14.2727618,53.8820627 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 18.9449745,52.9555818 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.9666998,50.5059887 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 27.1241656,53.4242201 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.3072579,50.4129143 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7846255,51.3573403 left font ',8' noenhanced front
+set label 'embree_low' at 5.17084111,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 22.3181758,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 18.9517334,55.8292646 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -139,21 +139,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.66260274:67.8807478]
-set xtics (10, 20, 50)
+set xrange [3.98594076:59.3832164]
+set xtics (5, 10, 20, 50)
 set yrange [62.1382942:98.008445]
 unset label
-set label 'LBVH' at 8.02139184,82.6306345 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 36.3134666,67.7362841 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 21.1148554,69.7282285 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 26.8828543,65.6840669 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 21.2018014,65.0839533 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 33.3322845,68.8978606 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 41.3637823,65.5275998 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 17.7992512,66.3071656 left font ',8' noenhanced front
-set label 'embree_low' at 7.1936758,93.771813 left font ',8' noenhanced front
-set label 'embree_medium' at 15.9627531,69.9513728 left font ',8' noenhanced front
-set label 'embree_high' at 22.92957,68.1161557 left font ',8' noenhanced front
+set label 'LBVH' at 6.75412527,82.6306345 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 34.6506277,67.7362841 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 14.3745815,68.81062 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 13.4108561,67.5192839 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 21.2786209,66.0015618 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 26.9320365,68.8978606 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.5520007,65.5275998 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7846255,66.3071656 left font ',8' noenhanced front
+set label 'embree_low' at 5.17084111,93.771813 left font ',8' noenhanced front
+set label 'embree_medium' at 22.3181758,69.9513728 left font ',8' noenhanced front
+set label 'embree_high' at 16.0760907,69.9513728 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
@@ -171,21 +171,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.66260274:67.8807478]
-set xtics (10, 20, 50)
+set xrange [3.98594076:59.3832164]
+set xtics (5, 10, 20, 50)
 set yrange [47.9814666:83.2675029]
 unset label
-set label 'LBVH' at 8.02139184,67.05137 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 36.0768778,53.2352437 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 15.7033416,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 22.8598838,53.2017634 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 29.3207776,49.8495043 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 24.4196755,50.716222 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 41.3637823,51.3155803 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 17.7992512,51.3573403 left font ',8' noenhanced front
-set label 'embree_low' at 7.1936758,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 15.9627531,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 22.92957,54.6804169 left font ',8' noenhanced front
+set label 'LBVH' at 6.75412527,67.05137 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 34.6506277,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 14.2727618,53.8820627 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 18.9449745,52.9555818 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.9666998,50.5059887 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 27.1241656,53.4242201 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.3072579,50.4129143 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7846255,51.3573403 left font ',8' noenhanced front
+set label 'embree_low' at 5.17084111,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 22.3181758,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 18.9517334,55.8292646 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -198,21 +198,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [5.66260274:67.8807478]
-set xtics (10, 20, 50)
+set xrange [3.98594076:59.3832164]
+set xtics (5, 10, 20, 50)
 set yrange [62.1382942:98.008445]
 unset label
-set label 'LBVH' at 8.02139184,82.6306345 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 36.3134666,67.7362841 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 21.1148554,69.7282285 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 26.8828543,65.6840669 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 21.2018014,65.0839533 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 33.3322845,68.8978606 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 41.3637823,65.5275998 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 17.7992512,66.3071656 left font ',8' noenhanced front
-set label 'embree_low' at 7.1936758,93.771813 left font ',8' noenhanced front
-set label 'embree_medium' at 15.9627531,69.9513728 left font ',8' noenhanced front
-set label 'embree_high' at 22.92957,68.1161557 left font ',8' noenhanced front
+set label 'LBVH' at 6.75412527,82.6306345 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 34.6506277,67.7362841 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 14.3745815,68.81062 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 13.4108561,67.5192839 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 21.2786209,66.0015618 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 26.9320365,68.8978606 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 34.5520007,65.5275998 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7846255,66.3071656 left font ',8' noenhanced front
+set label 'embree_low' at 5.17084111,93.771813 left font ',8' noenhanced front
+set label 'embree_medium' at 22.3181758,69.9513728 left font ',8' noenhanced front
+set label 'embree_high' at 16.0760907,69.9513728 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
