@@ -370,7 +370,7 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
     float stack_t[WIDE_STACK];
     unsigned sp = 0;
     int32_t cur = 0;
-    float tlo = r->tmin - atrbvh_trav_absf(r->tmin) * ATRBVH_TRAV_PRUNE_SLACK;
+    float tlo = atrbvh_trav_best_start(r, best);
     float thi;
     __m128 ox = _mm_set1_ps(r->orgf[0]), oy = _mm_set1_ps(r->orgf[1]);
     __m128 oz = _mm_set1_ps(r->orgf[2]);
@@ -384,13 +384,6 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
      * direction */
     int nxo = r->idirf[0] < 0.0f ? 12 : 0, nyo = r->idirf[1] < 0.0f ? 12 : 0;
     int nzo = r->idirf[2] < 0.0f ? 12 : 0;
-    if (!(tlo == tlo))
-        tlo = r->tmin;
-    best->t = r->tmax;
-    best->u = best->v = 0.0f;
-    best->prim = ATRBVH_NO_HIT;
-    best->tlim = atrbvh_trav_widen_limit(r->tmax);
-    best->box_tests = best->prim_tests = 0u;
     /* no test of the root's box: it holds every box of the copy (see
      * box_inside), so the first node's tests reject the rays it would */
 #if defined(__GNUC__) || defined(__clang__)

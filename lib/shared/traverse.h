@@ -152,6 +152,23 @@ ATRBVH_FN float atrbvh_trav_widen_limit(float t)
     return r == r ? r : t;
 }
 
+/* No hit yet: the limits of ray r and no tests counted.  Returns the
+ * lower end of the node interval, tmin widened like the upper one (tmin
+ * itself where that is NaN). */
+ATRBVH_FN float atrbvh_trav_best_start(const atrbvh_trav_ray *r,
+                                       atrbvh_trav_best *best)
+{
+    float tlo = r->tmin - atrbvh_trav_absf(r->tmin) * ATRBVH_TRAV_PRUNE_SLACK;
+    if (!(tlo == tlo))
+        tlo = r->tmin;
+    best->t = r->tmax;
+    best->u = best->v = 0.0f;
+    best->prim = ATRBVH_NO_HIT;
+    best->tlim = atrbvh_trav_widen_limit(r->tmax);
+    best->box_tests = best->prim_tests = 0u;
+    return tlo;
+}
+
 /* Whether the single-precision node test is allowed for the scene:
  * `allowed` (0 on an OpenCL device that may flush subnormals: its float
  * results would differ from the CPU's) and the root box within
@@ -803,15 +820,8 @@ ATRBVH_FN int atrbvh_trav_run(const atrbvh_trav_scene *s,
                               atrbvh_trav_best *best)
 {
     /* the lower end of the node interval, widened like the upper one */
-    float tlo = r->tmin - atrbvh_trav_absf(r->tmin) * ATRBVH_TRAV_PRUNE_SLACK;
+    float tlo = atrbvh_trav_best_start(r, best);
     float tn;
-    if (!(tlo == tlo))
-        tlo = r->tmin;
-    best->t = r->tmax;
-    best->u = best->v = 0.0f;
-    best->prim = ATRBVH_NO_HIT;
-    best->tlim = atrbvh_trav_widen_limit(r->tmax);
-    best->box_tests = best->prim_tests = 0u;
     if (s->node_count == 0u)
         return 0;
     if (!atrbvh_trav_node_hit(s->nodes, r, tlo, best->tlim, &tn)) {
