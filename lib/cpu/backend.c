@@ -197,6 +197,19 @@ atrbvh_status atrbvh_i_cpu_tree_values(atrbvh_i_cpu_run *c, int costs,
     return ATRBVH_OK;
 }
 
+atrbvh_status atrbvh_i_cpu_tree_sizes(atrbvh_i_cpu_run *c,
+                                      atrbvh_error *error)
+{
+    c->size = atrbvh_i_scratch_get(c->scratch, CPU_SIZE,
+                                   2 * (size_t)c->tree.n - 1, sizeof *c->size);
+    if (!c->size)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                             "cannot allocate the collapse sizes for %lu "
+                             "primitives",
+                             (unsigned long)c->tree.n);
+    return ATRBVH_OK;
+}
+
 void atrbvh_i_cpu_scratch_end(atrbvh_i_cpu_run *c)
 {
     unsigned k;

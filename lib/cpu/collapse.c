@@ -81,12 +81,9 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
     c->tree.cost = NULL;
     if (run->cfg->method != ATRBVH_METHOD_LBVH || !c->size) {
         /* (an LBVH's refit computed the sizes: refit.c's climb_sizes) */
-        c->size = atrbvh_i_scratch_get(c->scratch, CPU_SIZE,
-                                       2 * (size_t)run->n - 1,
-                                       sizeof *c->size);
-        if (!c->size)
-            return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
-                                 "cannot allocate the collapse flags");
+        atrbvh_status st = atrbvh_i_cpu_tree_sizes(c, error);
+        if (st != ATRBVH_OK)
+            return st;
         x.t = &c->tree;
         x.p = &run->cfg->cost;
         x.size = c->size;

@@ -72,6 +72,10 @@ atrbvh_status atrbvh_i_cpu_tree_arrays(atrbvh_i_cpu_run *c, uint32_t n,
  * first n entries) and, with `costs`, the costs of c->tree (else NULL). */
 atrbvh_status atrbvh_i_cpu_tree_values(atrbvh_i_cpu_run *c, int costs,
                                        atrbvh_error *error);
+/* The collapse sizes of c->tree's nodes (c->size): the collapse stage's,
+ * or an LBVH's refit, which computes them in its climb. */
+atrbvh_status atrbvh_i_cpu_tree_sizes(atrbvh_i_cpu_run *c,
+                                      atrbvh_error *error);
 /* After the layout: a transient scratch frees every slot of the build. */
 void atrbvh_i_cpu_scratch_end(atrbvh_i_cpu_run *c);
 

@@ -335,12 +335,9 @@ atrbvh_status atrbvh_i_cpu_refit(atrbvh_device *dev, atrbvh_i_run *run,
     if (run->cfg->method == ATRBVH_METHOD_LBVH) {
         /* The LBVH's collapse sizes in the same climb, into the cost
          * slot (the keys' memory; collapse.c then has nothing to do). */
-        c->size = atrbvh_i_scratch_get(c->scratch, CPU_SIZE,
-                                       2 * (size_t)run->n - 1,
-                                       sizeof *c->size);
-        if (!c->size)
-            return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
-                                 "cannot allocate the collapse sizes");
+        st = atrbvh_i_cpu_tree_sizes(c, error);
+        if (st != ATRBVH_OK)
+            return st;
         refit(&c->tree, c->boxes, c->order, &run->cfg->cost,
               run->cfg->threads, c->size, c->ranges);
     } else {
