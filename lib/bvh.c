@@ -45,22 +45,6 @@ static void set_stats_sah(atrbvh_bvh *b, size_t leaves, unsigned depth,
  * (a deeper tree is measured by the general walk, check.c). */
 #define MEASURE_STACK 512
 
-/* A node's area: atrbvh_box_area (shared/arith.h) on its box, the same
- * operations in the same order (the same bits), read from the node's
- * fields directly: the box copied first went through the stack
- * (callgrind, bunny LBVH, one thread: the pass 4.77M -> 4.16M
- * instructions). */
-static inline double node_area(const atrbvh_node *v)
-{
-    const double dx = (double)v->max[0] - (double)v->min[0];
-    const double dy = (double)v->max[1] - (double)v->min[1];
-    const double dz = (double)v->max[2] - (double)v->min[2];
-    double s = dx * dy;
-    s = s + dy * dz;
-    s = s + dz * dx;
-    return 2.0 * s;
-}
-
 /* One forward pass over the layout's depth-first array: node i+1 must be
  * i's left child when i is internal, else the right child last put aside
  * (the stack), and every right child lies after its parent; the depth
@@ -83,7 +67,7 @@ atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *b)
         return ATRBVH_ERR_BACKEND; /* node indices are 32 bits */
     for (i = 0; i < m; i++) {
         const atrbvh_node *v = &b->nodes[i];
-        const double a = node_area(v);
+        const double a = atrbvh_i_node_area(v);
         if (i == 0)
             root = a;
         if (depth > deepest)
@@ -119,9 +103,8 @@ atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *b)
     if (i < m)
         return ATRBVH_ERR_BACKEND;
     set_stats_sah(b, leaves, deepest, largest,
-                  root > 0.0 ? (b->stats.ci * inner + b->stats.ct * leaf_sum) /
-                                   root
-                             : 0.0);
+                  atrbvh_i_sah_total(b->stats.ci, b->stats.ct, inner, leaf_sum,
+                                     root));
     return ATRBVH_OK;
 }
 

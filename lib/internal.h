@@ -163,6 +163,30 @@ atrbvh_status atrbvh_i_trav_check(const atrbvh_bvh *bvh,
                                   const void *out, int threads,
                                   const char *fn, atrbvh_error *error);
 
+/* A node's surface area: shared/arith.h's atrbvh_box_area, the same
+ * operations in the same order (the same bits), on the node's fields
+ * directly (a box copied first goes through the stack).  With
+ * atrbvh_i_sah_total, the SAH of atrbvh_sah (sah.c) and of the statistics
+ * pass after a build (bvh.c), which must agree to the bit. */
+static inline double atrbvh_i_node_area(const atrbvh_node *v)
+{
+    const double dx = (double)v->max[0] - (double)v->min[0];
+    const double dy = (double)v->max[1] - (double)v->min[1];
+    const double dz = (double)v->max[2] - (double)v->min[2];
+    double s = dx * dy;
+    s = s + dy * dz;
+    s = s + dz * dx;
+    return 2.0 * s;
+}
+
+/* The SAH from the sums over the nodes in node order: internal areas,
+ * leaf areas times their counts, and the root's area (0 if not > 0). */
+static inline double atrbvh_i_sah_total(double ci, double ct, double inner,
+                                        double leaves, double root)
+{
+    return root > 0.0 ? (ci * inner + ct * leaves) / root : 0.0;
+}
+
 /* Allocates an empty BVH object with room for the arrays. */
 atrbvh_bvh *atrbvh_i_bvh_alloc(size_t node_count, size_t prim_count);
 /* Fills stats.nodes, leaves, primitives, max_depth, max_leaf_primitives and

@@ -6,17 +6,6 @@
 
 #include "internal.h"
 
-static atrbvh_box node_box(const atrbvh_node *n)
-{
-    atrbvh_box b;
-    int k;
-    for (k = 0; k < 3; k++) {
-        b.min[k] = n->min[k];
-        b.max[k] = n->max[k];
-    }
-    return b;
-}
-
 double atrbvh_sah(const atrbvh_node *nodes, size_t node_count, double ci,
                   double ct)
 {
@@ -25,16 +14,16 @@ double atrbvh_sah(const atrbvh_node *nodes, size_t node_count, double ci,
     size_t i;
     if (!nodes || node_count == 0)
         return 0.0;
-    root = atrbvh_box_area(node_box(&nodes[0]));
+    root = atrbvh_i_node_area(&nodes[0]);
     if (!(root > 0.0))
         return 0.0;
     for (i = 0; i < node_count; i++) {
-        double a = atrbvh_box_area(node_box(&nodes[i]));
+        double a = atrbvh_i_node_area(&nodes[i]);
         if (nodes[i].count)
             leaves += a * (double)nodes[i].count;
         else
             inner += a;
     }
-    return (ci * inner + ct * leaves) / root;
+    return atrbvh_i_sah_total(ci, ct, inner, leaves, root);
 }
 
