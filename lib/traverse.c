@@ -200,14 +200,6 @@ static int box_inside(const atrbvh_node *a, const atrbvh_node *b)
     return 1;
 }
 
-static double box_half_area(const atrbvh_node *n)
-{
-    double dx = (double)n->max[0] - n->min[0];
-    double dy = (double)n->max[1] - n->min[1];
-    double dz = (double)n->max[2] - n->min[2];
-    return dx * dy + dy * dz + dz * dx;
-}
-
 /* The 4-wide copy of a binary tree whose root is internal, or NULL (see
  * above; *nomem 1 when memory was short).  Wide nodes are numbered breadth
  * first; while being filled, child[] holds binary indices. */
@@ -260,7 +252,7 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
                 double a;
                 if (nodes[list[lane]].count != 0u)
                     continue;
-                a = box_half_area(&nodes[list[lane]]);
+                a = atrbvh_i_node_area(&nodes[list[lane]]);
                 if (a > best_area) {
                     best_area = a;
                     best = lane;
@@ -451,10 +443,10 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
                 {
                     /* two hits, the most common case: the nearer
                      * visited, the other pushed */
-                    int l0 = m & 1 ? 0 : m & 2 ? 1 : 2;
-                    int rest = m & ~(1 << l0);
+                    int l0 = wide_first_lane[m];
+                    int rest = m & (m - 1);
                     if (!(rest & (rest - 1))) {
-                        int l1 = rest & 2 ? 1 : rest & 4 ? 2 : 3;
+                        int l1 = wide_first_lane[rest];
                         if (t4[l1] < t4[l0]) {
                             int sw = l0;
                             l0 = l1;
@@ -517,9 +509,9 @@ static int wide_run_any(const atrbvh_trav_scene *s, const wide_node *w,
  * the float test (tmin >= 0 and at most tmax, every direction component
  * of magnitude within [2^-125, 2^125], the origin within +-2^126; no NaN
  * or infinity passes these comparisons) gets the same fields from the
- * same operations, without the loops, the finiteness tests and the sixth
- * division (sz is 1 / dir[kz], which idird[kz] already holds); every
- * other ray goes through atrbvh_trav_setup. */
+ * same operations (the shear by atrbvh_trav_setup_shear), without the
+ * loops and the finiteness tests; every other ray goes through
+ * atrbvh_trav_setup. */
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((always_inline))
 #endif
@@ -527,8 +519,8 @@ static inline int wide_setup(const atrbvh_ray *ray, atrbvh_trav_ray *r)
 {
     const float *o = ray->origin, *d = ray->dir;
     float a0 = fabsf(d[0]), a1 = fabsf(d[1]), a2 = fabsf(d[2]);
+    const float ad[3] = {a0, a1, a2};
     double id0, id1, id2;
-    int kx, ky, kz;
     if (!((ray->tmin >= 0.0f) & (ray->tmin <= ray->tmax) &
           (a0 >= ATRBVH_TRAV_F_DIR_MIN) & (a0 <= ATRBVH_TRAV_F_DIR_MAX) &
           (a1 >= ATRBVH_TRAV_F_DIR_MIN) & (a1 <= ATRBVH_TRAV_F_DIR_MAX) &
@@ -564,23 +556,7 @@ static inline int wide_setup(const atrbvh_ray *ray, atrbvh_trav_ray *r)
     r->far_at[2] = r->sign[2] ? 2 : 5;
     r->tmin = ray->tmin;
     r->tmax = ray->tmax;
-    /* the largest component becomes z (the first on a tie), as there */
-    kz = a1 > a0 ? 1 : 0;
-    if (a2 > (kz ? a1 : a0))
-        kz = 2;
-    kx = kz == 2 ? 0 : kz + 1;
-    ky = kx == 2 ? 0 : kx + 1;
-    if (d[kz] < 0.0f) {
-        int sw = kx;
-        kx = ky;
-        ky = sw;
-    }
-    r->kx = kx;
-    r->ky = ky;
-    r->kz = kz;
-    r->sx = (double)d[kx] / (double)d[kz];
-    r->sy = (double)d[ky] / (double)d[kz];
-    r->sz = r->idird[kz];
+    atrbvh_trav_setup_shear(d, ad, r);
     return 1;
 }
 

@@ -187,6 +187,31 @@ ATRBVH_FN int atrbvh_trav_scene_float(const atrbvh_trav_scene *s, int allowed)
     return 1;
 }
 
+/* The watertight triangle test's shear of a ray (Woop, Benthin, Wald
+ * 2013): the largest component of the direction (magnitudes ad; the first
+ * on a tie) becomes z, x and y follow it cyclically, swapped when it is
+ * negative to keep the winding.  r->idird must be set: sz is 1 / dir[kz],
+ * which it holds. */
+ATRBVH_FN void atrbvh_trav_setup_shear(const float *dir, const float *ad,
+                                       atrbvh_trav_ray *r)
+{
+    r->kz = 0;
+    if (ad[1] > ad[r->kz])
+        r->kz = 1;
+    if (ad[2] > ad[r->kz])
+        r->kz = 2;
+    r->kx = r->kz == 2 ? 0 : r->kz + 1;
+    r->ky = r->kx == 2 ? 0 : r->kx + 1;
+    if (dir[r->kz] < 0.0f) { /* keep the winding */
+        int sw = r->kx;
+        r->kx = r->ky;
+        r->ky = sw;
+    }
+    r->sx = (double)dir[r->kx] / (double)dir[r->kz];
+    r->sy = (double)dir[r->ky] / (double)dir[r->kz];
+    r->sz = r->idird[r->kz];
+}
+
 /* Prepares a ray; 0 when it can hit nothing (NaN or infinite origin or
  * direction, all-zero direction, NaN tmin/tmax, tmin > tmax).  Sets
  * use_float by the ray alone (see ATRBVH_TRAV_F_DIR_MIN); the traversal
@@ -230,22 +255,7 @@ ATRBVH_FN int atrbvh_trav_setup(const float *origin, const float *dir,
     r->tmin = tmin;
     r->tmax = tmax;
     r->use_float = use_float;
-    /* The largest component becomes z (the first on a tie). */
-    r->kz = 0;
-    if (ad[1] > ad[r->kz])
-        r->kz = 1;
-    if (ad[2] > ad[r->kz])
-        r->kz = 2;
-    r->kx = r->kz == 2 ? 0 : r->kz + 1;
-    r->ky = r->kx == 2 ? 0 : r->kx + 1;
-    if (dir[r->kz] < 0.0f) { /* keep the winding */
-        int sw = r->kx;
-        r->kx = r->ky;
-        r->ky = sw;
-    }
-    r->sx = (double)dir[r->kx] / (double)dir[r->kz];
-    r->sy = (double)dir[r->ky] / (double)dir[r->kz];
-    r->sz = 1.0 / (double)dir[r->kz];
+    atrbvh_trav_setup_shear(dir, ad, r);
     return 1;
 }
 
