@@ -2,7 +2,8 @@
  * test_stages.c - internal stages checked on their own (links the static
  * core): the radix sort against an independent stable reference, the
  * hierarchy against the per-node Karras search, and the Morton key
- * properties.
+ * properties, and the statistics walk after a build on trees deeper than
+ * its stack.
  */
 #include <check.h>
 #include <stdlib.h>
@@ -201,6 +202,95 @@ START_TEST(morton_keys)
 }
 END_TEST
 
+/* A caterpillar of `spine` internal nodes in the layout's depth-first
+ * order: spine node s (index s) has the next spine node as its left child
+ * and a leaf as its right one, so the walk after a build has `spine` right
+ * children pending at the deepest node.  Leaves hold 1, 2 or 3 primitives
+ * and boxes of unequal sizes, so counts and areas weigh in the SAH. */
+static atrbvh_bvh *caterpillar(size_t spine)
+{
+    const size_t m = 2 * spine + 1, leaves = spine + 1;
+    size_t i, prims = 0, j;
+    atrbvh_bvh *b;
+    for (i = 0; i < leaves; i++)
+        prims += 1 + i % 3;
+    b = atrbvh_i_bvh_alloc(m, prims);
+    ck_assert_ptr_nonnull(b);
+    b->stats.ci = 1.2;
+    b->stats.ct = 1.0;
+    for (i = 0; i < spine; i++) {
+        atrbvh_node *n = &b->nodes[i];
+        float e = 2.0f + (float)(spine - i) * 0.25f;
+        n->min[0] = n->min[1] = n->min[2] = -e;
+        n->max[0] = e;
+        n->max[1] = e * 1.5f;
+        n->max[2] = e * 2.0f;
+        n->count = 0;
+        n->index = (uint32_t)(2 * spine - i); /* the right child */
+    }
+    /* leaves in depth-first order: the deepest node's left child, then
+     * the right children from the bottom of the spine up */
+    prims = 0;
+    for (j = 0; j < leaves; j++) {
+        atrbvh_node *n = &b->nodes[spine + j];
+        float e = 0.5f + (float)(j % 7) * 0.125f;
+        n->min[0] = n->min[1] = n->min[2] = -e;
+        n->max[0] = n->max[1] = n->max[2] = e;
+        n->count = (uint32_t)(1 + j % 3);
+        n->index = (uint32_t)prims;
+        prims += n->count;
+    }
+    for (i = 0; i < prims; i++)
+        b->prim_indices[i] = (uint32_t)i;
+    return b;
+}
+
+/* The statistics pass after a build (atrbvh_i_bvh_measure_built) keeps at
+ * most 512 pending right children and hands deeper trees to the general
+ * walk of check.c.  Around and past that bound its statistics must be the
+ * general walk's, and the SAH atrbvh_sah's to the bit. */
+START_TEST(measure_walk_deep_trees)
+{
+    static const size_t spines[] = {1, 100, 511, 512, 513, 514, 1500};
+    size_t t;
+    for (t = 0; t < sizeof spines / sizeof spines[0]; t++) {
+        atrbvh_bvh *a = caterpillar(spines[t]);
+        atrbvh_bvh *g = caterpillar(spines[t]);
+        double sah = atrbvh_sah(a->nodes, a->node_count, 1.2, 1.0);
+        ck_assert_int_eq(atrbvh_i_bvh_measure_built(a), ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_i_bvh_measure(g), ATRBVH_OK);
+        ck_assert_uint_eq(a->stats.nodes, 2 * spines[t] + 1);
+        ck_assert_uint_eq(a->stats.leaves, spines[t] + 1);
+        ck_assert_uint_eq(a->stats.max_depth, spines[t]);
+        ck_assert_uint_eq(a->stats.max_depth, g->stats.max_depth);
+        ck_assert_uint_eq(a->stats.max_leaf_primitives,
+                          spines[t] >= 2 ? 3 : 2);
+        ck_assert_uint_eq(a->stats.max_leaf_primitives,
+                          g->stats.max_leaf_primitives);
+        ck_assert_uint_eq(a->stats.primitives, g->stats.primitives);
+        ck_assert_msg(memcmp(&a->stats.sah, &sah, sizeof sah) == 0 &&
+                          memcmp(&g->stats.sah, &sah, sizeof sah) == 0,
+                      "spine %lu: SAH %.17g (built) %.17g (general), "
+                      "atrbvh_sah %.17g",
+                      (unsigned long)spines[t], a->stats.sah, g->stats.sah,
+                      sah);
+        /* a right child out of place deep down is refused by both */
+        if (spines[t] >= 2) {
+            atrbvh_bvh *bad = caterpillar(spines[t]);
+            atrbvh_bvh *badg = caterpillar(spines[t]);
+            bad->nodes[spines[t] - 2].index++;
+            badg->nodes[spines[t] - 2].index++;
+            ck_assert_int_ne(atrbvh_i_bvh_measure_built(bad), ATRBVH_OK);
+            ck_assert_int_ne(atrbvh_i_bvh_measure(badg), ATRBVH_OK);
+            atrbvh_bvh_free(bad);
+            atrbvh_bvh_free(badg);
+        }
+        atrbvh_bvh_free(a);
+        atrbvh_bvh_free(g);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("stages");
@@ -209,6 +299,7 @@ int main(void)
     tcase_add_test(tc, radix_sort_is_stable_and_sorted);
     tcase_add_test(tc, morton_keys);
     tcase_add_test(tc, hierarchy_is_karras);
+    tcase_add_test(tc, measure_walk_deep_trees);
     suite_add_tcase(s, tc);
     return tu_run(s);
 }
