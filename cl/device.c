@@ -203,6 +203,13 @@ static atrbvh_status build_program(atrbvh_cl_device *c, atrbvh_error *error)
         if (!c->kernel[k])
             return atrbvh_i_cl_error(error, err, "clCreateKernel",
                                      atrbvh_i_cl_kernel_names[k]);
+        /* The launches' work-group sizes stay within it (memory.c). */
+        if (clGetKernelWorkGroupInfo(c->kernel[k], c->device,
+                                     CL_KERNEL_WORK_GROUP_SIZE,
+                                     sizeof c->kernel_wg[k], &c->kernel_wg[k],
+                                     NULL) != CL_SUCCESS ||
+            c->kernel_wg[k] < 1)
+            c->kernel_wg[k] = 1;
     }
     return ATRBVH_OK;
 }

@@ -117,11 +117,16 @@ typedef struct atrbvh_cl_device {
     cl_command_queue queue;
     cl_program program;
     cl_kernel kernel[K_COUNT];
+    size_t kernel_wg[K_COUNT]; /* CL_KERNEL_WORK_GROUP_SIZE (at least 1) */
     cl_ulong max_alloc;
     cl_uint compute_units;
     cl_mem buf[B_SLOTS];
     size_t buf_bytes[B_SLOTS];
     unsigned long buffers_created; /* clCreateBuffer calls (tests) */
+    /* The current build's commands (reset by begin; tests and
+     * docs/opencl.md): kernel launches, host-to-device writes, fills,
+     * device-to-host reads (each one blocks) and clFinish waits. */
+    unsigned long n_launches, n_writes, n_fills, n_reads, n_finishes;
     cl_event events[ATRBVH_CL_MAX_EVENTS];
     int event_kernel[ATRBVH_CL_MAX_EVENTS];
     int event_count;

@@ -69,6 +69,8 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
     c->has_ids = 0;
     c->ranges = 0;
     c->opt_treelets = c->opt_applied = c->opt_skipped = 0;
+    c->n_launches = c->n_writes = c->n_fills = c->n_reads = 0;
+    c->n_finishes = 0;
     run->state = c;
     return ATRBVH_OK;
 }
