@@ -23,8 +23,8 @@
 static pthread_mutex_t cl_global_lock = PTHREAD_MUTEX_INITIALIZER;
 
 const char *const atrbvh_i_cl_kernel_names[K_COUNT] = {
-    "bounds_triangles", "bounds_boxes", "bounds_reduce", "morton",
-    "sort_count",       "sort_scan",    "sort_scatter",  "hierarchy_block", "hierarchy",
+    "bounds_triangles", "bounds_boxes", "morton",
+    "sort_count",       "sort_scatter", "hierarchy",
     "refit",            "opt_prepare",  "opt_round",     "collapse",
     "layout_top",       "layout",
     "intersect_closest", "intersect_any"};

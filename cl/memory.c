@@ -100,7 +100,40 @@ atrbvh_status atrbvh_i_cl_upload(atrbvh_cl_device *c, int slot,
                                0, NULL, NULL);
     if (err != CL_SUCCESS)
         return atrbvh_i_cl_error(error, err, "clEnqueueWriteBuffer", what);
+    c->pending = 0; /* blocking: everything before it is done too */
     return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cl_upload_queued(atrbvh_cl_device *c, int slot,
+                                        const void *data, size_t bytes,
+                                        const char *what, atrbvh_error *error)
+{
+    cl_int err;
+    if (bytes == 0)
+        return ATRBVH_OK;
+    c->n_writes++;
+    c->pending = 1;
+    err = clEnqueueWriteBuffer(c->queue, c->buf[home_of(slot)], CL_FALSE, 0,
+                               bytes, data, 0, NULL, NULL);
+    if (err != CL_SUCCESS)
+        return atrbvh_i_cl_error(error, err, "clEnqueueWriteBuffer", what);
+    return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cl_sync(atrbvh_cl_device *c, atrbvh_error *error)
+{
+    if (c->buf[B_SYNC])
+        return ATRBVH_OK;
+    atrbvh_status st;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_SYNC, 1, sizeof(cl_uint), "launch sync",
+                                error));
+    st = atrbvh_i_cl_zero(c, B_SYNC, sizeof(cl_uint), "launch sync", error);
+    if (st != ATRBVH_OK) { /* not known zero: made again next time */
+        clReleaseMemObject(c->buf[B_SYNC]);
+        c->buf[B_SYNC] = NULL;
+        c->buf_bytes[B_SYNC] = 0;
+    }
+    return st;
 }
 
 atrbvh_status atrbvh_i_cl_download(atrbvh_cl_device *c, int slot, void *data,
@@ -115,6 +148,7 @@ atrbvh_status atrbvh_i_cl_download(atrbvh_cl_device *c, int slot, void *data,
                               0, NULL, NULL);
     if (err != CL_SUCCESS)
         return atrbvh_i_cl_error(error, err, "clEnqueueReadBuffer", what);
+    c->pending = 0; /* blocking: everything before it is done too */
     return ATRBVH_OK;
 }
 
@@ -126,6 +160,7 @@ atrbvh_status atrbvh_i_cl_zero(atrbvh_cl_device *c, int slot, size_t bytes,
     if (bytes == 0)
         return ATRBVH_OK;
     c->n_fills++;
+    c->pending = 1;
     err = clEnqueueFillBuffer(c->queue, c->buf[home_of(slot)], &z, sizeof z, 0, bytes,
                               0, NULL, NULL);
     if (err != CL_SUCCESS)
@@ -162,6 +197,7 @@ atrbvh_status atrbvh_i_cl_finish(atrbvh_cl_device *c, atrbvh_error *error)
     int k;
     cl_int err;
     c->n_finishes++;
+    c->pending = 0;
     err = clFinish(c->queue);
     if (err != CL_SUCCESS) {
         atrbvh_i_cl_drop_events(c);
@@ -221,6 +257,7 @@ static atrbvh_status launch(atrbvh_cl_device *c, int k, size_t items,
         global = (items + local - 1u) / local * local;
     }
     c->n_launches++;
+    c->pending = 1;
     err = clEnqueueNDRangeKernel(c->queue, c->kernel[k], 1, NULL, &global,
                                  local ? &local : NULL, 0, NULL, &ev);
     if (err != CL_SUCCESS)

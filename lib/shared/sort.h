@@ -51,8 +51,9 @@ ATRBVH_FN atrbvh_u32 atrbvh_sort_slot(atrbvh_u32 d, atrbvh_u32 b,
 }
 
 /* Exclusive prefix sum of counts[0 .. entries) in place; returns the
- * total. */
-ATRBVH_FN atrbvh_u32 atrbvh_sort_scan(ATRBVH_GLOBAL atrbvh_u32 *counts,
+ * total.  (On the device the counts are other work-items' writes: the
+ * kernels' last arrival reads them through a volatile pointer.) */
+ATRBVH_FN atrbvh_u32 atrbvh_sort_scan(ATRBVH_SHARED_GLOBAL atrbvh_u32 *counts,
                                       atrbvh_u32 entries)
 {
     atrbvh_u32 i, total = 0;
