@@ -430,10 +430,11 @@ __kernel void opt_round(__global uint *left, __global uint *right,
                         __global const uint *list, __global const uint *needed,
                         __global uint *counter, __global uchar *scratch,
                         __global uchar *marks, __global uint *tally,
+                        __global const uint *list_count,
                         atrbvh_kargs_optimise a)
 {
     uint w = (uint)get_global_id(0), k, done = 0u, applied = 0u,
-         skipped = 0u;
+         skipped = 0u, len;
     atrbvh_treelet_marks m;
     atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
                                              a.max_leaf);
@@ -469,9 +470,12 @@ __kernel void opt_round(__global uint *left, __global uint *right,
     m.same = marks + (a.marks ? a.n_internal : 0u);
     /* A contiguous share of the start list (neighbouring nodes: their walks
      * meet soon, on data still in cache, as the CPU's post-order walk of a
-     * subtree does), not every workers-th entry. */
-    for (k = (uint)((ulong)a.list_len * w / a.workers);
-         k < (uint)((ulong)a.list_len * (w + 1u) / a.workers); k++) {
+     * subtree does), not every workers-th entry.  The list's length is
+     * opt_prepare's, read here: the host queues both launches without
+     * waiting (items beyond the list's length have no share). */
+    len = *list_count;
+    for (k = (uint)((ulong)len * w / a.workers);
+         k < (uint)((ulong)len * (w + 1u) / a.workers); k++) {
         uint x = list[k];
         for (;;) {
             uint up;

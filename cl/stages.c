@@ -407,7 +407,7 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_cl_device *c = cl_of(dev);
     const atrbvh_i_config *cfg = run->cfg;
     atrbvh_kargs_optimise a;
-    cl_uint workers_max, round, zero = 0, tally[3];
+    cl_uint workers_max, round, tally[3];
     size_t marks;
     if (cfg->method == ATRBVH_METHOD_LBVH || cfg->rounds == 0 ||
         run->n < 2 ||
@@ -451,6 +451,11 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     CL_CHECK(atrbvh_i_cl_zero(c, B_MARKS, marks, "skip marks", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_TALLY, 3, 4, "treelet counts", error));
     CL_CHECK(atrbvh_i_cl_zero(c, B_TALLY, 3 * 4, "treelet counts", error));
+    /* The rounds are queued without a wait: opt_round reads the list's
+     * length on the device, and workers_max items always run (those
+     * beyond the list have no share; the tree does not depend on how
+     * many items share the list). */
+    a.workers = workers_max;
     for (round = 0; round < cfg->rounds; round++) {
         cl_ulong gamma = (cl_ulong)cfg->gamma << (round < 40u ? round : 40u);
         if (atrbvh_i_stage_progress(run, round, cfg->rounds)) {
@@ -464,22 +469,18 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
             break; /* no crown left (the root's count is n) */
         a.gamma = (atrbvh_u32)gamma;
         a.round = round;
-        CL_CHECK(atrbvh_i_cl_upload(c, B_LIST_COUNT, &zero, 4,
-                                    "walk start count", error));
+        CL_CHECK(atrbvh_i_cl_zero(c, B_LIST_COUNT, 4, "walk start count",
+                                  error));
         CL_RUN(c, K_OPT_PREPARE, a.n_internal, error, CL_BUF(B_LEFT),
                CL_BUF(B_RIGHT), CL_BUF(B_COUNT), CL_BUF(B_NEEDED),
                CL_BUF(B_COUNTER), CL_BUF(B_LIST), CL_BUF(B_LIST_COUNT),
                CL_VAL(a));
-        CL_CHECK(atrbvh_i_cl_download(c, B_LIST_COUNT, &a.list_len, 4,
-                                      "walk start count", error));
-        if (a.list_len > 0) {
-            a.workers = a.list_len < workers_max ? a.list_len : workers_max;
-            CL_RUN(c, K_OPT_ROUND, a.workers, error, CL_BUF(B_LEFT),
-                   CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
-                   CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_LIST),
-                   CL_BUF(B_NEEDED), CL_BUF(B_COUNTER), CL_BUF(B_SCRATCH),
-                   CL_BUF(B_MARKS), CL_BUF(B_TALLY), CL_VAL(a));
-        }
+        CL_RUN(c, K_OPT_ROUND, a.workers, error, CL_BUF(B_LEFT),
+               CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
+               CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_LIST),
+               CL_BUF(B_NEEDED), CL_BUF(B_COUNTER), CL_BUF(B_SCRATCH),
+               CL_BUF(B_MARKS), CL_BUF(B_TALLY), CL_BUF(B_LIST_COUNT),
+               CL_VAL(a));
         /* The round's tree for the pipeline's capture (a blocking read
          * on the in-order queue sees the launch done). */
         if (atrbvh_i_stage_round(run, round + 1)) {
@@ -495,7 +496,7 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     c->opt_treelets = tally[0];
     c->opt_applied = tally[1];
     c->opt_skipped = tally[2];
-    return atrbvh_i_cl_finish(c, error);
+    return ATRBVH_OK;
 }
 
 /* ------------------------------------------------------------- collapse */
