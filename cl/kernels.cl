@@ -22,6 +22,22 @@
 #pragma OPENCL FP_CONTRACT OFF
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 
+/* The fence of the hand-overs between work-items of different
+ * work-groups (the bottom-up passes, last_arrival): our writes before
+ * the atomic that hands over, the others' writes after the atomic that
+ * takes over.  OpenCL 1.2's mem_fence only has to order them for the
+ * work-group, and NVIDIA's compiler takes it at its word: it emits
+ * membar.cta (seen in the PTX of an H200's driver), under which the refit
+ * read a sibling's stale box now and then (test_opencl real_scenes
+ * failed on every run there).  On NVIDIA the device-wide membar.gl, by
+ * inline PTX; elsewhere mem_fence (PoCL's CPU device: x86 keeps stores
+ * in order and its atomics are full barriers). */
+#if defined(__NV_CL_C_VERSION) || defined(cl_nv_device_attribute_query)
+#define ATRBVH_CL_FENCE() asm volatile("membar.gl;" ::: "memory")
+#else
+#define ATRBVH_CL_FENCE() mem_fence(CLK_GLOBAL_MEM_FENCE)
+#endif
+
 static atrbvh_box load_box_v(__global const atrbvh_box *b, uint i)
 {
     volatile __global const float *f = (volatile __global const float *)(b + i);
@@ -55,10 +71,10 @@ static double load_f64_v(__global const double *p, uint i)
  * waits for another. */
 static int last_arrival(__global uint *sync, uint items)
 {
-    mem_fence(CLK_GLOBAL_MEM_FENCE); /* our writes before the count */
+    ATRBVH_CL_FENCE(); /* our writes before the count */
     if (atomic_inc(&sync[0]) + 1u < items)
         return 0;
-    mem_fence(CLK_GLOBAL_MEM_FENCE); /* the others' writes after it */
+    ATRBVH_CL_FENCE(); /* the others' writes after it */
     sync[0] = 0u;
     return 1;
 }
@@ -368,10 +384,10 @@ __kernel void refit(__global atrbvh_box *box, __global uint *count,
     while (node != 0u) {
         uint up = parent[node], l, r, c;
         double co;
-        mem_fence(CLK_GLOBAL_MEM_FENCE); /* our writes before the count */
+        ATRBVH_CL_FENCE(); /* our writes before the count */
         if (atomic_inc(&counter[up]) == 0u)
             return; /* the sibling's item continues */
-        mem_fence(CLK_GLOBAL_MEM_FENCE); /* the sibling's writes after */
+        ATRBVH_CL_FENCE(); /* the sibling's writes after */
         counter[up] = 0u; /* no one else comes: zero for the next pass */
         l = left[up];
         r = right[up];
@@ -500,12 +516,12 @@ __kernel void opt_round(__global uint *left, __global uint *right,
                 break;
             up = t.parent[x]; /* volatile, as every tree read here */
             /* our treelet's writes before the count ... */
-            mem_fence(CLK_GLOBAL_MEM_FENCE);
+            ATRBVH_CL_FENCE();
             if (atomic_inc(&counter[up]) + 1u < needed[up])
                 break;
             /* ... the other arrivals' writes after it (the reads go
              * through t's volatile pointers, never a stale cache line) */
-            mem_fence(CLK_GLOBAL_MEM_FENCE);
+            ATRBVH_CL_FENCE();
             counter[up] = 0u; /* the last arrival: zero for the collapse */
             x = up;
         }
@@ -535,10 +551,10 @@ __kernel void collapse(__global const atrbvh_box *box,
     size[node] = 1u | ATRBVH_SIZE_LEAF;
     while (node != 0u) {
         uint up = parent[node], l, r;
-        mem_fence(CLK_GLOBAL_MEM_FENCE);
+        ATRBVH_CL_FENCE();
         if (atomic_inc(&counter[up]) == 0u)
             return;
-        mem_fence(CLK_GLOBAL_MEM_FENCE);
+        ATRBVH_CL_FENCE();
         counter[up] = 0u; /* zero for the next pass */
         l = left[up];
         r = right[up];
