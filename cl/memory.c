@@ -74,6 +74,8 @@ atrbvh_status atrbvh_i_cl_buffer(atrbvh_cl_device *c, int slot, size_t count,
         return atrbvh_i_cl_error(error, err, "clCreateBuffer", what);
     c->buf_bytes[slot] = bytes;
     c->buffers_created++;
+    if (slot == home_of(B_COUNTER))
+        c->counters_zero = 0; /* a new buffer holds anything */
     return ATRBVH_OK;
 }
 

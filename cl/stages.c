@@ -11,7 +11,9 @@
  * the layout's output; every other launch is queued behind the previous
  * one on the in-order queue, so a stage's wall time in the pipeline is
  * mostly its queueing and its kernels' time shows in the next wait
- * (atrbvh_bvh_kernel_time has each kernel's own).  The per-item work is in cl/kernels.cl, thin
+ * (atrbvh_bvh_kernel_time has each kernel's own).
+ *
+ * The per-item work is in cl/kernels.cl, thin
  * wrappers around lib/shared/; the sequencing, timing, progress between
  * stages and the exact error for an invalid primitive are the pipeline's
  * (lib/pipeline.c).
