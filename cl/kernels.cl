@@ -570,8 +570,8 @@ __kernel void collapse(__global const atrbvh_box *box,
  * stops spawning tasks: layout_top (one work-item) emits the nodes above
  * the cut (more than ATRBVH_CL_LAYOUT_CUT primitives, not a collapsed
  * leaf) and lists every subtree hanging below it with its output
- * position and first primitive; layout (one item per listed subtree)
- * emits that subtree depth-first, as the CPU's emit/gather do.  Both
+ * position and first primitive; layout (a few items sharing the listed
+ * subtrees) emits each depth-first, as the CPU's emit/gather do.  Both
  * walks are stackless: going up, a node's position and first primitive
  * follow back from its child's by the placement rule (shared/stages.h:
  * a left child sits at pos + 1 with the same primitives, a right child at

@@ -223,7 +223,7 @@ atrbvh_status atrbvh_i_cl_finish(atrbvh_cl_device *c, atrbvh_error *error)
  * range, so the global size may round up).
  *
  * Work-group sizes: a launch of few items (the per-block kernels: bounds,
- * the sort's count and scatter, hierarchy_block, layout; a few hundred
+ * morton, the sort's count and scatter, hierarchy, layout; a few hundred
  * items or less, each working through a block) gets small explicit
  * groups, at least 8 per compute unit: left to choose, PoCL put such a
  * launch of 64 items into one group, i.e. on one thread.  The ray

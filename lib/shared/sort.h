@@ -1,7 +1,7 @@
 /*
  * shared/sort.h - the per-item rules of the sort stage's radix passes,
  * written once for the CPU (lib/cpu/sort.c) and the OpenCL kernels
- * (sort_count, sort_scan, sort_scatter).
+ * (morton and sort_count, whose last block scans, and sort_scatter).
  *
  * A pass is stable: the n items are cut into `blocks` contiguous blocks
  * (atrbvh_block_range); each block counts its digits; one exclusive scan
