@@ -158,8 +158,10 @@ static atrbvh_status st_bounds(atrbvh_device *dev, atrbvh_i_run *run,
 {
     atrbvh_cl_device *c = cl_of(dev);
     atrbvh_kargs_bounds a;
-    /* 2 boxes per block, then one u32 per block (a box is 24 bytes) */
-    atrbvh_box part[2u * BOUNDS_PARTS_MAX + BOUNDS_PARTS_MAX * 4u / 24u + 1u];
+    /* 2 boxes per block, then one u32 per block */
+    atrbvh_box part[2u * BOUNDS_PARTS_MAX +
+                    (BOUNDS_PARTS_MAX * sizeof(cl_uint) + sizeof(atrbvh_box) -
+                     1u) / sizeof(atrbvh_box)];
     cl_uint bad[BOUNDS_PARTS_MAX], u, any = 0;
     size_t boxes_bytes;
     memset(&a, 0, sizeof a);
