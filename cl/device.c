@@ -23,8 +23,8 @@
 static pthread_mutex_t cl_global_lock = PTHREAD_MUTEX_INITIALIZER;
 
 const char *const atrbvh_i_cl_kernel_names[K_COUNT] = {
-    "bounds_triangles", "bounds_boxes", "bounds_reduce", "morton",
-    "sort_count",       "sort_scan",    "sort_scatter",  "hierarchy_block", "hierarchy",
+    "bounds_triangles", "bounds_boxes", "morton",
+    "sort_count",       "sort_scatter", "hierarchy",
     "refit",            "opt_prepare",  "opt_round",     "collapse",
     "layout_top",       "layout",
     "intersect_closest", "intersect_any"};
@@ -203,6 +203,13 @@ static atrbvh_status build_program(atrbvh_cl_device *c, atrbvh_error *error)
         if (!c->kernel[k])
             return atrbvh_i_cl_error(error, err, "clCreateKernel",
                                      atrbvh_i_cl_kernel_names[k]);
+        /* The launches' work-group sizes stay within it (memory.c). */
+        if (clGetKernelWorkGroupInfo(c->kernel[k], c->device,
+                                     CL_KERNEL_WORK_GROUP_SIZE,
+                                     sizeof c->kernel_wg[k], &c->kernel_wg[k],
+                                     NULL) != CL_SUCCESS ||
+            c->kernel_wg[k] < 1)
+            c->kernel_wg[k] = 1;
     }
     return ATRBVH_OK;
 }

@@ -11,13 +11,32 @@
  * Bottom-up passes (refit, optimise, collapse) use an atomic counter per
  * node: each work-item writes its node, fences, increments the parent's
  * counter; the first arrival stops, the last continues upwards after a
- * fence.  No work-item ever waits for another (no spinning, no lock-step
+ * fence and sets the counter back to zero, so the next pass needs no
+ * fill (the hierarchy kernel zeroes them first).  Whole launches end the
+ * same way where a step needs everything before it (last_arrival): the
+ * sort's scan, the hierarchy's merge.  No work-item ever waits for another (no spinning, no lock-step
  * assumption, no barrier across work-groups), so the passes are correct
  * under any scheduling.  Values written by another work-item are read
  * through volatile pointers after the fence.
  */
 #pragma OPENCL FP_CONTRACT OFF
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
+
+/* The fence of the hand-overs between work-items of different
+ * work-groups (the bottom-up passes, last_arrival): our writes before
+ * the atomic that hands over, the others' writes after the atomic that
+ * takes over.  OpenCL 1.2's mem_fence only has to order them for the
+ * work-group, and NVIDIA's compiler takes it at its word: it emits
+ * membar.cta (seen in the PTX of an H200's driver), under which the refit
+ * read a sibling's stale box now and then (test_opencl real_scenes
+ * failed on every run there).  On NVIDIA the device-wide membar.gl, by
+ * inline PTX; elsewhere mem_fence (PoCL's CPU device: x86 keeps stores
+ * in order and its atomics are full barriers). */
+#if defined(__NV_CL_C_VERSION) || defined(cl_nv_device_attribute_query)
+#define ATRBVH_CL_FENCE() asm volatile("membar.gl;" ::: "memory")
+#else
+#define ATRBVH_CL_FENCE() mem_fence(CLK_GLOBAL_MEM_FENCE)
+#endif
 
 static atrbvh_box load_box_v(__global const atrbvh_box *b, uint i)
 {
@@ -42,99 +61,150 @@ static double load_f64_v(__global const double *p, uint i)
     return ((volatile __global const double *)p)[i];
 }
 
+/* --------------------------------------------------------- last arrival */
+/* A launch's last work-item to finish its share continues alone (the
+ * bottom-up passes' pattern for a whole launch): each of `items` items
+ * writes its results, fences and counts itself in sync[0]; the one that
+ * counts last fences again, resets the word for the next launch (the host
+ * zeroes it once, when the buffer is made) and returns true.  The others
+ * have written everything it reads (through volatile pointers).  No item
+ * waits for another. */
+static int last_arrival(__global uint *sync, uint items)
+{
+    ATRBVH_CL_FENCE(); /* our writes before the count */
+    if (atomic_inc(&sync[0]) + 1u < items)
+        return 0;
+    ATRBVH_CL_FENCE(); /* the others' writes after it */
+    sync[0] = 0u;
+    return 1;
+}
+
 /* ------------------------------------------------------------------ bounds */
-/* One box per primitive (atrbvh_prim_box_triangle / _box, the CPU's
- * functions); `problems` counts invalid primitives (NaN/Inf, an index out
- * of range, an inverted box): the pipeline then finds the exact error on
- * the host, or compacts, and hands the boxes back (set_prims). */
+/* Item w of a.parts: the box of each primitive of block w
+ * (atrbvh_prim_box_triangle / _box, the CPU's functions, in index order),
+ * and the block's scene and centroid boxes (atrbvh_scene_add), in
+ * partial[2w], partial[2w + 1]; its count of invalid primitives (NaN/Inf,
+ * an index out of range, an inverted box) after the 2 * a.parts boxes.
+ * The host unites the partials (min/max: order-independent) in the same
+ * read; when any primitive is invalid, the pipeline finds the exact error
+ * on the host, or compacts, and hands the boxes back (set_prims). */
+static void bounds_part(__global atrbvh_box *partial, uint w, uint parts,
+                        atrbvh_box scene, atrbvh_box centroids, uint bad)
+{
+    partial[2u * w] = scene;
+    partial[2u * w + 1u] = centroids;
+    ((__global uint *)(partial + 2u * parts))[w] = bad;
+}
+
 __kernel void bounds_triangles(__global const float *vertices,
                                __global const uint *indices,
                                __global atrbvh_box *boxes,
-                               __global uint *problems, atrbvh_kargs_bounds a)
+                               __global atrbvh_box *partial,
+                               atrbvh_kargs_bounds a)
 {
-    uint i = (uint)get_global_id(0), bad = 0;
-    atrbvh_box b;
-    if (i >= a.n)
-        return;
-    if (atrbvh_prim_box_triangle(vertices, a.vstride, a.vertex_count, indices,
-                                 a.istride, (int)a.indexed, (ulong)i, &b,
-                                 &bad) != ATRBVH_PRIM_OK)
-        atomic_inc(problems);
-    boxes[i] = b;
-}
-
-__kernel void bounds_boxes(__global const float *in, __global atrbvh_box *boxes,
-                           __global uint *problems, atrbvh_kargs_bounds a)
-{
-    uint i = (uint)get_global_id(0);
-    atrbvh_box b;
-    if (i >= a.n)
-        return;
-    if (atrbvh_prim_box_box(in, a.bstride, (ulong)i, &b) != ATRBVH_PRIM_OK)
-        atomic_inc(problems);
-    boxes[i] = b;
-}
-
-/* Partial scene and centroid boxes: item w reduces block w of a.parts;
- * the host unites the partials (min/max: order-independent). */
-__kernel void bounds_reduce(__global const atrbvh_box *boxes,
-                            __global atrbvh_box *partial,
-                            atrbvh_kargs_bounds a)
-{
-    uint w = (uint)get_global_id(0), lo, hi, i;
-    atrbvh_box scene, centroids;
+    uint w = (uint)get_global_id(0), lo, hi, i, bad = 0u, why;
+    atrbvh_box scene, centroids, b;
     if (w >= a.parts)
         return;
     atrbvh_block_range(a.n, w, a.parts, &lo, &hi);
     scene = atrbvh_box_empty();
     centroids = atrbvh_box_empty();
-    for (i = lo; i < hi; i++)
-        atrbvh_scene_add(&scene, &centroids, boxes[i]);
-    partial[2u * w] = scene;
-    partial[2u * w + 1u] = centroids;
+    for (i = lo; i < hi; i++) {
+        why = 0u;
+        if (atrbvh_prim_box_triangle(vertices, a.vstride, a.vertex_count,
+                                     indices, a.istride, (int)a.indexed,
+                                     (ulong)i, &b, &why) != ATRBVH_PRIM_OK)
+            bad++;
+        else
+            atrbvh_scene_add(&scene, &centroids, b);
+        boxes[i] = b;
+    }
+    bounds_part(partial, w, a.parts, scene, centroids, bad);
 }
 
-/* ------------------------------------------------------------------ morton */
-__kernel void morton(__global const atrbvh_box *boxes, __global ulong *keys,
-                     __global uint *order, atrbvh_kargs_morton a)
+__kernel void bounds_boxes(__global const float *in, __global atrbvh_box *boxes,
+                           __global atrbvh_box *partial, atrbvh_kargs_bounds a)
 {
-    uint i = (uint)get_global_id(0);
-    atrbvh_box b;
-    if (i >= a.n)
+    uint w = (uint)get_global_id(0), lo, hi, i, bad = 0u;
+    atrbvh_box scene, centroids, b;
+    if (w >= a.parts)
         return;
-    b = boxes[i];
-    keys[i] = atrbvh_morton_key(
-        atrbvh_morton_quantise(atrbvh_box_centre(b, 0), a.lo[0], a.scale[0]),
-        atrbvh_morton_quantise(atrbvh_box_centre(b, 1), a.lo[1], a.scale[1]),
-        atrbvh_morton_quantise(atrbvh_box_centre(b, 2), a.lo[2], a.scale[2]));
-    order[i] = i; /* the sort's values: build indices */
+    atrbvh_block_range(a.n, w, a.parts, &lo, &hi);
+    scene = atrbvh_box_empty();
+    centroids = atrbvh_box_empty();
+    for (i = lo; i < hi; i++) {
+        if (atrbvh_prim_box_box(in, a.bstride, (ulong)i, &b) != ATRBVH_PRIM_OK)
+            bad++;
+        else
+            atrbvh_scene_add(&scene, &centroids, b);
+        boxes[i] = b;
+    }
+    bounds_part(partial, w, a.parts, scene, centroids, bad);
 }
 
 /* -------------------------------------------------------------------- sort */
-/* One stable 8-bit LSD pass (shared/sort.h): count per (digit, block),
+/* Stable 8-bit LSD passes (shared/sort.h): count per (digit, block),
  * exclusive scan in digit-major order, each block places its items in
- * order. */
+ * order.  The count and the scan are one launch: the block that counts
+ * last scans (last_arrival).  The first pass's counting is the morton
+ * kernel's, in the same sweep as the keys. */
+static void sort_counts(__global uint *hist, uint b, uint blocks,
+                        const uint *c)
+{
+    uint d;
+    for (d = 0; d < ATRBVH_SORT_RADIX; d++)
+        hist[atrbvh_sort_slot(d, b, blocks)] = c[d];
+}
+
+/* ------------------------------------------------------------------ morton */
+/* Item b of the sort's a.blocks: the key of each primitive of block b
+ * (atrbvh_morton_quantise, atrbvh_morton_key in the host's frame), the
+ * identity order (the sort's values: build indices), and the counts of
+ * the first sort pass's digits; the last block scans them. */
+__kernel void morton(__global const atrbvh_box *boxes, __global ulong *keys,
+                     __global uint *order, __global uint *hist,
+                     __global uint *sync, atrbvh_kargs_morton a)
+{
+    uint b = (uint)get_global_id(0), lo, hi, i, d;
+    uint c[ATRBVH_SORT_RADIX];
+    if (b >= a.blocks)
+        return;
+    for (d = 0; d < ATRBVH_SORT_RADIX; d++)
+        c[d] = 0u;
+    atrbvh_block_range(a.n, b, a.blocks, &lo, &hi);
+    for (i = lo; i < hi; i++) {
+        atrbvh_box x = boxes[i];
+        ulong k = atrbvh_morton_key(
+            atrbvh_morton_quantise(atrbvh_box_centre(x, 0), a.lo[0],
+                                   a.scale[0]),
+            atrbvh_morton_quantise(atrbvh_box_centre(x, 1), a.lo[1],
+                                   a.scale[1]),
+            atrbvh_morton_quantise(atrbvh_box_centre(x, 2), a.lo[2],
+                                   a.scale[2]));
+        keys[i] = k;
+        order[i] = i;
+        c[atrbvh_sort_digit(k, 0u)]++;
+    }
+    sort_counts(hist, b, a.blocks, c);
+    if (last_arrival(sync, a.blocks))
+        (void)atrbvh_sort_scan(hist, a.entries);
+}
+
 __kernel void sort_count(__global const ulong *keys, __global uint *hist,
-                         atrbvh_kargs_sort a)
+                         __global uint *sync, atrbvh_kargs_sort a)
 {
     uint b = (uint)get_global_id(0), lo, hi, j, d;
     uint c[ATRBVH_SORT_RADIX];
     if (b >= a.blocks)
         return;
     for (d = 0; d < ATRBVH_SORT_RADIX; d++)
-        c[d] = 0;
+        c[d] = 0u;
     atrbvh_block_range(a.n, b, a.blocks, &lo, &hi);
     for (j = lo; j < hi; j++)
         c[atrbvh_sort_digit(keys[j], a.shift)]++;
-    for (d = 0; d < ATRBVH_SORT_RADIX; d++)
-        hist[atrbvh_sort_slot(d, b, a.blocks)] = c[d];
-}
-
-__kernel void sort_scan(__global uint *hist, atrbvh_kargs_sort a)
-{
-    if (get_global_id(0) != 0)
-        return;
-    (void)atrbvh_sort_scan(hist, a.entries);
+    sort_counts(hist, b, a.blocks, c);
+    if (last_arrival(sync, a.blocks))
+        (void)atrbvh_sort_scan(hist, a.entries);
 }
 
 __kernel void sort_scatter(__global const ulong *src_k,
@@ -158,16 +228,18 @@ __kernel void sort_scatter(__global const ulong *src_k,
 }
 
 /* --------------------------------------------------------------- hierarchy */
-/* The CPU's algorithm (lib/cpu/hierarchy.c), kernel for kernel: the node
+/* The CPU's algorithm (lib/cpu/hierarchy.c), in one launch: the node
  * whose split is s spans from its nearest split to the left with a smaller
- * delta to the nearest one to the right; hierarchy_block (one item per
- * contiguous block of splits) finds them with a stack, writes every node
- * whose two neighbours lie in its block and leaves the rest (its prefix
- * minima and its final stack, both strictly monotone in delta, so at most
- * ATRBVH_CL_HIER_SIDE each) in `over`; hierarchy (one item) runs the same
- * stack over all blocks' leftovers in position order.  The tree is
- * Karras's (atrbvh_karras_delta's tie rule), identical for any block
- * count. */
+ * delta to the nearest one to the right; each item (one per contiguous
+ * block of splits) finds them with a stack, writes every node whose two
+ * neighbours lie in its block and leaves the rest (its prefix minima and
+ * its final stack, both strictly monotone in delta, so at most
+ * ATRBVH_CL_HIER_SIDE each) in `over`; the last item to finish
+ * (last_arrival) runs the same stack over all blocks' leftovers in
+ * position order.  The tree is Karras's (atrbvh_karras_delta's tie rule),
+ * identical for any block count.  Each item also zeroes the bottom-up
+ * arrival counters of its splits' ids (0 .. n - 2, all of them), so the
+ * refit launch needs no fill. */
 #define ATRBVH_CL_HIER_SIDE 128u
 
 /* Internal node of split s from its neighbours ps (-1: none) and ns (n-1:
@@ -185,14 +257,66 @@ static void hier_emit(__global uint *left, __global uint *right,
     parent[rc] = id;
 }
 
+/* The merge over every block's leftovers (other items' writes: volatile),
+ * and the last leaf and the root. */
+static void hier_merge(__global const ulong *keys, __global uint *left,
+                       __global uint *right, __global uint *parent,
+                       __global uint *count, __global uint *leaf_prim,
+                       __global const uint *order, __global const uint *ids,
+                       volatile __global const uint *over, uint blocks,
+                       atrbvh_kargs_tree a)
+{
+    long n = (long)a.n;
+    uint st_s[ATRBVH_CL_HIER_SIDE];
+    int st_d[ATRBVH_CL_HIER_SIDE];
+    uint sp = 0u, b, k;
+    parent[0] = ATRBVH_U32_MAX;
+    count[2 * n - 2] = 1u;
+    leaf_prim[n - 1] = a.has_ids ? ids[order[n - 1]] : order[n - 1];
+    if (n == 1)
+        return;
+    for (b = 0u; b < blocks; b++) {
+        volatile __global const uint *in =
+            over + (size_t)b * (2u * ATRBVH_CL_HIER_SIDE);
+        uint m = over[(size_t)blocks * (2u * ATRBVH_CL_HIER_SIDE) + b];
+        for (k = 0u; k < m; k++) {
+            long s = (long)in[k];
+            int d = atrbvh_karras_delta(keys, n, s, s + 1);
+            while (sp > 0u && st_d[sp - 1u] > d) {
+                uint x = st_s[--sp];
+                if (sp > 0u)
+                    hier_emit(left, right, count, parent, n, (long)x,
+                              (long)st_s[sp - 1u], st_d[sp - 1u], s, d);
+                else
+                    hier_emit(left, right, count, parent, n, (long)x, -1, 0,
+                              s, d);
+            }
+            if (sp == ATRBVH_CL_HIER_SIDE)
+                continue; /* keys out of order (cannot happen when sorted) */
+            st_s[sp] = (uint)s;
+            st_d[sp++] = d;
+        }
+    }
+    while (sp > 0u) {
+        uint x = st_s[--sp];
+        if (sp > 0u)
+            hier_emit(left, right, count, parent, n, (long)x,
+                      (long)st_s[sp - 1u], st_d[sp - 1u], n - 1, 0);
+        else
+            hier_emit(left, right, count, parent, n, (long)x, -1, 0, n - 1,
+                      0);
+    }
+}
+
 /* `over`: 2 * ATRBVH_CL_HIER_SIDE split positions per block, then the
- * blocks' leftover counts. */
-__kernel void hierarchy_block(__global const ulong *keys, __global uint *left,
-                              __global uint *right, __global uint *parent,
-                              __global uint *count, __global uint *leaf_prim,
-                              __global const uint *order,
-                              __global const uint *ids, __global uint *over,
-                              uint blocks, atrbvh_kargs_tree a)
+ * blocks' leftover counts.  `blocks` >= 1 (one block of no split when
+ * n == 1). */
+__kernel void hierarchy(__global const ulong *keys, __global uint *left,
+                        __global uint *right, __global uint *parent,
+                        __global uint *count, __global uint *leaf_prim,
+                        __global const uint *order, __global const uint *ids,
+                        __global uint *over, __global uint *counter,
+                        __global uint *sync, uint blocks, atrbvh_kargs_tree a)
 {
     uint b = (uint)get_global_id(0), sp = 0u, nout = 0u, k;
     long n = (long)a.n, lo, hi, s;
@@ -207,6 +331,7 @@ __kernel void hierarchy_block(__global const ulong *keys, __global uint *left,
     for (s = lo; s < hi; s++) {
         int d = atrbvh_karras_delta(keys, n, s, s + 1);
         count[n - 1 + s] = 1u;
+        counter[s] = 0u;
         leaf_prim[s] = a.has_ids ? ids[order[s]] : order[s];
         while (sp > 0u && st_d[sp - 1u] > d) {
             uint x = st_s[--sp];
@@ -225,56 +350,9 @@ __kernel void hierarchy_block(__global const ulong *keys, __global uint *left,
     for (k = 1u; k < sp; k++)
         out[nout++] = st_s[k];
     over[(size_t)blocks * (2u * ATRBVH_CL_HIER_SIDE) + b] = nout;
-}
-
-__kernel void hierarchy(__global const ulong *keys, __global uint *left,
-                        __global uint *right, __global uint *parent,
-                        __global uint *count, __global uint *leaf_prim,
-                        __global const uint *order, __global const uint *ids,
-                        __global const uint *over, uint blocks,
-                        atrbvh_kargs_tree a)
-{
-    long n = (long)a.n;
-    uint st_s[ATRBVH_CL_HIER_SIDE];
-    int st_d[ATRBVH_CL_HIER_SIDE];
-    uint sp = 0u, b, k;
-    if (get_global_id(0) != 0)
-        return;
-    parent[0] = ATRBVH_U32_MAX;
-    count[2 * n - 2] = 1u;
-    leaf_prim[n - 1] = a.has_ids ? ids[order[n - 1]] : order[n - 1];
-    if (n == 1)
-        return;
-    for (b = 0u; b < blocks; b++) {
-        __global const uint *in = over + (size_t)b * (2u * ATRBVH_CL_HIER_SIDE);
-        uint m = over[(size_t)blocks * (2u * ATRBVH_CL_HIER_SIDE) + b];
-        for (k = 0u; k < m; k++) {
-            long s = (long)in[k];
-            int d = atrbvh_karras_delta(keys, n, s, s + 1);
-            while (sp > 0u && st_d[sp - 1u] > d) {
-                uint x = st_s[--sp];
-                if (sp > 0u)
-                    hier_emit(left, right, count, parent, n, (long)x,
-                              (long)st_s[sp - 1u], st_d[sp - 1u], s, d);
-                else
-                    hier_emit(left, right, count, parent, n, (long)x, -1, 0,
-                              s, d);
-            }
-            if (sp == ATRBVH_CL_HIER_SIDE)
-                continue; /* keys out of order (see hierarchy_block) */
-            st_s[sp] = (uint)s;
-            st_d[sp++] = d;
-        }
-    }
-    while (sp > 0u) {
-        uint x = st_s[--sp];
-        if (sp > 0u)
-            hier_emit(left, right, count, parent, n, (long)x,
-                      (long)st_s[sp - 1u], st_d[sp - 1u], n - 1, 0);
-        else
-            hier_emit(left, right, count, parent, n, (long)x, -1, 0, n - 1,
-                      0);
-    }
+    if (last_arrival(sync, blocks))
+        hier_merge(keys, left, right, parent, count, leaf_prim, order, ids,
+                   over, blocks, a);
 }
 
 /* ------------------------------------------------------------------- refit */
@@ -306,10 +384,11 @@ __kernel void refit(__global atrbvh_box *box, __global uint *count,
     while (node != 0u) {
         uint up = parent[node], l, r, c;
         double co;
-        mem_fence(CLK_GLOBAL_MEM_FENCE); /* our writes before the count */
+        ATRBVH_CL_FENCE(); /* our writes before the count */
         if (atomic_inc(&counter[up]) == 0u)
             return; /* the sibling's item continues */
-        mem_fence(CLK_GLOBAL_MEM_FENCE); /* the sibling's writes after */
+        ATRBVH_CL_FENCE(); /* the sibling's writes after */
+        counter[up] = 0u; /* no one else comes: zero for the next pass */
         l = left[up];
         r = right[up];
         if (a.sizes)
@@ -367,10 +446,11 @@ __kernel void opt_round(__global uint *left, __global uint *right,
                         __global const uint *list, __global const uint *needed,
                         __global uint *counter, __global uchar *scratch,
                         __global uchar *marks, __global uint *tally,
+                        __global const uint *list_count,
                         atrbvh_kargs_optimise a)
 {
     uint w = (uint)get_global_id(0), k, done = 0u, applied = 0u,
-         skipped = 0u;
+         skipped = 0u, len;
     atrbvh_treelet_marks m;
     atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
                                              a.max_leaf);
@@ -406,9 +486,12 @@ __kernel void opt_round(__global uint *left, __global uint *right,
     m.same = marks + (a.marks ? a.n_internal : 0u);
     /* A contiguous share of the start list (neighbouring nodes: their walks
      * meet soon, on data still in cache, as the CPU's post-order walk of a
-     * subtree does), not every workers-th entry. */
-    for (k = (uint)((ulong)a.list_len * w / a.workers);
-         k < (uint)((ulong)a.list_len * (w + 1u) / a.workers); k++) {
+     * subtree does), not every workers-th entry.  The list's length is
+     * opt_prepare's, read here: the host queues both launches without
+     * waiting (items beyond the list's length have no share). */
+    len = *list_count;
+    for (k = (uint)((ulong)len * w / a.workers);
+         k < (uint)((ulong)len * (w + 1u) / a.workers); k++) {
         uint x = list[k];
         for (;;) {
             uint up;
@@ -433,12 +516,13 @@ __kernel void opt_round(__global uint *left, __global uint *right,
                 break;
             up = t.parent[x]; /* volatile, as every tree read here */
             /* our treelet's writes before the count ... */
-            mem_fence(CLK_GLOBAL_MEM_FENCE);
+            ATRBVH_CL_FENCE();
             if (atomic_inc(&counter[up]) + 1u < needed[up])
                 break;
             /* ... the other arrivals' writes after it (the reads go
              * through t's volatile pointers, never a stale cache line) */
-            mem_fence(CLK_GLOBAL_MEM_FENCE);
+            ATRBVH_CL_FENCE();
+            counter[up] = 0u; /* the last arrival: zero for the collapse */
             x = up;
         }
     }
@@ -467,10 +551,11 @@ __kernel void collapse(__global const atrbvh_box *box,
     size[node] = 1u | ATRBVH_SIZE_LEAF;
     while (node != 0u) {
         uint up = parent[node], l, r;
-        mem_fence(CLK_GLOBAL_MEM_FENCE);
+        ATRBVH_CL_FENCE();
         if (atomic_inc(&counter[up]) == 0u)
             return;
-        mem_fence(CLK_GLOBAL_MEM_FENCE);
+        ATRBVH_CL_FENCE();
+        counter[up] = 0u; /* zero for the next pass */
         l = left[up];
         r = right[up];
         size[up] = atrbvh_collapse_size(&p, box[up], count[up], cost[l],
@@ -485,8 +570,8 @@ __kernel void collapse(__global const atrbvh_box *box,
  * stops spawning tasks: layout_top (one work-item) emits the nodes above
  * the cut (more than ATRBVH_CL_LAYOUT_CUT primitives, not a collapsed
  * leaf) and lists every subtree hanging below it with its output
- * position and first primitive; layout (one item per listed subtree)
- * emits that subtree depth-first, as the CPU's emit/gather do.  Both
+ * position and first primitive; layout (a few items sharing the listed
+ * subtrees) emits each depth-first, as the CPU's emit/gather do.  Both
  * walks are stackless: going up, a node's position and first primitive
  * follow back from its child's by the placement rule (shared/stages.h:
  * a left child sits at pos + 1 with the same primitives, a right child at
@@ -552,16 +637,19 @@ __kernel void layout_top(__global const uint *count, __global const uint *left,
     (void)a;
 }
 
-__kernel void layout(__global const atrbvh_box *box, __global const uint *count,
-                     __global const uint *left, __global const uint *right,
-                     __global const uint *parent, __global const uint *size,
-                     __global const uint *leaf_prim,
-                     __global const uint *list, __global atrbvh_node *nodes,
-                     __global uint *prims, uint list_len, atrbvh_kargs_tree a)
+/* Listed subtree i. */
+static void layout_subtree(__global const atrbvh_box *box,
+                           __global const uint *count,
+                           __global const uint *left,
+                           __global const uint *right,
+                           __global const uint *parent,
+                           __global const uint *size,
+                           __global const uint *leaf_prim,
+                           __global const uint *list,
+                           __global atrbvh_node *nodes, __global uint *prims,
+                           uint i, atrbvh_kargs_tree a)
 {
-    uint i = (uint)get_global_id(0), root, cur, pos, prim, first = a.n - 1u;
-    if (i >= list_len)
-        return;
+    uint root, cur, pos, prim, first = a.n - 1u;
     root = cur = list[3u * i];
     pos = list[3u * i + 1u];
     prim = list[3u * i + 2u];
@@ -610,6 +698,28 @@ __kernel void layout(__global const atrbvh_box *box, __global const uint *count,
         }
     } while (layout_next(count, left, right, parent, size, root, &cur, &pos,
                          &prim));
+}
+
+/* `workers` items share the listed subtrees, a contiguous run each
+ * (neighbours in the output); their count is layout_top's, read here, so
+ * the host queues both launches without waiting for the first. */
+__kernel void layout(__global const atrbvh_box *box, __global const uint *count,
+                     __global const uint *left, __global const uint *right,
+                     __global const uint *parent, __global const uint *size,
+                     __global const uint *leaf_prim,
+                     __global const uint *list, __global atrbvh_node *nodes,
+                     __global uint *prims, __global const uint *list_len,
+                     uint workers, atrbvh_kargs_tree a)
+{
+    uint w = (uint)get_global_id(0), i, end;
+    ulong len;
+    if (w >= workers)
+        return;
+    len = (ulong)*list_len;
+    end = (uint)(len * (w + 1u) / workers);
+    for (i = (uint)(len * w / workers); i < end; i++)
+        layout_subtree(box, count, left, right, parent, size, leaf_prim, list,
+                       nodes, prims, i, a);
 }
 
 /* ------------------------------------------------------------- ray queries */

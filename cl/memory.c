@@ -74,6 +74,8 @@ atrbvh_status atrbvh_i_cl_buffer(atrbvh_cl_device *c, int slot, size_t count,
         return atrbvh_i_cl_error(error, err, "clCreateBuffer", what);
     c->buf_bytes[slot] = bytes;
     c->buffers_created++;
+    if (slot == home_of(B_COUNTER))
+        c->counters_zero = 0; /* a new buffer holds anything */
     return ATRBVH_OK;
 }
 
@@ -95,11 +97,45 @@ atrbvh_status atrbvh_i_cl_upload(atrbvh_cl_device *c, int slot,
     cl_int err;
     if (bytes == 0)
         return ATRBVH_OK;
+    c->n_writes++;
     err = clEnqueueWriteBuffer(c->queue, c->buf[home_of(slot)], CL_TRUE, 0, bytes, data,
                                0, NULL, NULL);
     if (err != CL_SUCCESS)
         return atrbvh_i_cl_error(error, err, "clEnqueueWriteBuffer", what);
+    c->pending = 0; /* blocking: everything before it is done too */
     return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cl_upload_queued(atrbvh_cl_device *c, int slot,
+                                        const void *data, size_t bytes,
+                                        const char *what, atrbvh_error *error)
+{
+    cl_int err;
+    if (bytes == 0)
+        return ATRBVH_OK;
+    c->n_writes++;
+    c->pending = 1;
+    err = clEnqueueWriteBuffer(c->queue, c->buf[home_of(slot)], CL_FALSE, 0,
+                               bytes, data, 0, NULL, NULL);
+    if (err != CL_SUCCESS)
+        return atrbvh_i_cl_error(error, err, "clEnqueueWriteBuffer", what);
+    return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cl_sync(atrbvh_cl_device *c, atrbvh_error *error)
+{
+    if (c->buf[B_SYNC])
+        return ATRBVH_OK;
+    atrbvh_status st;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_SYNC, 1, sizeof(cl_uint), "launch sync",
+                                error));
+    st = atrbvh_i_cl_zero(c, B_SYNC, sizeof(cl_uint), "launch sync", error);
+    if (st != ATRBVH_OK) { /* not known zero: made again next time */
+        clReleaseMemObject(c->buf[B_SYNC]);
+        c->buf[B_SYNC] = NULL;
+        c->buf_bytes[B_SYNC] = 0;
+    }
+    return st;
 }
 
 atrbvh_status atrbvh_i_cl_download(atrbvh_cl_device *c, int slot, void *data,
@@ -109,10 +145,12 @@ atrbvh_status atrbvh_i_cl_download(atrbvh_cl_device *c, int slot, void *data,
     cl_int err;
     if (bytes == 0)
         return ATRBVH_OK;
+    c->n_reads++;
     err = clEnqueueReadBuffer(c->queue, c->buf[home_of(slot)], CL_TRUE, 0, bytes, data,
                               0, NULL, NULL);
     if (err != CL_SUCCESS)
         return atrbvh_i_cl_error(error, err, "clEnqueueReadBuffer", what);
+    c->pending = 0; /* blocking: everything before it is done too */
     return ATRBVH_OK;
 }
 
@@ -123,6 +161,8 @@ atrbvh_status atrbvh_i_cl_zero(atrbvh_cl_device *c, int slot, size_t bytes,
     cl_int err;
     if (bytes == 0)
         return ATRBVH_OK;
+    c->n_fills++;
+    c->pending = 1;
     err = clEnqueueFillBuffer(c->queue, c->buf[home_of(slot)], &z, sizeof z, 0, bytes,
                               0, NULL, NULL);
     if (err != CL_SUCCESS)
@@ -157,7 +197,10 @@ void atrbvh_i_cl_drop_events(atrbvh_cl_device *c)
 atrbvh_status atrbvh_i_cl_finish(atrbvh_cl_device *c, atrbvh_error *error)
 {
     int k;
-    cl_int err = clFinish(c->queue);
+    cl_int err;
+    c->n_finishes++;
+    c->pending = 0;
+    err = clFinish(c->queue);
     if (err != CL_SUCCESS) {
         atrbvh_i_cl_drop_events(c);
         return atrbvh_i_cl_error(error, err, "clFinish", NULL);
@@ -176,12 +219,20 @@ atrbvh_status atrbvh_i_cl_finish(atrbvh_cl_device *c, atrbvh_error *error)
     return ATRBVH_OK;
 }
 
-/* Launches kernel k over `items` work-items (rounded up to a multiple of
- * 64; every kernel checks its range).  The work-group size is the
- * implementation's choice except for the ray kernels. */
+/* Launches kernel k over `items` work-items (every kernel checks its
+ * range, so the global size may round up).
+ *
+ * Work-group sizes: a launch of few items (the per-block kernels: bounds,
+ * morton, the sort's count and scatter, hierarchy, layout; a few hundred
+ * items or less, each working through a block) gets small explicit
+ * groups, at least 8 per compute unit: left to choose, PoCL put such a
+ * launch of 64 items into one group, i.e. on one thread.  The ray
+ * kernels get 64 (see below); the rest is the implementation's choice,
+ * with the global size a multiple of 64. */
 static atrbvh_status launch(atrbvh_cl_device *c, int k, size_t items,
                             atrbvh_error *error)
 {
+    const size_t groups = 8u * (size_t)c->compute_units;
     size_t global = (items + 63u) / 64u * 64u, local = 0;
     cl_event ev = NULL;
     cl_int err;
@@ -195,15 +246,20 @@ static atrbvh_status launch(atrbvh_cl_device *c, int k, size_t items,
          * runs out of stack with the traversal's private arrays (2 KB per
          * item): 64, or the largest power of two the kernel allows below
          * it (global is a multiple of 64, so it divides it). */
-        size_t max_wg = 0;
         local = 64;
-        if (clGetKernelWorkGroupInfo(c->kernel[k], c->device,
-                                     CL_KERNEL_WORK_GROUP_SIZE, sizeof max_wg,
-                                     &max_wg, NULL) == CL_SUCCESS &&
-            max_wg > 0)
-            while (local > max_wg)
-                local /= 2;
+        while (local > c->kernel_wg[k])
+            local /= 2;
+    } else if (items < 64u * groups) {
+        /* the largest power of two up to 64 giving `groups` groups */
+        local = 64;
+        while (local > 1u && (items + local - 1u) / local < groups)
+            local /= 2;
+        while (local > c->kernel_wg[k])
+            local /= 2;
+        global = (items + local - 1u) / local * local;
     }
+    c->n_launches++;
+    c->pending = 1;
     err = clEnqueueNDRangeKernel(c->queue, c->kernel[k], 1, NULL, &global,
                                  local ? &local : NULL, 0, NULL, &ev);
     if (err != CL_SUCCESS)

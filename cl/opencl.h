@@ -35,12 +35,9 @@
 enum {
     K_BOUNDS_TRIANGLES,
     K_BOUNDS_BOXES,
-    K_BOUNDS_REDUCE,
     K_MORTON,
     K_SORT_COUNT,
-    K_SORT_SCAN,
     K_SORT_SCATTER,
-    K_HIERARCHY_BLOCK,
     K_HIERARCHY,
     K_REFIT,
     K_OPT_PREPARE,
@@ -61,8 +58,8 @@ enum {
     B_GEOMETRY,   /* vertices or input boxes             */
     B_INDICES,    /* triangle indices (or a dummy)        */
     B_BOXES,      /* primitive boxes, build order         */
-    B_PROBLEMS,   /* bounds: invalid primitive count      */
-    B_PARTIAL,    /* bounds: partial scene/centroid boxes */
+    B_PARTIAL,    /* bounds: partial scene/centroid boxes,
+                     then invalid primitive counts        */
     B_KEYS,
     B_KEYS_TMP,
     B_ORDER,
@@ -88,6 +85,9 @@ enum {
     B_FLAG,       /* layout: their count                  */
     B_OUT_NODES,
     B_OUT_PRIMS,
+    B_SYNC,       /* last_arrival's word (kernels.cl): zeroed
+                     once when made, left zero by every
+                     launch that counts in it            */
     /* ray batches */
     B_T_NODES,
     B_T_PRIMS,
@@ -117,19 +117,31 @@ typedef struct atrbvh_cl_device {
     cl_command_queue queue;
     cl_program program;
     cl_kernel kernel[K_COUNT];
+    size_t kernel_wg[K_COUNT]; /* CL_KERNEL_WORK_GROUP_SIZE (at least 1) */
     cl_ulong max_alloc;
     cl_uint compute_units;
     cl_mem buf[B_SLOTS];
     size_t buf_bytes[B_SLOTS];
     unsigned long buffers_created; /* clCreateBuffer calls (tests) */
+    /* The current build's commands (reset by begin; tests and
+     * docs/opencl.md): kernel launches, host-to-device writes, fills,
+     * device-to-host reads (each one blocks) and clFinish waits. */
+    unsigned long n_launches, n_writes, n_fills, n_reads, n_finishes;
     cl_event events[ATRBVH_CL_MAX_EVENTS];
     int event_kernel[ATRBVH_CL_MAX_EVENTS];
     int event_count;
+    int pending; /* commands queued since the last wait (finish or a
+                    blocking transfer) */
     atrbvh_cl_times *times; /* where finished launches are added */
     atrbvh_cl_times build_times; /* the last build's */
     cl_uint has_ids;        /* this build: B_IDS maps leaves   */
     cl_uint ranges;         /* this build: the hierarchy stage's
                                tree (set_tree's is not)          */
+    cl_uint counted;        /* this build: the morton kernel counted
+                               the sort's first digits           */
+    cl_uint counters_zero;  /* B_COUNTER is all zero (the hierarchy
+                               kernel zeroes it, every bottom-up
+                               launch leaves it so)              */
     /* The last build's optimise stage (tests, measurements): treelets
      * processed, of which written back, and treelets skipped by the skip
      * marks (atrbvh_treelet_process_marked). */
@@ -180,6 +192,15 @@ void atrbvh_i_cl_buffers_release(atrbvh_cl_device *c);
 atrbvh_status atrbvh_i_cl_upload(atrbvh_cl_device *c, int slot,
                                  const void *data, size_t bytes,
                                  const char *what, atrbvh_error *error);
+/* The same without waiting: `data` must stay as it is until the queue has
+ * run the copy (a later blocking read, or atrbvh_i_cl_finish; the stage
+ * table's end waits for the queue on every path). */
+atrbvh_status atrbvh_i_cl_upload_queued(atrbvh_cl_device *c, int slot,
+                                        const void *data, size_t bytes,
+                                        const char *what,
+                                        atrbvh_error *error);
+/* B_SYNC, made and zeroed the first time. */
+atrbvh_status atrbvh_i_cl_sync(atrbvh_cl_device *c, atrbvh_error *error);
 atrbvh_status atrbvh_i_cl_download(atrbvh_cl_device *c, int slot, void *data,
                                    size_t bytes, const char *what,
                                    atrbvh_error *error);

@@ -1,8 +1,19 @@
 /*
  * cl/stages.c - the OpenCL backend's stage table: one short function per
- * stage (upload what the stage reads for the first time, launch its
- * kernel(s) with one argument struct, wait), plus begin/end, set_prims,
- * capture and kernel_time.  The per-item work is in cl/kernels.cl, thin
+ * stage (upload what the stage reads for the first time, queue its
+ * kernel(s) with one argument struct), plus begin/end, set_prims,
+ * capture and kernel_time.
+ *
+ * The host waits only where it needs a result: the bounds stage's one
+ * read (the scene and centroid boxes, for the Morton frame the pipeline
+ * computes, and the count of invalid primitives), the collapse stage's
+ * root size (the output's node count, which the pipeline allocates) and
+ * the layout's output; every other launch is queued behind the previous
+ * one on the in-order queue, so a stage's wall time in the pipeline is
+ * mostly its queueing and its kernels' time shows in the next wait
+ * (atrbvh_bvh_kernel_time has each kernel's own).
+ *
+ * The per-item work is in cl/kernels.cl, thin
  * wrappers around lib/shared/; the sequencing, timing, progress between
  * stages and the exact error for an invalid primitive are the pipeline's
  * (lib/pipeline.c).
@@ -68,7 +79,11 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
     c->times = &c->build_times;
     c->has_ids = 0;
     c->ranges = 0;
+    c->counted = 0;
+    c->counters_zero = 0;
     c->opt_treelets = c->opt_applied = c->opt_skipped = 0;
+    c->n_launches = c->n_writes = c->n_fills = c->n_reads = 0;
+    c->n_finishes = 0;
     run->state = c;
     return ATRBVH_OK;
 }
@@ -77,14 +92,18 @@ static void cl_end(atrbvh_device *dev, atrbvh_i_run *run)
 {
     atrbvh_cl_device *c = cl_of(dev);
     atrbvh_error ignored;
-    /* A failed stage may leave launches queued: wait for them (their
-     * buffers stay on the handle for the next build). */
-    if (c->event_count)
+    /* A failed stage may leave commands queued (launches, the geometry's
+     * queued copy from the caller's arrays): wait for them (their buffers
+     * stay on the handle for the next build). */
+    if (c->event_count || c->pending)
         (void)atrbvh_i_cl_finish(c, &ignored);
     run->state = NULL;
 }
 
 /* --------------------------------------------------------------- bounds */
+/* The geometry's arrays go to the device by queued copies: the caller's
+ * arrays stay as they are during the build, and the bounds stage's read
+ * waits for them. */
 static atrbvh_status upload_geometry(atrbvh_cl_device *c,
                                      const atrbvh_i_input *in,
                                      atrbvh_kargs_bounds *a,
@@ -99,8 +118,8 @@ static atrbvh_status upload_geometry(atrbvh_cl_device *c,
                                  ATRBVH_CL_NO_INDEX, "vertices overflow");
         bytes += 3 * sizeof(float);
         CL_CHECK(atrbvh_i_cl_buffer(c, B_GEOMETRY, bytes, 1, "vertices", error));
-        CL_CHECK(atrbvh_i_cl_upload(c, B_GEOMETRY, g->vertices, bytes,
-                                    "vertices", error));
+        CL_CHECK(atrbvh_i_cl_upload_queued(c, B_GEOMETRY, g->vertices, bytes,
+                                           "vertices", error));
         bytes = 4;
         if (indexed) {
             if (!atrbvh_i_mul_size(n - 1, in->istride, &bytes))
@@ -110,8 +129,8 @@ static atrbvh_status upload_geometry(atrbvh_cl_device *c,
         }
         CL_CHECK(atrbvh_i_cl_buffer(c, B_INDICES, bytes, 1, "indices", error));
         if (indexed)
-            CL_CHECK(atrbvh_i_cl_upload(c, B_INDICES, g->indices, bytes,
-                                        "indices", error));
+            CL_CHECK(atrbvh_i_cl_upload_queued(c, B_INDICES, g->indices, bytes,
+                                               "indices", error));
         a->vstride = in->vstride / sizeof(float);
         a->istride = in->istride / sizeof(uint32_t);
         a->vertex_count = g->vertex_count;
@@ -123,61 +142,68 @@ static atrbvh_status upload_geometry(atrbvh_cl_device *c,
                              "boxes overflow");
     bytes += 6 * sizeof(float);
     CL_CHECK(atrbvh_i_cl_buffer(c, B_GEOMETRY, bytes, 1, "input boxes", error));
-    CL_CHECK(atrbvh_i_cl_upload(c, B_GEOMETRY, g->boxes, bytes, "input boxes",
-                                error));
+    CL_CHECK(atrbvh_i_cl_upload_queued(c, B_GEOMETRY, g->boxes, bytes,
+                                       "input boxes", error));
     a->bstride = in->bstride / sizeof(float);
     return ATRBVH_OK;
 }
 
+/* The bounds kernel's blocks: a few per compute unit, at most 256. */
+#define BOUNDS_PARTS_MAX 256u
+
+/* One launch (boxes, partial scene and centroid boxes and invalid counts
+ * per block) and one read of the partials, united here. */
 static atrbvh_status st_bounds(atrbvh_device *dev, atrbvh_i_run *run,
                                atrbvh_error *error)
 {
     atrbvh_cl_device *c = cl_of(dev);
     atrbvh_kargs_bounds a;
-    atrbvh_box part[2 * 256];
-    cl_uint bad = 0, u;
+    /* 2 boxes per block, then one u32 per block */
+    atrbvh_box part[2u * BOUNDS_PARTS_MAX +
+                    (BOUNDS_PARTS_MAX * sizeof(cl_uint) + sizeof(atrbvh_box) -
+                     1u) / sizeof(atrbvh_box)];
+    cl_uint bad[BOUNDS_PARTS_MAX], u, any = 0;
+    size_t boxes_bytes;
     memset(&a, 0, sizeof a);
     a.n = (atrbvh_u32)run->in.g->primitive_count;
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_BOXES, a.n, sizeof(atrbvh_box),
-                                "primitive boxes", error));
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_PROBLEMS, 1, sizeof(cl_uint),
-                                "bounds problems", error));
-    CL_CHECK(atrbvh_i_cl_zero(c, B_PROBLEMS, sizeof(cl_uint),
-                              "bounds problems", error));
-    CL_CHECK(upload_geometry(c, &run->in, &a, error));
-    if (run->in.g->type == ATRBVH_GEOMETRY_TRIANGLES)
-        CL_RUN(c, K_BOUNDS_TRIANGLES, a.n, error, CL_BUF(B_GEOMETRY),
-               CL_BUF(B_INDICES), CL_BUF(B_BOXES), CL_BUF(B_PROBLEMS),
-               CL_VAL(a));
-    else
-        CL_RUN(c, K_BOUNDS_BOXES, a.n, error, CL_BUF(B_GEOMETRY),
-               CL_BUF(B_BOXES), CL_BUF(B_PROBLEMS), CL_VAL(a));
-    CL_CHECK(atrbvh_i_cl_download(c, B_PROBLEMS, &bad, sizeof bad,
-                                  "bounds problems", error));
-    run->n = a.n;
-    if (bad) {
-        run->bad = 1; /* the pipeline finds the error, then set_prims */
-        return atrbvh_i_cl_finish(c, error);
-    }
     a.parts = c->compute_units * 8u;
-    if (a.parts > 256u)
-        a.parts = 256u;
+    if (a.parts > BOUNDS_PARTS_MAX)
+        a.parts = BOUNDS_PARTS_MAX;
     if (a.parts > a.n)
         a.parts = a.n;
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_PARTIAL, 2u * a.parts, sizeof(atrbvh_box),
+    boxes_bytes = 2u * (size_t)a.parts * sizeof(atrbvh_box);
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_BOXES, a.n, sizeof(atrbvh_box),
+                                "primitive boxes", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_PARTIAL,
+                                boxes_bytes + a.parts * sizeof(cl_uint), 1,
                                 "partial boxes", error));
-    CL_RUN(c, K_BOUNDS_REDUCE, a.parts, error, CL_BUF(B_BOXES),
-           CL_BUF(B_PARTIAL), CL_VAL(a));
+    CL_CHECK(upload_geometry(c, &run->in, &a, error));
+    if (run->in.g->type == ATRBVH_GEOMETRY_TRIANGLES)
+        CL_RUN(c, K_BOUNDS_TRIANGLES, a.parts, error, CL_BUF(B_GEOMETRY),
+               CL_BUF(B_INDICES), CL_BUF(B_BOXES), CL_BUF(B_PARTIAL),
+               CL_VAL(a));
+    else
+        CL_RUN(c, K_BOUNDS_BOXES, a.parts, error, CL_BUF(B_GEOMETRY),
+               CL_BUF(B_BOXES), CL_BUF(B_PARTIAL), CL_VAL(a));
     CL_CHECK(atrbvh_i_cl_download(c, B_PARTIAL, part,
-                                  2u * a.parts * sizeof(atrbvh_box),
+                                  boxes_bytes + a.parts * sizeof(cl_uint),
                                   "partial boxes", error));
+    memcpy(bad, (const unsigned char *)part + boxes_bytes,
+           a.parts * sizeof(cl_uint));
+    run->n = a.n;
+    for (u = 0; u < a.parts; u++)
+        any |= bad[u];
+    if (any) {
+        run->bad = 1; /* the pipeline finds the error, then set_prims */
+        return ATRBVH_OK;
+    }
     run->scene = part[0];
     run->centroids = part[1];
     for (u = 1; u < a.parts; u++) {
         run->scene = atrbvh_box_union(run->scene, part[2 * u]);
         run->centroids = atrbvh_box_union(run->centroids, part[2 * u + 1]);
     }
-    return atrbvh_i_cl_finish(c, error);
+    return ATRBVH_OK;
 }
 
 /* After an invalid primitive: the host's boxes (and kept ids). */
@@ -206,40 +232,11 @@ static atrbvh_status cl_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
 }
 
 /* --------------------------------------------------------------- morton */
-static atrbvh_status st_morton(atrbvh_device *dev, atrbvh_i_run *run,
-                               atrbvh_error *error)
+/* The sort's blocks (the morton kernel counts the first pass by them). */
+static atrbvh_kargs_sort sort_args(const atrbvh_cl_device *c,
+                                   const atrbvh_i_run *run)
 {
-    atrbvh_cl_device *c = cl_of(dev);
-    atrbvh_kargs_morton a;
-    int k;
-    memset(&a, 0, sizeof a);
-    for (k = 0; k < 3; k++) {
-        a.lo[k] = run->morton_lo[k];
-        a.scale[k] = run->morton_scale[k];
-    }
-    a.n = run->n;
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_KEYS, a.n, sizeof(cl_ulong), "keys",
-                                error));
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_ORDER, a.n, sizeof(cl_uint), "order",
-                                error));
-    CL_RUN(c, K_MORTON, a.n, error, CL_BUF(B_BOXES), CL_BUF(B_KEYS),
-           CL_BUF(B_ORDER), CL_VAL(a));
-    return atrbvh_i_cl_finish(c, error);
-}
-
-/* ----------------------------------------------------------------- sort */
-/* Eight stable 8-bit passes, ping-ponging between (keys, order) and the
- * scratch pair: after an even count the result is back in B_KEYS and
- * B_ORDER.  Every pass runs (a pass whose digit never varies is the
- * identity, so the CPU's skipping cannot change the result). */
-static atrbvh_status st_sort(atrbvh_device *dev, atrbvh_i_run *run,
-                             atrbvh_error *error)
-{
-    atrbvh_cl_device *c = cl_of(dev);
     atrbvh_kargs_sort a;
-    int sk = B_KEYS, sv = B_ORDER, dk = B_KEYS_TMP, dv = B_ORDER_TMP;
-    if (run->n < 2)
-        return ATRBVH_OK;
     memset(&a, 0, sizeof a);
     a.n = run->n;
     a.blocks = c->compute_units * 32u;
@@ -248,23 +245,73 @@ static atrbvh_status st_sort(atrbvh_device *dev, atrbvh_i_run *run,
     if (a.blocks > a.n)
         a.blocks = a.n;
     a.entries = ATRBVH_SORT_RADIX * a.blocks;
+    return a;
+}
+
+static atrbvh_status st_morton(atrbvh_device *dev, atrbvh_i_run *run,
+                               atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    atrbvh_kargs_sort sa = sort_args(c, run);
+    atrbvh_kargs_morton a;
+    int k;
+    memset(&a, 0, sizeof a);
+    for (k = 0; k < 3; k++) {
+        a.lo[k] = run->morton_lo[k];
+        a.scale[k] = run->morton_scale[k];
+    }
+    a.n = run->n;
+    a.blocks = sa.blocks;
+    a.entries = sa.entries;
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_KEYS, a.n, sizeof(cl_ulong), "keys",
+                                error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_ORDER, a.n, sizeof(cl_uint), "order",
+                                error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_HIST, a.entries, sizeof(cl_uint),
+                                "digit counts", error));
+    CL_CHECK(atrbvh_i_cl_sync(c, error));
+    CL_RUN(c, K_MORTON, a.blocks, error, CL_BUF(B_BOXES), CL_BUF(B_KEYS),
+           CL_BUF(B_ORDER), CL_BUF(B_HIST), CL_BUF(B_SYNC), CL_VAL(a));
+    c->counted = 1;
+    return ATRBVH_OK;
+}
+
+/* ----------------------------------------------------------------- sort */
+/* Eight stable 8-bit passes, ping-ponging between (keys, order) and the
+ * scratch pair: after an even count the result is back in B_KEYS and
+ * B_ORDER.  Every pass runs (a pass whose digit never varies is the
+ * identity, so the CPU's skipping cannot change the result; the host
+ * cannot know which without a wait, and on the scenes at hand every
+ * digit varies).  Pass 0's counts are the morton kernel's; each other
+ * pass is two launches, sort_count (its last block scans) and
+ * sort_scatter. */
+static atrbvh_status st_sort(atrbvh_device *dev, atrbvh_i_run *run,
+                             atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    atrbvh_kargs_sort a = sort_args(c, run);
+    int sk = B_KEYS, sv = B_ORDER, dk = B_KEYS_TMP, dv = B_ORDER_TMP;
+    if (run->n < 2)
+        return ATRBVH_OK;
     CL_CHECK(atrbvh_i_cl_buffer(c, B_KEYS_TMP, a.n, sizeof(cl_ulong),
                                 "keys (scratch)", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_ORDER_TMP, a.n, sizeof(cl_uint),
                                 "order (scratch)", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_HIST, a.entries, sizeof(cl_uint),
                                 "digit counts", error));
+    CL_CHECK(atrbvh_i_cl_sync(c, error));
+    c->counters_zero = 0; /* B_KEYS_TMP is B_COUNTER's home */
     for (a.shift = 0; a.shift < 64u; a.shift += ATRBVH_SORT_BITS) {
         int t;
-        CL_RUN(c, K_SORT_COUNT, a.blocks, error, CL_BUF(sk), CL_BUF(B_HIST),
-               CL_VAL(a));
-        CL_RUN(c, K_SORT_SCAN, 1, error, CL_BUF(B_HIST), CL_VAL(a));
+        if (a.shift > 0 || !c->counted)
+            CL_RUN(c, K_SORT_COUNT, a.blocks, error, CL_BUF(sk),
+                   CL_BUF(B_HIST), CL_BUF(B_SYNC), CL_VAL(a));
         CL_RUN(c, K_SORT_SCATTER, a.blocks, error, CL_BUF(sk), CL_BUF(sv),
                CL_BUF(dk), CL_BUF(dv), CL_BUF(B_HIST), CL_VAL(a));
         t = sk, sk = dk, dk = t;
         t = sv, sv = dv, dv = t;
     }
-    return atrbvh_i_cl_finish(c, error);
+    return ATRBVH_OK;
 }
 
 /* ------------------------------------------------------------ hierarchy */
@@ -281,29 +328,28 @@ static atrbvh_status st_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
     CL_CHECK(atrbvh_i_cl_buffer(c, B_COUNT, nodes, 4, "count", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_LEAF_PRIM, run->n, 4, "leaf primitives",
                                 error));
-    /* Blocks of the first pass: enough items for every compute unit;
-     * their leftovers (2 * 128 positions each, then the counts) in B_JUMP,
-     * which layout reuses later. */
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_COUNTER, nodes, 4, "node counters",
+                                error));
+    CL_CHECK(atrbvh_i_cl_sync(c, error));
+    /* Blocks: enough items for every compute unit (one block of no split
+     * for a single primitive); their leftovers (2 * 128 positions each,
+     * then the counts) in B_JUMP, which layout reuses later. */
     blocks = c->compute_units * 16u;
     if (blocks > 256u)
         blocks = 256u;
     if (blocks > run->n - 1u)
-        blocks = run->n - 1u;
+        blocks = run->n > 1 ? run->n - 1u : 1u;
     CL_CHECK(atrbvh_i_cl_buffer(c, B_JUMP, (size_t)blocks * 257u + 1u, 4,
                                 "hierarchy leftovers", error));
     /* ids: read only when has_ids; B_ORDER stands in otherwise. */
-    CL_RUN(c, K_HIERARCHY_BLOCK, blocks, error, CL_BUF(B_KEYS),
-           CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
-           CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
-           CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_BUF(B_JUMP),
-           CL_VAL(blocks), CL_VAL(a));
-    c->ranges = 1;
-    CL_RUN(c, K_HIERARCHY, 1, error, CL_BUF(B_KEYS), CL_BUF(B_LEFT),
+    CL_RUN(c, K_HIERARCHY, blocks, error, CL_BUF(B_KEYS), CL_BUF(B_LEFT),
            CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
            CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_BUF(B_JUMP),
-           CL_VAL(blocks), CL_VAL(a));
-    return atrbvh_i_cl_finish(c, error);
+           CL_BUF(B_COUNTER), CL_BUF(B_SYNC), CL_VAL(blocks), CL_VAL(a));
+    c->ranges = 1;
+    c->counters_zero = 1; /* the kernel zeroed the internal nodes' */
+    return ATRBVH_OK;
 }
 
 /* ---------------------------------------------------------------- refit */
@@ -319,8 +365,10 @@ static atrbvh_status st_refit(atrbvh_device *dev, atrbvh_i_run *run,
                                 "node costs", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_COUNTER, nodes, 4, "node counters",
                                 error));
-    CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4, "node counters",
-                              error));
+    if (!c->counters_zero)
+        CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4, "node counters",
+                                  error));
+    c->counters_zero = 1; /* the kernel leaves them zero */
     /* An LBVH's collapse sizes in the same climb (st_collapse then only
      * reads the root's); B_SIZE takes the keys' buffer, free since the
      * hierarchy, so this creates none (an optimised tree's refit passes
@@ -331,7 +379,7 @@ static atrbvh_status st_refit(atrbvh_device *dev, atrbvh_i_run *run,
            CL_BUF(B_COST), CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT),
            CL_BUF(B_BOXES), CL_BUF(B_ORDER), CL_BUF(B_COUNTER), CL_BUF(B_SIZE),
            CL_VAL(a));
-    return atrbvh_i_cl_finish(c, error);
+    return ATRBVH_OK;
 }
 
 /* ------------------------------------------------------------- optimise */
@@ -363,7 +411,7 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_cl_device *c = cl_of(dev);
     const atrbvh_i_config *cfg = run->cfg;
     atrbvh_kargs_optimise a;
-    cl_uint workers_max, round, zero = 0, tally[3];
+    cl_uint workers_max, round, tally[3];
     size_t marks;
     if (cfg->method == ATRBVH_METHOD_LBVH || cfg->rounds == 0 ||
         run->n < 2 ||
@@ -407,6 +455,11 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     CL_CHECK(atrbvh_i_cl_zero(c, B_MARKS, marks, "skip marks", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_TALLY, 3, 4, "treelet counts", error));
     CL_CHECK(atrbvh_i_cl_zero(c, B_TALLY, 3 * 4, "treelet counts", error));
+    /* The rounds are queued without a wait: opt_round reads the list's
+     * length on the device, and workers_max items always run (those
+     * beyond the list have no share; the tree does not depend on how
+     * many items share the list). */
+    a.workers = workers_max;
     for (round = 0; round < cfg->rounds; round++) {
         cl_ulong gamma = (cl_ulong)cfg->gamma << (round < 40u ? round : 40u);
         if (atrbvh_i_stage_progress(run, round, cfg->rounds)) {
@@ -420,22 +473,18 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
             break; /* no crown left (the root's count is n) */
         a.gamma = (atrbvh_u32)gamma;
         a.round = round;
-        CL_CHECK(atrbvh_i_cl_upload(c, B_LIST_COUNT, &zero, 4,
-                                    "walk start count", error));
+        CL_CHECK(atrbvh_i_cl_zero(c, B_LIST_COUNT, 4, "walk start count",
+                                  error));
         CL_RUN(c, K_OPT_PREPARE, a.n_internal, error, CL_BUF(B_LEFT),
                CL_BUF(B_RIGHT), CL_BUF(B_COUNT), CL_BUF(B_NEEDED),
                CL_BUF(B_COUNTER), CL_BUF(B_LIST), CL_BUF(B_LIST_COUNT),
                CL_VAL(a));
-        CL_CHECK(atrbvh_i_cl_download(c, B_LIST_COUNT, &a.list_len, 4,
-                                      "walk start count", error));
-        if (a.list_len > 0) {
-            a.workers = a.list_len < workers_max ? a.list_len : workers_max;
-            CL_RUN(c, K_OPT_ROUND, a.workers, error, CL_BUF(B_LEFT),
-                   CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
-                   CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_LIST),
-                   CL_BUF(B_NEEDED), CL_BUF(B_COUNTER), CL_BUF(B_SCRATCH),
-                   CL_BUF(B_MARKS), CL_BUF(B_TALLY), CL_VAL(a));
-        }
+        CL_RUN(c, K_OPT_ROUND, a.workers, error, CL_BUF(B_LEFT),
+               CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
+               CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_LIST),
+               CL_BUF(B_NEEDED), CL_BUF(B_COUNTER), CL_BUF(B_SCRATCH),
+               CL_BUF(B_MARKS), CL_BUF(B_TALLY), CL_BUF(B_LIST_COUNT),
+               CL_VAL(a));
         /* The round's tree for the pipeline's capture (a blocking read
          * on the in-order queue sees the launch done). */
         if (atrbvh_i_stage_round(run, round + 1)) {
@@ -451,7 +500,7 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     c->opt_treelets = tally[0];
     c->opt_applied = tally[1];
     c->opt_skipped = tally[2];
-    return atrbvh_i_cl_finish(c, error);
+    return ATRBVH_OK;
 }
 
 /* ------------------------------------------------------------- collapse */
@@ -465,8 +514,10 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
     CL_CHECK(atrbvh_i_cl_buffer(c, B_SIZE, nodes, 4, "subtree sizes", error));
     if (run->cfg->method != ATRBVH_METHOD_LBVH) {
         /* (an LBVH's refit computed the sizes: st_refit) */
-        CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4, "node counters",
-                                  error));
+        if (!c->counters_zero)
+            CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4,
+                                      "node counters", error));
+        c->counters_zero = 1; /* the kernel leaves them zero */
         CL_RUN(c, K_COLLAPSE, run->n, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
                CL_BUF(B_COST), CL_BUF(B_LEFT), CL_BUF(B_RIGHT),
                CL_BUF(B_PARENT), CL_BUF(B_SIZE), CL_BUF(B_COUNTER),
@@ -475,7 +526,7 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
     CL_CHECK(atrbvh_i_cl_download(c, B_SIZE, &root_size, 4, "subtree sizes",
                                   error));
     run->node_count = root_size & ATRBVH_SIZE_MASK;
-    return atrbvh_i_cl_finish(c, error);
+    return ATRBVH_OK;
 }
 
 /* --------------------------------------------------------------- layout */
@@ -484,7 +535,7 @@ static atrbvh_status st_layout(atrbvh_device *dev, atrbvh_i_run *run,
 {
     atrbvh_cl_device *c = cl_of(dev);
     atrbvh_kargs_tree a = tree_args(c, run);
-    cl_uint list_len = 0;
+    cl_uint workers;
     /* Sized for the most nodes n leaves can give (2n - 1), not this
      * tree's count: the next build of n primitives then reuses it. */
     CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_NODES, tree_nodes(run),
@@ -499,12 +550,15 @@ static atrbvh_status st_layout(atrbvh_device *dev, atrbvh_i_run *run,
     CL_RUN(c, K_LAYOUT_TOP, 1, error, CL_BUF(B_COUNT), CL_BUF(B_LEFT),
            CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_SIZE), CL_BUF(B_BOX),
            CL_BUF(B_OUT_NODES), CL_BUF(B_JUMP), CL_BUF(B_FLAG), CL_VAL(a));
-    CL_CHECK(atrbvh_i_cl_download(c, B_FLAG, &list_len, 4,
-                                  "layout subtree count", error));
-    CL_RUN(c, K_LAYOUT, list_len, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
+    /* The listed subtrees (their count stays on the device) shared by
+     * a few items per compute unit. */
+    workers = c->compute_units * 64u;
+    if (workers > run->n)
+        workers = run->n;
+    CL_RUN(c, K_LAYOUT, workers, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
            CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_SIZE),
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_JUMP), CL_BUF(B_OUT_NODES),
-           CL_BUF(B_OUT_PRIMS), CL_VAL(list_len), CL_VAL(a));
+           CL_BUF(B_OUT_PRIMS), CL_BUF(B_FLAG), CL_VAL(workers), CL_VAL(a));
     CL_CHECK(atrbvh_i_cl_download(c, B_OUT_NODES, run->nodes,
                                   (size_t)run->node_count * sizeof(atrbvh_node),
                                   "output nodes", error));

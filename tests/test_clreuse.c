@@ -8,6 +8,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <check.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -139,12 +140,90 @@ START_TEST(skip_marks_on_the_device)
 }
 END_TEST
 
+/* The fixed costs of a build on an open handle (cl/stages.c; counted in
+ * the handle's state, cl/memory.c): an LBVH of unindexed triangles
+ * queues 21 launches (bounds 1, morton 1, sort 15, hierarchy 1, refit 1,
+ * layout 2), one queued write (the vertices) and no fill, and blocks in
+ * 4 reads (the bounds' partial boxes, the collapse's root size, the
+ * output's nodes and primitives) and one clFinish; before the launches
+ * were fused and the waits between stages dropped, it took 32 launches,
+ * 2 fills, 6 reads and 7 clFinish calls.  ATRBVH(9, 2) of indexed
+ * triangles adds 2 launches and a fill per round, one read (the treelet
+ * counts) and the indices' write, and no wait per round.  Every tree is
+ * the CPU's. */
+static void counted_build(atrbvh_device *dev, const atrbvh_geometry *g,
+                          atrbvh_method method, unsigned long out[5])
+{
+    const atrbvh_cl_device *c = (const atrbvh_cl_device *)dev->impl;
+    atrbvh_build_options o;
+    atrbvh_bvh *x, *y;
+    atrbvh_error e;
+    atrbvh_build_options_init(&o);
+    o.method = method;
+    o.treelet_size = 9;
+    o.rounds = 2;
+    x = tu_build(g, &o);
+    o.device = dev;
+    y = tu_build(g, &o);
+    ck_assert_msg(atrbvh_compare(x, y, &e) == 0, "%s", e.text);
+    out[0] = c->n_launches;
+    out[1] = c->n_writes;
+    out[2] = c->n_fills;
+    out[3] = c->n_reads;
+    out[4] = c->n_finishes;
+    atrbvh_bvh_free(x);
+    atrbvh_bvh_free(y);
+}
+
+START_TEST(launches_and_waits_per_build)
+{
+    atrbvh_device *dev = NULL;
+    atrbvh_error e;
+    unsigned n = 20000, k;
+    float *v;
+    uint32_t *idx;
+    atrbvh_geometry g;
+    unsigned long a[5];
+    atrbvh_status st = atrbvh_device_open("opencl", &dev, &e);
+    if (st == ATRBVH_ERR_UNSUPPORTED) {
+        fprintf(stderr, "SKIP launches_and_waits_per_build: %s\n", e.text);
+        return;
+    }
+    ck_assert_msg(st == ATRBVH_OK, "%s", e.text);
+    v = tu_random_triangles(n, 9, 3.0f, 1.0f);
+    g = atrbvh_geometry_triangles(v, 3 * n, NULL, n);
+    counted_build(dev, &g, ATRBVH_METHOD_LBVH, a); /* makes the buffers */
+    counted_build(dev, &g, ATRBVH_METHOD_LBVH, a);
+    ck_assert_msg(a[0] == 21 && a[1] == 1 && a[2] == 0 && a[3] == 4 &&
+                      a[4] == 1,
+                  "LBVH: %lu launches, %lu writes, %lu fills, %lu reads, "
+                  "%lu clFinish (want 21, 1, 0, 4, 1)",
+                  a[0], a[1], a[2], a[3], a[4]);
+    /* indexed (each triangle's own three vertices), ATRBVH(9, 2) */
+    idx = malloc(3 * (size_t)n * sizeof *idx);
+    ck_assert_ptr_nonnull(idx);
+    for (k = 0; k < 3 * n; k++)
+        idx[k] = k;
+    g = atrbvh_geometry_triangles(v, 3 * n, idx, n);
+    counted_build(dev, &g, ATRBVH_METHOD_ATRBVH, a);
+    ck_assert_msg(a[0] == 26 && a[1] == 2 && a[2] == 4 && a[3] == 5 &&
+                      a[4] == 1,
+                  "ATRBVH(9,2): %lu launches, %lu writes, %lu fills, %lu "
+                  "reads, %lu clFinish (want 26, 2, 4, 5, 1)",
+                  a[0], a[1], a[2], a[3], a[4]);
+    free(idx);
+    free(v);
+    atrbvh_device_close(dev);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("clreuse");
     TCase *tc = tcase_create("buffers");
     tcase_add_test(tc, second_build_creates_no_buffer);
     tcase_add_test(tc, skip_marks_on_the_device);
+    tcase_add_test(tc, launches_and_waits_per_build);
     tcase_set_timeout(tc, 300);
     suite_add_tcase(s, tc);
     return tu_run(s);

@@ -15,7 +15,7 @@
 
 #include "types.h"
 
-/* bounds_triangles, bounds_boxes, bounds_reduce */
+/* bounds_triangles, bounds_boxes */
 typedef struct atrbvh_kargs_bounds {
     atrbvh_u64 vstride;      /* vertices: floats between vertices       */
     atrbvh_u64 istride;      /* indices: u32 between triangles          */
@@ -23,19 +23,22 @@ typedef struct atrbvh_kargs_bounds {
     atrbvh_u64 vertex_count;
     atrbvh_u32 n;            /* primitives                              */
     atrbvh_u32 indexed;      /* 1: indices used                         */
-    atrbvh_u32 parts;        /* bounds_reduce: partial boxes            */
+    atrbvh_u32 parts;        /* blocks, one partial box pair each       */
     atrbvh_u32 pad0;
 } atrbvh_kargs_bounds;
 
-/* morton: the host's Morton frame (atrbvh_morton_quantise) */
+/* morton: the host's Morton frame (atrbvh_morton_quantise), and the
+ * sort's blocks (its first pass's counts are the morton kernel's) */
 typedef struct atrbvh_kargs_morton {
     double lo[3];
     double scale[3];
     atrbvh_u32 n;
+    atrbvh_u32 blocks;  /* as atrbvh_kargs_sort */
+    atrbvh_u32 entries;
     atrbvh_u32 pad0;
 } atrbvh_kargs_morton;
 
-/* sort_count, sort_scan, sort_scatter: one 8-bit pass */
+/* sort_count, sort_scatter: one 8-bit pass */
 typedef struct atrbvh_kargs_sort {
     atrbvh_u32 n;
     atrbvh_u32 shift;   /* the digit's lowest bit */
@@ -68,7 +71,8 @@ typedef struct atrbvh_kargs_optimise {
     atrbvh_u32 max_leaf;
     atrbvh_u32 n_internal;
     atrbvh_u32 gamma;     /* crown: subtrees of at least gamma primitives */
-    atrbvh_u32 list_len;  /* walk starts (opt_round)                      */
+    atrbvh_u32 list_len;  /* unused (opt_round reads the walk starts' count
+                             on the device)                              */
     atrbvh_u32 treelet_size;
     atrbvh_u32 agglomerative; /* 1: ATRBVH, 0: TRBVH                       */
     atrbvh_u32 workers;
@@ -109,7 +113,7 @@ ATRBVH_FN atrbvh_cost_params atrbvh_kargs_cost(double ci, double ct,
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_bounds) == 48, kargs_bounds);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_bounds, n) == 32,
                      kargs_bounds_n);
-ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_morton) == 56, kargs_morton);
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_morton) == 64, kargs_morton);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_morton, n) == 48,
                      kargs_morton_n);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_sort) == 16, kargs_sort);
