@@ -380,13 +380,16 @@ static const signed char wide_first_lane[16] = {0, 0, 1, 0, 2, 0, 1, 0,
  * seen: atrbvh(3) says so.
  *
  * A leaf tests its triangles two at a time: the translated and sheared
- * vertices and the three edge functions of atrbvh_trav_triangle_hit, with
- * the same double operations in the same order on the same operands (the
- * floats converted exactly), so each lane's edge functions and their sum
- * are the scalar test's, bit for bit.  A lane is dropped when the scalar
- * test would return at its first two rejections (edge functions of both
- * signs; a sum that is 0 or NaN); the others, few, go through
- * atrbvh_trav_triangle_hit itself, which decides. */
+ * vertices, the three edge functions, their sum (det) and the distance tt
+ * of atrbvh_trav_triangle_hit, with the same double operations in the
+ * same order on the same operands (the floats converted exactly; SSE2
+ * lanes round as scalar SSE2 does, no contraction), so each lane's values
+ * are the scalar test's, bit for bit.  A lane is dropped where the scalar
+ * test rejects (edge functions of both signs; det 0 or NaN; tt below
+ * tmin) or where its hit could not be taken (t = (float)tt above the
+ * closest hit so far, or above tmax for any hit: atrbvh_trav_leaf's
+ * choice); the few others finish the scalar test on the lane's values
+ * (the range of t, atrbvh_trav_within_own_box, u and v). */
 typedef struct wide_tris {
     /* the geometry the block was made from */
     const float *vertices;
@@ -503,7 +506,7 @@ static const wide_tris *wide_tris_get(const atrbvh_bvh *bvh,
  * sheared axes and shear factors in both lanes, and where the
  * coordinates kx, ky, kz of corner 0 lie in a pair. */
 typedef struct wide_tri_ray {
-    __m128d ox, oy, oz, sx, sy;
+    __m128d ox, oy, oz, sx, sy, sz, tmin;
     int ax, ay, az;
 } wide_tri_ray;
 
@@ -515,6 +518,8 @@ static inline void wide_tri_ray_make(const atrbvh_trav_ray *r,
     q->oz = _mm_set1_pd(r->orgd[r->kz]);
     q->sx = _mm_set1_pd(r->sx);
     q->sy = _mm_set1_pd(r->sy);
+    q->sz = _mm_set1_pd(r->sz);
+    q->tmin = _mm_set1_pd((double)r->tmin);
     q->ax = 2 * r->kx;
     q->ay = 2 * r->ky;
     q->az = 2 * r->kz;
@@ -542,6 +547,7 @@ static int wide_leaf_tris(const atrbvh_trav_scene *s,
     uint32_t end = first + count; /* <= prim_count: see wide_make */
     uint32_t p, pe = end / 2u + (end & 1u);
     __m128d zero = _mm_setzero_pd();
+    double ttl[2], e1l[2], e2l[2], detl[2];
     for (p = first / 2u; p < pe; p++) {
         const float *f = c + 18 * (size_t)p;
         __m128d az = _mm_sub_pd(wide_load2(f + q->az), q->oz);
@@ -572,11 +578,27 @@ static int wide_leaf_tris(const atrbvh_trav_scene *s,
         __m128d keep = _mm_andnot_pd(_mm_and_pd(neg, pos),
                                      _mm_and_pd(_mm_cmpneq_pd(det, zero),
                                                 _mm_cmpord_pd(det, det)));
-        int m = _mm_movemask_pd(keep);
+        /* the distance, as the scalar test computes it */
+        __m128d tt = _mm_add_pd(
+            _mm_add_pd(_mm_mul_pd(e0, _mm_mul_pd(q->sz, az)),
+                       _mm_mul_pd(e1, _mm_mul_pd(q->sz, bz))),
+            _mm_mul_pd(e2, _mm_mul_pd(q->sz, cz)));
+        int m;
+        tt = _mm_div_pd(tt, det);
+        keep = _mm_and_pd(keep, _mm_cmpge_pd(tt, q->tmin));
+        m = _mm_movemask_pd(keep) &
+            _mm_movemask_ps(_mm_cmple_ps(_mm_cvtpd_ps(tt),
+                                         _mm_set1_ps(any ? r->tmax : best->t)));
         if (2u * p < first)
             m &= 2;
         if (2u * p + 1u >= end)
             m &= 1;
+        if (!m)
+            continue;
+        _mm_storeu_pd(ttl, tt);
+        _mm_storeu_pd(e1l, e1);
+        _mm_storeu_pd(e2l, e2);
+        _mm_storeu_pd(detl, det);
         while (m) {
             int lane = m & 1 ? 0 : 1, k, a;
             uint32_t j = 2u * p + (uint32_t)lane;
@@ -586,8 +608,16 @@ static int wide_leaf_tris(const atrbvh_trav_scene *s,
             for (k = 0; k < 3; k++)
                 for (a = 0; a < 3; a++)
                     v[k][a] = f[6 * k + 2 * a + lane];
-            if (!atrbvh_trav_triangle_hit(v, r, &t, &u, &w))
+            /* the rest of atrbvh_trav_triangle_hit, on this lane's values
+             * (tt >= tmin is tested above) */
+            if (!(atrbvh_trav_abs(ttl[lane]) <= (double)ATRBVH_TRAV_FLT_MAX))
                 continue;
+            t = (float)ttl[lane];
+            if (!(atrbvh_trav_absf(t) <= ATRBVH_TRAV_FLT_MAX) ||
+                !atrbvh_trav_within_own_box(v, r, t))
+                continue;
+            u = (float)(e1l[lane] / detl[lane]);
+            w = (float)(e2l[lane] / detl[lane]);
             /* as atrbvh_trav_leaf takes a triangle's hit */
             if (any) {
                 if (t >= r->tmin && t <= r->tmax)
