@@ -637,22 +637,6 @@ static int wide_leaf_tris(const atrbvh_trav_scene *s,
     return 0;
 }
 
-/* Starts loading what child entry e of a wide node points to: a wide
- * node (two cache lines) or the first triangles of a leaf. */
-static inline void wide_prefetch(const wide_node *w, const wide_tris *tris,
-                                 int64_t e)
-{
-    const char *p;
-    if (e >= 0)
-        p = (const char *)&w[e];
-    else if (tris)
-        p = (const char *)(tris->c + 18 * (size_t)((uint32_t)~e / 2u));
-    else
-        return;
-    _mm_prefetch(p, _MM_HINT_T0);
-    _mm_prefetch(p + 64, _MM_HINT_T0);
-}
-
 /* atrbvh_trav_run over the wide copy, for a ray with use_float; inlined
  * into wide_run_closest and wide_run_any with `any` constant. */
 ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
@@ -740,14 +724,6 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
                 if (!(m & (m - 1))) {
                     cur = n->child[wide_first_lane[m]];
                     continue;
-                }
-                {
-                    /* all but one are visited later: fetch them now */
-                    int pm = m;
-                    do {
-                        wide_prefetch(w, tris, n->child[wide_first_lane[pm]]);
-                        pm &= pm - 1;
-                    } while (pm);
                 }
                 if (any) {
                     /* any hit: whether one exists does not depend on the
