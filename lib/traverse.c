@@ -550,6 +550,12 @@ static int wide_leaf_tris(const atrbvh_trav_scene *s,
     double ttl[2], e1l[2], e2l[2], detl[2];
     for (p = first / 2u; p < pe; p++) {
         const float *f = c + 18 * (size_t)p;
+#if defined(__GNUC__) || defined(__clang__)
+        /* the ray's values are read per pair from q, not hoisted: leaves
+         * hold one or two pairs, and hoisting them spilled them all to
+         * the stack at each call */
+        __asm__("" : : : "memory");
+#endif
         __m128d az = _mm_sub_pd(wide_load2(f + q->az), q->oz);
         __m128d bz = _mm_sub_pd(wide_load2(f + 6 + q->az), q->oz);
         __m128d cz = _mm_sub_pd(wide_load2(f + 12 + q->az), q->oz);
