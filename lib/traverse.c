@@ -584,21 +584,22 @@ static int wide_leaf_tris(const atrbvh_trav_scene *s,
         __m128d keep = _mm_andnot_pd(_mm_and_pd(neg, pos),
                                      _mm_and_pd(_mm_cmpneq_pd(det, zero),
                                                 _mm_cmpord_pd(det, det)));
-        /* the distance, as the scalar test computes it */
-        __m128d tt = _mm_add_pd(
-            _mm_add_pd(_mm_mul_pd(e0, _mm_mul_pd(q->sz, az)),
-                       _mm_mul_pd(e1, _mm_mul_pd(q->sz, bz))),
-            _mm_mul_pd(e2, _mm_mul_pd(q->sz, cz)));
-        int m;
-        tt = _mm_div_pd(tt, det);
-        keep = _mm_and_pd(keep, _mm_cmpge_pd(tt, q->tmin));
-        m = _mm_movemask_pd(keep) &
-            _mm_movemask_ps(_mm_cmple_ps(_mm_cvtpd_ps(tt),
-                                         _mm_set1_ps(any ? r->tmax : best->t)));
+        __m128d tt;
+        int m = _mm_movemask_pd(keep);
         if (2u * p < first)
             m &= 2;
         if (2u * p + 1u >= end)
             m &= 1;
+        if (!m) /* most pairs */
+            continue;
+        /* the distance, as the scalar test computes it */
+        tt = _mm_add_pd(_mm_add_pd(_mm_mul_pd(e0, _mm_mul_pd(q->sz, az)),
+                                   _mm_mul_pd(e1, _mm_mul_pd(q->sz, bz))),
+                        _mm_mul_pd(e2, _mm_mul_pd(q->sz, cz)));
+        tt = _mm_div_pd(tt, det);
+        m &= _mm_movemask_pd(_mm_cmpge_pd(tt, q->tmin)) &
+             _mm_movemask_ps(_mm_cmple_ps(_mm_cvtpd_ps(tt),
+                                          _mm_set1_ps(any ? r->tmax : best->t)));
         if (!m)
             continue;
         _mm_storeu_pd(ttl, tt);
