@@ -281,7 +281,8 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
         for (lane = 0; lane < 4; lane++) {
             const atrbvh_node *c = &nodes[list[lane < lanes ? lane : 0]];
             for (axis = 0; axis < 3; axis++) {
-                w[i].b[4 * axis + lane] = lane < lanes ? c->min[axis] : INFINITY;
+                w[i].b[4 * axis + lane] =
+                    lane < lanes ? c->min[axis] : INFINITY;
                 w[i].b[12 + 4 * axis + lane] =
                     lane < lanes ? c->max[axis] : -INFINITY;
             }
@@ -439,6 +440,11 @@ static wide_tris *wide_tris_make(const atrbvh_bvh *bvh,
 #endif
     if (!t)
         return NULL;
+    /* references numbered in 32 bits (wide_leaf_tris) */
+    if (bvh->prim_count > (size_t)INT32_MAX) {
+        atrbvh_i_free(t);
+        return NULL;
+    }
     t->c = atrbvh_i_alloc_array(pairs, 18u * sizeof(float));
     if (!t->c || pairs > (size_t)LLONG_MAX) {
         wide_tris_free(t);
@@ -598,8 +604,8 @@ static int wide_leaf_tris(const atrbvh_trav_scene *s,
                         _mm_mul_pd(e2, _mm_mul_pd(q->sz, cz)));
         tt = _mm_div_pd(tt, det);
         m &= _mm_movemask_pd(_mm_cmpge_pd(tt, q->tmin)) &
-             _mm_movemask_ps(_mm_cmple_ps(_mm_cvtpd_ps(tt),
-                                          _mm_set1_ps(any ? r->tmax : best->t)));
+             _mm_movemask_ps(_mm_cmple_ps(
+                 _mm_cvtpd_ps(tt), _mm_set1_ps(any ? r->tmax : best->t)));
         if (!m)
             continue;
         _mm_storeu_pd(ttl, tt);
