@@ -118,6 +118,8 @@ struct atrbvh_bvh {
                    make on first use (lib/traverse.c); NULL: none yet.
                    Whatever changes the nodes drops it first
                    (atrbvh_i_bvh_drop_wide). */
+    void *wide_tris; /* beside it, the triangles of the leaves for one
+                        geometry (lib/traverse.c); dropped with it */
 };
 
 /* Frees the 4-wide copy of the tree (lib/traverse.c); the next uncounted

@@ -72,6 +72,7 @@
 #include "internal.h"
 #include "shared/traverse.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -146,9 +147,12 @@ static void closest(const atrbvh_trav_scene *s, const atrbvh_ray *ray,
  * atrbvh_trav_box2_f on the same floats (subtraction, multiplication,
  * min, max, the same widening), so a box is hit in the wide traversal
  * exactly when it is hit in the binary one; the boxes are all finite (else
- * no wide copy is made), so no NaN arises and the order of the min/max
- * reductions does not change their values.  The leaves are the binary
- * tree's, tested by atrbvh_trav_leaf.  The hit does not depend on the
+ * no wide copy is made; an unused lane's empty box of infinities meets
+ * only finite origins and reciprocals), so no NaN arises and the order of
+ * the min/max reductions does not change their values.  The leaves are
+ * the binary tree's references, kept in the wide node itself (first,
+ * count), tested by atrbvh_trav_leaf or, over triangles, from a copy of
+ * their vertices (wide_leaf_tris, below).  The hit does not depend on the
  * order in which nodes are visited (closest hit: smallest t, ties to the
  * lower index; any hit: whether one exists), so the wide traversal returns
  * the binary one's hit, bit for bit.  The counted calls (the _stats ones)
@@ -160,14 +164,19 @@ static void closest(const atrbvh_trav_scene *s, const atrbvh_ray *ray,
 #ifdef ATRBVH_TRAV_SSE
 typedef struct wide_node {
     /* b[4 * axis + lane]: the lanes' minima; b[12 + 4 * axis + lane]:
-     * their maxima */
+     * their maxima; an unused lane has an empty box (minima +inf, maxima
+     * -inf), which no ray hits (wide_run) */
     float b[24];
-    /* >= 0: a wide node; < 0: ~(index of a binary leaf); lanes past
-     * `lanes` unused */
-    int32_t child[4];
-    int32_t mask; /* bit i: lane i used */
-    int32_t depth, pad[2]; /* wide depth (during the build only) */
+    /* >= 0: a wide node; < 0: a leaf, ~(count << 32 | first): the binary
+     * leaf's references prim_indices[first, first + count) (see
+     * WIDE_LEAF).  While the copy is made, child[0] holds the binary
+     * node's index and (above bit 32) the wide depth. */
+    int64_t child[4];
 } wide_node;
+
+/* A leaf entry of wide_node.child. */
+#define WIDE_LEAF(first, count)                                                \
+    (~(int64_t)((uint64_t)(count) << 32 | (uint64_t)(first)))
 
 /* A wide node pushes at most 3 entries and pops one: 3 * depth + 1 entries
  * for a tree of wide depth `depth`. */
@@ -207,9 +216,9 @@ static int box_inside(const atrbvh_node *a, const atrbvh_node *b)
 __attribute__((noinline)) /* its own entry in profiles */
 #endif
 static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
-                            int *nomem)
+                            size_t prim_count, int *nomem)
 {
-    size_t internal = 0, i, n_wide = 1, k;
+    size_t internal = 0, i, n_wide = 1;
     wide_node *w;
     *nomem = 0;
     if (node_count < 3 || nodes[0].count != 0u)
@@ -228,6 +237,11 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
                 !box_inside(&nodes[nodes[i].index], &nodes[i]))
                 return NULL;
             internal++;
+        } else if ((size_t)nodes[i].index > prim_count ||
+                   (size_t)nodes[i].count > prim_count - nodes[i].index) {
+            /* a leaf's references (first, count) lie within prim_indices
+             * (atrbvh_trav_leaf skips the others) */
+            return NULL;
         }
     }
     if (node_count > (size_t)INT32_MAX)
@@ -237,12 +251,12 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
         *nomem = 1;
         return NULL;
     }
-    w[0].child[0] = 0; /* binary node of wide node 0 */
-    w[0].depth = 1;
+    w[0].child[0] = (int64_t)1 << 32; /* binary node 0, depth 1 */
     for (i = 0; i < n_wide; i++) {
         uint32_t list[4];
         int lanes = 2, lane, axis;
         uint32_t b = (uint32_t)w[i].child[0];
+        int64_t depth = w[i].child[0] >> 32;
         list[0] = b + 1u;
         list[1] = nodes[b].index;
         while (lanes < 4) {
@@ -264,12 +278,13 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
             list[best] = b + 1u;
             list[lanes++] = nodes[b].index;
         }
-        w[i].mask = (1 << lanes) - 1;
         for (lane = 0; lane < 4; lane++) {
             const atrbvh_node *c = &nodes[list[lane < lanes ? lane : 0]];
             for (axis = 0; axis < 3; axis++) {
-                w[i].b[4 * axis + lane] = c->min[axis];
-                w[i].b[12 + 4 * axis + lane] = c->max[axis];
+                w[i].b[4 * axis + lane] =
+                    lane < lanes ? c->min[axis] : INFINITY;
+                w[i].b[12 + 4 * axis + lane] =
+                    lane < lanes ? c->max[axis] : -INFINITY;
             }
         }
         for (lane = 0; lane < 4; lane++) {
@@ -280,23 +295,20 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
             }
             c = &nodes[list[lane]];
             if (c->count != 0u) {
-                w[i].child[lane] = ~(int32_t)list[lane];
+                w[i].child[lane] = WIDE_LEAF(c->index, c->count);
                 continue;
             }
             /* a tree has at most `internal` internal nodes: more wide
              * nodes means a malformed tree (a node reached twice) */
-            if (n_wide >= internal || w[i].depth >= WIDE_MAX_DEPTH) {
+            if (n_wide >= internal || depth >= WIDE_MAX_DEPTH) {
                 atrbvh_i_free(w);
                 return NULL;
             }
-            w[n_wide].child[0] = (int32_t)list[lane];
-            w[n_wide].depth = w[i].depth + 1;
-            w[i].child[lane] = (int32_t)n_wide;
+            w[n_wide].child[0] = (depth + 1) << 32 | (int64_t)list[lane];
+            w[i].child[lane] = (int64_t)n_wide;
             n_wide++;
         }
     }
-    for (k = 0; k < n_wide; k++)
-        w[k].depth = 0;
     /* the copy has fewer nodes than the tree has internal ones (0.4 to
      * 0.5 of them on the shared scenes): keep only those when memory
      * allows */
@@ -327,7 +339,7 @@ static const wide_node *wide_get(const atrbvh_bvh *bvh)
     void *w = __atomic_load_n(slot, __ATOMIC_ACQUIRE), *expected = NULL;
     int nomem;
     if (!w) {
-        w = wide_make(bvh->nodes, bvh->node_count, &nomem);
+        w = wide_make(bvh->nodes, bvh->node_count, bvh->prim_count, &nomem);
         if (!w) {
             if (nomem)
                 return NULL;
@@ -352,16 +364,304 @@ static const wide_node *wide_get(const atrbvh_bvh *bvh)
 static const signed char wide_first_lane[16] = {0, 0, 1, 0, 2, 0, 1, 0,
                                                 3, 0, 1, 0, 2, 0, 1, 0};
 
+/* ------------------------------------------------- triangles of a leaf
+ * Beside the wide nodes, the uncounted batches over triangles keep the
+ * triangles' vertices in the order of the tree's references (entry j of
+ * prim_indices), in pairs laid out for SSE2: a leaf then reads one
+ * contiguous block instead of prim_indices, the index buffer and three
+ * vertices per triangle.  The block holds copies of the caller's floats
+ * (atrbvh_trav_triangle_vertices), 9 floats (36 bytes) per reference; a
+ * reference whose primitive is past the geometry's count or whose vertex
+ * ids are out of range holds NaN, which no test hits (as atrbvh_trav_leaf
+ * skips it).  The geometry is the caller's, passed per call: the block is
+ * made for one geometry (its pointers, counts and strides: the key) and
+ * used only by calls given the same ones; a call given another geometry
+ * reads the caller's arrays as before.  Vertex values changed in place
+ * without atrbvh_refit (which drops the block with the wide nodes) are not
+ * seen: atrbvh(3) says so.
+ *
+ * A leaf tests its triangles two at a time: the translated and sheared
+ * vertices, the three edge functions, their sum (det) and the distance tt
+ * of atrbvh_trav_triangle_hit, with the same double operations in the
+ * same order on the same operands (the floats converted exactly; SSE2
+ * lanes round as scalar SSE2 does, no contraction), so each lane's values
+ * are the scalar test's, bit for bit.  A lane is dropped where the scalar
+ * test rejects (edge functions of both signs; det 0 or NaN; tt below
+ * tmin) or where its hit could not be taken (t = (float)tt above the
+ * closest hit so far, or above tmax for any hit: atrbvh_trav_leaf's
+ * choice); the few others finish the scalar test on the lane's values
+ * (the range of t, atrbvh_trav_within_own_box, u and v). */
+typedef struct wide_tris {
+    /* the geometry the block was made from */
+    const float *vertices;
+    uint64_t vertex_count, vertex_stride;
+    const uint32_t *indices;
+    uint64_t index_stride;
+    int indexed;
+    uint64_t primitive_count;
+    /* reference j: pair j / 2, lane j % 2; coordinate a of corner k of
+     * pair p at c[18 * p + 6 * k + 2 * a + lane] */
+    float *c;
+} wide_tris;
+
+/* Whether block t was made from the geometry of scene s. */
+static int wide_tris_match(const wide_tris *t, const atrbvh_trav_scene *s)
+{
+    return t->vertices == s->vertices && t->vertex_count == s->vertex_count &&
+           t->vertex_stride == s->vertex_stride && t->indexed == s->indexed &&
+           (!s->indexed || (t->indices == s->indices &&
+                            t->index_stride == s->index_stride)) &&
+           t->primitive_count == s->primitive_count;
+}
+
+static void wide_tris_free(wide_tris *t)
+{
+    if (t) {
+        atrbvh_i_free(t->c);
+        atrbvh_i_free(t);
+    }
+}
+
+/* The block of the tree's references over the triangles of s; NULL when
+ * memory is short. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline)) /* its own entry in profiles */
+#endif
+static wide_tris *wide_tris_make(const atrbvh_bvh *bvh,
+                                 const atrbvh_trav_scene *s, int threads)
+{
+    size_t pairs = bvh->prim_count / 2u + 1u;
+    long long p, n = (long long)pairs;
+    wide_tris *t = atrbvh_i_malloc(sizeof *t);
+#ifdef _OPENMP
+    int nt = atrbvh_i_resolve_threads(threads);
+#else
+    (void)threads;
+#endif
+    if (!t)
+        return NULL;
+    /* references numbered in 32 bits (wide_leaf_tris) */
+    if (bvh->prim_count > (size_t)INT32_MAX) {
+        atrbvh_i_free(t);
+        return NULL;
+    }
+    t->c = atrbvh_i_alloc_array(pairs, 18u * sizeof(float));
+    if (!t->c || pairs > (size_t)LLONG_MAX) {
+        wide_tris_free(t);
+        return NULL;
+    }
+    t->vertices = s->vertices;
+    t->vertex_count = s->vertex_count;
+    t->vertex_stride = s->vertex_stride;
+    t->indices = s->indices;
+    t->index_stride = s->index_stride;
+    t->indexed = s->indexed;
+    t->primitive_count = s->primitive_count;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(nt)
+#endif
+    for (p = 0; p < n; p++) {
+        float *c = t->c + 18 * (size_t)p;
+        int lane, k, a;
+        for (lane = 0; lane < 2; lane++) {
+            size_t j = 2u * (size_t)p + (size_t)lane;
+            float v[3][3];
+            uint32_t prim = j < bvh->prim_count ? bvh->prim_indices[j] : 0u;
+            int ok = j < bvh->prim_count &&
+                     (uint64_t)prim < s->primitive_count &&
+                     atrbvh_trav_triangle_vertices(s, prim, v);
+            for (k = 0; k < 3; k++)
+                for (a = 0; a < 3; a++)
+                    c[6 * k + 2 * a + lane] = ok ? v[k][a] : NAN;
+        }
+    }
+    return t;
+}
+
+/* The block for scene s (made on first use and kept in bvh->wide_tris,
+ * like the wide nodes), or NULL: none for another geometry than the one
+ * it was made for, or memory short. */
+static const wide_tris *wide_tris_get(const atrbvh_bvh *bvh,
+                                      const atrbvh_trav_scene *s, int threads)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    void **slot = &((atrbvh_bvh *)(uintptr_t)bvh)->wide_tris;
+    wide_tris *t = __atomic_load_n(slot, __ATOMIC_ACQUIRE);
+    void *expected = NULL;
+    if (!t) {
+        t = wide_tris_make(bvh, s, threads);
+        if (!t)
+            return NULL;
+        if (!__atomic_compare_exchange_n(slot, &expected, (void *)t, 0,
+                                         __ATOMIC_ACQ_REL,
+                                         __ATOMIC_ACQUIRE)) {
+            wide_tris_free(t);
+            t = expected;
+        }
+    }
+    return wide_tris_match(t, s) ? t : NULL;
+#else
+    (void)bvh;
+    (void)s;
+    (void)threads;
+    return NULL;
+#endif
+}
+
+/* A ray's part of the paired triangle test: its origin along the
+ * sheared axes and shear factors in both lanes, and where the
+ * coordinates kx, ky, kz of corner 0 lie in a pair. */
+typedef struct wide_tri_ray {
+    __m128d ox, oy, oz, sx, sy, sz, tmin;
+    int ax, ay, az;
+} wide_tri_ray;
+
+static inline void wide_tri_ray_make(const atrbvh_trav_ray *r,
+                                     wide_tri_ray *q)
+{
+    q->ox = _mm_set1_pd(r->orgd[r->kx]);
+    q->oy = _mm_set1_pd(r->orgd[r->ky]);
+    q->oz = _mm_set1_pd(r->orgd[r->kz]);
+    q->sx = _mm_set1_pd(r->sx);
+    q->sy = _mm_set1_pd(r->sy);
+    q->sz = _mm_set1_pd(r->sz);
+    q->tmin = _mm_set1_pd((double)r->tmin);
+    q->ax = 2 * r->kx;
+    q->ay = 2 * r->ky;
+    q->az = 2 * r->kz;
+}
+
+/* Two floats as two doubles (exact). */
+static inline __m128d wide_load2(const float *f)
+{
+    return _mm_cvtps_pd(
+        _mm_castsi128_ps(_mm_loadl_epi64((const __m128i *)(const void *)f)));
+}
+
+/* atrbvh_trav_leaf for the references [first, first + count) of a tree
+ * over triangles, from block c: the same hits, the same choice among them
+ * (see above). */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline)) /* kept out of the node loop's registers */
+#endif
+static int wide_leaf_tris(const atrbvh_trav_scene *s,
+                                   const float *c, uint32_t first,
+                                   uint32_t count, const atrbvh_trav_ray *r,
+                                   const wide_tri_ray *q, int any,
+                                   atrbvh_trav_best *best)
+{
+    uint32_t end = first + count; /* <= prim_count: see wide_make */
+    uint32_t p, pe = end / 2u + (end & 1u);
+    __m128d zero = _mm_setzero_pd();
+    double ttl[2], e1l[2], e2l[2], detl[2];
+    for (p = first / 2u; p < pe; p++) {
+        const float *f = c + 18 * (size_t)p;
+#if defined(__GNUC__) || defined(__clang__)
+        /* the ray's values are read per pair from q, not hoisted: leaves
+         * hold one or two pairs, and hoisting them spilled them all to
+         * the stack at each call */
+        __asm__("" : : : "memory");
+#endif
+        __m128d az = _mm_sub_pd(wide_load2(f + q->az), q->oz);
+        __m128d bz = _mm_sub_pd(wide_load2(f + 6 + q->az), q->oz);
+        __m128d cz = _mm_sub_pd(wide_load2(f + 12 + q->az), q->oz);
+        __m128d ax = _mm_sub_pd(_mm_sub_pd(wide_load2(f + q->ax), q->ox),
+                                _mm_mul_pd(q->sx, az));
+        __m128d ay = _mm_sub_pd(_mm_sub_pd(wide_load2(f + q->ay), q->oy),
+                                _mm_mul_pd(q->sy, az));
+        __m128d bx = _mm_sub_pd(_mm_sub_pd(wide_load2(f + 6 + q->ax), q->ox),
+                                _mm_mul_pd(q->sx, bz));
+        __m128d by = _mm_sub_pd(_mm_sub_pd(wide_load2(f + 6 + q->ay), q->oy),
+                                _mm_mul_pd(q->sy, bz));
+        __m128d cx = _mm_sub_pd(_mm_sub_pd(wide_load2(f + 12 + q->ax), q->ox),
+                                _mm_mul_pd(q->sx, cz));
+        __m128d cy = _mm_sub_pd(_mm_sub_pd(wide_load2(f + 12 + q->ay), q->oy),
+                                _mm_mul_pd(q->sy, cz));
+        __m128d e0 = _mm_sub_pd(_mm_mul_pd(cx, by), _mm_mul_pd(cy, bx));
+        __m128d e1 = _mm_sub_pd(_mm_mul_pd(ax, cy), _mm_mul_pd(ay, cx));
+        __m128d e2 = _mm_sub_pd(_mm_mul_pd(bx, ay), _mm_mul_pd(by, ax));
+        __m128d neg = _mm_or_pd(_mm_or_pd(_mm_cmplt_pd(e0, zero),
+                                          _mm_cmplt_pd(e1, zero)),
+                                _mm_cmplt_pd(e2, zero));
+        __m128d pos = _mm_or_pd(_mm_or_pd(_mm_cmpgt_pd(e0, zero),
+                                          _mm_cmpgt_pd(e1, zero)),
+                                _mm_cmpgt_pd(e2, zero));
+        __m128d det = _mm_add_pd(_mm_add_pd(e0, e1), e2);
+        __m128d keep = _mm_andnot_pd(_mm_and_pd(neg, pos),
+                                     _mm_and_pd(_mm_cmpneq_pd(det, zero),
+                                                _mm_cmpord_pd(det, det)));
+        __m128d tt;
+        int m = _mm_movemask_pd(keep);
+        if (2u * p < first)
+            m &= 2;
+        if (2u * p + 1u >= end)
+            m &= 1;
+        if (!m) /* most pairs */
+            continue;
+        /* the distance, as the scalar test computes it */
+        tt = _mm_add_pd(_mm_add_pd(_mm_mul_pd(e0, _mm_mul_pd(q->sz, az)),
+                                   _mm_mul_pd(e1, _mm_mul_pd(q->sz, bz))),
+                        _mm_mul_pd(e2, _mm_mul_pd(q->sz, cz)));
+        tt = _mm_div_pd(tt, det);
+        m &= _mm_movemask_pd(_mm_cmpge_pd(tt, q->tmin)) &
+             _mm_movemask_ps(_mm_cmple_ps(
+                 _mm_cvtpd_ps(tt), _mm_set1_ps(any ? r->tmax : best->t)));
+        if (!m)
+            continue;
+        _mm_storeu_pd(ttl, tt);
+        _mm_storeu_pd(e1l, e1);
+        _mm_storeu_pd(e2l, e2);
+        _mm_storeu_pd(detl, det);
+        while (m) {
+            int lane = m & 1 ? 0 : 1, k, a;
+            uint32_t j = 2u * p + (uint32_t)lane;
+            uint32_t prim = s->prim_indices[j];
+            float v[3][3], t, u, w;
+            m &= m - 1;
+            for (k = 0; k < 3; k++)
+                for (a = 0; a < 3; a++)
+                    v[k][a] = f[6 * k + 2 * a + lane];
+            /* the rest of atrbvh_trav_triangle_hit, on this lane's values
+             * (tt >= tmin is tested above) */
+            if (!(atrbvh_trav_abs(ttl[lane]) <= (double)ATRBVH_TRAV_FLT_MAX))
+                continue;
+            t = (float)ttl[lane];
+            if (!(atrbvh_trav_absf(t) <= ATRBVH_TRAV_FLT_MAX) ||
+                !atrbvh_trav_within_own_box(v, r, t))
+                continue;
+            u = (float)(e1l[lane] / detl[lane]);
+            w = (float)(e2l[lane] / detl[lane]);
+            /* as atrbvh_trav_leaf takes a triangle's hit */
+            if (any) {
+                if (t >= r->tmin && t <= r->tmax)
+                    return 1;
+                continue;
+            }
+            if (t >= r->tmin &&
+                (t < best->t || (t == best->t && prim < best->prim))) {
+                best->t = t;
+                best->u = u;
+                best->v = w;
+                best->prim = prim;
+                best->tlim = atrbvh_trav_widen_limit(t);
+            }
+        }
+    }
+    return 0;
+}
+
 /* atrbvh_trav_run over the wide copy, for a ray with use_float; inlined
  * into wide_run_closest and wide_run_any with `any` constant. */
 ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
+                             const wide_tris *tris,
                              const atrbvh_trav_ray *r, int any,
                              atrbvh_trav_best *best)
 {
-    int32_t stack_node[WIDE_STACK];
+    wide_tri_ray q;
+    int64_t stack_node[WIDE_STACK];
     float stack_t[WIDE_STACK];
     unsigned sp = 0;
-    int32_t cur = 0;
+    int64_t cur = 0;
     float tlo = atrbvh_trav_best_start(r, best);
     float thi;
     __m128 ox = _mm_set1_ps(r->orgf[0]), oy = _mm_set1_ps(r->orgf[1]);
@@ -381,12 +681,25 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
 #if defined(__GNUC__) || defined(__clang__)
     __asm__("" : "+x"(widen), "+x"(slack));
 #endif
+    wide_tri_ray_make(r, &q); /* used when tris */
     thi = best->tlim;
     tlo4 = _mm_set1_ps(tlo);
     thi4 = _mm_set1_ps(thi);
     for (;;) {
         if (cur < 0) {
-            int done = atrbvh_trav_leaf(s, &s->nodes[~cur], r, any, best);
+            uint32_t first = (uint32_t)~cur, count = (uint32_t)(~cur >> 32);
+            int done;
+            if (tris) {
+                done = wide_leaf_tris(s, tris->c, first, count, r, &q, any,
+                                      best);
+            } else {
+                /* the binary leaf's (index, count): all atrbvh_trav_leaf
+                 * reads of it */
+                atrbvh_node leaf;
+                leaf.index = first;
+                leaf.count = count;
+                done = atrbvh_trav_leaf(s, &leaf, r, any, best);
+            }
             if (done)
                 return 1;
             if (best->tlim != thi) {
@@ -415,10 +728,10 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
             lo = _mm_max_ps(zn, lo);
             hi = _mm_min_ps(zf, hi);
             hi = _mm_add_ps(_mm_mul_ps(hi, widen), slack);
-            m = _mm_movemask_ps(_mm_cmple_ps(lo, hi)) & n->mask;
+            m = _mm_movemask_ps(_mm_cmple_ps(lo, hi));
             if (m) {
                 float t4[4];
-                int32_t c[4];
+                int64_t c[4];
                 float ct[4];
                 int cnt = 0, lane, a, b2;
                 if (!(m & (m - 1))) {
@@ -493,15 +806,17 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
 }
 
 static int wide_run_closest(const atrbvh_trav_scene *s, const wide_node *w,
-                            const atrbvh_trav_ray *r, atrbvh_trav_best *best)
+                            const wide_tris *tris, const atrbvh_trav_ray *r,
+                            atrbvh_trav_best *best)
 {
-    return wide_run(s, w, r, 0, best);
+    return wide_run(s, w, tris, r, 0, best);
 }
 
 static int wide_run_any(const atrbvh_trav_scene *s, const wide_node *w,
-                        const atrbvh_trav_ray *r, atrbvh_trav_best *best)
+                        const wide_tris *tris, const atrbvh_trav_ray *r,
+                        atrbvh_trav_best *best)
 {
-    return wide_run(s, w, r, 1, best);
+    return wide_run(s, w, tris, r, 1, best);
 }
 #endif
 
@@ -563,7 +878,8 @@ static inline int wide_setup(const atrbvh_ray *ray, atrbvh_trav_ray *r)
 /* atrbvh_trav_closest and atrbvh_trav_any with the wide copy `w` (NULL:
  * none) for the rays that take the float test. */
 static void wide_closest(const atrbvh_trav_scene *s, const void *w,
-                         const atrbvh_ray *ray, atrbvh_hit *hit)
+                         const void *tris, const atrbvh_ray *ray,
+                         atrbvh_hit *hit)
 {
 #ifdef ATRBVH_TRAV_SSE
     atrbvh_trav_ray r;
@@ -576,7 +892,9 @@ static void wide_closest(const atrbvh_trav_scene *s, const void *w,
             return;
         if (!s->float_slabs)
             r.use_float = 0;
-        if (!(r.use_float ? wide_run_closest(s, (const wide_node *)w, &r, &best)
+        if (!(r.use_float ? wide_run_closest(s, (const wide_node *)w,
+                                             (const wide_tris *)tris, &r,
+                                             &best)
                           : atrbvh_trav_run(s, &r, 0, &best)))
             return;
         hit->t = best.t;
@@ -592,7 +910,7 @@ static void wide_closest(const atrbvh_trav_scene *s, const void *w,
 }
 
 static int wide_any(const atrbvh_trav_scene *s, const void *w,
-                    const atrbvh_ray *ray)
+                    const void *tris, const atrbvh_ray *ray)
 {
 #ifdef ATRBVH_TRAV_SSE
     atrbvh_trav_ray r;
@@ -602,7 +920,8 @@ static int wide_any(const atrbvh_trav_scene *s, const void *w,
             return 0;
         if (!s->float_slabs)
             r.use_float = 0;
-        return r.use_float ? wide_run_any(s, (const wide_node *)w, &r, &best)
+        return r.use_float ? wide_run_any(s, (const wide_node *)w,
+                                          (const wide_tris *)tris, &r, &best)
                            : atrbvh_trav_run(s, &r, 1, &best);
     }
 #else
@@ -616,10 +935,12 @@ void atrbvh_i_bvh_drop_wide(atrbvh_bvh *bvh)
 #ifdef ATRBVH_TRAV_SSE
     if (bvh->wide && bvh->wide != (const void *)&wide_none)
         atrbvh_i_free(bvh->wide);
+    wide_tris_free(bvh->wide_tris);
 #else
     atrbvh_i_free(bvh->wide);
 #endif
     bvh->wide = NULL;
+    bvh->wide_tris = NULL;
 }
 
 /* The single-ray calls make the batch calls' checks (one ray, the output
@@ -730,10 +1051,12 @@ static void cpu_batch(const atrbvh_bvh *bvh, const atrbvh_trav_scene *s,
     (void)threads;
 #endif
     if (!boxes) {
-        const void *w = NULL;
+        const void *w = NULL, *tris = NULL;
 #ifdef ATRBVH_TRAV_SSE
         if (s->float_slabs && count >= WIDE_MIN_RAYS)
             w = wide_get(bvh);
+        if (w && !s->boxes)
+            tris = wide_tris_get(bvh, s, threads);
 #else
         (void)bvh;
 #endif
@@ -743,9 +1066,9 @@ static void cpu_batch(const atrbvh_bvh *bvh, const atrbvh_trav_scene *s,
         for (i = 0; i < n; i++) {
             const atrbvh_ray *r = &rays[i];
             if (hits)
-                wide_closest(s, w, r, &hits[i]);
+                wide_closest(s, w, tris, r, &hits[i]);
             else
-                occluded[i] = (uint8_t)(wide_any(s, w, r) != 0);
+                occluded[i] = (uint8_t)(wide_any(s, w, tris, r) != 0);
         }
         return;
     }

@@ -1241,11 +1241,13 @@ static void grazing_rays(const mesh *m, const atrbvh_bvh *b, size_t n,
     }
 }
 
-static void check_wide(const mesh *m, const atrbvh_bvh *b,
-                       const reference *ref, size_t n, uint64_t seed,
-                       const char *what)
+/* check_wide with the geometry g, the same triangles as m laid out
+ * otherwise (rays are aimed at m's). */
+static void check_wide_geometry(const mesh *m, const atrbvh_geometry *gp,
+                                const atrbvh_bvh *b, const reference *ref,
+                                size_t n, uint64_t seed, const char *what)
 {
-    atrbvh_geometry g = mesh_geometry(m);
+    atrbvh_geometry g = *gp;
     atrbvh_ray *rays = malloc(n * sizeof *rays);
     atrbvh_hit *hits = malloc(n * sizeof *hits), *bin = malloc(n * sizeof *bin);
     uint8_t *occ = malloc(n), *bocc = malloc(n);
@@ -1299,6 +1301,14 @@ static void check_wide(const mesh *m, const atrbvh_bvh *b,
     free(bin);
     free(occ);
     free(bocc);
+}
+
+static void check_wide(const mesh *m, const atrbvh_bvh *b,
+                       const reference *ref, size_t n, uint64_t seed,
+                       const char *what)
+{
+    atrbvh_geometry g = mesh_geometry(m);
+    check_wide_geometry(m, &g, b, ref, n, seed, what);
 }
 
 START_TEST(wide_batches)
@@ -1528,6 +1538,185 @@ START_TEST(wide_setup_edges)
 }
 END_TEST
 
+/* ------------------------------------------- 4-wide batches: triangles
+ * Over triangles the batches keep a copy of the leaves' vertices, made
+ * for the geometry of the first batch (lib/traverse.c): its vertex and
+ * index arrays, counts and strides.  A batch given other arrays must read
+ * those, and the copy must be made right from every layout. */
+
+/* Soup m with each triangle shrunk towards its vertex 0, in a new buffer:
+ * every new vertex lies between two old ones, so inside the triangle's
+ * own box and every node box above it (the tree stays valid). */
+static mesh shrunk_soup(const mesh *m)
+{
+    mesh s;
+    size_t i;
+    int k, a;
+    memset(&s, 0, sizeof s);
+    s.nv = m->nv;
+    s.nt = m->nt;
+    s.v = malloc(9 * m->nt * sizeof *s.v);
+    ck_assert_ptr_nonnull(s.v);
+    for (i = 0; i < m->nt; i++)
+        for (k = 0; k < 3; k++)
+            for (a = 0; a < 3; a++)
+                s.v[9 * i + 3 * k + a] =
+                    k == 0 ? m->v[9 * i + a]
+                           : (m->v[9 * i + 3 * k + a] + m->v[9 * i + a]) * 0.5f;
+    return s;
+}
+
+START_TEST(wide_tris_other_geometry)
+{
+    mesh m = soup(1500, 61, 10.0f, -5.0f), sh = shrunk_soup(&m);
+    mesh ico = icosphere(3);
+    config c = {ATRBVH_METHOD_LBVH, 1, 4};
+    atrbvh_geometry g = mesh_geometry(&m), gi = mesh_geometry(&ico), gr;
+    atrbvh_bvh *b = build_config(&g, &c), *bi = build_config(&gi, &c);
+    reference ref = ref_make(&sh);
+    uint32_t *rot = malloc(3 * ico.nt * sizeof *rot);
+    size_t i;
+    ck_assert_ptr_nonnull(rot);
+    /* the first batch makes the copy from m; a batch over the shrunk
+     * triangles (another vertex buffer) must hit those */
+    check_wide(&m, b, NULL, 4096, 1000, "soup (the copy's geometry)");
+    check_wide(&sh, b, &ref, 2048, 1001, "shrunk soup, another buffer");
+    check_wide(&m, b, NULL, 2048, 1002, "soup again");
+    /* the same vertices through another index buffer, each triangle's
+     * corners rotated: the same surfaces, other u and v */
+    for (i = 0; i < ico.nt; i++) {
+        rot[3 * i] = ico.idx[3 * i + 1];
+        rot[3 * i + 1] = ico.idx[3 * i + 2];
+        rot[3 * i + 2] = ico.idx[3 * i];
+    }
+    gr = atrbvh_geometry_triangles(ico.v, ico.nv, rot, ico.nt);
+    check_wide(&ico, bi, NULL, 4096, 1003, "icosphere (the copy's)");
+    check_wide_geometry(&ico, &gr, bi, NULL, 4096, 1004,
+                        "icosphere, corners rotated");
+    /* and fewer vertices than the copy was made with: the ids past the
+     * count are out of range */
+    gr = gi;
+    gr.vertex_count = ico.nv / 2;
+    check_wide_geometry(&ico, &gr, bi, NULL, 4096, 1005,
+                        "icosphere, half the vertices");
+    free(rot);
+    ref_free(&ref);
+    atrbvh_bvh_free(b);
+    atrbvh_bvh_free(bi);
+    mesh_free(&sh);
+    mesh_free(&m);
+    mesh_free(&ico);
+}
+END_TEST
+
+START_TEST(wide_tris_layouts)
+{
+    mesh m = soup(1200, 71, 10.0f, -5.0f), ico = icosphere(3);
+    mesh dg = soup(900, 72, 10.0f, -5.0f);
+    reference rm = ref_make(&m), ri = ref_make(&ico), rd;
+    config c = {ATRBVH_METHOD_LBVH, 1, 8};
+    float *v4 = malloc(12 * m.nt * sizeof *v4);
+    float *v5 = malloc(5 * ico.nv * sizeof *v5);
+    uint32_t *i4 = malloc(4 * ico.nt * sizeof *i4);
+    uint32_t *bad = malloc(3 * ico.nt * sizeof *bad);
+    atrbvh_geometry g;
+    atrbvh_bvh *b;
+    size_t i, nbad = 0;
+    int k;
+    ck_assert(v4 && v5 && i4 && bad);
+    /* a soup with 16-byte vertices (the fourth float NaN) */
+    for (i = 0; i < 3 * m.nt; i++) {
+        for (k = 0; k < 3; k++)
+            v4[4 * i + (size_t)k] = m.v[3 * i + (size_t)k];
+        v4[4 * i + 3] = NAN;
+    }
+    g = atrbvh_geometry_triangles(v4, 3 * m.nt, NULL, m.nt);
+    g.vertex_stride = 4 * sizeof(float);
+    b = build_config(&g, &c);
+    check_wide_geometry(&m, &g, b, &rm, 4096, 1010, "soup, vertex stride 16");
+    atrbvh_bvh_free(b);
+    /* an indexed mesh with 20-byte vertices and 16-byte triangles */
+    for (i = 0; i < ico.nv; i++) {
+        for (k = 0; k < 3; k++)
+            v5[5 * i + (size_t)k] = ico.v[3 * i + (size_t)k];
+        v5[5 * i + 3] = v5[5 * i + 4] = -1e30f;
+    }
+    for (i = 0; i < ico.nt; i++) {
+        for (k = 0; k < 3; k++)
+            i4[4 * i + (size_t)k] = ico.idx[3 * i + (size_t)k];
+        i4[4 * i + 3] = 0xffffffffu;
+    }
+    g = atrbvh_geometry_triangles(v5, ico.nv, i4, ico.nt);
+    g.vertex_stride = 5 * sizeof(float);
+    g.index_stride = 4 * sizeof(uint32_t);
+    b = build_config(&g, &c);
+    check_wide_geometry(&ico, &g, b, &ri, 4096, 1011,
+                        "icosphere, strides 20 and 16");
+    atrbvh_bvh_free(b);
+    /* a tree built over the mesh, first traced with every seventh
+     * triangle's corner 1 out of range: the copy is made from those, which
+     * no batch may hit */
+    memcpy(bad, ico.idx, 3 * ico.nt * sizeof *bad);
+    for (i = 0; i < ico.nt; i += 7) {
+        bad[3 * i + 1] = (uint32_t)ico.nv + (uint32_t)(i % 3);
+        nbad++;
+    }
+    g = mesh_geometry(&ico);
+    b = build_config(&g, &c);
+    g.indices = bad;
+    check_wide_geometry(&ico, &g, b, NULL, 4096, 1012,
+                        "icosphere, vertex ids out of range");
+    {
+        size_t n = 4096, hit_bad = 0, nhit = 0;
+        atrbvh_ray *rays = malloc(n * sizeof *rays);
+        atrbvh_hit *hits = malloc(n * sizeof *hits);
+        atrbvh_error e;
+        ck_assert(rays && hits);
+        grazing_rays(&ico, b, n, 1013, rays);
+        ck_assert_int_eq(atrbvh_intersect_batch(b, &g, rays, n, hits, 2, &e),
+                         ATRBVH_OK);
+        for (i = 0; i < n; i++) {
+            nhit += hits[i].primitive != ATRBVH_NO_HIT;
+            hit_bad += hits[i].primitive != ATRBVH_NO_HIT &&
+                       hits[i].primitive % 7u == 0u;
+        }
+        ck_assert_msg(hit_bad == 0 && nhit > n / 20,
+                      "%zu hits, %zu on the %zu triangles out of range",
+                      nhit, hit_bad, nbad);
+        free(rays);
+        free(hits);
+    }
+    atrbvh_bvh_free(b);
+    /* degenerate triangles: a segment, a point, two equal corners */
+    for (i = 0; i < dg.nt; i++) {
+        float *t = dg.v + 9 * i;
+        for (k = 0; k < 3; k++) {
+            if (i % 5 == 1) /* collinear: corner 2 between 0 and 1 */
+                t[6 + k] = (t[k] + t[3 + k]) * 0.5f;
+            else if (i % 5 == 2) /* a point */
+                t[3 + k] = t[6 + k] = t[k];
+            else if (i % 5 == 3) /* corners 1 and 2 equal */
+                t[6 + k] = t[3 + k];
+        }
+    }
+    rd = ref_make(&dg);
+    g = mesh_geometry(&dg);
+    b = build_config(&g, &c);
+    check_wide(&dg, b, &rd, 4096, 1014, "soup with degenerate triangles");
+    atrbvh_bvh_free(b);
+    ref_free(&rd);
+    ref_free(&rm);
+    ref_free(&ri);
+    free(v4);
+    free(v5);
+    free(i4);
+    free(bad);
+    mesh_free(&m);
+    mesh_free(&ico);
+    mesh_free(&dg);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("traverse");
@@ -1556,6 +1745,8 @@ static Suite *suite(void)
     tcase_add_test(t, wide_after_refit);
     tcase_add_test(t, wide_concurrent_first_use);
     tcase_add_test(t, wide_setup_edges);
+    tcase_add_test(t, wide_tris_other_geometry);
+    tcase_add_test(t, wide_tris_layouts);
     tcase_set_timeout(t, 600);
     suite_add_tcase(s, t);
     return s;
