@@ -332,7 +332,9 @@ atrbvh_status atrbvh_i_cpu_refit(atrbvh_device *dev, atrbvh_i_run *run,
                                   error);
     if (st != ATRBVH_OK)
         return st;
-    if (run->cfg->method == ATRBVH_METHOD_LBVH) {
+    if (c->refitted) {
+        /* the hierarchy stage's pass did it (hierarchy.c) */
+    } else if (run->cfg->method == ATRBVH_METHOD_LBVH) {
         /* The LBVH's collapse sizes in the same climb, into the cost
          * slot (the keys' memory; collapse.c then has nothing to do). */
         st = atrbvh_i_cpu_tree_sizes(c, error);
