@@ -27,7 +27,7 @@
  * most ATRBVH_HIER_SIDE each, and a second, serial pass over these
  * leftovers of every block, in position order, finds their neighbours:
  * the nearest smaller split of a leftover is itself a leftover.  Deltas
- * lie in 1 .. 95, so no stack is deeper than 95.
+ * lie in 0 .. 95, so no stack is deeper than 96.
  *
  * The refit in the same pass.  The stack pops nodes in post-order: the
  * node popped at split ns whose new top is ps has as its right child the
@@ -59,8 +59,9 @@
 
 #include "cpu.h"
 
-/* Strictly monotone runs of deltas in 1 .. 95 (clz of distinct 63-bit
- * keys 1 .. 63, equal keys 66 .. 95): at most 95 entries. */
+/* Strictly monotone runs of deltas in 0 .. 95 (clz of distinct keys
+ * 0 .. 63, equal keys 64 .. 95): at most 96 entries, so a block leaves at
+ * most 96 prefix minima and 95 more on its stack. */
 #define ATRBVH_HIER_SIDE 96
 /* Blocks (threads) of the first pass: its leftovers live on the stack. */
 #define ATRBVH_HIER_BLOCKS 16
