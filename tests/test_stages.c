@@ -1,9 +1,9 @@
 /*
  * test_stages.c - internal stages checked on their own (links the static
  * core): the radix sort against an independent stable reference, the
- * hierarchy against the per-node Karras search, and the Morton key
- * properties, and the statistics walk after a build on trees deeper than
- * its stack.
+ * hierarchy against the per-node Karras search, its refit in the same
+ * pass against the refit's climb, the Morton key properties, and the
+ * statistics walk after a build on trees deeper than its stack.
  */
 #include <check.h>
 #include <stdlib.h>
@@ -154,6 +154,128 @@ START_TEST(hierarchy_is_karras)
 }
 END_TEST
 
+/* The hierarchy stage's refit in the same pass (atrbvh_i_hierarchy_refit)
+ * against the separate refit's climb (atrbvh_i_refit_sizes for an LBVH,
+ * atrbvh_i_refit with costs): the same topology, and every box, count,
+ * collapse size and cost to the bit, for every block split of the stack
+ * passes, over random boxes in a random build order and keys with runs of
+ * equal keys. */
+START_TEST(hierarchy_refit_is_the_refit)
+{
+    static const uint32_t sizes[] = {1, 2, 3, 5, 17, 64, 1000, 20000};
+    static const int threads[] = {1, 2, 3, 7, 16, 40};
+    atrbvh_cost_params p;
+    size_t si, ti;
+    int kind, costs;
+    tu_rng r;
+    tu_rng_seed(&r, 7);
+    p.ci = 1.2;
+    p.ct = 1.0;
+    p.collapse = 1;
+    p.max_leaf = 8;
+    for (si = 0; si < sizeof sizes / sizeof *sizes; si++)
+        for (kind = 0; kind < 3; kind++) {
+            const uint32_t n = sizes[si], nodes = 2 * n - 1;
+            uint64_t *k = malloc(n * sizeof *k);
+            uint32_t *order = malloc(n * sizeof *order);
+            atrbvh_box *prims = malloc(n * sizeof *prims);
+            uint32_t *size_ref = malloc(nodes * sizeof *size_ref);
+            uint32_t *size = malloc(nodes * sizeof *size);
+            uint32_t i;
+            ck_assert(k && order && prims && size_ref && size);
+            for (i = 0; i < n; i++) {
+                const uint64_t x = tu_rng_next(&r) >> 1;
+                int a;
+                k[i] = kind == 0 ? x : kind == 1 ? (x % 5) << 30 : x & 0x7;
+                order[i] = i;
+                for (a = 0; a < 3; a++) {
+                    /* random sums to round (the order of the cost's
+                     * terms shows), a few exact ties, zeros of both signs,
+                     * flat boxes */
+                    const uint64_t y = tu_rng_next(&r);
+                    const float lo =
+                        y % 8 == 0 ? (float)(int)(y % 64) - 32.0f
+                                   : (tu_rng_float(&r) - 0.5f) * 64.0f;
+                    const float w = y % 16 == 1 ? 0.0f : tu_rng_float(&r);
+                    prims[i].min[a] = lo == 0.0f && (x & 1) ? -0.0f : lo;
+                    prims[i].max[a] = lo + w;
+                }
+            }
+            qsort(k, n, sizeof *k, cmp_u64);
+            for (i = n; i > 1; i--) { /* the sort's build order */
+                const uint32_t j = (uint32_t)(tu_rng_next(&r) % i), t = order[i - 1];
+                order[i - 1] = order[j];
+                order[j] = t;
+            }
+            for (costs = 0; costs < 2; costs++) {
+                atrbvh_i_tree ref;
+                double *ref_cost;
+                ck_assert_int_eq(atrbvh_i_tree_alloc(&ref, n, 1), ATRBVH_OK);
+                atrbvh_i_hierarchy(k, &ref, 1);
+                ref_cost = ref.cost;
+                if (costs) {
+                    atrbvh_i_refit(&ref, prims, order, &p, 1);
+                } else {
+                    ref.cost = NULL;
+                    atrbvh_i_refit_sizes(&ref, prims, order, &p, 1, size_ref);
+                    ref.cost = ref_cost;
+                }
+                for (ti = 0; ti < sizeof threads / sizeof *threads; ti++) {
+                    atrbvh_i_tree t;
+                    double *cost;
+                    ck_assert_int_eq(atrbvh_i_tree_alloc(&t, n, 1), ATRBVH_OK);
+                    memset(t.box, 0xab, nodes * sizeof *t.box);
+                    memset(t.count, 0xab, nodes * sizeof *t.count);
+                    memset(size, 0xab, nodes * sizeof *size);
+                    memcpy(t.box, prims, n * sizeof *prims);
+                    cost = t.cost;
+                    if (!costs)
+                        t.cost = NULL;
+                    atrbvh_i_hierarchy_refit(k, &t, order, &p, threads[ti],
+                                             costs ? NULL : size);
+                    t.cost = cost;
+                    ck_assert_uint_eq(t.parent[0], ATRBVH_NONE);
+                    for (i = 0; i + 1 < n; i++)
+                        ck_assert_msg(t.left[i] == ref.left[i] &&
+                                          t.right[i] == ref.right[i],
+                                      "n %u kind %d threads %d node %u", n,
+                                      kind, threads[ti], i);
+                    for (i = 0; i < nodes; i++) {
+                        ck_assert_msg(
+                            memcmp(&t.box[i], &ref.box[i], sizeof t.box[i]) ==
+                                    0 &&
+                                t.count[i] == ref.count[i] &&
+                                (i == 0 || t.parent[i] == ref.parent[i]),
+                            "n %u kind %d costs %d threads %d node %u: box, "
+                            "count or parent",
+                            n, kind, costs, threads[ti], i);
+                        if (costs)
+                            ck_assert_msg(memcmp(&t.cost[i], &ref.cost[i],
+                                                 sizeof t.cost[i]) == 0,
+                                          "n %u kind %d threads %d node %u: "
+                                          "cost %.17g vs %.17g",
+                                          n, kind, threads[ti], i, t.cost[i],
+                                          ref.cost[i]);
+                        else
+                            ck_assert_msg(size[i] == size_ref[i],
+                                          "n %u kind %d threads %d node %u: "
+                                          "size %x vs %x",
+                                          n, kind, threads[ti], i, size[i],
+                                          size_ref[i]);
+                    }
+                    atrbvh_i_tree_free(&t);
+                }
+                atrbvh_i_tree_free(&ref);
+            }
+            free(k);
+            free(order);
+            free(prims);
+            free(size_ref);
+            free(size);
+        }
+}
+END_TEST
+
 START_TEST(morton_keys)
 {
     /* Spreading and interleaving: x is the top bit of every triplet. */
@@ -299,6 +421,7 @@ int main(void)
     tcase_add_test(tc, radix_sort_is_stable_and_sorted);
     tcase_add_test(tc, morton_keys);
     tcase_add_test(tc, hierarchy_is_karras);
+    tcase_add_test(tc, hierarchy_refit_is_the_refit);
     tcase_add_test(tc, measure_walk_deep_trees);
     suite_add_tcase(s, tc);
     return tu_run(s);

@@ -39,11 +39,13 @@ static void cpu_close(atrbvh_device *dev)
  *   sort       + order 4, sort temporaries 12 in the parent
  *              and left slots                                    72     80
  *   hierarchy  + left, right 8, parent 8, count 8 (leaf_prim is
- *              the order array)                                  84     92
- *   refit      node boxes 48 (the primitive boxes gathered in
- *              place into the leaves), tree 28, costs 16 (none
- *              for an LBVH: its slot takes the collapse sizes,
- *              computed in the refit's climb, refit.c)           84     92
+ *              the order array); the refit in the same pass
+ *              (hierarchy.c): node boxes 48 (the primitive boxes
+ *              gathered in place into the leaves), costs 16 (none
+ *              for an LBVH: its slot takes the collapse sizes),
+ *              both into the slot of the keys once read          84     92
+ *   refit      (nothing left to compute; a caller's tree,
+ *              set_tree, is refitted here) tree 28               84     92
  *   optimise   the same, per-thread treelet scratch               -     92
  *   collapse   costs recomputed bottom-up, sizes 8 into the
  *              cost slot                                         84     92

@@ -10,9 +10,10 @@
  * C(v) = min(ci*A(v) + C(l) + C(r), ct*A(v)*N(v)).  (The reference kept
  * only nodes whose parent's both children collapse; we do not.)
  *
- * An LBVH's sizes are already there: its refit computed them in the same
- * climb as the boxes (refit.c's climb_sizes, the same rule and
- * arithmetic as decide() below); this stage then only releases memory.
+ * An LBVH's sizes are already there: its refit computed them with the
+ * boxes (hierarchy.c's pass, or refit.c's climb_sizes for a caller's
+ * tree; the same rule and arithmetic as decide() below); this stage then
+ * only releases memory.
  *
  * Otherwise bottom-up in post-order, OpenMP tasks above TASK_CUTOFF
  * primitives.
@@ -80,7 +81,7 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_i_scratch_done(c->scratch, CPU_COST);
     c->tree.cost = NULL;
     if (run->cfg->method != ATRBVH_METHOD_LBVH || !c->size) {
-        /* (an LBVH's refit computed the sizes: refit.c's climb_sizes) */
+        /* (an LBVH's refit computed the sizes: hierarchy.c, refit.c) */
         atrbvh_status st = atrbvh_i_cpu_tree_sizes(c, error);
         if (st != ATRBVH_OK)
             return st;

@@ -60,6 +60,9 @@ typedef struct atrbvh_i_cpu_run {
      * order, so a node's primitives start at its output prim_at
      * (layout.c).  Not so for set_tree's or an optimised tree. */
     int ranges;
+    /* The hierarchy stage refitted its tree in the same pass
+     * (hierarchy.c): the refit stage has nothing to compute. */
+    int refitted;
 } atrbvh_i_cpu_run;
 
 /* The tree's topology arrays for n leaves in the device's scratch slots
@@ -119,6 +122,17 @@ atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
  * of internal nodes). */
 void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                         int threads);
+/* The same tree refitted in the same pass (the hierarchy stage's):
+ * t->box holds the primitive boxes in its first n entries (build order),
+ * gathered in place into the leaves by `order`; then every node's box
+ * and count, and its collapse size into `size` (2n-1 entries) or, when
+ * `size` is NULL, its cost into t->cost: the values atrbvh_i_refit_sizes
+ * (atrbvh_i_refit) gives.  sorted_keys is read first and may then take
+ * the sizes or costs (the LBVH's memory plan, backend.c). */
+void atrbvh_i_hierarchy_refit(const uint64_t *sorted_keys, atrbvh_i_tree *t,
+                              const uint32_t *order,
+                              const atrbvh_cost_params *p, int threads,
+                              uint32_t *size);
 /* Leaf n-1+p gets prim_boxes[order[p]], then boxes, counts and costs
  * bottom-up.  Sets every field but left/right/parent/leaf_prim (cost
  * only when t->cost is not NULL).  prim_boxes may be t->box: the

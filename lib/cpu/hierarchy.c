@@ -1,10 +1,11 @@
 /*
  * hierarchy.c - stage "hierarchy": the binary radix tree of Karras,
  * "Maximizing Parallelism in the Construction of BVHs, Octrees, and k-d
- * Trees" (HPG 2012), numbered as Karras numbers it.  The tie rule for
- * equal keys (positions told apart, atrbvh_karras_delta in shared/arith.h)
- * decides the tree and is the OpenCL backend's, which runs these same two
- * passes (cl/kernels.cl: hierarchy_block, hierarchy).
+ * Trees" (HPG 2012), numbered as Karras numbers it, and (the stage) the
+ * refit of that tree in the same pass.  The tie rule for equal keys
+ * (positions told apart, atrbvh_karras_delta in shared/arith.h) decides
+ * the tree and is the OpenCL backend's, which runs these same two passes
+ * (cl/kernels.cl: hierarchy_block, hierarchy) and its refit separately.
  *
  * Both build the tree without Karras's per-node searches.  With
  * delta_s = atrbvh_karras_delta(s, s+1) for the n-1 split positions s,
@@ -26,63 +27,203 @@
  * most ATRBVH_HIER_SIDE each, and a second, serial pass over these
  * leftovers of every block, in position order, finds their neighbours:
  * the nearest smaller split of a leftover is itself a leftover.  Deltas
- * lie in -1 .. 96, so no stack is deeper than 97.
+ * lie in 0 .. 95, so no stack is deeper than 96.
+ *
+ * The refit in the same pass.  The stack pops nodes in post-order: the
+ * node popped at split ns whose new top is ps has as its right child the
+ * subtree finished just before (leaf ns for the first pop at ns), and as
+ * its left child the subtree that ended at its own split when it was
+ * pushed.  So each stack entry carries its left subtree's box, cost and
+ * collapse size, the pass carries the subtree just finished, and every
+ * node is computed from its children's values in registers, by the
+ * refit's own rule (shared/stages.h: atrbvh_refit_node_size for an LBVH,
+ * which also decides the collapse, atrbvh_refit_node with costs for the
+ * others), left first: the same bits as the refit kernel's climb, with
+ * no arrival counter to test and no child read back.  In the second pass
+ * the subtree between two consecutive leftovers is one node finished by
+ * the first pass (or a leaf): every split strictly between them found
+ * both neighbours inside the block, and the smallest of them has the two
+ * leftovers as its neighbours; the first pass keeps that subtree's root
+ * and cost with each leftover.
+ *
+ * The refit needs the leaf boxes in sorted order, gathered in place in
+ * the node box array (the memory plan, backend.c) before any internal
+ * node is written over the primitive boxes, and its sizes or costs go to
+ * the slot the keys are in: so the keys' deltas are computed first, into
+ * the leaves' half of the count array (each becomes the leaf's count, 1,
+ * once read), in the same parallel sweep as the gather, and the block
+ * passes start after its barrier.  One parallel region for the hierarchy
+ * and the refit, where there were three (hierarchy, gather, climbs).
  */
 #include "config.h"
 
 #include "cpu.h"
 
 /* Strictly monotone runs of deltas in 0 .. 95 (clz of distinct keys
- * 0 .. 63, equal keys 64 .. 95): at most 96 entries. */
-#define ATRBVH_HIER_SIDE 128
+ * 0 .. 63, equal keys 64 .. 95): at most 96 entries, so a block leaves at
+ * most 96 prefix minima and 95 more on its stack. */
+#define ATRBVH_HIER_SIDE 96
 /* Blocks (threads) of the first pass: its leftovers live on the stack. */
 #define ATRBVH_HIER_BLOCKS 16
 
+/* The pass is specialised for each mode (a constant at every call):
+ * without the attribute GCC keeps one copy testing it at every step. */
+#if defined(__GNUC__) || defined(__clang__)
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define ALWAYS_INLINE inline
+#endif
+
+/* What the pass computes beside the topology. */
+enum {
+    TOPOLOGY, /* the topology only, deltas from the keys    */
+    SIZES,    /* and boxes, collapse sizes (an LBVH)         */
+    COSTS     /* and boxes, costs (a tree to be optimised)   */
+};
+
+typedef struct hier_ctx {
+    atrbvh_i_tree *t;
+    int64_t n;
+    const uint64_t *keys;      /* TOPOLOGY: the sorted keys            */
+    const atrbvh_cost_params *p; /* SIZES, COSTS                       */
+    uint32_t *size;            /* SIZES: collapse sizes (2n-1)         */
+} hier_ctx;
+
+/* A finished subtree: its root and (SIZES, COSTS) its values. */
+typedef struct hier_sub {
+    atrbvh_box box;
+    double cost;
+    uint32_t node, size;
+} hier_sub;
+
 typedef struct hier_entry {
-    int64_t s; /* split position */
-    int d;     /* its delta       */
+    int64_t s;     /* split position        */
+    int d;         /* its delta             */
+    hier_sub left; /* the subtree ending at leaf s: s's left child */
 } hier_entry;
 
-/* Writes internal node s (its split) from its neighbours ps (-1: none)
- * and ns (n-1: none) and their deltas. */
-static inline void emit(atrbvh_i_tree *t, int64_t n, int64_t s, int64_t ps,
-                        int dps, int64_t ns, int dns)
+/* A leftover of the first pass: its split, and the subtree between the
+ * previous leftover and it (its root; the box and size are in the tree). */
+typedef struct hier_left {
+    uint32_t s, node;
+    double cost;
+} hier_left;
+
+/* The delta of split s: from the keys, or (SIZES, COSTS) where the first
+ * sweep put it. */
+static ALWAYS_INLINE int split_delta(const hier_ctx *x, int mode, int64_t s)
 {
+    if (mode == TOPOLOGY)
+        return atrbvh_karras_delta(x->keys, x->n, s, s + 1);
+    return (int)(int32_t)x->t->count[x->n - 1 + s];
+}
+
+/* Leaf position i as a finished subtree (its delta already read: its
+ * count is written here). */
+static ALWAYS_INLINE void leaf(const hier_ctx *x, int mode, int64_t i,
+                               hier_sub *out)
+{
+    atrbvh_i_tree *t = x->t;
+    const uint32_t id = (uint32_t)(x->n - 1 + i);
+    out->node = id;
+    t->count[id] = 1;
+    if (mode == TOPOLOGY) { /* (nothing read: defined values to copy) */
+        out->box = atrbvh_box_empty();
+        out->cost = 0.0;
+        out->size = 0;
+        return;
+    }
+    out->box = t->box[id];
+    out->cost = atrbvh_refit_leaf_cost(x->p, out->box);
+    if (mode == SIZES) {
+        out->size = 1u | ATRBVH_SIZE_LEAF;
+        x->size[id] = out->size;
+    } else {
+        t->cost[id] = out->cost;
+    }
+}
+
+/* Writes internal node s (its split) from its neighbours ps (-1: none)
+ * and ns (n-1: none) and their deltas, its left subtree *l and its right
+ * subtree *r; *r becomes the node. */
+static ALWAYS_INLINE void emit(const hier_ctx *x, int mode, int64_t s,
+                               int64_t ps, int dps, int64_t ns, int dns,
+                               const hier_sub *l, hier_sub *r)
+{
+    atrbvh_i_tree *t = x->t;
     uint32_t lc, rc, c;
-    const uint32_t id = atrbvh_hier_node(n, s, ps, dps, ns, dns, &lc, &rc, &c);
+    const uint32_t id =
+        atrbvh_hier_node(x->n, s, ps, dps, ns, dns, &lc, &rc, &c);
     t->left[id] = lc;
     t->right[id] = rc;
     t->count[id] = c;
     t->parent[lc] = id;
     t->parent[rc] = id;
+    if (mode == SIZES) {
+        atrbvh_box b;
+        double cost;
+        uint32_t cnt;
+        const uint32_t size = atrbvh_refit_node_size(
+            x->p, l->box, (uint32_t)(s - ps), l->cost, l->size, r->box,
+            (uint32_t)(ns - s), r->cost, r->size, &b, &cnt, &cost);
+        t->box[id] = b;
+        x->size[id] = size;
+        r->box = b;
+        r->cost = cost;
+        r->size = size;
+    } else if (mode == COSTS) {
+        atrbvh_box b;
+        double cost;
+        uint32_t cnt;
+        atrbvh_refit_node(x->p, l->box, (uint32_t)(s - ps), l->cost, r->box,
+                          (uint32_t)(ns - s), r->cost, &b, &cnt, &cost);
+        t->box[id] = b;
+        t->cost[id] = cost;
+        r->box = b;
+        r->cost = cost;
+    }
+    r->node = id;
 }
 
-/* The first pass over the splits lo .. hi-1.  Leftovers (their positions,
- * ascending) go to `out`; returns how many. */
-static uint32_t block_pass(const uint64_t *keys, atrbvh_i_tree *t, int64_t n,
-                           int64_t lo, int64_t hi, int64_t *out)
+/* The first pass over the splits lo .. hi-1.  Leftovers (ascending) go to
+ * `out`, their deltas to `out_d`; returns how many. */
+static ALWAYS_INLINE uint32_t block_pass(const hier_ctx *x, int mode,
+                                         int64_t lo, int64_t hi,
+                                         hier_left *out, signed char *out_d)
 {
     hier_entry st[ATRBVH_HIER_SIDE];
     uint32_t sp = 0, nout = 0, k;
     int64_t s;
+    hier_sub carry; /* the subtree ending at leaf s, finished last */
     for (s = lo; s < hi; s++) {
-        const int d = atrbvh_karras_delta(keys, n, s, s + 1);
-        t->count[n - 1 + s] = 1;
+        const int d = split_delta(x, mode, s);
+        leaf(x, mode, s, &carry);
         while (sp > 0 && st[sp - 1].d > d) {
-            const hier_entry x = st[--sp];
+            sp--;
+            /* (the bottom entry is a prefix minimum, already out) */
             if (sp > 0)
-                emit(t, n, x.s, st[sp - 1].s, st[sp - 1].d, s, d);
+                emit(x, mode, st[sp].s, st[sp - 1].s, st[sp - 1].d, s, d,
+                     &st[sp].left, &carry);
         }
-        if (sp == 0 && nout < ATRBVH_HIER_SIDE)
-            out[nout++] = s; /* a prefix minimum */
+        if (sp == 0 && nout < ATRBVH_HIER_SIDE) { /* a prefix minimum */
+            out[nout].s = (uint32_t)s;
+            out[nout].node = carry.node;
+            out[nout].cost = carry.cost;
+            out_d[nout++] = (signed char)d;
+        }
         if (sp == ATRBVH_HIER_SIDE)
             continue; /* keys out of order: cannot happen when sorted */
-        st[sp++].s = s;
-        st[sp - 1].d = d;
+        st[sp].s = s;
+        st[sp].d = d;
+        st[sp++].left = carry;
     }
     /* st[0] is the last prefix minimum, already out. */
-    for (k = 1; k < sp; k++)
-        out[nout++] = st[k].s;
+    for (k = 1; k < sp; k++) {
+        out[nout].s = (uint32_t)st[k].s;
+        out[nout].node = st[k].left.node;
+        out[nout].cost = st[k].left.cost;
+        out_d[nout++] = (signed char)st[k].d;
+    }
     return nout;
 }
 
@@ -100,21 +241,135 @@ static void leaf_prims(atrbvh_i_tree *t, const uint32_t *order,
             leaf_prim[i] = order[i];
 }
 
-/* The topology; with `order`, also each leaf's primitive (in the same
- * parallel region: one thread wake-up less per build). */
-static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
-                      int threads, const uint32_t *order,
-                      const uint32_t *ids)
+/* Leaves ahead of the current one whose primitive box is prefetched. */
+#define PREFETCH 16
+
+/* The block passes (`blocks` of them, n >= 2), then the second pass;
+ * SIZES and COSTS first gather the leaf boxes and write the deltas (the
+ * file's comment).  With `order`, also each leaf's original primitive. */
+static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
+                               const uint32_t *order, const uint32_t *ids)
 {
-    const int64_t n = t->n;
-    int64_t left_over[ATRBVH_HIER_BLOCKS][2 * ATRBVH_HIER_SIDE];
+    atrbvh_i_tree *t = x->t;
+    const int64_t n = x->n;
+    hier_left left_over[ATRBVH_HIER_BLOCKS][2 * ATRBVH_HIER_SIDE];
+    signed char left_d[ATRBVH_HIER_BLOCKS][2 * ATRBVH_HIER_SIDE];
     uint32_t counts[ATRBVH_HIER_BLOCKS];
     hier_entry st[ATRBVH_HIER_SIDE];
-    int blocks, b;
+    hier_sub carry;
     uint32_t sp = 0, k;
+    /* Read before any leaf is written over it: the gather is in place,
+     * and primitive box n-1 is also leaf 0's entry. */
+    const atrbvh_box last =
+        mode != TOPOLOGY ? t->box[n - 1] : atrbvh_box_empty();
+    int b;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(blocks)
+#endif
+    {
+        int64_t i;
+        if (mode != TOPOLOGY) {
+            atrbvh_box *const box = t->box;
+            uint32_t *const count = t->count;
+            const uint64_t *const keys = x->keys;
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+            for (i = 0; i < n; i++) {
+                const uint32_t p = order[i];
+#if defined(__GNUC__) || defined(__clang__)
+                /* the gather is random */
+                if (i + PREFETCH < n)
+                    __builtin_prefetch(&box[order[i + PREFETCH]]);
+#endif
+                box[n - 1 + i] = p == (uint32_t)(n - 1) ? last : box[p];
+                if (i + 1 < n)
+                    count[n - 1 + i] =
+                        (uint32_t)atrbvh_karras_delta(keys, n, i, i + 1);
+            }
+            /* (the implied barrier: every leaf box and delta is there
+             * before a block writes an internal node over a primitive
+             * box, or a size or cost over a key) */
+        }
+#ifdef _OPENMP
+#pragma omp for schedule(static, 1)
+#endif
+        for (b = 0; b < blocks; b++) {
+            counts[b] = block_pass(
+                x, mode,
+                (int64_t)((uint64_t)(n - 1) * (uint64_t)b / (uint64_t)blocks),
+                (int64_t)((uint64_t)(n - 1) * (uint64_t)(b + 1) /
+                          (uint64_t)blocks),
+                left_over[b], left_d[b]);
+            if (order)
+                leaf_prims(t, order, ids,
+                           (int64_t)((uint64_t)n * (uint64_t)b /
+                                     (uint64_t)blocks),
+                           (int64_t)((uint64_t)n * (uint64_t)(b + 1) /
+                                     (uint64_t)blocks));
+        }
+    }
+    /* The second pass: the same stack over every block's leftovers, each
+     * arriving with the subtree between the previous leftover and it. */
+    for (b = 0; b < blocks; b++) {
+        for (k = 0; k < counts[b]; k++) {
+            const hier_left *lo = &left_over[b][k];
+            const int64_t s = lo->s;
+            const int d = left_d[b][k];
+            carry.node = lo->node;
+            carry.cost = lo->cost;
+            carry.box = mode != TOPOLOGY ? t->box[lo->node] : last;
+            carry.size = mode == SIZES ? x->size[lo->node] : 0u;
+            while (sp > 0 && st[sp - 1].d > d) {
+                sp--;
+                if (sp > 0)
+                    emit(x, mode, st[sp].s, st[sp - 1].s, st[sp - 1].d, s, d,
+                         &st[sp].left, &carry);
+                else
+                    emit(x, mode, st[sp].s, -1, 0, s, d, &st[sp].left,
+                         &carry);
+            }
+            if (sp == ATRBVH_HIER_SIDE)
+                continue; /* keys out of order (see block_pass) */
+            st[sp].s = s;
+            st[sp].d = d;
+            st[sp++].left = carry;
+        }
+    }
+    leaf(x, mode, n - 1, &carry);
+    while (sp > 0) {
+        sp--;
+        if (sp > 0)
+            emit(x, mode, st[sp].s, st[sp - 1].s, st[sp - 1].d, n - 1, 0,
+                 &st[sp].left, &carry);
+        else
+            emit(x, mode, st[sp].s, -1, 0, n - 1, 0, &st[sp].left, &carry);
+    }
+}
+
+/* The topology, and with `p` the refit's values (into `size` when not
+ * NULL, else into t->cost); with `order`, each leaf's primitive. */
+static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
+                      int threads, const uint32_t *order,
+                      const uint32_t *ids, const atrbvh_cost_params *p,
+                      uint32_t *size)
+{
+    const int64_t n = t->n;
+    hier_ctx x;
+    int blocks;
+    x.t = t;
+    x.n = n;
+    x.keys = sorted_keys;
+    x.p = p;
+    x.size = size;
     t->parent[0] = ATRBVH_U32_MAX;
-    t->count[2 * n - 2] = 1;
     if (n == 1) {
+        /* one leaf, the root (its box is primitive box 0, in place) */
+        hier_sub one;
+        if (p)
+            leaf(&x, size ? SIZES : COSTS, 0, &one);
+        else
+            leaf(&x, TOPOLOGY, 0, &one);
         if (order)
             leaf_prims(t, order, ids, 0, 1);
         return;
@@ -124,69 +379,52 @@ static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
         blocks = ATRBVH_HIER_BLOCKS;
     if ((int64_t)blocks > n - 1)
         blocks = (int)(n - 1);
-#ifdef _OPENMP
-#pragma omp parallel for num_threads(blocks) schedule(static, 1)
-#endif
-    for (b = 0; b < blocks; b++) {
-        counts[b] = block_pass(
-            sorted_keys, t, n,
-            (int64_t)((uint64_t)(n - 1) * (uint64_t)b / (uint64_t)blocks),
-            (int64_t)((uint64_t)(n - 1) * (uint64_t)(b + 1) /
-                      (uint64_t)blocks),
-            left_over[b]);
-        if (order)
-            leaf_prims(t, order, ids,
-                       (int64_t)((uint64_t)n * (uint64_t)b / (uint64_t)blocks),
-                       (int64_t)((uint64_t)n * (uint64_t)(b + 1) /
-                                 (uint64_t)blocks));
-    }
-    /* The second pass: the same stack over every block's leftovers. */
-    for (b = 0; b < blocks; b++) {
-        for (k = 0; k < counts[b]; k++) {
-            const int64_t s = left_over[b][k];
-            const int d = atrbvh_karras_delta(sorted_keys, n, s, s + 1);
-            while (sp > 0 && st[sp - 1].d > d) {
-                const hier_entry x = st[--sp];
-                if (sp > 0)
-                    emit(t, n, x.s, st[sp - 1].s, st[sp - 1].d, s, d);
-                else
-                    emit(t, n, x.s, -1, 0, s, d);
-            }
-            if (sp == ATRBVH_HIER_SIDE)
-                continue; /* keys out of order (see block_pass) */
-            st[sp].s = s;
-            st[sp++].d = d;
-        }
-    }
-    while (sp > 0) {
-        const hier_entry x = st[--sp];
-        if (sp > 0)
-            emit(t, n, x.s, st[sp - 1].s, st[sp - 1].d, n - 1, 0);
-        else
-            emit(t, n, x.s, -1, 0, n - 1, 0);
-    }
+    /* (three calls: each inlined for its own mode) */
+    if (!p)
+        pass(&x, TOPOLOGY, blocks, order, ids);
+    else if (size)
+        pass(&x, SIZES, blocks, order, ids);
+    else
+        pass(&x, COSTS, blocks, order, ids);
 }
 
 void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                         int threads)
 {
-    hierarchy(sorted_keys, t, threads, NULL, NULL);
+    hierarchy(sorted_keys, t, threads, NULL, NULL, NULL, NULL);
+}
+
+void atrbvh_i_hierarchy_refit(const uint64_t *sorted_keys, atrbvh_i_tree *t,
+                              const uint32_t *order,
+                              const atrbvh_cost_params *p, int threads,
+                              uint32_t *size)
+{
+    hierarchy(sorted_keys, t, threads, order, NULL, p, size);
 }
 
 /* The stage: the tree's arrays (kept for the later stages), the topology,
- * and each leaf's original primitive. */
+ * each leaf's original primitive, and the refit (the refit stage then has
+ * nothing to compute): boxes and the collapse sizes for an LBVH (which
+ * keeps no costs, refit.c), boxes and costs for a tree to optimise. */
 atrbvh_status atrbvh_i_cpu_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
                                      atrbvh_error *error)
 {
     atrbvh_i_cpu_run *c = run->state;
     atrbvh_i_tree *t = &c->tree;
     const uint32_t n = run->n;
+    const int lbvh = run->cfg->method == ATRBVH_METHOD_LBVH;
     atrbvh_status st;
     (void)dev;
     st = atrbvh_i_cpu_tree_arrays(c, n, error);
+    if (st == ATRBVH_OK) /* (the primitive boxes are in its first n) */
+        st = atrbvh_i_cpu_tree_values(c, !lbvh, error);
+    if (st == ATRBVH_OK && lbvh)
+        st = atrbvh_i_cpu_tree_sizes(c, error);
     if (st != ATRBVH_OK)
         return st;
-    hierarchy(c->keys, t, run->cfg->threads, c->order, c->ids);
+    hierarchy(c->keys, t, run->cfg->threads, c->order, c->ids,
+              &run->cfg->cost, lbvh ? c->size : NULL);
+    c->refitted = 1;
     /* The keys and the sort's scratch are read no more. */
     atrbvh_i_scratch_done(c->scratch, CPU_KEYS);
     atrbvh_i_scratch_done(c->scratch, CPU_TMP_KEYS);

@@ -16,13 +16,12 @@
  * With several threads the counter is a GCC/Clang atomic fetch-and-add
  * (acquire-release: the first child's box, count and cost are visible to
  * the second arrival, which reads them); with one thread it is a plain
- * increment.  On the hierarchy's own tree (cpu.h's ranges) the counts are
- * already there and the arrival is their top bit (arrive()): nothing is
- * zeroed, and only the nodes whose leaves straddle a thread's block
- * boundary - about the depth of the tree per boundary - take the atomic;
- * the others are reached by one thread only.  Dragon, one thread,
- * callgrind: refit 202 -> 193 instructions per triangle (no zeroing
- * pass); at two threads about 1.7 million locked instructions fewer.
+ * increment.
+ *
+ * A tree from the hierarchy stage is refitted there, in the stack pass
+ * that builds it (hierarchy.c: its post-order needs no counter); this
+ * stage then has nothing to compute, and the climb below refits a
+ * caller's tree (set_tree) and serves the tests as the reference.
  *
  * An LBVH's stage also takes the collapse stage's work (climb_sizes): its
  * sizes and costs in the same climb, so the tree is not walked again.
@@ -47,7 +46,7 @@
 #define PREFETCH 16
 
 /* The climb's functions are specialised for each of refit()'s cases
- * (atomic, ranges, gather, size: constants at each call): without the
+ * (atomic, gather, size: constants at each call): without the
  * attribute GCC keeps one copy testing them at every step (callgrind,
  * dragon, one thread: about 16 more instructions per triangle). */
 #if defined(__GNUC__) || defined(__clang__)
@@ -57,62 +56,18 @@
 #endif
 
 /* A node's arrival: returns whether this is the second child to arrive
- * (the node is then computed by the caller).
- *
- * Counters zeroed before the climbs (ranges 0): the count is incremented.
- * The hierarchy's tree (ranges 1, cpu.h): every internal node's count is
- * already its number of leaves (the hierarchy writes it, < 2^30), and the
- * arrival is its top bit, ARRIVED, so nothing is zeroed first; the node's
- * leaves are then the positions [lo_up, hi_up] the climb tracks (*a, *b
- * are the arriving child's, and become the node's), and a node whose
- * positions all lie in this thread's block [lo, hi) is reached by no other
- * thread: its arrival is a plain read and write, not an atomic one.  Only
- * the few nodes straddling a block boundary (those above it on the path
- * to the root) take the atomic (acquire-release: the first child's
- * values are visible to the second arrival, and ranges nest, so every
- * ancestor of such a node straddles too). */
-#define ARRIVED 0x80000000u
-static ALWAYS_INLINE int arrive(uint32_t *count, uint32_t up,
-                                uint32_t node, const uint32_t *left,
-                                int atomic, int ranges, int64_t lo,
-                                int64_t hi, int64_t *a, int64_t *b)
+ * (the node is then computed by the caller); the counters were zeroed
+ * before the climbs. */
+static ALWAYS_INLINE int arrive(uint32_t *count, uint32_t up, int atomic)
 {
     uint32_t before;
-    if (ranges && atomic) {
-        uint32_t c;
-#if defined(__GNUC__) || defined(__clang__)
-        /* (the low bits: written by the hierarchy, rewritten with the
-         * same value after both arrivals) */
-        c = __atomic_load_n(&count[up], __ATOMIC_RELAXED) & ~ARRIVED;
-#else
-        c = count[up] & ~ARRIVED;
-#endif
-        if (left[up] == node)
-            *b = *a + (int64_t)c - 1;
-        else
-            *a = *b - (int64_t)c + 1;
-#if defined(__GNUC__) || defined(__clang__)
-        if (*a < lo || *b >= hi)
-            before = __atomic_fetch_add(&count[up], ARRIVED, __ATOMIC_ACQ_REL);
-        else
-#endif
-        {
-            before = count[up];
-            count[up] = before | ARRIVED;
-        }
-        return (before & ARRIVED) != 0u;
-    }
-    if (ranges) { /* one thread: every node is its own */
-        before = count[up];
-        count[up] = before | ARRIVED;
-        return (before & ARRIVED) != 0u;
-    }
 #if defined(__GNUC__) || defined(__clang__)
     if (atomic)
         before = __atomic_fetch_add(&count[up], 1u, __ATOMIC_ACQ_REL);
     else
 #endif
         before = count[up]++;
+    (void)atomic;
     return before != 0u;
 }
 
@@ -121,15 +76,14 @@ static ALWAYS_INLINE int arrive(uint32_t *count, uint32_t up,
  * NULL) boxes and counts only. */
 static ALWAYS_INLINE void climb(atrbvh_i_tree *t,
                                 const atrbvh_cost_params *p, int64_t i,
-                                int atomic, int ranges, int64_t lo, int64_t hi)
+                                int atomic)
 {
     uint32_t *const count = t->count;
     const uint32_t *const parent = t->parent;
     uint32_t node = (uint32_t)(t->n - 1 + i), up;
-    int64_t a = i, b = i;
     while ((up = parent[node]) != ATRBVH_U32_MAX) {
         uint32_t l, r;
-        if (!arrive(count, up, node, t->left, atomic, ranges, lo, hi, &a, &b))
+        if (!arrive(count, up, atomic))
             return; /* first to arrive: the sibling's climb goes on */
         l = t->left[up];
         r = t->right[up];
@@ -155,13 +109,11 @@ static ALWAYS_INLINE void climb(atrbvh_i_tree *t,
 static ALWAYS_INLINE void climb_sizes(atrbvh_i_tree *t,
                                       const atrbvh_cost_params *p,
                                       uint32_t *size, int64_t i, double cost,
-                                      int atomic, int ranges, int64_t lo,
-                                      int64_t hi)
+                                      int atomic)
 {
     uint32_t *const count = t->count;
     const uint32_t *const parent = t->parent;
     uint32_t node = (uint32_t)(t->n - 1 + i), up;
-    int64_t a = i, b = i;
     while ((up = parent[node]) != ATRBVH_U32_MAX) {
         uint32_t l, r, cnt;
         const int right = t->left[up] != node;
@@ -169,7 +121,7 @@ static ALWAYS_INLINE void climb_sizes(atrbvh_i_tree *t,
         atrbvh_box bx;
         unsigned char *pending = (unsigned char *)(void *)&t->box[up];
         memcpy(pending + (right ? sizeof cost : 0), &cost, sizeof cost);
-        if (!arrive(count, up, node, t->left, atomic, ranges, lo, hi, &a, &b))
+        if (!arrive(count, up, atomic))
             return; /* first to arrive: the sibling's climb goes on */
         memcpy(&other, pending + (right ? 0 : sizeof other), sizeof other);
         l = t->left[up];
@@ -191,8 +143,8 @@ static ALWAYS_INLINE void refit_block(atrbvh_i_tree *t,
                                       const atrbvh_box *prim_boxes,
                                       const uint32_t *order,
                                       const atrbvh_cost_params *p, int64_t lo,
-                                      int64_t hi, int atomic, int ranges,
-                                      int gather, uint32_t *size)
+                                      int64_t hi, int atomic, int gather,
+                                      uint32_t *size)
 {
     const int64_t n = t->n;
     int64_t i;
@@ -213,13 +165,12 @@ static ALWAYS_INLINE void refit_block(atrbvh_i_tree *t,
         t->count[leaf] = 1;
         if (size) {
             size[leaf] = 1u | ATRBVH_SIZE_LEAF;
-            climb_sizes(t, p, size, i, atrbvh_refit_leaf_cost(p, b), atomic,
-                        ranges, lo, hi);
+            climb_sizes(t, p, size, i, atrbvh_refit_leaf_cost(p, b), atomic);
             continue;
         }
         if (t->cost)
             t->cost[leaf] = atrbvh_refit_leaf_cost(p, b);
-        climb(t, p, i, atomic, ranges, lo, hi);
+        climb(t, p, i, atomic);
     }
 }
 
@@ -249,10 +200,9 @@ static void gather_in_place(atrbvh_i_tree *t, const uint32_t *order,
     }
 }
 
-/* ranges: the hierarchy's tree, its counts already there (arrive()). */
 static void refit(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
                   const uint32_t *order, const atrbvh_cost_params *p,
-                  int threads, uint32_t *size, int ranges)
+                  int threads, uint32_t *size)
 {
     const int64_t n = t->n;
     /* prim_boxes in the node box array: gather first, in place. */
@@ -265,39 +215,26 @@ static void refit(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
     if (!gather)
         gather_in_place(t, order, threads);
     if (threads == 1) {
-        if (!ranges)
-            for (i = 0; i + 1 < n; i++)
-                t->count[i] = 0;
-        /* (two calls: each inlined for its own case) */
-        if (ranges)
-            refit_block(t, prim_boxes, order, p, 0, n, 0, 1, gather, size);
-        else
-            refit_block(t, prim_boxes, order, p, 0, n, 0, 0, gather, size);
+        for (i = 0; i + 1 < n; i++)
+            t->count[i] = 0;
+        refit_block(t, prim_boxes, order, p, 0, n, 0, gather, size);
         return;
     }
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads)
     {
         int b;
-        if (!ranges) {
 #pragma omp for schedule(static)
-            for (i = 0; i < n - 1; i++)
-                t->count[i] = 0;
-            /* (the implied barrier: every counter is zero before a
-             * climb) */
-        }
+        for (i = 0; i < n - 1; i++)
+            t->count[i] = 0;
+        /* (the implied barrier: every counter is zero before a climb) */
 #pragma omp for schedule(static, 1)
         for (b = 0; b < threads; b++) {
             const int64_t lo = (int64_t)((uint64_t)n * (uint64_t)b /
                                          (uint64_t)threads),
                           hi = (int64_t)((uint64_t)n * (uint64_t)(b + 1) /
                                          (uint64_t)threads);
-            if (ranges)
-                refit_block(t, prim_boxes, order, p, lo, hi, 1, 1, gather,
-                            size);
-            else
-                refit_block(t, prim_boxes, order, p, lo, hi, 1, 0, gather,
-                            size);
+            refit_block(t, prim_boxes, order, p, lo, hi, 1, gather, size);
         }
     }
 #endif
@@ -307,14 +244,14 @@ void atrbvh_i_refit(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
                     const uint32_t *order, const atrbvh_cost_params *p,
                     int threads)
 {
-    refit(t, prim_boxes, order, p, threads, NULL, 0);
+    refit(t, prim_boxes, order, p, threads, NULL);
 }
 
 void atrbvh_i_refit_sizes(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
                           const uint32_t *order, const atrbvh_cost_params *p,
                           int threads, uint32_t *size)
 {
-    refit(t, prim_boxes, order, p, threads, size, 0);
+    refit(t, prim_boxes, order, p, threads, size);
 }
 
 /* The stage: boxes, counts and costs of the tree. */
@@ -332,17 +269,19 @@ atrbvh_status atrbvh_i_cpu_refit(atrbvh_device *dev, atrbvh_i_run *run,
                                   error);
     if (st != ATRBVH_OK)
         return st;
-    if (run->cfg->method == ATRBVH_METHOD_LBVH) {
+    if (c->refitted) {
+        /* the hierarchy stage's pass did it (hierarchy.c) */
+    } else if (run->cfg->method == ATRBVH_METHOD_LBVH) {
         /* The LBVH's collapse sizes in the same climb, into the cost
          * slot (the keys' memory; collapse.c then has nothing to do). */
         st = atrbvh_i_cpu_tree_sizes(c, error);
         if (st != ATRBVH_OK)
             return st;
         refit(&c->tree, c->boxes, c->order, &run->cfg->cost,
-              run->cfg->threads, c->size, c->ranges);
+              run->cfg->threads, c->size);
     } else {
         refit(&c->tree, c->boxes, c->order, &run->cfg->cost,
-              run->cfg->threads, NULL, c->ranges);
+              run->cfg->threads, NULL);
     }
     /* The leaves hold the primitive boxes now; the order array lives on
      * as leaf_prim unless there are kept ids. */

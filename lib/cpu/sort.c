@@ -66,6 +66,65 @@ static void insertion_sort(uint64_t *k, uint32_t *v, uint32_t n)
     }
 }
 
+/* Sub-buckets of up to this many items: small_sort. */
+#define SMALL_MAX 4u
+
+/* Stable compare and exchange of two pairs in registers: a conditional
+ * move, not a branch (which no predictor does better than a coin toss
+ * on). */
+static inline void exchange(uint64_t *a, uint64_t *b, uint32_t *va,
+                            uint32_t *vb)
+{
+    const uint64_t x = *a, y = *b;
+    const uint32_t vx = *va, vy = *vb;
+    const int swap = x > y;
+    *a = swap ? y : x;
+    *b = swap ? x : y;
+    *va = swap ? vy : vx;
+    *vb = swap ? vx : vy;
+}
+
+/* (k, v)[0..n), 2 <= n <= SMALL_MAX, sorted stably into (dk, dv): a
+ * bubble sort's network of neighbours' exchanges (stable: equal keys are
+ * never exchanged; n = 4 is the odd-even transposition network), in
+ * registers, instead of a call of sort_bucket and its insertion sort,
+ * whose loop exits at a random place (sub-buckets hold about two items:
+ * most are 1, 2 or 3).  One thread, fastest of 100 builds: the sort stage
+ * 15.6 -> 15.1 ns per triangle on the bunny, 16.2 -> 15.8 on sibenik. */
+static void small_sort(const uint64_t *k, const uint32_t *v, uint64_t *dk,
+                       uint32_t *dv, uint32_t n)
+{
+    uint64_t k0 = k[0], k1 = k[1], k2 = 0, k3 = 0;
+    uint32_t v0 = v[0], v1 = v[1], v2 = 0, v3 = 0;
+    if (n > 2) {
+        k2 = k[2];
+        v2 = v[2];
+    }
+    if (n > 3) {
+        k3 = k[3];
+        v3 = v[3];
+        exchange(&k2, &k3, &v2, &v3);
+    }
+    exchange(&k0, &k1, &v0, &v1);
+    if (n > 2) {
+        exchange(&k1, &k2, &v1, &v2);
+        if (n > 3) {
+            exchange(&k2, &k3, &v2, &v3);
+            dk[3] = k3;
+            dv[3] = v3;
+        }
+        exchange(&k0, &k1, &v0, &v1);
+        if (n > 3)
+            exchange(&k1, &k2, &v1, &v2);
+        dk[2] = k2;
+        dv[2] = v2;
+    }
+    dk[0] = k0;
+    dk[1] = k1;
+    dv[0] = v0;
+    dv[1] = v1;
+}
+
 /* Sorts the bucket (k, v)[0..n) stably, with (tk, tv) as scratch of the
  * same length; the result ends in (tk, tv) when `to_tmp`, else in (k, v).
  *
@@ -140,6 +199,9 @@ static void sort_bucket(uint64_t *k, uint32_t *v, uint64_t *tk, uint32_t *tv,
                 k[start] = tk[start];
                 v[start] = tv[start];
             }
+        } else if (len > 1 && len <= SMALL_MAX) {
+            small_sort(tk + start, tv + start, (to_tmp ? tk : k) + start,
+                       (to_tmp ? tv : v) + start, len);
         } else if (len) {
             sort_bucket(tk + start, tv + start, k + start, v + start, len,
                         !to_tmp, shift);
