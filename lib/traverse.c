@@ -825,8 +825,10 @@ static int wide_run_any(const atrbvh_trav_scene *s, const wide_node *w,
  * of magnitude within [2^-125, 2^125], the origin within +-2^126; no NaN
  * or infinity passes these comparisons) gets the same fields from the
  * same operations (the shear by atrbvh_trav_setup_shear), without the
- * loops and the finiteness tests; every other ray goes through
- * atrbvh_trav_setup. */
+ * loops and the finiteness tests, and without near_at and far_at, which
+ * only the double node test reads (such a ray has use_float 1, and the
+ * wide copy is used only for scenes that allow the float test: cpu_batch);
+ * every other ray goes through atrbvh_trav_setup. */
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((always_inline))
 #endif
@@ -863,12 +865,6 @@ static inline int wide_setup(const atrbvh_ray *ray, atrbvh_trav_ray *r)
     r->sign[0] = id0 < 0.0;
     r->sign[1] = id1 < 0.0;
     r->sign[2] = id2 < 0.0;
-    r->near_at[0] = r->sign[0] ? 3 : 0;
-    r->near_at[1] = r->sign[1] ? 4 : 1;
-    r->near_at[2] = r->sign[2] ? 5 : 2;
-    r->far_at[0] = r->sign[0] ? 0 : 3;
-    r->far_at[1] = r->sign[1] ? 1 : 4;
-    r->far_at[2] = r->sign[2] ? 2 : 5;
     r->tmin = ray->tmin;
     r->tmax = ray->tmax;
     atrbvh_trav_setup_shear(d, ad, r);
@@ -890,8 +886,6 @@ static void wide_closest(const atrbvh_trav_scene *s, const void *w,
         hit->primitive = ATRBVH_NO_HIT;
         if (!wide_setup(ray, &r))
             return;
-        if (!s->float_slabs)
-            r.use_float = 0;
         if (!(r.use_float ? wide_run_closest(s, (const wide_node *)w,
                                              (const wide_tris *)tris, &r,
                                              &best)
@@ -918,8 +912,6 @@ static int wide_any(const atrbvh_trav_scene *s, const void *w,
     if (w) {
         if (!wide_setup(ray, &r))
             return 0;
-        if (!s->float_slabs)
-            r.use_float = 0;
         return r.use_float ? wide_run_any(s, (const wide_node *)w,
                                           (const wide_tris *)tris, &r, &best)
                            : atrbvh_trav_run(s, &r, 1, &best);
