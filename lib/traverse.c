@@ -805,14 +805,14 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
     }
 }
 
-static int wide_run_closest(const atrbvh_trav_scene *s, const wide_node *w,
+ATRBVH_TRAV_HOT int wide_run_closest(const atrbvh_trav_scene *s, const wide_node *w,
                             const wide_tris *tris, const atrbvh_trav_ray *r,
                             atrbvh_trav_best *best)
 {
     return wide_run(s, w, tris, r, 0, best);
 }
 
-static int wide_run_any(const atrbvh_trav_scene *s, const wide_node *w,
+ATRBVH_TRAV_HOT int wide_run_any(const atrbvh_trav_scene *s, const wide_node *w,
                         const wide_tris *tris, const atrbvh_trav_ray *r,
                         atrbvh_trav_best *best)
 {
