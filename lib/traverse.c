@@ -729,27 +729,28 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
             hi = _mm_min_ps(zf, hi);
             hi = _mm_add_ps(_mm_mul_ps(hi, widen), slack);
             m = _mm_movemask_ps(_mm_cmple_ps(lo, hi));
-            if (m) {
+            if (any) {
+                /* any hit: whether one exists does not depend on the
+                 * order, so no sorting and no branch on the lanes hit
+                 * (those branches were most of the mispredicted ones):
+                 * every child is stored, the hit ones kept (lane 3 first,
+                 * so the lowest hit lane is on top), and the top popped
+                 * below.  The stores reach sp + 3 < WIDE_STACK. */
+                stack_node[sp] = n->child[3];
+                sp += (unsigned)m >> 3;
+                stack_node[sp] = n->child[2];
+                sp += (unsigned)m >> 2 & 1u;
+                stack_node[sp] = n->child[1];
+                sp += (unsigned)m >> 1 & 1u;
+                stack_node[sp] = n->child[0];
+                sp += (unsigned)m & 1u;
+            } else if (m) {
                 float t4[4];
                 int64_t c[4];
                 float ct[4];
                 int cnt = 0, lane, a, b2;
                 if (!(m & (m - 1))) {
                     cur = n->child[wide_first_lane[m]];
-                    continue;
-                }
-                if (any) {
-                    /* any hit: whether one exists does not depend on the
-                     * order, so no sorting: the lowest lane visited, the
-                     * others pushed (no distances: the limit never
-                     * changes before the query ends) */
-                    int l0 = wide_first_lane[m];
-                    m &= m - 1;
-                    do {
-                        stack_node[sp++] = n->child[wide_first_lane[m]];
-                        m &= m - 1;
-                    } while (m);
-                    cur = n->child[l0];
                     continue;
                 }
                 _mm_storeu_ps(t4, lo);
