@@ -540,11 +540,9 @@ static inline __m128d wide_load2(const float *f)
 
 /* atrbvh_trav_leaf for the references [first, first + count) of a tree
  * over triangles, from block c: the same hits, the same choice among them
- * (see above). */
-#if defined(__GNUC__) || defined(__clang__)
-__attribute__((noinline)) /* kept out of the node loop's registers */
-#endif
-static int wide_leaf_tris(const atrbvh_trav_scene *s,
+ * (see above).  Made into one function per query kind, any constant
+ * (wide_leaf_closest, wide_leaf_any). */
+ATRBVH_TRAV_HOT int wide_leaf_tris(const atrbvh_trav_scene *s,
                                    const float *c, uint32_t first,
                                    uint32_t count, const atrbvh_trav_ray *r,
                                    const wide_tri_ray *q, int any,
@@ -650,6 +648,33 @@ static int wide_leaf_tris(const atrbvh_trav_scene *s,
     return 0;
 }
 
+/* The leaf tests stay out of line, out of the node loop's registers. */
+#if defined(__GNUC__) || defined(__clang__)
+#define WIDE_NOINLINE __attribute__((noinline))
+#else
+#define WIDE_NOINLINE
+#endif
+
+static WIDE_NOINLINE int wide_leaf_closest(const atrbvh_trav_scene *s,
+                                           const float *c, uint32_t first,
+                                           uint32_t count,
+                                           const atrbvh_trav_ray *r,
+                                           const wide_tri_ray *q,
+                                           atrbvh_trav_best *best)
+{
+    return wide_leaf_tris(s, c, first, count, r, q, 0, best);
+}
+
+static WIDE_NOINLINE int wide_leaf_any(const atrbvh_trav_scene *s,
+                                       const float *c, uint32_t first,
+                                       uint32_t count,
+                                       const atrbvh_trav_ray *r,
+                                       const wide_tri_ray *q,
+                                       atrbvh_trav_best *best)
+{
+    return wide_leaf_tris(s, c, first, count, r, q, 1, best);
+}
+
 /* atrbvh_trav_run over the wide copy, for a ray with use_float; inlined
  * into wide_run_closest and wide_run_any with `any` constant. */
 ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
@@ -690,8 +715,10 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
             uint32_t first = (uint32_t)~cur, count = (uint32_t)(~cur >> 32);
             int done;
             if (tris) {
-                done = wide_leaf_tris(s, tris->c, first, count, r, &q, any,
-                                      best);
+                done = any ? wide_leaf_any(s, tris->c, first, count, r, &q,
+                                           best)
+                           : wide_leaf_closest(s, tris->c, first, count, r,
+                                               &q, best);
             } else {
                 /* the binary leaf's (index, count): all atrbvh_trav_leaf
                  * reads of it */
@@ -702,7 +729,7 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
             }
             if (done)
                 return 1;
-            if (best->tlim != thi) {
+            if (!any && best->tlim != thi) { /* any: never changes */
                 thi = best->tlim;
                 thi4 = _mm_set1_ps(thi);
             }
