@@ -684,6 +684,7 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
 {
     wide_tri_ray q;
     int64_t stack_node[WIDE_STACK];
+    stack_node[0] = 0; /* read by the any-hit step on an empty stack */
     float stack_t[WIDE_STACK];
     unsigned sp = 0;
     int64_t cur = 0;
@@ -758,19 +759,32 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
             m = _mm_movemask_ps(_mm_cmple_ps(lo, hi));
             if (any) {
                 /* any hit: whether one exists does not depend on the
-                 * order, so no sorting and no branch on the lanes hit
-                 * (those branches were most of the mispredicted ones):
-                 * every child is stored, the hit ones kept (lane 3 first,
-                 * so the lowest hit lane is on top), and the top popped
-                 * below.  The stores reach sp + 3 < WIDE_STACK. */
-                stack_node[sp] = n->child[3];
-                sp += (unsigned)m >> 3;
-                stack_node[sp] = n->child[2];
-                sp += (unsigned)m >> 2 & 1u;
-                stack_node[sp] = n->child[1];
-                sp += (unsigned)m >> 1 & 1u;
-                stack_node[sp] = n->child[0];
-                sp += (unsigned)m & 1u;
+                 * order, so no sorting, and no branch on the lanes hit
+                 * (those were most of the mispredicted branches): the
+                 * next node is the lowest hit lane's child, else the
+                 * stack's top (by selects), and the other hit children
+                 * are pushed, highest lane first.  This stack holds its
+                 * entries at 1..sp (slot 0, never an entry, is read when
+                 * it is empty); the stores reach sp + 3 < WIDE_STACK. */
+                unsigned mu = (unsigned)m, rest = mu & (mu - 1u), k;
+                int64_t c0 = n->child[0], c1 = n->child[1];
+                int64_t c2 = n->child[2], c3 = n->child[3];
+                int64_t nxt = stack_node[sp];
+                if (!(mu | sp))
+                    return 0;
+                nxt = mu & 8u ? c3 : nxt;
+                nxt = mu & 4u ? c2 : nxt;
+                nxt = mu & 2u ? c1 : nxt;
+                nxt = mu & 1u ? c0 : nxt;
+                stack_node[sp + 1u] = c3;
+                k = sp + (rest >> 3);
+                stack_node[k + 1u] = c2;
+                k += rest >> 2 & 1u;
+                stack_node[k + 1u] = c1;
+                k += rest >> 1 & 1u;
+                sp = k - (mu == 0u);
+                cur = nxt;
+                continue;
             } else if (m) {
                 float t4[4];
                 int64_t c[4];
@@ -823,11 +837,17 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
                 continue;
             }
         }
-        if (!any)
-            while (sp > 0u && !(stack_t[sp - 1u] <= thi))
-                sp--;
+        if (any) { /* entries at 1..sp: see above */
+            if (sp == 0u)
+                return 0;
+            cur = stack_node[sp];
+            sp--;
+            continue;
+        }
+        while (sp > 0u && !(stack_t[sp - 1u] <= thi))
+            sp--;
         if (sp == 0u)
-            return any ? 0 : best->prim != ATRBVH_NO_HIT;
+            return best->prim != ATRBVH_NO_HIT;
         sp--;
         cur = stack_node[sp];
     }
