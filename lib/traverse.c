@@ -676,7 +676,9 @@ static WIDE_NOINLINE int wide_leaf_any(const atrbvh_trav_scene *s,
 }
 
 /* atrbvh_trav_run over the wide copy, for a ray with use_float; inlined
- * into wide_run_closest and wide_run_any with `any` constant. */
+ * into wide_run_closest and wide_run_any with `any` constant, and those
+ * into wide_closest and wide_any (the ray's fields reach it without a
+ * call). */
 ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
                              const wide_tris *tris,
                              const atrbvh_trav_ray *r, int any,
@@ -684,7 +686,6 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
 {
     wide_tri_ray q;
     int64_t stack_node[WIDE_STACK];
-    stack_node[0] = 0; /* read by the any-hit step on an empty stack */
     float stack_t[WIDE_STACK];
     unsigned sp = 0;
     int64_t cur = 0;
@@ -708,6 +709,7 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
     __asm__("" : "+x"(widen), "+x"(slack));
 #endif
     wide_tri_ray_make(r, &q); /* used when tris */
+    stack_node[0] = 0; /* read by the any-hit step on an empty stack */
     thi = best->tlim;
     tlo4 = _mm_set1_ps(tlo);
     thi4 = _mm_set1_ps(thi);
@@ -853,16 +855,19 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
     }
 }
 
-ATRBVH_TRAV_HOT int wide_run_closest(const atrbvh_trav_scene *s, const wide_node *w,
-                            const wide_tris *tris, const atrbvh_trav_ray *r,
-                            atrbvh_trav_best *best)
+ATRBVH_TRAV_HOT int wide_run_closest(const atrbvh_trav_scene *s,
+                                     const wide_node *w,
+                                     const wide_tris *tris,
+                                     const atrbvh_trav_ray *r,
+                                     atrbvh_trav_best *best)
 {
     return wide_run(s, w, tris, r, 0, best);
 }
 
-ATRBVH_TRAV_HOT int wide_run_any(const atrbvh_trav_scene *s, const wide_node *w,
-                        const wide_tris *tris, const atrbvh_trav_ray *r,
-                        atrbvh_trav_best *best)
+ATRBVH_TRAV_HOT int wide_run_any(const atrbvh_trav_scene *s,
+                                 const wide_node *w, const wide_tris *tris,
+                                 const atrbvh_trav_ray *r,
+                                 atrbvh_trav_best *best)
 {
     return wide_run(s, w, tris, r, 1, best);
 }
