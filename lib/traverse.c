@@ -540,11 +540,9 @@ static inline __m128d wide_load2(const float *f)
 
 /* atrbvh_trav_leaf for the references [first, first + count) of a tree
  * over triangles, from block c: the same hits, the same choice among them
- * (see above). */
-#if defined(__GNUC__) || defined(__clang__)
-__attribute__((noinline)) /* kept out of the node loop's registers */
-#endif
-static int wide_leaf_tris(const atrbvh_trav_scene *s,
+ * (see above).  Made into one function per query kind, any constant
+ * (wide_leaf_closest, wide_leaf_any). */
+ATRBVH_TRAV_HOT int wide_leaf_tris(const atrbvh_trav_scene *s,
                                    const float *c, uint32_t first,
                                    uint32_t count, const atrbvh_trav_ray *r,
                                    const wide_tri_ray *q, int any,
@@ -650,8 +648,37 @@ static int wide_leaf_tris(const atrbvh_trav_scene *s,
     return 0;
 }
 
+/* The leaf tests stay out of line, out of the node loop's registers. */
+#if defined(__GNUC__) || defined(__clang__)
+#define WIDE_NOINLINE __attribute__((noinline))
+#else
+#define WIDE_NOINLINE
+#endif
+
+static WIDE_NOINLINE int wide_leaf_closest(const atrbvh_trav_scene *s,
+                                           const float *c, uint32_t first,
+                                           uint32_t count,
+                                           const atrbvh_trav_ray *r,
+                                           const wide_tri_ray *q,
+                                           atrbvh_trav_best *best)
+{
+    return wide_leaf_tris(s, c, first, count, r, q, 0, best);
+}
+
+static WIDE_NOINLINE int wide_leaf_any(const atrbvh_trav_scene *s,
+                                       const float *c, uint32_t first,
+                                       uint32_t count,
+                                       const atrbvh_trav_ray *r,
+                                       const wide_tri_ray *q,
+                                       atrbvh_trav_best *best)
+{
+    return wide_leaf_tris(s, c, first, count, r, q, 1, best);
+}
+
 /* atrbvh_trav_run over the wide copy, for a ray with use_float; inlined
- * into wide_run_closest and wide_run_any with `any` constant. */
+ * into wide_run_closest and wide_run_any with `any` constant, and those
+ * into wide_closest and wide_any (the ray's fields reach it without a
+ * call). */
 ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
                              const wide_tris *tris,
                              const atrbvh_trav_ray *r, int any,
@@ -682,6 +709,7 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
     __asm__("" : "+x"(widen), "+x"(slack));
 #endif
     wide_tri_ray_make(r, &q); /* used when tris */
+    stack_node[0] = 0; /* read by the any-hit step on an empty stack */
     thi = best->tlim;
     tlo4 = _mm_set1_ps(tlo);
     thi4 = _mm_set1_ps(thi);
@@ -690,8 +718,10 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
             uint32_t first = (uint32_t)~cur, count = (uint32_t)(~cur >> 32);
             int done;
             if (tris) {
-                done = wide_leaf_tris(s, tris->c, first, count, r, &q, any,
-                                      best);
+                done = any ? wide_leaf_any(s, tris->c, first, count, r, &q,
+                                           best)
+                           : wide_leaf_closest(s, tris->c, first, count, r,
+                                               &q, best);
             } else {
                 /* the binary leaf's (index, count): all atrbvh_trav_leaf
                  * reads of it */
@@ -702,7 +732,7 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
             }
             if (done)
                 return 1;
-            if (best->tlim != thi) {
+            if (!any && best->tlim != thi) { /* any: never changes */
                 thi = best->tlim;
                 thi4 = _mm_set1_ps(thi);
             }
@@ -729,27 +759,41 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
             hi = _mm_min_ps(zf, hi);
             hi = _mm_add_ps(_mm_mul_ps(hi, widen), slack);
             m = _mm_movemask_ps(_mm_cmple_ps(lo, hi));
-            if (m) {
+            if (any) {
+                /* any hit: whether one exists does not depend on the
+                 * order, so no sorting, and no branch on the lanes hit
+                 * (those were most of the mispredicted branches): the
+                 * next node is the lowest hit lane's child, else the
+                 * stack's top (by selects), and the other hit children
+                 * are pushed, highest lane first.  This stack holds its
+                 * entries at 1..sp (slot 0, never an entry, is read when
+                 * it is empty); the stores reach sp + 3 < WIDE_STACK. */
+                unsigned mu = (unsigned)m, rest = mu & (mu - 1u), k;
+                int64_t c0 = n->child[0], c1 = n->child[1];
+                int64_t c2 = n->child[2], c3 = n->child[3];
+                int64_t nxt = stack_node[sp];
+                if (!(mu | sp))
+                    return 0;
+                nxt = mu & 8u ? c3 : nxt;
+                nxt = mu & 4u ? c2 : nxt;
+                nxt = mu & 2u ? c1 : nxt;
+                nxt = mu & 1u ? c0 : nxt;
+                stack_node[sp + 1u] = c3;
+                k = sp + (rest >> 3);
+                stack_node[k + 1u] = c2;
+                k += rest >> 2 & 1u;
+                stack_node[k + 1u] = c1;
+                k += rest >> 1 & 1u;
+                sp = k - (mu == 0u);
+                cur = nxt;
+                continue;
+            } else if (m) {
                 float t4[4];
                 int64_t c[4];
                 float ct[4];
                 int cnt = 0, lane, a, b2;
                 if (!(m & (m - 1))) {
                     cur = n->child[wide_first_lane[m]];
-                    continue;
-                }
-                if (any) {
-                    /* any hit: whether one exists does not depend on the
-                     * order, so no sorting: the lowest lane visited, the
-                     * others pushed (no distances: the limit never
-                     * changes before the query ends) */
-                    int l0 = wide_first_lane[m];
-                    m &= m - 1;
-                    do {
-                        stack_node[sp++] = n->child[wide_first_lane[m]];
-                        m &= m - 1;
-                    } while (m);
-                    cur = n->child[l0];
                     continue;
                 }
                 _mm_storeu_ps(t4, lo);
@@ -795,26 +839,35 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
                 continue;
             }
         }
-        if (!any)
-            while (sp > 0u && !(stack_t[sp - 1u] <= thi))
-                sp--;
+        if (any) { /* entries at 1..sp: see above */
+            if (sp == 0u)
+                return 0;
+            cur = stack_node[sp];
+            sp--;
+            continue;
+        }
+        while (sp > 0u && !(stack_t[sp - 1u] <= thi))
+            sp--;
         if (sp == 0u)
-            return any ? 0 : best->prim != ATRBVH_NO_HIT;
+            return best->prim != ATRBVH_NO_HIT;
         sp--;
         cur = stack_node[sp];
     }
 }
 
-static int wide_run_closest(const atrbvh_trav_scene *s, const wide_node *w,
-                            const wide_tris *tris, const atrbvh_trav_ray *r,
-                            atrbvh_trav_best *best)
+ATRBVH_TRAV_HOT int wide_run_closest(const atrbvh_trav_scene *s,
+                                     const wide_node *w,
+                                     const wide_tris *tris,
+                                     const atrbvh_trav_ray *r,
+                                     atrbvh_trav_best *best)
 {
     return wide_run(s, w, tris, r, 0, best);
 }
 
-static int wide_run_any(const atrbvh_trav_scene *s, const wide_node *w,
-                        const wide_tris *tris, const atrbvh_trav_ray *r,
-                        atrbvh_trav_best *best)
+ATRBVH_TRAV_HOT int wide_run_any(const atrbvh_trav_scene *s,
+                                 const wide_node *w, const wide_tris *tris,
+                                 const atrbvh_trav_ray *r,
+                                 atrbvh_trav_best *best)
 {
     return wide_run(s, w, tris, r, 1, best);
 }
@@ -825,8 +878,10 @@ static int wide_run_any(const atrbvh_trav_scene *s, const wide_node *w,
  * of magnitude within [2^-125, 2^125], the origin within +-2^126; no NaN
  * or infinity passes these comparisons) gets the same fields from the
  * same operations (the shear by atrbvh_trav_setup_shear), without the
- * loops and the finiteness tests; every other ray goes through
- * atrbvh_trav_setup. */
+ * loops and the finiteness tests, and without near_at and far_at, which
+ * only the double node test reads (such a ray has use_float 1, and the
+ * wide copy is used only for scenes that allow the float test: cpu_batch);
+ * every other ray goes through atrbvh_trav_setup. */
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((always_inline))
 #endif
@@ -863,12 +918,6 @@ static inline int wide_setup(const atrbvh_ray *ray, atrbvh_trav_ray *r)
     r->sign[0] = id0 < 0.0;
     r->sign[1] = id1 < 0.0;
     r->sign[2] = id2 < 0.0;
-    r->near_at[0] = r->sign[0] ? 3 : 0;
-    r->near_at[1] = r->sign[1] ? 4 : 1;
-    r->near_at[2] = r->sign[2] ? 5 : 2;
-    r->far_at[0] = r->sign[0] ? 0 : 3;
-    r->far_at[1] = r->sign[1] ? 1 : 4;
-    r->far_at[2] = r->sign[2] ? 2 : 5;
     r->tmin = ray->tmin;
     r->tmax = ray->tmax;
     atrbvh_trav_setup_shear(d, ad, r);
@@ -890,8 +939,6 @@ static void wide_closest(const atrbvh_trav_scene *s, const void *w,
         hit->primitive = ATRBVH_NO_HIT;
         if (!wide_setup(ray, &r))
             return;
-        if (!s->float_slabs)
-            r.use_float = 0;
         if (!(r.use_float ? wide_run_closest(s, (const wide_node *)w,
                                              (const wide_tris *)tris, &r,
                                              &best)
@@ -918,8 +965,6 @@ static int wide_any(const atrbvh_trav_scene *s, const void *w,
     if (w) {
         if (!wide_setup(ray, &r))
             return 0;
-        if (!s->float_slabs)
-            r.use_float = 0;
         return r.use_float ? wide_run_any(s, (const wide_node *)w,
                                           (const wide_tris *)tris, &r, &best)
                            : atrbvh_trav_run(s, &r, 1, &best);
