@@ -11,20 +11,20 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.77569241:43.7617542]
-set xtics (5, 10, 20)
+set xrange [3.15996103:57.8630035]
+set xtics (5, 10, 20, 50)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 3.62052011,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 9.62642286,38.740404 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 13.0172829,38.1317351 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 25.2486486,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.2001743,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 4.11757618,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 21.2155487,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 15.271007,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 7.00275997,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 13.6619992,39.3638605 left font ',8' noenhanced front
+set label 'LBVH' at 4.18161119,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 13.64787,38.740404 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.0651003,38.1317351 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 32.4028011,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 22.2047322,38.8799201 left font ',8' noenhanced front
+set label 'embree_low' at 7.28241015,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 16.5229036,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 25.7706832,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 11.3605617,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 21.2711861,39.3638605 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

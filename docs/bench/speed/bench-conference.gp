@@ -11,20 +11,20 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [14.1677003:264.24443]
+set xrange [14.107441:241.762946]
 set xtics (20, 50, 100, 200)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 18.7815248,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 80.1252384,38.1056054 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 102.989822,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 147.432954,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 64.3615205,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 27.9302319,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 66.1081738,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 100.367492,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 23.6145169,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 45.575957,36.836494 left font ',8' noenhanced front
+set label 'LBVH' at 15.5955997,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 76.7191623,38.1056054 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 98.7359723,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 137.186172,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 62.1973528,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 24.1827773,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 66.2616462,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 101.419456,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 19.6236177,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 44.9213341,36.836494 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,20 +11,20 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.42088433:39.4093655]
+set xrange [3.46954873:39.4116264]
 set xtics (5, 10, 20)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 4.73621343,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 9.09645746,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.5045803,69.7722947 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 24.2056662,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 14.761008,67.3811989 left font ',8' noenhanced front
-set label 'embree_low' at 4.32921602,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 17.3960676,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 12.4221253,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.96061847,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 14.3752894,71.690965 left font ',8' noenhanced front
+set label 'LBVH' at 4.8173068,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 8.65065851,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.0621941,69.7722947 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 24.275064,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 14.3055991,67.3811989 left font ',8' noenhanced front
+set label 'embree_low' at 4.38485459,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 12.1611105,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 17.1966934,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 6.01056863,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 13.4125973,71.690965 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
