@@ -36,6 +36,56 @@ static void brute(atrbvh_bvh *const *singles, const atrbvh_geometry *sg,
     }
 }
 
+/* The uncounted batch calls trace a 4-wide copy of the tree, and over
+ * triangles a copy of the leaves' vertices made by a batch of 1024 rays or
+ * more (lib/traverse.c): the same rays, repeated to that size, must give
+ * the single-ray calls' answers bit for bit. */
+#define BATCH_RAYS 1024
+static void check_batches(const atrbvh_bvh *b, const atrbvh_geometry *g,
+                          const atrbvh_ray *rays, const atrbvh_hit *hits,
+                          const int *occs, size_t nr)
+{
+    atrbvh_ray *br = malloc(BATCH_RAYS * sizeof *br);
+    atrbvh_hit *bh = malloc(BATCH_RAYS * sizeof *bh);
+    uint8_t *bo = malloc(BATCH_RAYS);
+    atrbvh_error e;
+    size_t j;
+    if (!br || !bh || !bo) {
+        free(br);
+        free(bh);
+        free(bo);
+        return;
+    }
+    for (j = 0; j < BATCH_RAYS; j++)
+        br[j] = rays[j % nr];
+    FUZZ_CHECK(atrbvh_intersect_batch(b, g, br, BATCH_RAYS, bh, 1, &e) ==
+                   ATRBVH_OK,
+               "intersect_batch: %s", e.text);
+    FUZZ_CHECK(atrbvh_occluded_batch(b, g, br, BATCH_RAYS, bo, 1, &e) ==
+                   ATRBVH_OK,
+               "occluded_batch: %s", e.text);
+    for (j = 0; j < BATCH_RAYS; j++) {
+        const atrbvh_hit *want = &hits[j % nr];
+        FUZZ_CHECK(bh[j].primitive == want->primitive,
+                   "batch ray %lu: primitive %u, single ray %u",
+                   (unsigned long)j, bh[j].primitive, want->primitive);
+        if (want->primitive != ATRBVH_NO_HIT)
+            FUZZ_CHECK(memcmp(&bh[j].t, &want->t, sizeof want->t) == 0 &&
+                           memcmp(&bh[j].u, &want->u, sizeof want->u) == 0 &&
+                           memcmp(&bh[j].v, &want->v, sizeof want->v) == 0,
+                       "batch ray %lu: t, u, v %a %a %a, single ray %a %a %a",
+                       (unsigned long)j, (double)bh[j].t, (double)bh[j].u,
+                       (double)bh[j].v, (double)want->t, (double)want->u,
+                       (double)want->v);
+        FUZZ_CHECK((bo[j] != 0) == (occs[j % nr] != 0),
+                   "batch ray %lu: occluded %d, single ray %d",
+                   (unsigned long)j, bo[j], occs[j % nr]);
+    }
+    free(br);
+    free(bh);
+    free(bo);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     float f[MAX_PRIMS * 9 + 3];
@@ -107,7 +157,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         /* every primitive alone, then rays between random points of the
          * input (finite ones) compared with the brute force */
         atrbvh_build_options one;
-        size_t r;
+        size_t r, nr = 0;
+        atrbvh_ray rays[8];
+        atrbvh_hit rhits[8];
+        int roccs[8];
         atrbvh_build_options_init(&one);
         one.method = ATRBVH_METHOD_LBVH;
         one.threads = 1;
@@ -153,7 +206,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                                memcmp(&h.t, &bh.t, sizeof h.t) == 0,
                            "hit %u at %g, brute force %u at %g", h.primitive,
                            (double)h.t, bh.primitive, (double)bh.t);
+            if (nr < 8) {
+                rays[nr] = ray;
+                rhits[nr] = h;
+                if (!hit)
+                    rhits[nr].primitive = ATRBVH_NO_HIT;
+                roccs[nr] = occ;
+                nr++;
+            }
         }
+        /* a quarter of the inputs (by length): the batches of 1024 rays
+         * cost about ten times the rest of an input */
+        if (nr > 0 && size % 4 == 0)
+            check_batches(b, &g, rays, rhits, roccs, nr);
         for (i = 0; i < n; i++)
             atrbvh_bvh_free(singles[i]);
     }
