@@ -90,36 +90,40 @@ void atrbvh_i_cl_buffers_release(atrbvh_cl_device *c)
     }
 }
 
-atrbvh_status atrbvh_i_cl_upload(atrbvh_cl_device *c, int slot,
-                                 const void *data, size_t bytes,
-                                 const char *what, atrbvh_error *error)
+/* One write into slot's buffer: blocking (everything queued before it is
+ * then done too) or queued (the caller's array must stay untouched until
+ * the build's end waits). */
+static atrbvh_status upload(atrbvh_cl_device *c, int slot, const void *data,
+                            size_t bytes, cl_bool blocking, const char *what,
+                            atrbvh_error *error)
 {
     cl_int err;
     if (bytes == 0)
         return ATRBVH_OK;
     c->n_writes++;
-    err = clEnqueueWriteBuffer(c->queue, c->buf[home_of(slot)], CL_TRUE, 0, bytes, data,
-                               0, NULL, NULL);
+    if (!blocking)
+        c->pending = 1;
+    err = clEnqueueWriteBuffer(c->queue, c->buf[home_of(slot)], blocking, 0,
+                               bytes, data, 0, NULL, NULL);
     if (err != CL_SUCCESS)
         return atrbvh_i_cl_error(error, err, "clEnqueueWriteBuffer", what);
-    c->pending = 0; /* blocking: everything before it is done too */
+    if (blocking)
+        c->pending = 0;
     return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cl_upload(atrbvh_cl_device *c, int slot,
+                                 const void *data, size_t bytes,
+                                 const char *what, atrbvh_error *error)
+{
+    return upload(c, slot, data, bytes, CL_TRUE, what, error);
 }
 
 atrbvh_status atrbvh_i_cl_upload_queued(atrbvh_cl_device *c, int slot,
                                         const void *data, size_t bytes,
                                         const char *what, atrbvh_error *error)
 {
-    cl_int err;
-    if (bytes == 0)
-        return ATRBVH_OK;
-    c->n_writes++;
-    c->pending = 1;
-    err = clEnqueueWriteBuffer(c->queue, c->buf[home_of(slot)], CL_FALSE, 0,
-                               bytes, data, 0, NULL, NULL);
-    if (err != CL_SUCCESS)
-        return atrbvh_i_cl_error(error, err, "clEnqueueWriteBuffer", what);
-    return ATRBVH_OK;
+    return upload(c, slot, data, bytes, CL_FALSE, what, error);
 }
 
 atrbvh_status atrbvh_i_cl_sync(atrbvh_cl_device *c, atrbvh_error *error)
