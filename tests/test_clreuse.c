@@ -74,11 +74,13 @@ END_TEST
  * change nothing are skipped, the tree still the CPU's; one round skips
  * none; ATRBVH above 32 leaves keeps no marks; a second build on the
  * same handle starts from clean marks (the same counts again). */
-static void opt_counts(atrbvh_device *dev, const atrbvh_geometry *g,
-                       atrbvh_method method, unsigned treelet,
-                       unsigned rounds, unsigned long out[3])
+/* Builds g with the method on the CPU and on dev, the trees equal; the
+ * handle's counters then describe the device build. */
+static const atrbvh_cl_device *device_build(atrbvh_device *dev,
+                                            const atrbvh_geometry *g,
+                                            atrbvh_method method,
+                                            unsigned treelet, unsigned rounds)
 {
-    const atrbvh_cl_device *c = (const atrbvh_cl_device *)dev->impl;
     atrbvh_build_options o;
     atrbvh_bvh *x, *y;
     atrbvh_error e;
@@ -90,11 +92,19 @@ static void opt_counts(atrbvh_device *dev, const atrbvh_geometry *g,
     o.device = dev;
     y = tu_build(g, &o);
     ck_assert_msg(atrbvh_compare(x, y, &e) == 0, "%s", e.text);
+    atrbvh_bvh_free(x);
+    atrbvh_bvh_free(y);
+    return (const atrbvh_cl_device *)dev->impl;
+}
+
+static void opt_counts(atrbvh_device *dev, const atrbvh_geometry *g,
+                       atrbvh_method method, unsigned treelet,
+                       unsigned rounds, unsigned long out[3])
+{
+    const atrbvh_cl_device *c = device_build(dev, g, method, treelet, rounds);
     out[0] = c->opt_treelets;
     out[1] = c->opt_applied;
     out[2] = c->opt_skipped;
-    atrbvh_bvh_free(x);
-    atrbvh_bvh_free(y);
 }
 
 START_TEST(skip_marks_on_the_device)
@@ -154,25 +164,12 @@ END_TEST
 static void counted_build(atrbvh_device *dev, const atrbvh_geometry *g,
                           atrbvh_method method, unsigned long out[5])
 {
-    const atrbvh_cl_device *c = (const atrbvh_cl_device *)dev->impl;
-    atrbvh_build_options o;
-    atrbvh_bvh *x, *y;
-    atrbvh_error e;
-    atrbvh_build_options_init(&o);
-    o.method = method;
-    o.treelet_size = 9;
-    o.rounds = 2;
-    x = tu_build(g, &o);
-    o.device = dev;
-    y = tu_build(g, &o);
-    ck_assert_msg(atrbvh_compare(x, y, &e) == 0, "%s", e.text);
+    const atrbvh_cl_device *c = device_build(dev, g, method, 9, 2);
     out[0] = c->n_launches;
     out[1] = c->n_writes;
     out[2] = c->n_fills;
     out[3] = c->n_reads;
     out[4] = c->n_finishes;
-    atrbvh_bvh_free(x);
-    atrbvh_bvh_free(y);
 }
 
 START_TEST(launches_and_waits_per_build)
