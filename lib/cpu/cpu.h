@@ -19,6 +19,22 @@ static inline int atrbvh_i_is_leaf(const atrbvh_i_tree *t, uint32_t node)
     return node >= t->n - 1;
 }
 
+/* Leaf i of the in-place gather: the primitive boxes are entries 0 .. n-1
+ * of box, leaf n-1+i takes box[order[i]]; entry n-1 is both a primitive
+ * and leaf 0, so the caller reads it (`last`) before any leaf is
+ * written.  The reads are random: the box 16 leaves ahead is fetched. */
+static inline void atrbvh_i_gather_leaf(atrbvh_box *box,
+                                        const uint32_t *order, int64_t n,
+                                        int64_t i, const atrbvh_box *last)
+{
+    const uint32_t k = order[i];
+#if defined(__GNUC__) || defined(__clang__)
+    if (i + 16 < n)
+        __builtin_prefetch(&box[order[i + 16]]);
+#endif
+    box[n - 1 + i] = k == (uint32_t)(n - 1) ? *last : box[k];
+}
+
 /* Scratch slots of the device (atrbvh_i_scratch_get) a build uses. */
 enum {
     CPU_BOXES,     /* n primitive boxes, build order        */

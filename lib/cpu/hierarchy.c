@@ -241,9 +241,6 @@ static void leaf_prims(atrbvh_i_tree *t, const uint32_t *order,
             leaf_prim[i] = order[i];
 }
 
-/* Leaves ahead of the current one whose primitive box is prefetched. */
-#define PREFETCH 16
-
 /* The block passes (`blocks` of them, n >= 2), then the second pass;
  * SIZES and COSTS first gather the leaf boxes and write the deltas (the
  * file's comment).  With `order`, also each leaf's original primitive. */
@@ -276,13 +273,7 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
 #pragma omp for schedule(static)
 #endif
             for (i = 0; i < n; i++) {
-                const uint32_t p = order[i];
-#if defined(__GNUC__) || defined(__clang__)
-                /* the gather is random */
-                if (i + PREFETCH < n)
-                    __builtin_prefetch(&box[order[i + PREFETCH]]);
-#endif
-                box[n - 1 + i] = p == (uint32_t)(n - 1) ? last : box[p];
+                atrbvh_i_gather_leaf(box, order, n, i, &last);
                 if (i + 1 < n)
                     count[n - 1 + i] =
                         (uint32_t)atrbvh_karras_delta(keys, n, i, i + 1);

@@ -190,14 +190,8 @@ static void gather_in_place(atrbvh_i_tree *t, const uint32_t *order,
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(threads) schedule(static)
 #endif
-    for (i = 0; i < n; i++) {
-        const uint32_t k = order[i];
-#if defined(__GNUC__) || defined(__clang__)
-        if (i + PREFETCH < n)
-            __builtin_prefetch(&box[order[i + PREFETCH]]);
-#endif
-        box[n - 1 + i] = k == (uint32_t)(n - 1) ? last : box[k];
-    }
+    for (i = 0; i < n; i++)
+        atrbvh_i_gather_leaf(box, order, n, i, &last);
 }
 
 static void refit(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
