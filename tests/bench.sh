@@ -115,6 +115,34 @@ assert sorted((r["treelet_size"], r["rounds"]) for r in rows) == \
     [("48", "1"), ("auto", "2")], rows
 PY
 checks=$((checks + 1))
+# triangle splitting: +split=B builds what `build --split B` builds (same
+# SAH, same references, more than the triangles on this sphere); rows
+# without it list each triangle once; Embree's spatial splits stay within
+# their 20% room.
+run 0 bench "$SCENE" --repeat 1 --no-rays \
+    --configs atrbvh:9:2,atrbvh:9:2+split=0.5,embree_split --csv "$T/sp.csv" &&
+    run 0 build "$SCENE" --treelet 9 --rounds 2 --max-leaf 8 --split 0.5 \
+    --json && python3 - "$T/sp.csv" "$T/out" <<'PY' || fail "bench +split=0.5: $(cat "$T/sp.csv")"
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+js = json.load(open(sys.argv[2]))
+sp = [r for r in rows if r["method"] == "atrbvh" and r["split_budget"] == "0.5"]
+assert len(sp) == 1, rows
+n = int(sp[0]["triangles"])
+assert repr(float(sp[0]["sah"])) == repr(js["sah"]), (sp[0]["sah"], js["sah"])
+assert int(sp[0]["references"]) == js["references"], js["references"]
+assert n < int(sp[0]["references"]) <= n + n // 2, sp[0]["references"]
+for r in rows:
+    if r["method"] == "embree_split":
+        assert float(r["split_budget"]) == 0.2
+        assert n <= int(r["references"]) <= n + n // 5, r["references"]
+    elif r is not sp[0]:
+        assert float(r["split_budget"]) == 0 and int(r["references"]) == n, r
+PY
+checks=$((checks + 1))
+run 2 bench "$SCENE" --repeat 1 --no-rays --configs atrbvh:9:2+split=0
+run 2 bench "$SCENE" --repeat 1 --no-rays --configs lbvh+split=4.5
+run 2 bench "$SCENE" --repeat 1 --no-rays --configs embree_high+split=0.2
 run 2 bench "$SCENE" --repeat 1 --no-rays --configs trbvh:auto:2 &&
     { grep -q "treelet size 'auto'" "$T/err" || fail "trbvh:auto: $(cat "$T/err")"; }
 checks=$((checks + 1))

@@ -31,6 +31,7 @@ typedef struct config {
     atrbvh_method method;
     unsigned treelet, rounds; /* 0: the method's default */
     atrbvh_backend backend;
+    double split; /* "+split=B": the library's split budget; 0 off */
 } config;
 
 typedef struct row {
@@ -42,6 +43,7 @@ typedef struct row {
     double build_ms, build_min_ms, stage_ms[ATRBVH_STAGE_COUNT];
     double sah, sah_binary;
     size_t nodes, leaves, peak, bvh_bytes;
+    size_t references; /* primitive references in the leaves */
     double mrays[3], total_mrays;
     double emb_mrays[3], emb_commit_ms;
     double rel_pct, time_pct, sah_pct;

@@ -62,7 +62,7 @@ void csv_header(FILE *f)
           "ao_box_tests_per_ray,diffuse_box_tests_per_ray,box_tests_per_ray,"
           "primary_tri_tests_per_ray,ao_tri_tests_per_ray,"
           "diffuse_tri_tests_per_ray,tri_tests_per_ray,ray_cost,"
-          "ray_cost_pct\n",
+          "ray_cost_pct,split_budget,references\n",
           f);
 }
 
@@ -118,7 +118,11 @@ void csv_row(FILE *f, const bench_args *a, const row *r)
     put_double(f, r->ray_cost);
     fputc(',', f);
     put_double(f, r->cost_pct);
-    fputc('\n', f);
+    fputc(',', f);
+    put_double(f, r->c.embree ? (r->c.eq == EMBREE_SPLIT ? EMBREE_SPLIT_BUDGET
+                                                         : 0.0)
+                              : r->c.split);
+    fprintf(f, ",%zu\n", r->references);
 }
 
 void csv_scaling_header(FILE *f)

@@ -13,8 +13,10 @@
 
 const char *embree_quality_name(embree_quality q)
 {
-    return q == EMBREE_LOW ? "embree_low"
-           : q == EMBREE_MEDIUM ? "embree_medium" : "embree_high";
+    return q == EMBREE_LOW      ? "embree_low"
+           : q == EMBREE_MEDIUM ? "embree_medium"
+           : q == EMBREE_HIGH   ? "embree_high"
+                                : "embree_split";
 }
 
 #ifndef HAVE_EMBREE
@@ -52,6 +54,7 @@ int embree_trace(embree_ctx *ctx, const scene *sc, embree_quality q,
 
 #include <embree3/rtcore.h>
 #include <float.h>
+#include <math.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -183,6 +186,93 @@ static void *create_leaf(RTCThreadLocalAllocator alloc,
     return n;
 }
 
+/* Embree's spatial split callback (EMBREE_SPLIT): the parts of the
+ * triangle on each side of the plane x[dim] = pos, each clipped to the
+ * reference's box.  The triangle's vertices and its edges' crossings of
+ * the plane are gathered per side in double and rounded outward to float,
+ * so each part's box holds that part of the triangle (a side the triangle
+ * does not reach gets a point on the plane inside the reference's box: it
+ * holds nothing and costs only a test). */
+static float f_down(double d)
+{
+    float f = (float)d;
+    return (double)f > d ? nextafterf(f, -FLT_MAX) : f;
+}
+
+static float f_up(double d)
+{
+    float f = (float)d;
+    return (double)f < d ? nextafterf(f, FLT_MAX) : f;
+}
+
+static void split_prim(const struct RTCBuildPrimitive *prim, unsigned dim,
+                       float pos, struct RTCBounds *left,
+                       struct RTCBounds *right, void *user)
+{
+    const scene *sc = user;
+    const uint32_t *t = sc->indices + 3 * (size_t)prim->primID;
+    const float plo[3] = {prim->lower_x, prim->lower_y, prim->lower_z};
+    const float phi[3] = {prim->upper_x, prim->upper_y, prim->upper_z};
+    double v[3][3], lo[2][3], hi[2][3];
+    int side, k, e;
+    for (e = 0; e < 3; e++)
+        for (k = 0; k < 3; k++)
+            v[e][k] = sc->vertices[3 * (size_t)t[e] + (size_t)k];
+    for (side = 0; side < 2; side++)
+        for (k = 0; k < 3; k++) {
+            lo[side][k] = DBL_MAX;
+            hi[side][k] = -DBL_MAX;
+        }
+#define ADD(s, p)                                                              \
+    for (k = 0; k < 3; k++) {                                                  \
+        lo[s][k] = (p)[k] < lo[s][k] ? (p)[k] : lo[s][k];                      \
+        hi[s][k] = (p)[k] > hi[s][k] ? (p)[k] : hi[s][k];                      \
+    }
+    for (e = 0; e < 3; e++) {
+        const double *a = v[e], *b = v[(e + 1) % 3];
+        if (a[dim] <= pos)
+            ADD(0, a)
+        if (a[dim] >= pos)
+            ADD(1, a)
+        if ((a[dim] < pos && b[dim] > pos) || (a[dim] > pos && b[dim] < pos)) {
+            const double f = (pos - a[dim]) / (b[dim] - a[dim]);
+            double x[3];
+            for (k = 0; k < 3; k++)
+                x[k] = a[k] + (b[k] - a[k]) * f;
+            x[dim] = pos;
+            ADD(0, x)
+            ADD(1, x)
+        }
+    }
+#undef ADD
+    for (side = 0; side < 2; side++) {
+        struct RTCBounds *o = side ? right : left;
+        float ol[3], oh[3];
+        for (k = 0; k < 3; k++) {
+            float l = f_down(lo[side][k]), h = f_up(hi[side][k]);
+            if (side == 0 && (unsigned)k == dim && h > pos)
+                h = pos;
+            if (side == 1 && (unsigned)k == dim && l < pos)
+                l = pos;
+            ol[k] = l > plo[k] ? l : plo[k];
+            oh[k] = h < phi[k] ? h : phi[k];
+        }
+        if (!(ol[0] <= oh[0] && ol[1] <= oh[1] && ol[2] <= oh[2]))
+            for (k = 0; k < 3; k++) {
+                float c = (unsigned)k == dim ? pos
+                                             : plo[k] + 0.5f * (phi[k] - plo[k]);
+                ol[k] = oh[k] = c;
+            }
+        o->lower_x = ol[0];
+        o->lower_y = ol[1];
+        o->lower_z = ol[2];
+        o->upper_x = oh[0];
+        o->upper_y = oh[1];
+        o->upper_z = oh[2];
+        o->align0 = o->align1 = 0.0f;
+    }
+}
+
 static void put32(unsigned char *p, uint32_t v)
 {
     p[0] = (unsigned char)v;
@@ -243,11 +333,13 @@ typedef struct work {
  * straight into the atrbvh(5) file format and loaded: the library checks
  * the structure. */
 static int convert(const enode *root, const float rlo[3], const float rhi[3],
-                   size_t prims, double ci, double ct, atrbvh_bvh **out)
+                   size_t prims, size_t refs_cap, double ci, double ct,
+                   atrbvh_bvh **out, size_t *refs)
 {
-    size_t cap = 2 * prims, n = 0, p = 0, sp = 0, size, k;
+    size_t cap = 2 * refs_cap, n = 0, p = 0, sp = 0, size, k;
     atrbvh_node *nodes = malloc(cap * sizeof *nodes);
-    uint32_t *ids = malloc(prims * sizeof *ids);
+    uint32_t *ids = malloc(refs_cap * sizeof *ids);
+    int repeated = 0;
     work *stack = malloc((cap + 2) * sizeof *stack);
     unsigned char *buf = NULL, *q;
     atrbvh_error e;
@@ -274,14 +366,22 @@ static int convert(const enode *root, const float rlo[3], const float rhi[3],
         if (w.is_right)
             nodes[w.patch].index = (uint32_t)n;
         if (w.n->count) {
-            if (p + w.n->count > prims) {
-                cli_error("Embree tree: more primitives than given");
+            unsigned j, m;
+            if (p + w.n->count > refs_cap) {
+                cli_error("Embree tree: more references than its array");
                 goto done;
             }
             nd->index = (uint32_t)p;
-            nd->count = w.n->count;
-            memcpy(ids + p, w.n->prim, w.n->count * sizeof *ids);
-            p += w.n->count;
+            /* Two parts of one split triangle in one leaf (the library
+             * refuses that): the first is kept. */
+            for (j = 0; j < w.n->count; j++) {
+                for (m = 0; m < j && w.n->prim[m] != w.n->prim[j]; m++)
+                    ;
+                if (m == j)
+                    ids[p++] = w.n->prim[j];
+            }
+            nd->count = (uint32_t)(p - nd->index);
+            repeated |= p - nd->index != w.n->count;
         } else {
             int c;
             nd->index = 0;
@@ -297,10 +397,11 @@ static int convert(const enode *root, const float rlo[3], const float rhi[3],
         }
         n++;
     }
-    if (p != prims) {
-        cli_error("Embree tree: %zu of %zu primitives in leaves", p, prims);
+    if (p < prims || (p > prims && refs_cap == prims)) {
+        cli_error("Embree tree: %zu references to %zu primitives", p, prims);
         goto done;
     }
+    repeated |= p > prims; /* every triangle is listed (the loader checks) */
     size = 96 + 32 * n + 4 * p + 4;
     buf = calloc(1, size);
     if (!buf) {
@@ -308,8 +409,9 @@ static int convert(const enode *root, const float rlo[3], const float rhi[3],
         goto done;
     }
     memcpy(buf, "ATRBVH\0\n", 8);
-    put32(buf + 8, 1);
+    put32(buf + 8, repeated ? 2 : 1); /* atrbvh(5): version 2, SPLIT */
     put32(buf + 12, 96);
+    put32(buf + 16, repeated ? 1 : 0);
     put64(buf + 32, n);
     put64(buf + 40, p);
     put64(buf + 48, prims);
@@ -333,6 +435,7 @@ static int convert(const enode *root, const float rlo[3], const float rhi[3],
         cli_error("Embree tree: %s", e.text);
         goto done;
     }
+    *refs = p;
     rc = 0;
 done:
     free(nodes);
@@ -346,14 +449,14 @@ static enum RTCBuildQuality rtc_quality(embree_quality q)
 {
     return q == EMBREE_LOW ? RTC_BUILD_QUALITY_LOW
            : q == EMBREE_MEDIUM ? RTC_BUILD_QUALITY_MEDIUM
-                                : RTC_BUILD_QUALITY_HIGH;
+                                : RTC_BUILD_QUALITY_HIGH; /* and SPLIT */
 }
 
 int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
                  unsigned max_leaf, double ci, double ct, int measure_memory,
                  embree_build_result *res)
 {
-    size_t n = sc->triangle_count, i;
+    size_t n = sc->triangle_count, i, cap;
     struct RTCBuildPrimitive *prims;
     struct RTCBuildArguments args;
     RTCBVH bvh = ctx->bvh;
@@ -367,16 +470,19 @@ int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
         cli_error("Embree: %zu triangles", n);
         return -1;
     }
-    if (n > ctx->prims_cap) {
+    /* Spatial splits need room for the extra references. */
+    cap = q == EMBREE_SPLIT ? n + (size_t)((double)n * EMBREE_SPLIT_BUDGET)
+                            : n;
+    if (cap > ctx->prims_cap) {
         free(ctx->prims);
         ctx->prims_cap = 0;
-        ctx->prims = n <= SIZE_MAX / sizeof *prims
-                         ? malloc(n * sizeof *prims) : NULL;
+        ctx->prims = cap <= SIZE_MAX / sizeof *prims
+                         ? malloc(cap * sizeof *prims) : NULL;
         if (!ctx->prims) {
-            cli_error("out of memory for %zu Embree primitives", n);
+            cli_error("out of memory for %zu Embree primitives", cap);
             return -1;
         }
-        ctx->prims_cap = n;
+        ctx->prims_cap = cap;
     }
     prims = ctx->prims;
     /* The memory monitor is a callback on every allocation: only on a
@@ -436,14 +542,14 @@ int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
     args.bvh = bvh;
     args.primitives = prims;
     args.primitiveCount = n;
-    args.primitiveArrayCapacity = n; /* no room: no spatial splits */
+    args.primitiveArrayCapacity = cap; /* n: no room, no spatial splits */
     args.createNode = create_node;
     args.setNodeChildren = set_children;
     args.setNodeBounds = set_bounds;
     args.createLeaf = create_leaf;
-    args.splitPrimitive = NULL;
+    args.splitPrimitive = q == EMBREE_SPLIT ? split_prim : NULL;
     args.buildProgress = NULL;
-    args.userPtr = NULL;
+    args.userPtr = (void *)sc;
     root = rtcBuildBVH(&args);
     t1 = cli_now_ms();
     res->build_ms = t1 - t0;
@@ -457,21 +563,21 @@ int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
                   (int)rtcGetDeviceError(ctx->device));
         return -1;
     }
-    /* The root's box: the union of every primitive's. */
-    for (i = 0; i < n; i++) {
-        const float lo[3] = {prims[i].lower_x, prims[i].lower_y,
-                             prims[i].lower_z};
-        const float hi[3] = {prims[i].upper_x, prims[i].upper_y,
-                             prims[i].upper_z};
+    /* The root's box: the union of every triangle's (the build reorders
+     * the primitive array and, with splits, leaves parts of triangles in
+     * it). */
+    for (i = 0; i < 3 * n; i++) {
+        const float *v = sc->vertices + 3 * (size_t)sc->indices[i];
         int k;
         for (k = 0; k < 3; k++) {
-            if (lo[k] < rlo[k])
-                rlo[k] = lo[k];
-            if (hi[k] > rhi[k])
-                rhi[k] = hi[k];
+            if (v[k] < rlo[k])
+                rlo[k] = v[k];
+            if (v[k] > rhi[k])
+                rhi[k] = v[k];
         }
     }
-    rc = convert(root, rlo, rhi, n, ci, ct, &res->bvh);
+    rc = convert(root, rlo, rhi, n, cap, ci, ct, &res->bvh,
+                 &res->references);
     res->convert_ms = cli_now_ms() - t1;
     return rc;
 }

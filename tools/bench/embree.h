@@ -16,10 +16,17 @@
 typedef enum embree_quality {
     EMBREE_LOW = 0,
     EMBREE_MEDIUM = 1,
-    EMBREE_HIGH = 2
+    EMBREE_HIGH = 2,
+    /* HIGH with spatial splits (SBVH): a primitive array with room for
+     * EMBREE_SPLIT_BUDGET x triangles more references and a splitter
+     * that clips the triangle; not part of "embree" (all three). */
+    EMBREE_SPLIT = 3
 } embree_quality;
 
+#define EMBREE_SPLIT_BUDGET 0.2
+
 const char *embree_quality_name(embree_quality q); /* "embree_low", ... */
+
 /* 1 when the tool was built with Embree. */
 int embree_available(void);
 /* Embree's version string, or NULL. */
@@ -35,6 +42,9 @@ typedef struct embree_build_result {
     atrbvh_bvh *bvh;      /* the tree as an atrbvh BVH (free it)          */
     double build_ms;      /* primitive boxes + rtcBuildBVH, wall clock    */
     double convert_ms;    /* layout into atrbvh nodes (not in build_ms)   */
+    size_t references;    /* primitive references in the leaves: the
+                             triangle count unless EMBREE_SPLIT split
+                             some (a repeat within one leaf is dropped) */
     size_t peak_bytes;    /* primitive array + Embree's memory monitor,
                              0 unless measure_memory                    */
 } embree_build_result;

@@ -38,16 +38,18 @@ const char *row_method(const row *r)
 void config_label(const config *c, unsigned treelet, unsigned rounds,
                   char *buf, size_t n)
 {
-    char tb[16];
+    char tb[16], sp[32] = "";
+    if (c->split > 0.0)
+        snprintf(sp, sizeof sp, "+split%g", c->split);
     if (c->embree)
         snprintf(buf, n, "%s", embree_quality_name(c->eq));
     else if (c->method == ATRBVH_METHOD_LBVH)
-        snprintf(buf, n, "LBVH%s",
+        snprintf(buf, n, "LBVH%s%s", sp,
                  c->backend == ATRBVH_BACKEND_OPENCL ? "/cl" : "");
     else
-        snprintf(buf, n, "%s(%s,%u)%s",
+        snprintf(buf, n, "%s(%s,%u)%s%s",
                  c->method == ATRBVH_METHOD_TRBVH ? "TRBVH" : "ATRBVH",
-                 cli_treelet_text(treelet, tb), rounds,
+                 cli_treelet_text(treelet, tb), rounds, sp,
                  c->backend == ATRBVH_BACKEND_OPENCL ? "/cl" : "");
 }
 
@@ -88,8 +90,9 @@ static int parse_uint_list(const char *opt, const char *s, unsigned long max,
 }
 
 /* "lbvh", "trbvh[:N[:R]]", "atrbvh[:N[:R]]", "fast|balanced|high",
- * "embree" (all three), "embree_low|medium|high"; each with an optional
- * "@opencl" or "@cpu" for the library's configurations. */
+ * "embree" (the first three), "embree_low|medium|high|split"; the
+ * library's configurations with an optional "+split=B" (the split budget,
+ * as build --split) and then "@opencl" or "@cpu". */
 static int parse_configs(bench_args *a, const char *s, atrbvh_backend be)
 {
     char buf[1024], *tok, *save = NULL;
@@ -113,8 +116,27 @@ static int parse_configs(bench_args *a, const char *s, atrbvh_backend be)
                 return cli_usage("bench", "--configs: unknown backend '%s'",
                                  at), -1;
         }
+        if ((p = strstr(tok, "+split=")) != NULL) {
+            char *end;
+            double b;
+            *p = '\0';
+            p += 7;
+            b = strtod(p, &end);
+            if (end == p || *end || !(b > 0.0 && b <= 4.0))
+                return cli_usage("bench", "--configs: split budget '%s' is "
+                                 "not a number above 0 and at most 4", p),
+                       -1;
+            if (strncmp(tok, "embree", 6) == 0)
+                return cli_usage("bench", "--configs: +split is for the "
+                                 "library's configurations (embree_split "
+                                 "is Embree's)"), -1;
+            c.split = b;
+        }
         if (strcmp(tok, "embree") == 0 || strncmp(tok, "embree_", 7) == 0) {
             int q, lo = 0, hi = 2;
+            if (at)
+                return cli_usage("bench", "--configs: '%s' takes no "
+                                 "backend", tok), -1;
             if (tok[6] == '_') {
                 if (strcmp(tok + 7, "low") == 0)
                     lo = hi = 0;
@@ -122,6 +144,8 @@ static int parse_configs(bench_args *a, const char *s, atrbvh_backend be)
                     lo = hi = 1;
                 else if (strcmp(tok + 7, "high") == 0)
                     lo = hi = 2;
+                else if (strcmp(tok + 7, "split") == 0)
+                    lo = hi = 3;
                 else
                     return cli_usage("bench", "--configs: unknown '%s'", tok),
                            -1;
@@ -216,8 +240,11 @@ static void bench_opts(bench_cl *b, cli_opt *table)
          .dest = &b->configs,
          .help = "comma-separated: lbvh, trbvh[:N[:R]],\n"
                  "atrbvh[:N[:R]] (N a size or auto), fast,\n"
-                 "balanced, high, embree, embree_low,\n"
-                 "embree_medium, embree_high; @cpu or\n"
+                 "balanced, high, embree (low, medium and\n"
+                 "high), embree_low, embree_medium,\n"
+                 "embree_high, embree_split (high with\n"
+                 "spatial splits, 20% more references);\n"
+                 "@cpu or\n"
                  "@opencl after one picks its backend\n"
                  "(default " DEFAULT_CONFIGS ")"},
         {.name = "--methods", .kind = CLI_OPT_STRING, .arg = "LIST",
@@ -453,6 +480,7 @@ int cli_bench(int argc, char **argv)
             if (!ap->configs[k].embree &&
                 ap->configs[k].method == ATRBVH_METHOD_TRBVH &&
                 ap->configs[k].backend == ATRBVH_BACKEND_CPU &&
+                ap->configs[k].split == 0.0 &&
                 (ap->configs[k].treelet == 7 || ap->configs[k].treelet == 0) &&
                 (ap->configs[k].rounds == 3 || ap->configs[k].rounds == 0))
                 break;

@@ -199,6 +199,7 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
         o.treelet_size = c->treelet;
         o.rounds = c->rounds;
         o.backend = c->backend;
+        o.split_budget = c->split;
         {
             /* One device per configuration, opened before the timed builds
              * (as users open it once): its first build also makes the
@@ -246,6 +247,7 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
                 stg[s * repeat + k - (warmup ? 1 : 0)] =
                     atrbvh_bvh_stage_ms(bvh, (atrbvh_stage)s);
         }
+        atrbvh_bvh_primitive_indices(bvh, &r->references);
         r->threads = st.threads;
         r->treelet = st.treelet_size;
         r->rounds = st.rounds;
@@ -278,6 +280,7 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
                          a->base.ci, a->base.ct, 1, &res) != 0)
             goto done;
         r->peak = res.peak_bytes;
+        r->references = res.references;
         bvh = res.bvh;
         (void)warmup;
         for (k = 0; k < repeat; k++) {

@@ -17,7 +17,7 @@ static int find_ref(const row *rows, int n)
     for (i = 0; i < n; i++)
         if (!rows[i].c.embree && rows[i].c.method == ATRBVH_METHOD_TRBVH &&
             rows[i].treelet == 7 && rows[i].rounds == 3 &&
-            rows[i].c.backend == ATRBVH_BACKEND_CPU)
+            rows[i].c.backend == ATRBVH_BACKEND_CPU && rows[i].c.split == 0.0)
             return i;
     return -1;
 }
