@@ -1,7 +1,8 @@
 /*
- * shared/sort.h - the per-item rules of the sort stage's radix passes,
- * written once for the CPU (lib/cpu/sort.c) and the OpenCL kernels
- * (morton and sort_count, whose last block scans, and sort_scatter).
+ * shared/sort.h - the sort stage's code, written once for the CPU
+ * (lib/cpu/sort.c) and the OpenCL kernels (sort_count, whose last block
+ * scans, sort_scatter and sort_buckets): the rules of a stable counting
+ * pass over blocks, the MSD digit, and the buckets' sort.
  *
  * A pass is stable: the n items are cut into `blocks` contiguous blocks
  * (atrbvh_block_range); each block counts its digits; one exclusive scan
@@ -16,21 +17,11 @@
 
 #include "arith.h"
 
-/* The device passes: 8-bit digits, 256 buckets. */
-#define ATRBVH_SORT_BITS 8
-#define ATRBVH_SORT_RADIX 256u
-
 /* The digit of `key` at bit `shift`, `bits` wide (1..31). */
 ATRBVH_FN atrbvh_u32 atrbvh_sort_digit_bits(atrbvh_u64 key, atrbvh_u32 shift,
                                             atrbvh_u32 bits)
 {
     return (atrbvh_u32)(key >> shift) & ((1u << bits) - 1u);
-}
-
-/* The 8-bit digit of `key` at bit `shift`. */
-ATRBVH_FN atrbvh_u32 atrbvh_sort_digit(atrbvh_u64 key, atrbvh_u32 shift)
-{
-    return atrbvh_sort_digit_bits(key, shift, ATRBVH_SORT_BITS);
 }
 
 /* The [lo, hi) range of block b of `blocks` over n items. */
