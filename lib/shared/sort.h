@@ -184,8 +184,8 @@ ATRBVH_FN void atrbvh_sort_copy(ATRBVH_CONST_GLOBAL atrbvh_u64 *k,
 #else
     /* the C compiler's own copy (the loops above, 3.6 times the
      * instructions) */
-    __builtin_memcpy(dk, k, (size_t)n * sizeof *dk);
-    __builtin_memcpy(dv, v, (size_t)n * sizeof *dv);
+    __builtin_memcpy(dk, k, sizeof *dk * n);
+    __builtin_memcpy(dv, v, sizeof *dv * n);
 #endif
 }
 
@@ -255,7 +255,7 @@ ATRBVH_FN void atrbvh_sort_small(ATRBVH_CONST_GLOBAL atrbvh_u64 *k,
 #if defined(__OPENCL_VERSION__) || !defined(__GNUC__)
 #define ATRBVH_SORT_OWN_FN ATRBVH_FN
 #else
-#define ATRBVH_SORT_OWN_FN static __attribute__((noinline))
+#define ATRBVH_SORT_OWN_FN static __attribute__((noinline, unused))
 #endif
 ATRBVH_SORT_OWN_FN void atrbvh_sort_count_own(ATRBVH_CONST_GLOBAL atrbvh_u64 *k,
                                               atrbvh_u32 n, atrbvh_u32 *c,
