@@ -3,9 +3,10 @@
  * pairs.
  *
  * One most-significant-digit pass over the top varying bits scatters the
- * pairs into buckets of about BUCKET_TARGET items; each bucket is then
- * sorted in cache by further MSD passes on its own top varying bits
- * (sort_bucket), down to insertion sort for buckets of a few items.
+ * pairs into buckets of about ATRBVH_SORT_BUCKET_TARGET items; each bucket
+ * is then sorted in cache by further MSD passes on its own top varying bits
+ * (atrbvh_sort_bucket, shared/sort.h: the OpenCL sort_buckets kernel runs
+ * the same code), down to insertion sort for buckets of a few items.
  * Every step is stable, so the result is the unique sorted order with
  * ties in input order: it cannot depend on the number of threads.  Only
  * bits that vary are sorted on, so scenes whose keys differ in fewer bits
