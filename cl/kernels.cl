@@ -56,6 +56,11 @@ static uint load_u32_v(__global const uint *p, uint i)
     return ((volatile __global const uint *)p)[i];
 }
 
+static ulong load_ulong_v(__global const ulong *p, uint i)
+{
+    return ((volatile __global const ulong *)p)[i];
+}
+
 static double load_f64_v(__global const double *p, uint i)
 {
     return ((volatile __global const double *)p)[i];
@@ -143,34 +148,31 @@ __kernel void bounds_boxes(__global const float *in, __global atrbvh_box *boxes,
 }
 
 /* -------------------------------------------------------------------- sort */
-/* Stable 8-bit LSD passes (shared/sort.h): count per (digit, block),
- * exclusive scan in digit-major order, each block places its items in
- * order.  The count and the scan are one launch: the block that counts
- * last scans (last_arrival).  The first pass's counting is the morton
- * kernel's, in the same sweep as the keys. */
-static void sort_counts(__global uint *hist, uint b, uint blocks,
-                        const uint *c)
+/* The CPU's sort (lib/cpu/sort.c), kernel for kernel (shared/sort.h):
+ * one stable pass on the most significant varying bits into buckets of
+ * about ATRBVH_SORT_BUCKET_TARGET items (sort_count, whose last block
+ * scans, and sort_scatter), then sort_buckets, one item per bucket
+ * running the CPU's atrbvh_sort_bucket.  The varying bits are the morton
+ * kernel's: each block's OR and AND of its keys, united by the last
+ * block (vary[2 * blocks] = OR ^ AND: the bits that differ). */
+static ulong sort_varying(__global const ulong *vary, uint blocks)
 {
-    uint d;
-    for (d = 0; d < ATRBVH_SORT_RADIX; d++)
-        hist[atrbvh_sort_slot(d, b, blocks)] = c[d];
+    return load_ulong_v(vary, 2u * blocks);
 }
 
 /* ------------------------------------------------------------------ morton */
 /* Item b of the sort's a.blocks: the key of each primitive of block b
  * (atrbvh_morton_quantise, atrbvh_morton_key in the host's frame), the
- * identity order (the sort's values: build indices), and the counts of
- * the first sort pass's digits; the last block scans them. */
+ * identity order (the sort's values: build indices), and the OR and AND
+ * of the block's keys; the last block unites them (sort_varying). */
 __kernel void morton(__global const atrbvh_box *boxes, __global ulong *keys,
-                     __global uint *order, __global uint *hist,
+                     __global uint *order, __global ulong *vary,
                      __global uint *sync, atrbvh_kargs_morton a)
 {
-    uint b = (uint)get_global_id(0), lo, hi, i, d;
-    uint c[ATRBVH_SORT_RADIX];
+    uint b = (uint)get_global_id(0), lo, hi, i;
+    ulong any = 0ul, all = ~0ul;
     if (b >= a.blocks)
         return;
-    for (d = 0; d < ATRBVH_SORT_RADIX; d++)
-        c[d] = 0u;
     atrbvh_block_range(a.n, b, a.blocks, &lo, &hi);
     for (i = lo; i < hi; i++) {
         atrbvh_box x = boxes[i];
@@ -183,48 +185,86 @@ __kernel void morton(__global const atrbvh_box *boxes, __global ulong *keys,
                                    a.scale[2]));
         keys[i] = k;
         order[i] = i;
-        c[atrbvh_sort_digit(k, 0u)]++;
+        any |= k;
+        all &= k;
     }
-    sort_counts(hist, b, a.blocks, c);
-    if (last_arrival(sync, a.blocks))
-        (void)atrbvh_sort_scan(hist, a.entries);
+    vary[2u * b] = any;
+    vary[2u * b + 1u] = all;
+    if (last_arrival(sync, a.blocks)) {
+        for (b = 0; b < a.blocks; b++) {
+            any |= load_ulong_v(vary, 2u * b);
+            all &= load_ulong_v(vary, 2u * b + 1u);
+        }
+        vary[2u * a.blocks] = any ^ all;
+    }
 }
 
+/* The MSD pass's counts: block b's digits (atrbvh_sort_msd's) in
+ * hist[atrbvh_sort_slot(d, b, blocks)]; the last block scans them. */
 __kernel void sort_count(__global const ulong *keys, __global uint *hist,
-                         __global uint *sync, atrbvh_kargs_sort a)
+                         __global const ulong *vary, __global uint *sync,
+                         atrbvh_kargs_sort a)
 {
-    uint b = (uint)get_global_id(0), lo, hi, j, d;
-    uint c[ATRBVH_SORT_RADIX];
+    uint b = (uint)get_global_id(0), lo, hi, j, d, shift, bits;
+    uint c[ATRBVH_SORT_MSD_RADIX];
     if (b >= a.blocks)
         return;
-    for (d = 0; d < ATRBVH_SORT_RADIX; d++)
+    atrbvh_sort_msd(a.n, sort_varying(vary, a.blocks), &shift, &bits);
+    for (d = 0; d < (1u << bits); d++)
         c[d] = 0u;
     atrbvh_block_range(a.n, b, a.blocks, &lo, &hi);
     for (j = lo; j < hi; j++)
-        c[atrbvh_sort_digit(keys[j], a.shift)]++;
-    sort_counts(hist, b, a.blocks, c);
+        c[atrbvh_sort_digit_bits(keys[j], shift, bits)]++;
+    for (d = 0; d < (1u << bits); d++)
+        hist[atrbvh_sort_slot(d, b, a.blocks)] = c[d];
     if (last_arrival(sync, a.blocks))
-        (void)atrbvh_sort_scan(hist, a.entries);
+        (void)atrbvh_sort_scan(hist, (1u << bits) * a.blocks);
 }
 
+/* The MSD pass: block b places its pairs from (src_k, src_v) into the
+ * buckets in (dst_k, dst_v). */
 __kernel void sort_scatter(__global const ulong *src_k,
                            __global const uint *src_v, __global ulong *dst_k,
                            __global uint *dst_v, __global const uint *hist,
-                           atrbvh_kargs_sort a)
+                           __global const ulong *vary, atrbvh_kargs_sort a)
 {
-    uint b = (uint)get_global_id(0), lo, hi, j, d;
-    uint next[ATRBVH_SORT_RADIX];
+    uint b = (uint)get_global_id(0), lo, hi, j, d, shift, bits;
+    uint next[ATRBVH_SORT_MSD_RADIX];
     if (b >= a.blocks)
         return;
-    for (d = 0; d < ATRBVH_SORT_RADIX; d++)
+    atrbvh_sort_msd(a.n, sort_varying(vary, a.blocks), &shift, &bits);
+    for (d = 0; d < (1u << bits); d++)
         next[d] = hist[atrbvh_sort_slot(d, b, a.blocks)];
     atrbvh_block_range(a.n, b, a.blocks, &lo, &hi);
     for (j = lo; j < hi; j++) {
         ulong k = src_k[j];
-        uint at = atrbvh_sort_place(next, atrbvh_sort_digit(k, a.shift));
+        uint at = atrbvh_sort_place(next, atrbvh_sort_digit_bits(k, shift,
+                                                                 bits));
         dst_k[at] = k;
         dst_v[at] = src_v[j];
     }
+}
+
+/* Item d of a.buckets (the most any n-key sort has): bucket d, from
+ * (tmp_k, tmp_v) into (keys, order) at the same positions (the scanned
+ * counts of block 0 are where the buckets start). */
+__kernel void sort_buckets(__global ulong *tmp_k, __global uint *tmp_v,
+                           __global ulong *keys, __global uint *order,
+                           __global const uint *hist,
+                           __global const ulong *vary, atrbvh_kargs_sort a)
+{
+    uint d = (uint)get_global_id(0), shift, bits, start, end;
+    if (d >= a.buckets)
+        return;
+    atrbvh_sort_msd(a.n, sort_varying(vary, a.blocks), &shift, &bits);
+    if (d >= (1u << bits))
+        return;
+    start = hist[atrbvh_sort_slot(d, 0u, a.blocks)];
+    end = d + 1u < (1u << bits) ? hist[atrbvh_sort_slot(d + 1u, 0u, a.blocks)]
+                                : a.n;
+    if (end > start)
+        atrbvh_sort_bucket(tmp_k + start, tmp_v + start, keys + start,
+                           order + start, end - start, 1, (int)shift);
 }
 
 /* --------------------------------------------------------------- hierarchy */

@@ -253,8 +253,10 @@ static atrbvh_status launch(atrbvh_cl_device *c, int k, size_t items,
         local = 64;
         while (local > c->kernel_wg[k])
             local /= 2;
-    } else if (items < 64u * groups) {
-        /* the largest power of two up to 64 giving `groups` groups */
+    } else if (items < 64u * groups || k == K_SORT_BUCKETS) {
+        /* the largest power of two up to 64 giving `groups` groups (and
+         * for sort_buckets at any size: 4.6 KB of private arrays per
+         * item, the stack's risk above) */
         local = 64;
         while (local > 1u && (items + local - 1u) / local < groups)
             local /= 2;

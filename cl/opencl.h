@@ -38,6 +38,7 @@ enum {
     K_MORTON,
     K_SORT_COUNT,
     K_SORT_SCATTER,
+    K_SORT_BUCKETS,
     K_HIERARCHY,
     K_REFIT,
     K_OPT_PREPARE,
@@ -65,6 +66,8 @@ enum {
     B_ORDER,
     B_ORDER_TMP,
     B_HIST,       /* sort: digit counts per block         */
+    B_VARY,       /* sort: the keys' OR and AND per block,
+                     then their varying bits (morton)     */
     B_IDS,        /* kept primitive ids (skip_invalid)    */
     B_LEFT,
     B_RIGHT,
@@ -137,8 +140,8 @@ typedef struct atrbvh_cl_device {
     cl_uint has_ids;        /* this build: B_IDS maps leaves   */
     cl_uint ranges;         /* this build: the hierarchy stage's
                                tree (set_tree's is not)          */
-    cl_uint counted;        /* this build: the morton kernel counted
-                               the sort's first digits           */
+    cl_uint counted;        /* this build: the morton kernel found
+                               the keys' varying bits (B_VARY)   */
     cl_uint counters_zero;  /* B_COUNTER is all zero (the hierarchy
                                kernel zeroes it, every bottom-up
                                launch leaves it so)              */

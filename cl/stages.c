@@ -232,11 +232,14 @@ static atrbvh_status cl_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
 }
 
 /* --------------------------------------------------------------- morton */
-/* The sort's blocks (the morton kernel counts the first pass by them). */
+/* The sort's blocks (the morton kernel finds the varying bits by them)
+ * and the most buckets its MSD pass can make for n keys (the digit
+ * itself depends on the keys: the kernels find it, atrbvh_sort_msd). */
 static atrbvh_kargs_sort sort_args(const atrbvh_cl_device *c,
                                    const atrbvh_i_run *run)
 {
     atrbvh_kargs_sort a;
+    atrbvh_u32 shift, bits;
     memset(&a, 0, sizeof a);
     a.n = run->n;
     a.blocks = c->compute_units * 32u;
@@ -244,7 +247,9 @@ static atrbvh_kargs_sort sort_args(const atrbvh_cl_device *c,
         a.blocks = 256u;
     if (a.blocks > a.n)
         a.blocks = a.n;
-    a.entries = ATRBVH_SORT_RADIX * a.blocks;
+    atrbvh_sort_msd(a.n, ~(atrbvh_u64)0, &shift, &bits);
+    a.buckets = 1u << bits;
+    a.entries = a.buckets * a.blocks; /* at most 2048 x 256 */
     return a;
 }
 
@@ -262,37 +267,37 @@ static atrbvh_status st_morton(atrbvh_device *dev, atrbvh_i_run *run,
     }
     a.n = run->n;
     a.blocks = sa.blocks;
-    a.entries = sa.entries;
     CL_CHECK(atrbvh_i_cl_buffer(c, B_KEYS, a.n, sizeof(cl_ulong), "keys",
                                 error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_ORDER, a.n, sizeof(cl_uint), "order",
                                 error));
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_HIST, a.entries, sizeof(cl_uint),
-                                "digit counts", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_VARY, 2u * (size_t)a.blocks + 1u,
+                                sizeof(cl_ulong), "key bits", error));
     CL_CHECK(atrbvh_i_cl_sync(c, error));
     CL_RUN(c, K_MORTON, a.blocks, error, CL_BUF(B_BOXES), CL_BUF(B_KEYS),
-           CL_BUF(B_ORDER), CL_BUF(B_HIST), CL_BUF(B_SYNC), CL_VAL(a));
+           CL_BUF(B_ORDER), CL_BUF(B_VARY), CL_BUF(B_SYNC), CL_VAL(a));
     c->counted = 1;
     return ATRBVH_OK;
 }
 
 /* ----------------------------------------------------------------- sort */
-/* Eight stable 8-bit passes, ping-ponging between (keys, order) and the
- * scratch pair: after an even count the result is back in B_KEYS and
- * B_ORDER.  Every pass runs (a pass whose digit never varies is the
- * identity, so the CPU's skipping cannot change the result; the host
- * cannot know which without a wait, and on the scenes at hand every
- * digit varies).  Pass 0's counts are the morton kernel's; each other
- * pass is two launches, sort_count (its last block scans) and
- * sort_scatter. */
+/* The CPU's sort, kernel for kernel (kernels.cl): the MSD pass from
+ * (keys, order) into the scratch pair (sort_count, whose last block
+ * scans, and sort_scatter), then sort_buckets sorts each bucket back
+ * into B_KEYS and B_ORDER.  Three launches, whatever the keys; the
+ * digit is found on the device from the morton kernel's varying bits
+ * (the host does not wait for them). */
 static atrbvh_status st_sort(atrbvh_device *dev, atrbvh_i_run *run,
                              atrbvh_error *error)
 {
     atrbvh_cl_device *c = cl_of(dev);
     atrbvh_kargs_sort a = sort_args(c, run);
-    int sk = B_KEYS, sv = B_ORDER, dk = B_KEYS_TMP, dv = B_ORDER_TMP;
     if (run->n < 2)
         return ATRBVH_OK;
+    if (!c->counted)
+        return atrbvh_i_fail(error, ATRBVH_ERR_BACKEND, ATRBVH_CL_NO_INDEX,
+                             "OpenCL sort: no keys (the morton stage did "
+                             "not run)");
     CL_CHECK(atrbvh_i_cl_buffer(c, B_KEYS_TMP, a.n, sizeof(cl_ulong),
                                 "keys (scratch)", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_ORDER_TMP, a.n, sizeof(cl_uint),
@@ -301,16 +306,14 @@ static atrbvh_status st_sort(atrbvh_device *dev, atrbvh_i_run *run,
                                 "digit counts", error));
     CL_CHECK(atrbvh_i_cl_sync(c, error));
     c->counters_zero = 0; /* B_KEYS_TMP is B_COUNTER's home */
-    for (a.shift = 0; a.shift < 64u; a.shift += ATRBVH_SORT_BITS) {
-        int t;
-        if (a.shift > 0 || !c->counted)
-            CL_RUN(c, K_SORT_COUNT, a.blocks, error, CL_BUF(sk),
-                   CL_BUF(B_HIST), CL_BUF(B_SYNC), CL_VAL(a));
-        CL_RUN(c, K_SORT_SCATTER, a.blocks, error, CL_BUF(sk), CL_BUF(sv),
-               CL_BUF(dk), CL_BUF(dv), CL_BUF(B_HIST), CL_VAL(a));
-        t = sk, sk = dk, dk = t;
-        t = sv, sv = dv, dv = t;
-    }
+    CL_RUN(c, K_SORT_COUNT, a.blocks, error, CL_BUF(B_KEYS), CL_BUF(B_HIST),
+           CL_BUF(B_VARY), CL_BUF(B_SYNC), CL_VAL(a));
+    CL_RUN(c, K_SORT_SCATTER, a.blocks, error, CL_BUF(B_KEYS),
+           CL_BUF(B_ORDER), CL_BUF(B_KEYS_TMP), CL_BUF(B_ORDER_TMP),
+           CL_BUF(B_HIST), CL_BUF(B_VARY), CL_VAL(a));
+    CL_RUN(c, K_SORT_BUCKETS, a.buckets, error, CL_BUF(B_KEYS_TMP),
+           CL_BUF(B_ORDER_TMP), CL_BUF(B_KEYS), CL_BUF(B_ORDER),
+           CL_BUF(B_HIST), CL_BUF(B_VARY), CL_VAL(a));
     return ATRBVH_OK;
 }
 

@@ -536,6 +536,94 @@ START_TEST(lbvh_refit_takes_the_collapse)
 }
 END_TEST
 
+/* The device sort (the MSD pass and sort_buckets, cl/kernels.cl) against
+ * the CPU's on keys that stress the buckets, stage by stage (the sorted
+ * keys and build indices are compared bit for bit): keys that differ in
+ * 3 bits only, one bucket holding nearly all keys (many equal) beside a
+ * few others, nested clusters that take a bucket many levels deep (more
+ * than the levels whose counters are kept), all keys equal in a bucket
+ * bigger than the MSD target, and n = 1, 2, 3.  Boxes in shuffled order,
+ * so that equal keys must keep their input order. */
+static void box_at(float *b, float x, float y, float z)
+{
+    const float h = 0.001f;
+    b[0] = x - h;
+    b[1] = y - h;
+    b[2] = z - h;
+    b[3] = x + h;
+    b[4] = y + h;
+    b[5] = z + h;
+}
+
+static void sorted_like_the_cpu(float *b, size_t n, tu_rng *r,
+                                const char *what)
+{
+    static const config lbvh = {ATRBVH_METHOD_LBVH, 0, 0, 1};
+    atrbvh_geometry g;
+    size_t i;
+    for (i = n; i > 1; i--) { /* shuffle */
+        size_t j = (size_t)(tu_rng_next(r) % i), k;
+        for (k = 0; k < 6; k++) {
+            float t = b[6 * (i - 1) + k];
+            b[6 * (i - 1) + k] = b[6 * j + k];
+            b[6 * j + k] = t;
+        }
+    }
+    g = atrbvh_geometry_boxes(b, n);
+    expect_identical(&g, &lbvh, what);
+}
+
+START_TEST(device_sort_adversarial_keys)
+{
+    enum { N = 6000 };
+    float *b = malloc(sizeof(float) * 6 * N);
+    tu_rng r;
+    size_t i, n;
+    int k;
+    REQUIRE_DEVICE();
+    ck_assert_ptr_nonnull(b);
+    tu_rng_seed(&r, 77);
+    /* Keys in 8 values (a 2 x 2 x 2 grid): 3 varying bits. */
+    for (i = 0; i < N; i++)
+        box_at(b + 6 * i, (float)(tu_rng_next(&r) & 1u),
+               (float)(tu_rng_next(&r) & 1u), (float)(tu_rng_next(&r) & 1u));
+    sorted_like_the_cpu(b, N, &r, "3 varying bits");
+    /* One crowded bucket: 5800 equal keys beside 200 random ones. */
+    for (i = 0; i < N; i++)
+        if (i < 200)
+            box_at(b + 6 * i, tu_rng_float(&r), tu_rng_float(&r),
+                   tu_rng_float(&r));
+        else
+            box_at(b + 6 * i, 0.5f, 0.5f, 0.5f);
+    sorted_like_the_cpu(b, N, &r, "one crowded bucket");
+    /* Nested clusters: 60 boxes at each of 2^-k (1, 1, 1), k = 0..21,
+     * and the corner 0: each level of a bucket splits off one cluster. */
+    n = 0;
+    for (k = 0; k <= 21; k++)
+        for (i = 0; i < 60; i++, n++) {
+            const float x = 1.0f / (float)(1ul << k);
+            box_at(b + 6 * n, x, x, x);
+        }
+    box_at(b + 6 * n++, 0.0f, 0.0f, 0.0f);
+    sorted_like_the_cpu(b, n, &r, "nested clusters");
+    /* All keys equal, more than a bucket's target. */
+    for (i = 0; i < N; i++)
+        box_at(b + 6 * i, 0.25f, 0.5f, 0.75f);
+    sorted_like_the_cpu(b, N, &r, "all keys equal");
+    /* n = 1, 2, 3, and 3 equal. */
+    for (n = 1; n <= 3; n++) {
+        for (i = 0; i < n; i++)
+            box_at(b + 6 * i, tu_rng_float(&r), tu_rng_float(&r),
+                   tu_rng_float(&r));
+        sorted_like_the_cpu(b, n, &r, "1 to 3 boxes");
+        for (i = 0; i < n; i++)
+            box_at(b + 6 * i, 0.5f, 0.5f, 0.5f);
+        sorted_like_the_cpu(b, n, &r, "1 to 3 equal boxes");
+    }
+    free(b);
+}
+END_TEST
+
 static Suite *opencl_suite(void)
 {
     Suite *s = suite_create("opencl");
@@ -549,6 +637,7 @@ static Suite *opencl_suite(void)
     tc = tcase_create("extremes");
     tcase_add_test(tc, extremes_flat_and_coincident);
     tcase_add_test(tc, extremes_boxes_and_invalid);
+    tcase_add_test(tc, device_sort_adversarial_keys);
     tcase_set_timeout(tc, 300);
     suite_add_tcase(s, tc);
     tc = tcase_create("scenes");

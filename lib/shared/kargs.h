@@ -28,22 +28,23 @@ typedef struct atrbvh_kargs_bounds {
 } atrbvh_kargs_bounds;
 
 /* morton: the host's Morton frame (atrbvh_morton_quantise), and the
- * sort's blocks (its first pass's counts are the morton kernel's) */
+ * sort's blocks (the morton kernel finds the keys' varying bits by them) */
 typedef struct atrbvh_kargs_morton {
     double lo[3];
     double scale[3];
     atrbvh_u32 n;
     atrbvh_u32 blocks;  /* as atrbvh_kargs_sort */
-    atrbvh_u32 entries;
     atrbvh_u32 pad0;
+    atrbvh_u32 pad1;
 } atrbvh_kargs_morton;
 
-/* sort_count, sort_scatter: one 8-bit pass */
+/* sort_count, sort_scatter, sort_buckets: the MSD pass and the buckets
+ * (shared/sort.h; the digit is atrbvh_sort_msd's, found on the device) */
 typedef struct atrbvh_kargs_sort {
     atrbvh_u32 n;
-    atrbvh_u32 shift;   /* the digit's lowest bit */
     atrbvh_u32 blocks;  /* contiguous blocks (shared/sort.h) */
-    atrbvh_u32 entries; /* ATRBVH_SORT_RADIX * blocks */
+    atrbvh_u32 buckets; /* the most any n keys make: sort_buckets' items */
+    atrbvh_u32 entries; /* buckets * blocks: the counts' size */
 } atrbvh_kargs_sort;
 
 /* hierarchy, refit, collapse, layout */
