@@ -2,6 +2,9 @@
  * api.c - version, errors, the replaceable allocator, option defaults and
  * validation, and the small helpers every stage uses.
  */
+#if defined(__linux__)
+#define _DEFAULT_SOURCE /* madvise, MADV_HUGEPAGE (atrbvh_i_advise_huge) */
+#endif
 #include "config.h"
 
 #include "internal.h"
@@ -12,6 +15,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 /* ----------------------------------------------------------------- version */
 unsigned atrbvh_version(void)
@@ -134,12 +141,38 @@ int atrbvh_i_mul_size(size_t count, size_t size, size_t *out)
     return 1;
 }
 
+/* Large arrays are fresh memory: the C library maps a block of more than
+ * its threshold (at most 32 MiB) at every allocation and unmaps it when
+ * freed, so every build of a large scene first touched its scratch and its
+ * output (the nodes, 32 bytes each) 4 KiB per page fault, again and again
+ * on a reused device.  Advising transparent huge pages over the 2 MiB-
+ * aligned part makes that 512 times fewer faults where the system allows
+ * it; the advice changes no contents and its failure nothing. */
+void atrbvh_i_advise_huge(void *p, size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    const uintptr_t huge = (uintptr_t)1 << 21;
+    const uintptr_t lo = ((uintptr_t)p + huge - 1) & ~(huge - 1),
+                    hi = ((uintptr_t)p + bytes) & ~(huge - 1);
+    /* only memory of the C library's malloc: a replaced allocator's
+     * blocks (a pool, a mapping with its own flags) are its business */
+    if (p && !user_malloc && bytes >= 4 * huge && hi > lo)
+        (void)madvise((void *)lo, (size_t)(hi - lo), MADV_HUGEPAGE);
+#else
+    (void)p;
+    (void)bytes;
+#endif
+}
+
 void *atrbvh_i_alloc_array(size_t count, size_t size)
 {
     size_t bytes;
+    void *p;
     if (!atrbvh_i_mul_size(count, size, &bytes))
         return NULL;
-    return atrbvh_i_malloc(bytes);
+    p = atrbvh_i_malloc(bytes);
+    atrbvh_i_advise_huge(p, bytes);
+    return p;
 }
 
 /* ----------------------------------------------------------------- threads */

@@ -30,8 +30,13 @@ void *atrbvh_i_malloc(size_t size);
 void atrbvh_i_free(void *ptr);
 /* count * size into *out; 0 (and *out = 0) on overflow. */
 int atrbvh_i_mul_size(size_t count, size_t size, size_t *out);
-/* count * size bytes; NULL on overflow or allocator failure. */
+/* count * size bytes; NULL on overflow or allocator failure.  An array of
+ * 8 MiB or more gets atrbvh_i_advise_huge. */
 void *atrbvh_i_alloc_array(size_t count, size_t size);
+/* Transparent huge pages advised (Linux) over the 2 MiB-aligned part of a
+ * block of `bytes` at p from the C library's malloc, when 8 MiB or more;
+ * nothing otherwise (a replaced allocator's blocks, other systems). */
+void atrbvh_i_advise_huge(void *p, size_t bytes);
 /* Fills `error` (may be NULL) and returns `status`; printf-style text. */
 atrbvh_status atrbvh_i_fail(atrbvh_error *error, atrbvh_status status,
                             uint64_t index, const char *fmt, ...)

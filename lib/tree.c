@@ -2,43 +2,12 @@
  * tree.c - the binary tree's arrays outside a build (stage capture): alloc,
  * copy, free; and the capture's release.
  */
-#if defined(__linux__)
-#define _DEFAULT_SOURCE /* madvise, MADV_HUGEPAGE (advise_huge) */
-#endif
 #include "config.h"
 
 #include "internal.h"
 
 #include <stdlib.h>
 #include <string.h>
-
-#if defined(__linux__)
-#include <stdint.h>
-#include <sys/mman.h>
-#endif
-
-/* Large scratch arrays are fresh memory at every build without a handle
- * (the C library maps and unmaps them): their first touch faulted in
- * 4 KiB at a time.  Advising transparent huge pages over the 2 MiB-aligned
- * part makes that 512 times fewer faults where the system allows it (the
- * advice changes no contents and its failure nothing). */
-static void advise_huge(void *p, size_t bytes)
-{
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    const uintptr_t huge = (uintptr_t)1 << 21;
-    const uintptr_t lo = ((uintptr_t)p + huge - 1) & ~(huge - 1),
-                    hi = ((uintptr_t)p + bytes) & ~(huge - 1);
-    atrbvh_malloc_fn m;
-    /* only memory of the C library's malloc: a replaced allocator's
-     * blocks (a pool, a mapping with its own flags) are its business */
-    atrbvh_get_allocator(&m, NULL);
-    if (m == malloc && bytes >= 4 * huge && hi > lo)
-        (void)madvise((void *)lo, (size_t)(hi - lo), MADV_HUGEPAGE);
-#else
-    (void)p;
-    (void)bytes;
-#endif
-}
 
 atrbvh_status atrbvh_i_tree_alloc(atrbvh_i_tree *t, uint32_t n, int values)
 {
@@ -137,6 +106,7 @@ void *atrbvh_i_scratch_get(atrbvh_i_scratch *s, unsigned slot, size_t count,
                 void *grown = atrbvh_i_malloc(bytes);
                 if (!grown)
                     return NULL; /* the old contents stay */
+                atrbvh_i_advise_huge(grown, bytes);
                 memcpy(grown, s->ptr[k], s->bytes[k]);
                 atrbvh_i_free(s->ptr[k]);
                 s->ptr[k] = grown;
@@ -148,7 +118,7 @@ void *atrbvh_i_scratch_get(atrbvh_i_scratch *s, unsigned slot, size_t count,
     s->ptr[k] = atrbvh_i_malloc(bytes);
     s->bytes[k] = s->ptr[k] ? bytes : 0;
     if (s->ptr[k])
-        advise_huge(s->ptr[k], bytes);
+        atrbvh_i_advise_huge(s->ptr[k], bytes);
     return s->ptr[k];
 }
 
