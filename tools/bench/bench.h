@@ -22,7 +22,8 @@
 #define MAX_CONFIGS 256
 #define MAX_SCENES 64
 #define MAX_SIZES 32
-/* Above this many triangles the scaling study builds once, no warm-up. */
+/* Above this many triangles the scaling study times one build (after its
+ * warm-up build, as at every size). */
 #define SCALING_SINGLE_RUN 2000000
 
 typedef struct config {
