@@ -26,6 +26,10 @@
  *    primitive is rejected, and so is a version 2 split file with a
  *    primitive twice in one leaf.
  *  - atrbvh_refit of a split tree: ATRBVH_ERR_UNSUPPORTED.
+ *  - The tree-guided rule: over a few slivers among small triangles the
+ *    LBVH's SAH falls (collapsed and not), no triangle gets more than 8
+ *    references; a sliver present twice is not split (its twin holds
+ *    every box above it) where the same sliver alone is.
  *  - Every allocation of a split build failing in turn: ATRBVH_ERR_NOMEM,
  *    nothing leaked.
  */
@@ -597,6 +601,98 @@ END_TEST
 /* Each allocation of a split build (threads 1 and 3, skip_invalid on and
  * off) failing in turn: ATRBVH_ERR_NOMEM with nothing leaked, until the
  * build succeeds. */
+/* References per triangle of a tree. */
+static unsigned *ref_counts(const atrbvh_bvh *b, size_t nt)
+{
+    size_t nn, np, i, j;
+    const atrbvh_node *nodes = atrbvh_bvh_nodes(b, &nn);
+    const uint32_t *idx = atrbvh_bvh_primitive_indices(b, &np);
+    unsigned *seen = calloc(nt, sizeof *seen);
+    ck_assert_ptr_nonnull(seen);
+    for (i = 0; i < nn; i++)
+        for (j = 0; j < nodes[i].count; j++)
+            seen[idx[nodes[i].index + j]]++;
+    return seen;
+}
+
+/* The tree-guided rule splits where the first tree says it pays: over a
+ * few slivers among small triangles, the LBVH's SAH (one primitive per
+ * leaf: the first tree's own form, and collapsed) falls by a tenth, and
+ * no triangle gets more than 7 splits (8 references). */
+START_TEST(splitting_pays)
+{
+    const size_t n = 3000, s = 20, nt = n + s;
+    float *v = sliver_scene(n, s, 31);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
+    int collapse;
+    for (collapse = 0; collapse < 2; collapse++) {
+        atrbvh_build_options o = split_options(0.3);
+        atrbvh_bvh *a, *b;
+        atrbvh_stats sa, sb;
+        unsigned *seen;
+        size_t i;
+        o.method = ATRBVH_METHOD_LBVH;
+        o.collapse = collapse;
+        o.max_leaf_size = collapse ? 8 : 0;
+        a = tu_build(&g, &o);
+        o.split_budget = 0.0;
+        b = tu_build(&g, &o);
+        ck_assert_int_eq(atrbvh_bvh_stats(a, &sa), ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_bvh_stats(b, &sb), ATRBVH_OK);
+        ck_assert_msg(sa.sah < 0.95 * sb.sah,
+                      "collapse %d: SAH %g split, %g unsplit", collapse,
+                      sa.sah, sb.sah);
+        seen = ref_counts(a, nt);
+        for (i = 0; i < nt; i++)
+            ck_assert_msg(seen[i] <= 8, "triangle %zu: %u references", i,
+                          seen[i]);
+        atrbvh_bvh_free(a);
+        atrbvh_bvh_free(b);
+        free(seen);
+    }
+    free(v);
+}
+END_TEST
+
+/* A triangle is split for what it alone adds to the nodes above it: each
+ * of two identical slivers leaves the other to hold every box above it,
+ * so no sliver of a pair is split, while in the same scene with one of
+ * each, slivers are. */
+START_TEST(twins_not_split)
+{
+    const size_t n = 3000, s = 20, nt = n + 2 * s;
+    float *one = sliver_scene(n, s, 31);
+    float *v = malloc(nt * 9 * sizeof *v);
+    atrbvh_geometry g;
+    atrbvh_build_options o = split_options(0.3);
+    atrbvh_bvh *a;
+    unsigned *seen;
+    size_t i, split = 0;
+    ck_assert_ptr_nonnull(v);
+    memcpy(v, one, (n + s) * 9 * sizeof *v);
+    memcpy(v + 9 * (n + s), one + 9 * n, s * 9 * sizeof *v);
+    o.method = ATRBVH_METHOD_LBVH;
+    g = atrbvh_geometry_triangles(one, 3 * (n + s), NULL, n + s);
+    a = tu_build(&g, &o);
+    seen = ref_counts(a, n + s);
+    for (i = n; i < n + s; i++)
+        split += seen[i] > 1;
+    ck_assert_msg(split > 0, "the slivers alone: none split");
+    free(seen);
+    atrbvh_bvh_free(a);
+    g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
+    a = tu_build(&g, &o);
+    seen = ref_counts(a, nt);
+    for (i = n; i < nt; i++)
+        ck_assert_msg(seen[i] == 1, "sliver %zu of a pair: %u references",
+                      i, seen[i]);
+    free(seen);
+    atrbvh_bvh_free(a);
+    free(one);
+    free(v);
+}
+END_TEST
+
 START_TEST(allocation_failures)
 {
     const size_t nt = 200;
@@ -653,6 +749,8 @@ static Suite *suite(void)
     tcase_add_test(t, skip_invalid_with_split);
     tcase_add_test(t, save_load_versions);
     tcase_add_test(t, refit_refuses_split_trees);
+    tcase_add_test(t, splitting_pays);
+    tcase_add_test(t, twins_not_split);
     tcase_add_test(t, allocation_failures);
     suite_add_tcase(s, t);
     return s;
