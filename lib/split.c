@@ -340,7 +340,7 @@ typedef struct tri_path {
     uint32_t node[GAIN_DEPTH];
     atrbvh_box rest[GAIN_DEPTH];
     int depth;
-    double removal;
+    double removal, above; /* above: the ancestors' part of removal */
 } tri_path;
 
 /* 0 when the way is deeper than GAIN_DEPTH (no estimate). */
@@ -351,6 +351,7 @@ static int walk_up(const first_tree *f, const atrbvh_i_config *cfg,
     uint32_t c = leaf;
     int d = 0;
     w->removal = cfg->cost.ct * atrbvh_box_area(node_box(&nodes[leaf]));
+    w->above = 0.0;
     while (c != 0) {
         const uint32_t p = f->parent[c];
         const atrbvh_node *a = &nodes[p];
@@ -362,13 +363,16 @@ static int walk_up(const first_tree *f, const atrbvh_i_config *cfg,
         w->node[d] = p;
         if (d && memcmp(&w->rest[d], &ab, sizeof ab) == 0)
             break; /* this node and every one above keep their boxes */
-        w->removal += cfg->cost.ci *
-                      (d ? atrbvh_box_area(ab) - atrbvh_box_area(w->rest[d])
-                         : atrbvh_box_area(ab));
+        if (d)
+            w->above += cfg->cost.ci * (atrbvh_box_area(ab) -
+                                        atrbvh_box_area(w->rest[d]));
+        else
+            w->removal += cfg->cost.ci * atrbvh_box_area(ab);
         d++;
         c = p;
     }
     w->depth = d;
+    w->removal += w->above;
     return d > 0;
 }
 
@@ -605,10 +609,14 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
             tri_path w;
             if (budget > 0 && walk_up(&ft, cfg, ft.leaf_of[id], &w)) {
                 tri_vertices(&run->in, id, v);
-                /* no split saves more than the removal less the least
-                 * area boxes around the pieces can have (each face pair
-                 * at least the triangle's projection) */
-                if (w.removal > (cfg->cost.ci + cfg->cost.ct) * min_area(v))
+                /* only a triangle that makes the nodes above its parent
+                 * larger by more than its own box's area (a large one
+                 * among small ones) is weighed, and none whose removal
+                 * saves less than the least area boxes around its
+                 * pieces can have (each face pair at least the
+                 * triangle's projection) */
+                if (w.above > cfg->cost.ci * atrbvh_box_area(boxes[j]) &&
+                    w.removal > (cfg->cost.ci + cfg->cost.ct) * min_area(v))
                     /* 1, 3, 7 splits: more only while the gain per split
                      * holds */
                     for (s = 1; s <= GAIN_SPLITS; s = 2 * s + 1) {
@@ -634,7 +642,10 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
 
     /* The largest scale d whose total is within the budget. */
     d = 0.0;
-    if (budget > 0 && psum > 0.0) {
+    if (budget > 0 && psum > 0.0 &&
+        total_splits(prio, chosen, kept, INFINITY, threads) <= budget) {
+        d = INFINITY; /* every cut that pays fits */
+    } else if (budget > 0 && psum > 0.0) {
         /* sum of s_i over d p_i >= 1 <= d sum p_i s_i = B */
         d_lo = (double)budget / psum;
         d_hi = d_lo;

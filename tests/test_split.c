@@ -473,7 +473,7 @@ END_TEST
 START_TEST(skip_invalid_with_split)
 {
     const size_t nt = 500;
-    float *v = sliver_scene(450, 50, 51);
+    float *v = sliver_scene(490, 10, 51);
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     atrbvh_build_options o = split_options(0.5);
     atrbvh_bvh *b;
