@@ -45,6 +45,9 @@
 #define NO_INDEX ((uint64_t)-1)
 /* The most references a build may have: 2n - 1 nodes fit in u32 ids. */
 #define MAX_REFS 0x7fffffffu
+/* The most splits one triangle gets by the priority rule (its pieces
+ * then number at most one more). */
+#define MAX_SPLITS 4096u
 
 typedef struct grid {
     double lo[3], scale[3]; /* cells = (x - lo) * scale, 2^21 per axis */
@@ -119,6 +122,32 @@ static int best_plane(const grid *g, const atrbvh_box *b, int *axis,
         }
     }
     return best;
+}
+
+/* The Karras-Aila priority (ATRBVH_SPLIT_PRIORITY): (2^(level - 62) *
+ * (A_box - A_ideal))^(1/3), 0 for a box no grid plane crosses. */
+static double priority(const grid *g, double v[3][3],
+                       const atrbvh_box *b)
+{
+    double e1[3], e2[3], cx, cy, cz, ideal, excess;
+    int axis, level;
+    float at;
+    int k;
+    level = best_plane(g, b, &axis, &at);
+    if (level < 0)
+        return 0.0;
+    for (k = 0; k < 3; k++) {
+        e1[k] = v[1][k] - v[0][k];
+        e2[k] = v[2][k] - v[0][k];
+    }
+    cx = e1[1] * e2[2] - e1[2] * e2[1];
+    cy = e1[2] * e2[0] - e1[0] * e2[2];
+    cz = e1[0] * e2[1] - e1[1] * e2[0];
+    ideal = 2.0 * (fabs(cx) + fabs(cy) + fabs(cz));
+    excess = atrbvh_box_area(*b) - ideal;
+    if (!(excess > 0.0))
+        return 0.0;
+    return cbrt(ldexp(excess, level - 62));
 }
 
 /* The least total surface area boxes around the pieces of a triangle can
@@ -518,12 +547,17 @@ static atrbvh_status first_tree_open(const atrbvh_i_run *run,
 
 /* Sum over triangles of splits_of: integer, so the
  * same for any thread count. */
-/* The splits of triangle i at scale d: all its chosen ones when its gain
- * per split p reaches 1 / d, else none. */
+/* The splits of triangle i at scale d: by the tree rule (chosen) all its
+ * chosen ones when its gain per split p reaches 1 / d, else none; by the
+ * priority rule floor(d p), at most MAX_SPLITS. */
 static uint32_t splits_of(double d, double p, const uint32_t *chosen,
                           size_t i)
 {
-    return d * p >= 1.0 ? chosen[i] : 0u;
+    double s;
+    if (chosen)
+        return d * p >= 1.0 ? chosen[i] : 0u;
+    s = floor(d * p);
+    return s >= (double)MAX_SPLITS ? MAX_SPLITS : (uint32_t)s;
 }
 
 static uint64_t total_splits(const double *p, const uint32_t *fixed,
@@ -550,11 +584,12 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
     double *prio = NULL;
     first_tree ft;
     uint32_t *chosen = NULL;
+    const int tree = cfg->split_rule != ATRBVH_SPLIT_PRIORITY;
     uint64_t *offset = NULL, budget, total = 0, want;
     size_t invalid = 0, i;
     atrbvh_status st;
     grid g;
-    int k;
+    int k, failed = 0;
     double d, d_lo, d_hi, psum = 0.0;
 
     memset(&ft, 0, sizeof ft);
@@ -580,17 +615,18 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
         budget = want;
 
     prio = atrbvh_i_alloc_array(kept, sizeof *prio);
-    chosen = atrbvh_i_alloc_array(kept, sizeof *chosen);
+    if (tree)
+        chosen = atrbvh_i_alloc_array(kept, sizeof *chosen);
     count = atrbvh_i_alloc_array(kept, sizeof *count);
     offset = atrbvh_i_alloc_array((size_t)kept + 1, sizeof *offset);
-    if (!prio || !chosen || !count || !offset) {
+    if (!prio || (tree && !chosen) || !count || !offset) {
         st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                            "cannot allocate the split priorities of %lu "
                            "triangles",
                            (unsigned long)kept);
         goto done;
     }
-    if (budget > 0) {
+    if (tree && budget > 0) {
         st = first_tree_open(run, &centroids, &ft, error);
         if (st != ATRBVH_OK)
             goto done;
@@ -607,6 +643,11 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
             double v[3][3], best = 0.0;
             uint32_t s, np, best_s = 0;
             tri_path w;
+            if (!tree) {
+                tri_vertices(&run->in, id, v);
+                prio[j] = priority(&g, v, &boxes[j]);
+                continue;
+            }
             if (budget > 0 && walk_up(&ft, cfg, ft.leaf_of[id], &w)) {
                 tri_vertices(&run->in, id, v);
                 /* only a triangle that makes the nodes above its parent
@@ -638,7 +679,7 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
         }
     }
     for (i = 0; i < kept; i++) /* in index order: the same bits always */
-        psum += prio[i] * (double)chosen[i];
+        psum += prio[i] * (chosen ? (double)chosen[i] : 1.0);
 
     /* The largest scale d whose total is within the budget. */
     d = 0.0;
@@ -686,25 +727,43 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
                            (unsigned long long)total);
         goto done;
     }
-    {
-        int64_t j;
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 256)
+#pragma omp parallel num_threads(threads)
+#endif
+    {
+        piece *stack = atrbvh_i_alloc_array(
+            (tree ? GAIN_SPLITS : MAX_SPLITS) + 2, sizeof *stack);
+        int64_t j;
+        if (!stack) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            failed = 1;
+        }
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 256)
 #endif
         for (j = 0; j < (int64_t)kept; j++) {
             const uint32_t splits =
                 (uint32_t)(offset[j + 1] - offset[j] - 1);
+            if (!stack)
+                continue;
             if (splits == 0) {
                 refs[offset[j]] = boxes[j];
                 count[j] = 1;
-            } else { /* the pieces cut_gain weighed */
-                piece stack[GAIN_SPLITS + 2];
+            } else { /* by the tree rule, the pieces cut_gain weighed */
                 double v[3][3];
                 tri_vertices(&run->in, ids ? ids[j] : (uint32_t)j, v);
                 count[j] = split_one(&g, v, &boxes[j], splits, stack,
                                      &refs[offset[j]]);
             }
         }
+        atrbvh_i_free(stack);
+    }
+    if (failed) {
+        st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                           "cannot allocate the splitting stacks");
+        goto done;
     }
     /* Compact in triangle order (a triangle may have found fewer planes
      * than splits), ids alongside; centroids over the references. */

@@ -13,6 +13,9 @@
  *    to the box is not empty), and every triangle's vertices and its
  *    points on the scene's mid planes lie in the box of a leaf that
  *    lists it; stats.primitives counts primitives, not references.
+ *  - Both rules (ATRBVH_SPLIT_TREE, the default, and _PRIORITY) in the
+ *    tests below; split_rule outside them is ATRBVH_ERR_INVALID_ARGUMENT,
+ *    and a caller compiled before the field gets the tree rule.
  *  - The same tree for 1, 2, 3 and 4 threads; the same on OpenCL
  *    (atrbvh_validate_backends; skipped, saying so, without a device).
  *  - Closest and any hit through split trees (LBVH and ATRBVH, collapsed
@@ -247,6 +250,24 @@ START_TEST(off_by_default)
     o.split_budget = NAN;
     ck_assert_int_eq(atrbvh_build(&g, &o, &c, &e),
                      ATRBVH_ERR_INVALID_ARGUMENT);
+    o.split_budget = 0.3;
+    o.split_rule = 2;
+    ck_assert_int_eq(atrbvh_build(&g, &o, &c, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(e.text, "split_rule"));
+    o.split_rule = -1;
+    ck_assert_int_eq(atrbvh_build(&g, &o, &c, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    /* a caller compiled before split_rule gets the tree rule */
+    o = split_options(0.3);
+    old = o;
+    old.size = offsetof(atrbvh_build_options, split_budget) + sizeof(double);
+    old.split_rule = 7; /* past the caller's size: never read */
+    atrbvh_bvh_free(a);
+    atrbvh_bvh_free(b);
+    a = tu_build(&g, &o);
+    b = tu_build(&g, &old);
+    ck_assert_msg(tu_same_bvh(a, b, msg, sizeof msg), "%s", msg);
     atrbvh_bvh_free(a);
     atrbvh_bvh_free(b);
     free(v);
@@ -300,17 +321,18 @@ START_TEST(references_cover_triangles)
     const size_t nt = 1650;
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     size_t k;
-    for (k = 0; k < 3; k++) {
-        atrbvh_build_options o = split_options(budgets[k]);
+    for (k = 0; k < 6; k++) {
+        atrbvh_build_options o = split_options(budgets[k % 3]);
         atrbvh_bvh *b;
-        o.method = k == 0 ? ATRBVH_METHOD_LBVH : ATRBVH_METHOD_ATRBVH;
+        o.method = k % 3 == 0 ? ATRBVH_METHOD_LBVH : ATRBVH_METHOD_ATRBVH;
+        o.split_rule = k < 3 ? ATRBVH_SPLIT_TREE : ATRBVH_SPLIT_PRIORITY;
         b = tu_build(&g, &o);
-        check_split_tree(b, v, nt, budgets[k]);
+        check_split_tree(b, v, nt, budgets[k % 3]);
         atrbvh_bvh_free(b);
         o.collapse = 0;
         o.max_leaf_size = 0;
         b = tu_build(&g, &o);
-        check_split_tree(b, v, nt, budgets[k]);
+        check_split_tree(b, v, nt, budgets[k % 3]);
         atrbvh_bvh_free(b);
     }
     free(v);
@@ -319,41 +341,55 @@ END_TEST
 
 START_TEST(same_for_threads)
 {
-    float *v = sliver_scene(4000, 300, 21);
-    const size_t nt = 4300;
+    float *v = sliver_scene(4000, 30, 21);
+    const size_t nt = 4030;
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
-    atrbvh_build_options o = split_options(0.3);
-    atrbvh_bvh *ref;
-    char msg[256];
-    int t;
-    o.threads = 1;
-    ref = tu_build(&g, &o);
-    for (t = 2; t <= 4; t++) {
-        atrbvh_bvh *b;
-        o.threads = t;
-        b = tu_build(&g, &o);
-        ck_assert_msg(tu_same_bvh(ref, b, msg, sizeof msg), "%d threads: %s",
-                      t, msg);
-        atrbvh_bvh_free(b);
+    int rule;
+    for (rule = ATRBVH_SPLIT_TREE; rule <= ATRBVH_SPLIT_PRIORITY; rule++) {
+        atrbvh_build_options o = split_options(0.3);
+        atrbvh_bvh *ref;
+        char msg[256];
+        size_t np;
+        int t;
+        o.threads = 1;
+        o.split_rule = rule;
+        ref = tu_build(&g, &o);
+        (void)atrbvh_bvh_primitive_indices(ref, &np);
+        ck_assert_msg(np > nt, "rule %d: nothing split", rule);
+        for (t = 2; t <= 4; t++) {
+            atrbvh_bvh *b;
+            o.threads = t;
+            b = tu_build(&g, &o);
+            ck_assert_msg(tu_same_bvh(ref, b, msg, sizeof msg),
+                          "rule %d, %d threads: %s", rule, t, msg);
+            atrbvh_bvh_free(b);
+        }
+        atrbvh_bvh_free(ref);
     }
-    atrbvh_bvh_free(ref);
     free(v);
 }
 END_TEST
 
 START_TEST(same_on_opencl)
 {
-    float *v = sliver_scene(3000, 200, 31);
-    const size_t nt = 3200;
+    float *v = sliver_scene(3000, 20, 31);
+    const size_t nt = 3020;
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     static const double budgets[] = {0.1, 0.5};
     size_t k;
-    for (k = 0; k < 2; k++) {
-        atrbvh_build_options o = split_options(budgets[k]);
+    for (k = 0; k < 4; k++) {
+        atrbvh_build_options o = split_options(budgets[k % 2]);
         atrbvh_error e;
+        atrbvh_bvh *b;
+        size_t np;
         int same = 0;
         atrbvh_status st;
-        o.method = k ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_TRBVH;
+        o.method = k % 2 ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_TRBVH;
+        o.split_rule = k < 2 ? ATRBVH_SPLIT_TREE : ATRBVH_SPLIT_PRIORITY;
+        b = tu_build(&g, &o);
+        (void)atrbvh_bvh_primitive_indices(b, &np);
+        ck_assert_msg(np > nt, "case %zu: nothing split", k);
+        atrbvh_bvh_free(b);
         st = atrbvh_validate_backends(&g, &o, &same, &e);
         if (st == ATRBVH_ERR_UNSUPPORTED || st == ATRBVH_ERR_BACKEND ||
             (st == ATRBVH_ERR_INVALID_ARGUMENT && strstr(e.text, "device"))) {
@@ -362,7 +398,8 @@ START_TEST(same_on_opencl)
             break;
         }
         ck_assert_msg(st == ATRBVH_OK, "%s", e.text);
-        ck_assert_msg(same, "budget %g: %s", budgets[k], e.text);
+        ck_assert_msg(same, "case %zu, budget %g: %s", k, budgets[k % 2],
+                      e.text);
     }
     free(v);
 }
@@ -391,7 +428,7 @@ static int brute(atrbvh_bvh **one, const atrbvh_geometry *single, size_t nt,
 START_TEST(rays_equal_brute_force)
 {
     const size_t nt = 400;
-    float *v = sliver_scene(340, 60, 41);
+    float *v = sliver_scene(370, 30, 41);
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     atrbvh_geometry *single = malloc(nt * sizeof *single);
     atrbvh_bvh **one = malloc(nt * sizeof *one);
@@ -412,7 +449,7 @@ START_TEST(rays_equal_brute_force)
         float target[3];
         int c;
         if (i % 2) { /* at a point of a sliver on a mid plane */
-            uint32_t t = 340 + (uint32_t)(tu_rng_next(&r) % 60);
+            uint32_t t = 370 + (uint32_t)(tu_rng_next(&r) % 30);
             const float *p = tri(v, t, 0), *q = tri(v, t, 1);
             int axis = (int)(tu_rng_next(&r) % 3);
             float s = (0.5f - p[axis]) / (q[axis] - p[axis]);
@@ -430,15 +467,19 @@ START_TEST(rays_equal_brute_force)
         ry->tmin = 0.0f;
         ry->tmax = i % 3 ? INFINITY : 0.9f;
     }
-    for (k = 0; k < 4; k++) {
-        atrbvh_build_options o = split_options(k < 2 ? 0.3 : 2.0);
+    for (k = 0; k < 6; k++) {
+        atrbvh_build_options o = split_options(k % 4 < 2 ? 0.3 : 2.0);
         atrbvh_bvh *b;
+        size_t np;
         o.method = k % 2 ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_LBVH;
+        o.split_rule = k < 4 ? ATRBVH_SPLIT_TREE : ATRBVH_SPLIT_PRIORITY;
         if (k == 3) {
             o.collapse = 0;
             o.max_leaf_size = 0;
         }
         b = tu_build(&g, &o);
+        (void)atrbvh_bvh_primitive_indices(b, &np);
+        ck_assert_msg(np > nt, "config %zu: nothing split", k);
         for (i = 0; i < nr; i++) {
             atrbvh_hit h, bh;
             int hit = atrbvh_intersect(b, &g, &rays[i], &h);
