@@ -3,26 +3,30 @@
  * the Morton stage (Karras and Aila, HPG 2013, "triangle splitting"; the
  * older form is Ernst and Greiner's early split clipping).
  *
- * A triangle whose box is much larger than its area suggests (a long thin
- * diagonal sliver, a large slanted quad half) makes every node above it
- * large.  Such a triangle gets several references instead of one, each
- * with the box of the part of the triangle inside one cell of a binary
- * subdivision; the backends then build over references exactly as over
- * primitives (set_prims: a box and the original primitive id per
- * reference), so every backend gives the same tree by construction.
+ * A triangle that alone makes the nodes above it large (a long thin
+ * diagonal sliver, a large triangle among small ones) gets several
+ * references instead of one, each with the box of the part of the
+ * triangle inside one cell of a binary subdivision; the backends then
+ * build over references exactly as over primitives (set_prims: a box and
+ * the original primitive id per reference), so every backend gives the
+ * same tree by construction.
  *
  * Choosing what to split, under a budget of B = budget * n extra
- * references:
- *  - priority p = (2^-d * (A_box - A_ideal))^(1/3), where A_box is the
- *    box's surface area, A_ideal = 2 (|c_x| + |c_y| + |c_z|) with c the
- *    edge cross product (no box around the triangle, nor any set of boxes
- *    around its pieces, has less total area), and d the depth of the most
- *    important plane of the Morton grid that crosses the box (the highest
- *    bit where the quantised box ends differ, in Morton bit order: a plane
- *    near the root of the LBVH weighs most);
- *  - splits per triangle s = floor(D * p) with the largest D whose total
- *    is within B (bisection on D; the totals are integer sums, so the
- *    result does not depend on the thread count);
+ * references (docs/splitting.md):
+ *  - ATRBVH_SPLIT_TREE (default): a first LBVH of the unsplit triangles
+ *    (CPU, one primitive per leaf) is read per triangle: what taking it
+ *    out saves (its leaf, its parent, the ancestors shrunk to the rest of
+ *    their subtrees) less what its pieces cost where their Morton keys
+ *    land (cut_gain), for 1, 3 and 7 splits; a triangle is cut only
+ *    where that gain is positive, and the budget, when it does not hold
+ *    every such cut, goes to the highest gain per split;
+ *  - ATRBVH_SPLIT_PRIORITY (Karras-Aila): p = (2^-d * (A_box -
+ *    A_ideal))^(1/3), A_box the box's surface area, A_ideal = 2 (|c_x| +
+ *    |c_y| + |c_z|) with c the edge cross product, d the depth of the most
+ *    important grid plane crossing the box; s = floor(D * p) splits with
+ *    the largest D whose total is within B;
+ *  - either way the totals are integer sums found by bisection on a
+ *    scale, so the result does not depend on the thread count;
  *  - each split cuts the current piece at the most important grid plane
  *    crossing its box, the triangle clipped exactly to both halves (in
  *    double, rounded outward to float), and the remaining splits are
