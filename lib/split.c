@@ -331,9 +331,9 @@ static uint32_t split_one(const grid *g, double v[3][3],
 }
 
 #define GAIN_DEPTH 256 /* the deepest path the gain estimate follows */
-#define GAIN_SPLITS 7u  /* the most splits one triangle gets */
+#define GAIN_SPLITS 7u  /* the most splits the tree rule gives a triangle */
 
-/* The first tree of the tree-guided priority and what the estimate reads
+/* The first tree of the tree rule and what the gain estimate reads
  * of it. */
 typedef struct first_tree {
     atrbvh_bvh *t;
