@@ -268,6 +268,7 @@ void atrbvh_build_options_init(atrbvh_build_options *o)
     o->capture = NULL;
     o->capture_user = NULL;
     o->split_budget = 0.0;
+    o->split_rule = ATRBVH_SPLIT_TREE;
 }
 
 atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
@@ -378,6 +379,13 @@ atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
                              "split_budget %g is not between 0 and %g",
                              o.split_budget, ATRBVH_I_SPLIT_MAX);
     c->split_budget = o.split_budget;
+    if (o.split_rule != ATRBVH_SPLIT_TREE &&
+        o.split_rule != ATRBVH_SPLIT_PRIORITY)
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
+                             "split_rule %d is not ATRBVH_SPLIT_TREE or "
+                             "ATRBVH_SPLIT_PRIORITY",
+                             o.split_rule);
+    c->split_rule = o.split_rule;
     r->backend = o.backend;
     r->opencl_device = o.opencl_device;
     r->progress = o.progress;

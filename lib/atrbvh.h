@@ -275,7 +275,16 @@ typedef struct atrbvh_build_options {
                                     boxes geometry is never split).  A
                                     leaf may then share a primitive with
                                     another leaf (atrbvh(3))             */
+    int split_rule;              /* which triangles split_budget splits:
+                                    ATRBVH_SPLIT_TREE (0, default) or
+                                    ATRBVH_SPLIT_PRIORITY (atrbvh(3))     */
 } atrbvh_build_options;
+
+/* atrbvh_build_options.split_rule: cut where a first LBVH of the unsplit
+ * triangles says the cut lowers its SAH, or by the Karras-Aila priority
+ * (box area above the triangle's own, weighted by the Morton level of the
+ * grid plane crossing it). */
+enum { ATRBVH_SPLIT_TREE = 0, ATRBVH_SPLIT_PRIORITY = 1 };
 
 ATRBVH_API void atrbvh_build_options_init(atrbvh_build_options *options);
 

@@ -127,6 +127,7 @@ typedef struct atrbvh_i_config {
     int threads;
     int skip_invalid;
     double split_budget; /* 0: no triangle splitting (lib/split.c)   */
+    int split_rule;      /* ATRBVH_SPLIT_TREE or _PRIORITY            */
 } atrbvh_i_config;
 
 typedef struct atrbvh_i_run atrbvh_i_run;

@@ -3,26 +3,30 @@
  * the Morton stage (Karras and Aila, HPG 2013, "triangle splitting"; the
  * older form is Ernst and Greiner's early split clipping).
  *
- * A triangle whose box is much larger than its area suggests (a long thin
- * diagonal sliver, a large slanted quad half) makes every node above it
- * large.  Such a triangle gets several references instead of one, each
- * with the box of the part of the triangle inside one cell of a binary
- * subdivision; the backends then build over references exactly as over
- * primitives (set_prims: a box and the original primitive id per
- * reference), so every backend gives the same tree by construction.
+ * A triangle that alone makes the nodes above it large (a long thin
+ * diagonal sliver, a large triangle among small ones) gets several
+ * references instead of one, each with the box of the part of the
+ * triangle inside one cell of a binary subdivision; the backends then
+ * build over references exactly as over primitives (set_prims: a box and
+ * the original primitive id per reference), so every backend gives the
+ * same tree by construction.
  *
  * Choosing what to split, under a budget of B = budget * n extra
- * references:
- *  - priority p = (2^-d * (A_box - A_ideal))^(1/3), where A_box is the
- *    box's surface area, A_ideal = 2 (|c_x| + |c_y| + |c_z|) with c the
- *    edge cross product (no box around the triangle, nor any set of boxes
- *    around its pieces, has less total area), and d the depth of the most
- *    important plane of the Morton grid that crosses the box (the highest
- *    bit where the quantised box ends differ, in Morton bit order: a plane
- *    near the root of the LBVH weighs most);
- *  - splits per triangle s = floor(D * p) with the largest D whose total
- *    is within B (bisection on D; the totals are integer sums, so the
- *    result does not depend on the thread count);
+ * references (docs/splitting.md):
+ *  - ATRBVH_SPLIT_TREE (default): a first LBVH of the unsplit triangles
+ *    (CPU, one primitive per leaf) is read per triangle: what taking it
+ *    out saves (its leaf, its parent, the ancestors shrunk to the rest of
+ *    their subtrees) less what its pieces cost where their Morton keys
+ *    land (cut_gain), for 1, 3 and 7 splits; a triangle is cut only
+ *    where that gain is positive, and the budget, when it does not hold
+ *    every such cut, goes to the highest gain per split;
+ *  - ATRBVH_SPLIT_PRIORITY (Karras-Aila): p = (2^-d * (A_box -
+ *    A_ideal))^(1/3), A_box the box's surface area, A_ideal = 2 (|c_x| +
+ *    |c_y| + |c_z|) with c the edge cross product, d the depth of the most
+ *    important grid plane crossing the box; s = floor(D * p) splits with
+ *    the largest D whose total is within B;
+ *  - either way the totals are integer sums found by bisection on a
+ *    scale, so the result does not depend on the thread count;
  *  - each split cuts the current piece at the most important grid plane
  *    crossing its box, the triangle clipped exactly to both halves (in
  *    double, rounded outward to float), and the remaining splits are
@@ -43,11 +47,11 @@
 #include <string.h>
 
 #define NO_INDEX ((uint64_t)-1)
-/* The most splits one triangle gets (its pieces then number at most one
- * more); also bounds the recursion's stack. */
-#define MAX_SPLITS 4096u
 /* The most references a build may have: 2n - 1 nodes fit in u32 ids. */
 #define MAX_REFS 0x7fffffffu
+/* The most splits one triangle gets by the priority rule (its pieces
+ * then number at most one more). */
+#define MAX_SPLITS 4096u
 
 typedef struct grid {
     double lo[3], scale[3]; /* cells = (x - lo) * scale, 2^21 per axis */
@@ -72,42 +76,49 @@ static int high_bit(uint32_t x)
     return h;
 }
 
-/* The most important grid plane strictly inside box b: its axis, its
+/* The most important grid plane strictly inside box b on axis k: its
  * coordinate and its Morton bit level (62 most important), or -1. */
+static int axis_plane(const grid *g, const atrbvh_box *b, int k, float *at)
+{
+    uint32_t qa, qb, cell;
+    int h = 0;
+    float x = 0.0f;
+    if (g->scale[k] == 0.0)
+        return -1;
+    qa = quant(g, k, b->min[k]);
+    qb = quant(g, k, b->max[k]);
+    /* the highest plane between the ends' cells; one that falls on the
+     * box's end (rounding, or max exactly on a plane) gives way to the
+     * next one below it */
+    for (;;) {
+        if (qa >= qb)
+            break;
+        h = high_bit(qa ^ qb);
+        cell = (qb >> h) << h;
+        x = (float)(g->lo[k] + (double)cell * g->step[k]);
+        if (x >= b->max[k]) {
+            qb = cell - 1;
+            continue;
+        }
+        if (!(x > b->min[k]))
+            qa = qb; /* no plane strictly inside */
+        break;
+    }
+    if (qa >= qb)
+        return -1;
+    *at = x;
+    return 3 * h + (2 - k);
+}
+
+/* The most important grid plane strictly inside box b over the three
+ * axes (Morton bit order), or -1. */
 static int best_plane(const grid *g, const atrbvh_box *b, int *axis,
                       float *at)
 {
     int k, best = -1;
-
     for (k = 0; k < 3; k++) {
-        uint32_t qa, qb, cell;
-        int h, level;
         float x;
-        if (g->scale[k] == 0.0)
-            continue;
-
-        qa = quant(g, k, b->min[k]);
-        qb = quant(g, k, b->max[k]);
-        /* the highest plane between the ends' cells; one that falls on
-         * the box's end (rounding, or max exactly on a plane) gives way
-         * to the next one below it */
-        for (;;) {
-            if (qa >= qb)
-                break;
-            h = high_bit(qa ^ qb);
-            cell = (qb >> h) << h;
-            x = (float)(g->lo[k] + (double)cell * g->step[k]);
-            if (x >= b->max[k]) {
-                qb = cell - 1;
-                continue;
-            }
-            if (!(x > b->min[k]))
-                qa = qb; /* no plane strictly inside */
-            break;
-        }
-        if (qa >= qb)
-            continue;
-        level = 3 * h + (2 - k);
+        const int level = axis_plane(g, b, k, &x);
         if (level > best) {
             best = level;
             *axis = k;
@@ -117,21 +128,8 @@ static int best_plane(const grid *g, const atrbvh_box *b, int *axis,
     return best;
 }
 
-static void tri_vertices(const atrbvh_i_input *in, uint32_t id, double v[3][3])
-{
-    const atrbvh_geometry *g = in->g;
-    int c, k;
-    for (c = 0; c < 3; c++) {
-        float p[3];
-        atrbvh_u64 vid = atrbvh_fetch_vertex_id(
-            g->indices, in->istride / sizeof(uint32_t), g->indices != NULL,
-            id, c);
-        atrbvh_fetch_vertex(g->vertices, in->vstride / sizeof(float), vid, p);
-        for (k = 0; k < 3; k++)
-            v[c][k] = (double)p[k];
-    }
-}
-
+/* The Karras-Aila priority (ATRBVH_SPLIT_PRIORITY): (2^(level - 62) *
+ * (A_box - A_ideal))^(1/3), 0 for a box no grid plane crosses. */
 static double priority(const grid *g, double v[3][3],
                        const atrbvh_box *b)
 {
@@ -154,6 +152,38 @@ static double priority(const grid *g, double v[3][3],
     if (!(excess > 0.0))
         return 0.0;
     return cbrt(ldexp(excess, level - 62));
+}
+
+/* The least total surface area boxes around the pieces of a triangle can
+ * have: each face pair of a box covers the piece's projection, and the
+ * projections of the pieces add up to the triangle's: |c_x| + |c_y| +
+ * |c_z| with c the edge cross product. */
+static double min_area(double v[3][3])
+{
+    double e1[3], e2[3];
+    int k;
+    for (k = 0; k < 3; k++) {
+        e1[k] = v[1][k] - v[0][k];
+        e2[k] = v[2][k] - v[0][k];
+    }
+    return fabs(e1[1] * e2[2] - e1[2] * e2[1]) +
+           fabs(e1[2] * e2[0] - e1[0] * e2[2]) +
+           fabs(e1[0] * e2[1] - e1[1] * e2[0]);
+}
+
+static void tri_vertices(const atrbvh_i_input *in, uint32_t id, double v[3][3])
+{
+    const atrbvh_geometry *g = in->g;
+    int c, k;
+    for (c = 0; c < 3; c++) {
+        float p[3];
+        atrbvh_u64 vid = atrbvh_fetch_vertex_id(
+            g->indices, in->istride / sizeof(uint32_t), g->indices != NULL,
+            id, c);
+        atrbvh_fetch_vertex(g->vertices, in->vstride / sizeof(float), vid, p);
+        for (k = 0; k < 3; k++)
+            v[c][k] = (double)p[k];
+    }
 }
 
 /* Floats bounding [lo, hi] from outside, one ulp wider still. */
@@ -250,7 +280,7 @@ typedef struct piece {
 
 /* The pieces of one triangle (at most splits + 1 boxes into out, in a
  * fixed depth-first order); returns their count.  stack: room for
- * MAX_SPLITS + 2 pieces. */
+ * splits + 2 pieces. */
 static uint32_t split_one(const grid *g, double v[3][3],
                           const atrbvh_box *box, uint32_t splits,
                           piece *stack, atrbvh_box *out)
@@ -300,9 +330,242 @@ static uint32_t split_one(const grid *g, double v[3][3],
     return count;
 }
 
-/* Sum over triangles of min(floor(d * p), MAX_SPLITS): integer, so the
+#define GAIN_DEPTH 256 /* the deepest path the gain estimate follows */
+#define GAIN_SPLITS 7u  /* the most splits the tree rule gives a triangle */
+
+/* The first tree of the tree rule and what the gain estimate reads
+ * of it. */
+typedef struct first_tree {
+    atrbvh_bvh *t;
+    uint32_t *parent;   /* per node (the root's: 0) */
+    uint32_t *lfirst;   /* per node: its first leaf's position */
+    uint32_t *llast;    /* per node: its last leaf's position */
+    uint32_t *leaf_of;  /* per primitive id: its leaf node */
+    uint64_t *keys;     /* per leaf position: the Morton key */
+    uint32_t leaves;
+    double lo[3], scale[3];
+} first_tree;
+
+static uint64_t box_key(const first_tree *f, const atrbvh_box *b)
+{
+    uint32_t q[3];
+    int k;
+    for (k = 0; k < 3; k++)
+        q[k] = atrbvh_morton_quantise(atrbvh_box_centre(*b, k), f->lo[k],
+                                      f->scale[k]);
+    return atrbvh_morton_key(q[0], q[1], q[2]);
+}
+
+static atrbvh_box node_box(const atrbvh_node *n)
+{
+    atrbvh_box b;
+    memcpy(b.min, n->min, sizeof b.min);
+    memcpy(b.max, n->max, sizeof b.max);
+    return b;
+}
+
+/* A triangle's way up the first tree: its ancestors bottom up, each with
+ * the box of the rest of its subtree (the triangle left out), and what
+ * taking the triangle out saves (x SA(root)): its leaf, its parent (the
+ * other child takes its place) and, above, each ancestor shrunk to the
+ * rest. */
+typedef struct tri_path {
+    uint32_t node[GAIN_DEPTH];
+    atrbvh_box rest[GAIN_DEPTH];
+    int depth;
+    double removal, above; /* above: the ancestors' part of removal */
+} tri_path;
+
+/* 0 when the way is deeper than GAIN_DEPTH (no estimate). */
+static int walk_up(const first_tree *f, const atrbvh_i_config *cfg,
+                   uint32_t leaf, tri_path *w)
+{
+    const atrbvh_node *nodes = f->t->nodes;
+    uint32_t c = leaf;
+    int d = 0;
+    w->removal = cfg->cost.ct * atrbvh_box_area(node_box(&nodes[leaf]));
+    w->above = 0.0;
+    while (c != 0) {
+        const uint32_t p = f->parent[c];
+        const atrbvh_node *a = &nodes[p];
+        const atrbvh_box sb = node_box(&nodes[c == p + 1 ? a->index : p + 1]);
+        const atrbvh_box ab = node_box(a);
+        if (d == GAIN_DEPTH)
+            return 0;
+        w->rest[d] = d ? atrbvh_box_union(w->rest[d - 1], sb) : sb;
+        w->node[d] = p;
+        if (d && memcmp(&w->rest[d], &ab, sizeof ab) == 0)
+            break; /* this node and every one above keep their boxes */
+        if (d)
+            w->above += cfg->cost.ci * (atrbvh_box_area(ab) -
+                                        atrbvh_box_area(w->rest[d]));
+        else
+            w->removal += cfg->cost.ci * atrbvh_box_area(ab);
+        d++;
+        c = p;
+    }
+    w->depth = d;
+    w->removal += w->above;
+    return d > 0;
+}
+
+/* What cutting the triangle of path w into pieces pc[0..np) saves in the
+ * first tree's SAH (x SA(root); may be negative): its removal, less the
+ * pieces' cost: the ancestors hold the pieces that land in their
+ * subtree (a piece lands beside the leaf its Morton key sorts to), the
+ * nodes on a piece's way down below them grow to hold it, and each piece
+ * adds a leaf, and a parent beside the leaf it lands at (the first to
+ * land at the triangle's own leaf takes its place instead). */
+static double cut_gain(const first_tree *f, const atrbvh_i_config *cfg,
+                       const tri_path *w, uint32_t leaf,
+                       const atrbvh_box *pc, int np)
+{
+    const atrbvh_node *nodes = f->t->nodes;
+    const double ci = cfg->cost.ci, ct = cfg->cost.ct;
+    atrbvh_box in[GAIN_DEPTH], first = pc[0];
+    unsigned char has_in[GAIN_DEPTH];
+    int d, i, replaced = 0;
+    double gain = w->removal;
+    const uint32_t tpos = f->lfirst[leaf];
+
+    memset(has_in, 0, (size_t)w->depth);
+    for (i = 0; i < np; i++) {
+        const uint64_t key = box_key(f, &pc[i]);
+        uint32_t lo = 0, hi = f->leaves, n = 0;
+        d = w->depth - 1; /* the root's entry */
+        while (lo < hi) { /* the first leaf whose key is not below */
+            const uint32_t mid = lo + (hi - lo) / 2;
+            if (f->keys[mid] < key)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        if (lo == f->leaves)
+            lo--;
+        while (nodes[n].count == 0) {
+            const atrbvh_node *a = &nodes[n];
+            if (f->lfirst[n] <= tpos && tpos <= f->llast[n]) {
+                /* an ancestor: holds the piece (no change above the
+                 * walk's end: its box held the whole triangle) */
+                if (d >= 0 && w->node[d] == n) {
+                    in[d] = has_in[d] ? atrbvh_box_union(in[d], pc[i])
+                                      : pc[i];
+                    has_in[d] = 1;
+                    d--;
+                }
+            } else {
+                const atrbvh_box ab = node_box(a);
+                gain -= ci * (atrbvh_box_area(atrbvh_box_union(ab, pc[i])) -
+                              atrbvh_box_area(ab));
+            }
+            n = lo <= f->llast[n + 1] ? n + 1 : a->index;
+        }
+        if (n == leaf && !replaced) { /* in the triangle's place */
+            replaced = 1;
+            first = pc[i];
+        } else {
+            gain -= ci * atrbvh_box_area(atrbvh_box_union(
+                             n == leaf ? first : node_box(&nodes[n]), pc[i]));
+        }
+        gain -= ct * atrbvh_box_area(pc[i]);
+    }
+    if (replaced) /* the parent stays, holding rest and pieces */
+        gain -= ci * atrbvh_box_area(atrbvh_box_union(w->rest[0], in[0]));
+    for (d = 1; d < w->depth; d++)
+        if (has_in[d])
+            gain -= ci * (atrbvh_box_area(atrbvh_box_union(w->rest[d], in[d])) -
+                          atrbvh_box_area(w->rest[d]));
+    return gain;
+}
+
+static void first_tree_free(first_tree *f)
+{
+    atrbvh_i_free(f->parent);
+    atrbvh_i_free(f->lfirst);
+    atrbvh_i_free(f->llast);
+    atrbvh_i_free(f->leaf_of);
+    atrbvh_i_free(f->keys);
+    atrbvh_bvh_free(f->t);
+    memset(f, 0, sizeof *f);
+}
+
+/* The first tree: LBVH over the triangles, unsplit and not collapsed
+ * (a leaf per primitive, leaves in Morton order), on the CPU backend
+ * whatever the build's backend is, with what cut_gain reads of it. */
+static atrbvh_status first_tree_open(const atrbvh_i_run *run,
+                                     const atrbvh_box *centroids,
+                                     first_tree *f, atrbvh_error *error)
+{
+    const atrbvh_i_config *cfg = run->cfg;
+    atrbvh_build_options o;
+    atrbvh_status st;
+    size_t i, nn;
+    uint32_t leaves = 0;
+
+    memset(f, 0, sizeof *f);
+    atrbvh_build_options_init(&o);
+    o.method = ATRBVH_METHOD_LBVH;
+    o.collapse = 0;
+    o.ci = cfg->cost.ci;
+    o.ct = cfg->cost.ct;
+    o.threads = cfg->threads;
+    o.skip_invalid = cfg->skip_invalid;
+    st = atrbvh_build(run->in.g, &o, &f->t, error);
+    if (st != ATRBVH_OK)
+        return st;
+    nn = f->t->node_count;
+    f->parent = atrbvh_i_alloc_array(nn, sizeof *f->parent);
+    f->lfirst = atrbvh_i_alloc_array(nn, sizeof *f->lfirst);
+    f->llast = atrbvh_i_alloc_array(nn, sizeof *f->llast);
+    f->leaf_of = atrbvh_i_alloc_array(run->in.g->primitive_count,
+                                      sizeof *f->leaf_of);
+    f->keys = atrbvh_i_alloc_array(nn, sizeof *f->keys);
+    if (!f->parent || !f->lfirst || !f->llast || !f->leaf_of || !f->keys) {
+        first_tree_free(f);
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                             "cannot allocate the split priorities' first "
+                             "tree (%lu nodes)",
+                             (unsigned long)nn);
+    }
+    atrbvh_i_morton_frame(centroids, f->lo, f->scale);
+    f->parent[0] = 0;
+    for (i = 0; i < nn; i++) {
+        const atrbvh_node *nd = &f->t->nodes[i];
+        f->lfirst[i] = leaves;
+        if (nd->count) {
+            const atrbvh_box b = node_box(nd);
+            f->leaf_of[f->t->prim_indices[nd->index]] = (uint32_t)i;
+            f->keys[leaves++] = box_key(f, &b);
+        } else {
+            f->parent[i + 1] = (uint32_t)i;
+            f->parent[nd->index] = (uint32_t)i;
+        }
+    }
+    f->leaves = leaves;
+    for (i = nn; i-- > 0;) {
+        const atrbvh_node *nd = &f->t->nodes[i];
+        f->llast[i] = nd->count ? f->lfirst[i] : f->llast[nd->index];
+    }
+    return ATRBVH_OK;
+}
+
+/* Sum over triangles of splits_of: integer, so the
  * same for any thread count. */
-static uint64_t total_splits(const double *p, size_t n, double d, int threads)
+/* The splits of triangle i at scale d: by the tree rule (chosen) all its
+ * chosen ones when its gain per split p reaches 1 / d, else none; by the
+ * priority rule floor(d p), at most MAX_SPLITS. */
+static uint32_t splits_of(double d, double p, const uint32_t *chosen,
+                          size_t i)
+{
+    double s;
+    if (chosen)
+        return d * p >= 1.0 ? chosen[i] : 0u;
+    s = floor(d * p);
+    return s >= (double)MAX_SPLITS ? MAX_SPLITS : (uint32_t)s;
+}
+
+static uint64_t total_splits(const double *p, const uint32_t *fixed,
+                             size_t n, double d, int threads)
 {
     uint64_t sum = 0;
     int64_t i;
@@ -310,10 +573,8 @@ static uint64_t total_splits(const double *p, size_t n, double d, int threads)
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(threads) schedule(static) reduction(+ : sum)
 #endif
-    for (i = 0; i < (int64_t)n; i++) {
-        double s = floor(d * p[i]);
-        sum += s >= (double)MAX_SPLITS ? MAX_SPLITS : (uint64_t)s;
-    }
+    for (i = 0; i < (int64_t)n; i++)
+        sum += splits_of(d, p[i], fixed, (size_t)i);
     return sum;
 }
 
@@ -325,6 +586,9 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_box *boxes = NULL, *refs = NULL, scene, centroids;
     uint32_t *ids = NULL, *ref_ids = NULL, *count = NULL, kept = 0;
     double *prio = NULL;
+    first_tree ft;
+    uint32_t *chosen = NULL;
+    const int tree = cfg->split_rule != ATRBVH_SPLIT_PRIORITY;
     uint64_t *offset = NULL, budget, total = 0, want;
     size_t invalid = 0, i;
     atrbvh_status st;
@@ -332,6 +596,7 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
     int k, failed = 0;
     double d, d_lo, d_hi, psum = 0.0;
 
+    memset(&ft, 0, sizeof ft);
     st = atrbvh_i_scan_prims(&run->in, cfg, &boxes, &ids, &kept, &scene,
                              &centroids, &invalid, error);
     if (st != ATRBVH_OK)
@@ -354,37 +619,84 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
         budget = want;
 
     prio = atrbvh_i_alloc_array(kept, sizeof *prio);
+    if (tree)
+        chosen = atrbvh_i_alloc_array(kept, sizeof *chosen);
     count = atrbvh_i_alloc_array(kept, sizeof *count);
     offset = atrbvh_i_alloc_array((size_t)kept + 1, sizeof *offset);
-    if (!prio || !count || !offset) {
+    if (!prio || (tree && !chosen) || !count || !offset) {
         st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                            "cannot allocate the split priorities of %lu "
                            "triangles",
                            (unsigned long)kept);
         goto done;
     }
+    if (tree && budget > 0) {
+        st = first_tree_open(run, &centroids, &ft, error);
+        if (st != ATRBVH_OK)
+            goto done;
+    }
     {
         int64_t j;
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) schedule(static)
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 1024)
 #endif
         for (j = 0; j < (int64_t)kept; j++) {
-            double v[3][3];
-            tri_vertices(&run->in, ids ? ids[j] : (uint32_t)j, v);
-            prio[j] = priority(&g, v, &boxes[j]);
+            const uint32_t id = ids ? ids[j] : (uint32_t)j;
+            piece stack[GAIN_SPLITS + 2];
+            atrbvh_box pieces[GAIN_SPLITS + 1];
+            double v[3][3], best = 0.0;
+            uint32_t s, np, best_s = 0;
+            tri_path w;
+            if (!tree) {
+                tri_vertices(&run->in, id, v);
+                prio[j] = priority(&g, v, &boxes[j]);
+                continue;
+            }
+            if (budget > 0 && walk_up(&ft, cfg, ft.leaf_of[id], &w)) {
+                tri_vertices(&run->in, id, v);
+                /* only a triangle that makes the nodes above its parent
+                 * larger by more than its own box's area (a large one
+                 * among small ones) is weighed, and none whose removal
+                 * saves less than the least area boxes around its
+                 * pieces can have (each face pair at least the
+                 * triangle's projection) */
+                if (w.above > cfg->cost.ci * atrbvh_box_area(boxes[j]) &&
+                    w.removal > (cfg->cost.ci + cfg->cost.ct) * min_area(v))
+                    /* 1, 3, 7 splits: more only while the gain per split
+                     * holds */
+                    for (s = 1; s <= GAIN_SPLITS; s = 2 * s + 1) {
+                        double gain;
+                        np = split_one(&g, v, &boxes[j], s, stack, pieces);
+                        if (np < 2 || np - 1 <= best_s)
+                            break;
+                        gain = cut_gain(&ft, cfg, &w, ft.leaf_of[id], pieces,
+                                        (int)np);
+                        if (!(gain > 0.0) ||
+                            (best_s && gain * best_s < best * (np - 1)))
+                            break;
+                        best = gain;
+                        best_s = np - 1;
+                    }
+            }
+            chosen[j] = best_s;
+            prio[j] = best_s ? best / (double)best_s : 0.0;
         }
     }
     for (i = 0; i < kept; i++) /* in index order: the same bits always */
-        psum += prio[i];
+        psum += prio[i] * (chosen ? (double)chosen[i] : 1.0);
 
     /* The largest scale d whose total is within the budget. */
     d = 0.0;
-    if (budget > 0 && psum > 0.0) {
-        d_lo = (double)budget / psum; /* sum floor(d p) <= d sum p = B */
+    if (budget > 0 && psum > 0.0 &&
+        total_splits(prio, chosen, kept, INFINITY, threads) <= budget) {
+        d = INFINITY; /* every cut that pays fits */
+    } else if (budget > 0 && psum > 0.0) {
+        /* sum of s_i over d p_i >= 1 <= d sum p_i s_i = B */
+        d_lo = (double)budget / psum;
         d_hi = d_lo;
         for (k = 0; k < 64; k++) {
             d_hi *= 2.0;
-            if (total_splits(prio, kept, d_hi, threads) > budget)
+            if (total_splits(prio, chosen, kept, d_hi, threads) > budget)
                 break;
             d_lo = d_hi;
         }
@@ -393,7 +705,7 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
         if (k < 64)
             for (k = 0; k < 24; k++) {
                 double mid = 0.5 * (d_lo + d_hi);
-                uint64_t t = total_splits(prio, kept, mid, threads);
+                uint64_t t = total_splits(prio, chosen, kept, mid, threads);
                 if (t > budget) {
                     d_hi = mid;
                 } else {
@@ -406,8 +718,7 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
     }
     offset[0] = 0;
     for (i = 0; i < kept; i++) {
-        double s = floor(d * prio[i]);
-        uint32_t si = s >= (double)MAX_SPLITS ? MAX_SPLITS : (uint32_t)s;
+        uint32_t si = splits_of(d, prio[i], chosen, i);
         offset[i + 1] = offset[i] + si + 1;
     }
     total = offset[kept];
@@ -424,7 +735,8 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
 #pragma omp parallel num_threads(threads)
 #endif
     {
-        piece *stack = atrbvh_i_alloc_array(MAX_SPLITS + 2, sizeof *stack);
+        piece *stack = atrbvh_i_alloc_array(
+            (tree ? GAIN_SPLITS : MAX_SPLITS) + 2, sizeof *stack);
         int64_t j;
         if (!stack) {
 #ifdef _OPENMP
@@ -443,7 +755,7 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
             if (splits == 0) {
                 refs[offset[j]] = boxes[j];
                 count[j] = 1;
-            } else {
+            } else { /* by the tree rule, the pieces cut_gain weighed */
                 double v[3][3];
                 tri_vertices(&run->in, ids ? ids[j] : (uint32_t)j, v);
                 count[j] = split_one(&g, v, &boxes[j], splits, stack,
@@ -488,6 +800,8 @@ done:
     atrbvh_i_free(boxes);
     atrbvh_i_free(ids);
     atrbvh_i_free(prio);
+    first_tree_free(&ft);
+    atrbvh_i_free(chosen);
     atrbvh_i_free(count);
     atrbvh_i_free(offset);
     atrbvh_i_free(refs);

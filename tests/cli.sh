@@ -222,6 +222,12 @@ if run 0 build builtin:sphere:3000 --split 0.3 --json -o "$T/split.bvh"; then
     [ "$ver" = 2 ] || fail "--split: file version '$ver', expected 2"
     run 0 info "$T/split.bvh" && out_has "^references +$r "
 fi
+run 2 build "$T/nothere.ply" --split 0.3 --split-rule bogus &&
+    err_has '^atrbvh: build: --split-rule: '
+if run 0 build builtin:sphere:3000 --split 0.3 --split-rule priority --json; then
+    [ "$(json_value references)" -gt "$(json_value triangles)" ] ||
+        fail "--split-rule priority: nothing split"
+fi
 
 # ------------------------------------------------------------- build
 run 0 build "$DATA/cube.obj" --method lbvh && {

@@ -13,6 +13,9 @@
  *    to the box is not empty), and every triangle's vertices and its
  *    points on the scene's mid planes lie in the box of a leaf that
  *    lists it; stats.primitives counts primitives, not references.
+ *  - Both rules (ATRBVH_SPLIT_TREE, the default, and _PRIORITY) in the
+ *    tests below; split_rule outside them is ATRBVH_ERR_INVALID_ARGUMENT,
+ *    and a caller compiled before the field gets the tree rule.
  *  - The same tree for 1, 2, 3 and 4 threads; the same on OpenCL
  *    (atrbvh_validate_backends; skipped, saying so, without a device).
  *  - Closest and any hit through split trees (LBVH and ATRBVH, collapsed
@@ -26,6 +29,10 @@
  *    primitive is rejected, and so is a version 2 split file with a
  *    primitive twice in one leaf.
  *  - atrbvh_refit of a split tree: ATRBVH_ERR_UNSUPPORTED.
+ *  - The tree-guided rule: over a few slivers among small triangles the
+ *    LBVH's SAH falls (collapsed and not), no triangle gets more than 8
+ *    references; a sliver present twice is not split (its twin holds
+ *    every box above it) where the same sliver alone is.
  *  - Every allocation of a split build failing in turn: ATRBVH_ERR_NOMEM,
  *    nothing leaked.
  */
@@ -243,6 +250,24 @@ START_TEST(off_by_default)
     o.split_budget = NAN;
     ck_assert_int_eq(atrbvh_build(&g, &o, &c, &e),
                      ATRBVH_ERR_INVALID_ARGUMENT);
+    o.split_budget = 0.3;
+    o.split_rule = 2;
+    ck_assert_int_eq(atrbvh_build(&g, &o, &c, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(e.text, "split_rule"));
+    o.split_rule = -1;
+    ck_assert_int_eq(atrbvh_build(&g, &o, &c, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    /* a caller compiled before split_rule gets the tree rule */
+    o = split_options(0.3);
+    old = o;
+    old.size = offsetof(atrbvh_build_options, split_budget) + sizeof(double);
+    old.split_rule = 7; /* past the caller's size: never read */
+    atrbvh_bvh_free(a);
+    atrbvh_bvh_free(b);
+    a = tu_build(&g, &o);
+    b = tu_build(&g, &old);
+    ck_assert_msg(tu_same_bvh(a, b, msg, sizeof msg), "%s", msg);
     atrbvh_bvh_free(a);
     atrbvh_bvh_free(b);
     free(v);
@@ -296,17 +321,18 @@ START_TEST(references_cover_triangles)
     const size_t nt = 1650;
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     size_t k;
-    for (k = 0; k < 3; k++) {
-        atrbvh_build_options o = split_options(budgets[k]);
+    for (k = 0; k < 6; k++) {
+        atrbvh_build_options o = split_options(budgets[k % 3]);
         atrbvh_bvh *b;
-        o.method = k == 0 ? ATRBVH_METHOD_LBVH : ATRBVH_METHOD_ATRBVH;
+        o.method = k % 3 == 0 ? ATRBVH_METHOD_LBVH : ATRBVH_METHOD_ATRBVH;
+        o.split_rule = k < 3 ? ATRBVH_SPLIT_TREE : ATRBVH_SPLIT_PRIORITY;
         b = tu_build(&g, &o);
-        check_split_tree(b, v, nt, budgets[k]);
+        check_split_tree(b, v, nt, budgets[k % 3]);
         atrbvh_bvh_free(b);
         o.collapse = 0;
         o.max_leaf_size = 0;
         b = tu_build(&g, &o);
-        check_split_tree(b, v, nt, budgets[k]);
+        check_split_tree(b, v, nt, budgets[k % 3]);
         atrbvh_bvh_free(b);
     }
     free(v);
@@ -315,41 +341,55 @@ END_TEST
 
 START_TEST(same_for_threads)
 {
-    float *v = sliver_scene(4000, 300, 21);
-    const size_t nt = 4300;
+    float *v = sliver_scene(4000, 30, 21);
+    const size_t nt = 4030;
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
-    atrbvh_build_options o = split_options(0.3);
-    atrbvh_bvh *ref;
-    char msg[256];
-    int t;
-    o.threads = 1;
-    ref = tu_build(&g, &o);
-    for (t = 2; t <= 4; t++) {
-        atrbvh_bvh *b;
-        o.threads = t;
-        b = tu_build(&g, &o);
-        ck_assert_msg(tu_same_bvh(ref, b, msg, sizeof msg), "%d threads: %s",
-                      t, msg);
-        atrbvh_bvh_free(b);
+    int rule;
+    for (rule = ATRBVH_SPLIT_TREE; rule <= ATRBVH_SPLIT_PRIORITY; rule++) {
+        atrbvh_build_options o = split_options(0.3);
+        atrbvh_bvh *ref;
+        char msg[256];
+        size_t np;
+        int t;
+        o.threads = 1;
+        o.split_rule = rule;
+        ref = tu_build(&g, &o);
+        (void)atrbvh_bvh_primitive_indices(ref, &np);
+        ck_assert_msg(np > nt, "rule %d: nothing split", rule);
+        for (t = 2; t <= 4; t++) {
+            atrbvh_bvh *b;
+            o.threads = t;
+            b = tu_build(&g, &o);
+            ck_assert_msg(tu_same_bvh(ref, b, msg, sizeof msg),
+                          "rule %d, %d threads: %s", rule, t, msg);
+            atrbvh_bvh_free(b);
+        }
+        atrbvh_bvh_free(ref);
     }
-    atrbvh_bvh_free(ref);
     free(v);
 }
 END_TEST
 
 START_TEST(same_on_opencl)
 {
-    float *v = sliver_scene(3000, 200, 31);
-    const size_t nt = 3200;
+    float *v = sliver_scene(3000, 20, 31);
+    const size_t nt = 3020;
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     static const double budgets[] = {0.1, 0.5};
     size_t k;
-    for (k = 0; k < 2; k++) {
-        atrbvh_build_options o = split_options(budgets[k]);
+    for (k = 0; k < 4; k++) {
+        atrbvh_build_options o = split_options(budgets[k % 2]);
         atrbvh_error e;
+        atrbvh_bvh *b;
+        size_t np;
         int same = 0;
         atrbvh_status st;
-        o.method = k ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_TRBVH;
+        o.method = k % 2 ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_TRBVH;
+        o.split_rule = k < 2 ? ATRBVH_SPLIT_TREE : ATRBVH_SPLIT_PRIORITY;
+        b = tu_build(&g, &o);
+        (void)atrbvh_bvh_primitive_indices(b, &np);
+        ck_assert_msg(np > nt, "case %zu: nothing split", k);
+        atrbvh_bvh_free(b);
         st = atrbvh_validate_backends(&g, &o, &same, &e);
         if (st == ATRBVH_ERR_UNSUPPORTED || st == ATRBVH_ERR_BACKEND ||
             (st == ATRBVH_ERR_INVALID_ARGUMENT && strstr(e.text, "device"))) {
@@ -358,7 +398,8 @@ START_TEST(same_on_opencl)
             break;
         }
         ck_assert_msg(st == ATRBVH_OK, "%s", e.text);
-        ck_assert_msg(same, "budget %g: %s", budgets[k], e.text);
+        ck_assert_msg(same, "case %zu, budget %g: %s", k, budgets[k % 2],
+                      e.text);
     }
     free(v);
 }
@@ -387,7 +428,7 @@ static int brute(atrbvh_bvh **one, const atrbvh_geometry *single, size_t nt,
 START_TEST(rays_equal_brute_force)
 {
     const size_t nt = 400;
-    float *v = sliver_scene(340, 60, 41);
+    float *v = sliver_scene(370, 30, 41);
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     atrbvh_geometry *single = malloc(nt * sizeof *single);
     atrbvh_bvh **one = malloc(nt * sizeof *one);
@@ -408,7 +449,7 @@ START_TEST(rays_equal_brute_force)
         float target[3];
         int c;
         if (i % 2) { /* at a point of a sliver on a mid plane */
-            uint32_t t = 340 + (uint32_t)(tu_rng_next(&r) % 60);
+            uint32_t t = 370 + (uint32_t)(tu_rng_next(&r) % 30);
             const float *p = tri(v, t, 0), *q = tri(v, t, 1);
             int axis = (int)(tu_rng_next(&r) % 3);
             float s = (0.5f - p[axis]) / (q[axis] - p[axis]);
@@ -426,15 +467,19 @@ START_TEST(rays_equal_brute_force)
         ry->tmin = 0.0f;
         ry->tmax = i % 3 ? INFINITY : 0.9f;
     }
-    for (k = 0; k < 4; k++) {
-        atrbvh_build_options o = split_options(k < 2 ? 0.3 : 2.0);
+    for (k = 0; k < 6; k++) {
+        atrbvh_build_options o = split_options(k % 4 < 2 ? 0.3 : 2.0);
         atrbvh_bvh *b;
+        size_t np;
         o.method = k % 2 ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_LBVH;
+        o.split_rule = k < 4 ? ATRBVH_SPLIT_TREE : ATRBVH_SPLIT_PRIORITY;
         if (k == 3) {
             o.collapse = 0;
             o.max_leaf_size = 0;
         }
         b = tu_build(&g, &o);
+        (void)atrbvh_bvh_primitive_indices(b, &np);
+        ck_assert_msg(np > nt, "config %zu: nothing split", k);
         for (i = 0; i < nr; i++) {
             atrbvh_hit h, bh;
             int hit = atrbvh_intersect(b, &g, &rays[i], &h);
@@ -469,7 +514,7 @@ END_TEST
 START_TEST(skip_invalid_with_split)
 {
     const size_t nt = 500;
-    float *v = sliver_scene(450, 50, 51);
+    float *v = sliver_scene(490, 10, 51);
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     atrbvh_build_options o = split_options(0.5);
     atrbvh_bvh *b;
@@ -597,6 +642,98 @@ END_TEST
 /* Each allocation of a split build (threads 1 and 3, skip_invalid on and
  * off) failing in turn: ATRBVH_ERR_NOMEM with nothing leaked, until the
  * build succeeds. */
+/* References per triangle of a tree. */
+static unsigned *ref_counts(const atrbvh_bvh *b, size_t nt)
+{
+    size_t nn, np, i, j;
+    const atrbvh_node *nodes = atrbvh_bvh_nodes(b, &nn);
+    const uint32_t *idx = atrbvh_bvh_primitive_indices(b, &np);
+    unsigned *seen = calloc(nt, sizeof *seen);
+    ck_assert_ptr_nonnull(seen);
+    for (i = 0; i < nn; i++)
+        for (j = 0; j < nodes[i].count; j++)
+            seen[idx[nodes[i].index + j]]++;
+    return seen;
+}
+
+/* The tree-guided rule splits where the first tree says it pays: over a
+ * few slivers among small triangles, the LBVH's SAH (one primitive per
+ * leaf: the first tree's own form, and collapsed) falls by a tenth, and
+ * no triangle gets more than 7 splits (8 references). */
+START_TEST(splitting_pays)
+{
+    const size_t n = 3000, s = 20, nt = n + s;
+    float *v = sliver_scene(n, s, 31);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
+    int collapse;
+    for (collapse = 0; collapse < 2; collapse++) {
+        atrbvh_build_options o = split_options(0.3);
+        atrbvh_bvh *a, *b;
+        atrbvh_stats sa, sb;
+        unsigned *seen;
+        size_t i;
+        o.method = ATRBVH_METHOD_LBVH;
+        o.collapse = collapse;
+        o.max_leaf_size = collapse ? 8 : 0;
+        a = tu_build(&g, &o);
+        o.split_budget = 0.0;
+        b = tu_build(&g, &o);
+        ck_assert_int_eq(atrbvh_bvh_stats(a, &sa), ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_bvh_stats(b, &sb), ATRBVH_OK);
+        ck_assert_msg(sa.sah < 0.95 * sb.sah,
+                      "collapse %d: SAH %g split, %g unsplit", collapse,
+                      sa.sah, sb.sah);
+        seen = ref_counts(a, nt);
+        for (i = 0; i < nt; i++)
+            ck_assert_msg(seen[i] <= 8, "triangle %zu: %u references", i,
+                          seen[i]);
+        atrbvh_bvh_free(a);
+        atrbvh_bvh_free(b);
+        free(seen);
+    }
+    free(v);
+}
+END_TEST
+
+/* A triangle is split for what it alone adds to the nodes above it: each
+ * of two identical slivers leaves the other to hold every box above it,
+ * so no sliver of a pair is split, while in the same scene with one of
+ * each, slivers are. */
+START_TEST(twins_not_split)
+{
+    const size_t n = 3000, s = 20, nt = n + 2 * s;
+    float *one = sliver_scene(n, s, 31);
+    float *v = malloc(nt * 9 * sizeof *v);
+    atrbvh_geometry g;
+    atrbvh_build_options o = split_options(0.3);
+    atrbvh_bvh *a;
+    unsigned *seen;
+    size_t i, split = 0;
+    ck_assert_ptr_nonnull(v);
+    memcpy(v, one, (n + s) * 9 * sizeof *v);
+    memcpy(v + 9 * (n + s), one + 9 * n, s * 9 * sizeof *v);
+    o.method = ATRBVH_METHOD_LBVH;
+    g = atrbvh_geometry_triangles(one, 3 * (n + s), NULL, n + s);
+    a = tu_build(&g, &o);
+    seen = ref_counts(a, n + s);
+    for (i = n; i < n + s; i++)
+        split += seen[i] > 1;
+    ck_assert_msg(split > 0, "the slivers alone: none split");
+    free(seen);
+    atrbvh_bvh_free(a);
+    g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
+    a = tu_build(&g, &o);
+    seen = ref_counts(a, nt);
+    for (i = n; i < nt; i++)
+        ck_assert_msg(seen[i] == 1, "sliver %zu of a pair: %u references",
+                      i, seen[i]);
+    free(seen);
+    atrbvh_bvh_free(a);
+    free(one);
+    free(v);
+}
+END_TEST
+
 START_TEST(allocation_failures)
 {
     const size_t nt = 200;
@@ -653,6 +790,8 @@ static Suite *suite(void)
     tcase_add_test(t, skip_invalid_with_split);
     tcase_add_test(t, save_load_versions);
     tcase_add_test(t, refit_refuses_split_trees);
+    tcase_add_test(t, splitting_pays);
+    tcase_add_test(t, twins_not_split);
     tcase_add_test(t, allocation_failures);
     suite_add_tcase(s, t);
     return s;

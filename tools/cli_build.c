@@ -17,6 +17,8 @@
 #include <unistd.h>
 
 static const char *const method_names[] = {"lbvh", "trbvh", "atrbvh", NULL};
+/* in the order of ATRBVH_SPLIT_TREE, ATRBVH_SPLIT_PRIORITY */
+static const char *const split_rule_names[] = {"tree", "priority", NULL};
 static const atrbvh_method method_values[] = {
     ATRBVH_METHOD_LBVH, ATRBVH_METHOD_TRBVH, ATRBVH_METHOD_ATRBVH};
 static const char *const backend_names[] = {"cpu", "opencl", NULL};
@@ -141,9 +143,15 @@ void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table)
              .help = "SAH cost of a primitive (default 1.0)"},
             {.name = "--split", .kind = CLI_OPT_DOUBLE, .arg = "BUDGET",
              .min = 0.0, .max = 4.0, .dest = &o->split_budget,
-             .help = "split the boxes of triangles much larger than\n"
-                     "their area suggests, at most BUDGET * triangles\n"
-                     "extra references (e.g. 0.3; default 0: off)"},
+             .help = "split the boxes of triangles that make the\n"
+                     "nodes above them larger, at most BUDGET *\n"
+                     "triangles extra references (e.g. 0.3; default 0:\n"
+                     "off)"},
+            {.name = "--split-rule", .kind = CLI_OPT_ENUM,
+             .dest = &o->split_rule, .choices = split_rule_names,
+             .help = "which triangles --split cuts: tree (where a\n"
+                     "first LBVH says the cut pays; default) or\n"
+                     "priority (Karras-Aila)"},
             {.name = "--skip-invalid", .kind = CLI_OPT_FLAG,
              .dest = &o->skip_invalid, .flag_value = 1,
              .help = "leave out triangles with NaN or infinite\n"

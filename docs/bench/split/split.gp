@@ -1,5 +1,6 @@
-# SAH and build time against the split budget (docs/splitting.md's
-# measurements; gnuplot split.gp from this folder).
+# SAH against the split budget for both rules (docs/splitting.md's
+# measurements; gnuplot split.gp from this folder).  Budget 0 is the
+# unsplit tree, the first point of every line.
 set terminal pngcairo size 1200,420 font ",10" noenhanced
 set offsets 0, 0, 0.5, 0.5
 set output 'split.png'
@@ -9,9 +10,15 @@ do for [s in "conference dabrovic_sponza sibenik"] {
   set title s." (dashed: Embree HIGH + splits)"
   set xlabel "split budget (extra references / triangles)"
   set ylabel "SAH (collapsed, max leaf 8)"
-  set key top left
-  plot "< grep '^".s." ATRBVH(9,2)' split.dat" using 3:5 with linespoints title "ATRBVH(9,2)", \
-       "< grep '^".s." ATRBVH(16,3)' split.dat" using 3:5 with linespoints title "ATRBVH(16,3)", \
-       embree(s) with lines dashtype 2 title "Embree HIGH + splits"
+  set key top left font ",8"
+  plot for [c in "9,2 16,3 32,6"] \
+         "< grep -E '^".s." ATRBVH\\(".c."\\) (none|priority)' split.dat" \
+         using 4:6 with linespoints lt (c eq "9,2" ? 1 : c eq "16,3" ? 2 : 3) \
+         title "priority ATRBVH(".c.")", \
+       for [c in "9,2 16,3 32,6"] \
+         "< grep -E '^".s." ATRBVH\\(".c."\\) (none|tree)' split.dat" \
+         using 4:6 with linespoints lt (c eq "9,2" ? 1 : c eq "16,3" ? 2 : 3) \
+         dashtype 3 pt 6 title "tree ATRBVH(".c.")", \
+       embree(s) with lines lt 0 dashtype 2 lw 2 title "Embree HIGH + splits"
 }
 unset multiplot
