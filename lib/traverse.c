@@ -76,6 +76,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* The shared header's view of a BVH and its geometry; 0 when the geometry
@@ -136,52 +137,62 @@ static void closest(const atrbvh_trav_scene *s, const atrbvh_ray *ray,
                         &hit->t, &hit->u, &hit->v, &hit->primitive);
 }
 
-/* ------------------------------------------------------------ 4-wide
- * The uncounted batch calls (atrbvh_intersect_batch,
- * atrbvh_occluded_batch) trace the rays that take the single-precision
- * node test over a 4-wide copy of the tree, made once per call: each wide
- * node holds up to four nodes of the binary tree (a node and its
- * descendants, the internal one with the largest box opened first), their
- * boxes laid out so that one SSE operation takes the same slab of all
- * four.  Every box is tested with exactly the operations of
- * atrbvh_trav_box2_f on the same floats (subtraction, multiplication,
- * min, max, the same widening), so a box is hit in the wide traversal
- * exactly when it is hit in the binary one; the boxes are all finite (else
- * no wide copy is made; an unused lane's empty box of infinities meets
- * only finite origins and reciprocals), so no NaN arises and the order of
- * the min/max reductions does not change their values.  The leaves are
- * the binary tree's references, kept in the wide node itself (first,
- * count), tested by atrbvh_trav_leaf or, over triangles, from a copy of
- * their vertices (wide_leaf_tris, below).  The hit does not depend on the
- * order in which nodes are visited (closest hit: smallest t, ties to the
- * lower index; any hit: whether one exists), so the wide traversal returns
- * the binary one's hit, bit for bit.  The counted calls (the _stats ones)
- * keep the binary traversal: box_tests and prim_tests count its work.
- * Without SSE, for rays that take the double test, trees with a non-finite
- * box, deeper than WIDE_MAX_DEPTH wide levels, or malformed (a child
- * index out of order), and when memory is short, the binary traversal
- * runs. */
+/* ------------------------------------------------------------ 8-wide
+ * The uncounted batch calls (atrbvh_intersect_batch, atrbvh_occluded_batch)
+ * trace the rays that take the single-precision node test over an 8-wide copy
+ * of the tree, made on first use and kept: each wide node holds up to eight
+ * nodes of the binary tree (a node and its descendants, the internal one with
+ * the largest box opened first), their boxes laid out so that one AVX2
+ * operation (two SSE2 ones on CPUs without AVX2: wide_avx2) takes the same slab
+ * of all eight.  Against a 4-wide copy, half the wide levels: half the
+ * dependent node loads, which dominate incoherent rays on large scenes.  Every
+ * box is tested with exactly the operations of atrbvh_trav_box2_f on the same
+ * floats (subtraction, multiplication, min, max, the same widening), so a box
+ * is hit in the wide traversal exactly when it is hit in the binary one; the
+ * boxes are all finite (else no wide copy is made; an unused lane's empty box
+ * of infinities meets only finite origins and reciprocals), so no NaN arises
+ * and the order of the min/max reductions does not change their values.  The
+ * leaves are the binary tree's references, kept in the wide node itself (first,
+ * count), tested by atrbvh_trav_leaf or, over triangles, from a copy of their
+ * vertices (wide_leaf_tris, below).  The hit does not depend on the order in
+ * which nodes are visited (closest hit: smallest t, ties to the lower index;
+ * any hit: whether one exists), so the wide traversal returns the binary one's
+ * hit, bit for bit.  The counted calls (the _stats ones) keep the binary
+ * traversal: box_tests and prim_tests count its work.  Without SSE, for rays
+ * that take the double test, trees with a non-finite box, deeper than
+ * WIDE_MAX_DEPTH wide levels, or malformed (a child index out of order), and
+ * when memory is short, the binary traversal runs. */
 #ifdef ATRBVH_TRAV_SSE
+/* The AVX2 node test, chosen at run time (wide_avx2). */
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
+#define WIDE_AVX2 1
+#include <immintrin.h>
+#else
+#define WIDE_AVX2 0
+#endif
+/* Lanes per wide node: a multiple of 4 (the SSE2 node test takes four
+ * lanes at a time, the AVX2 one eight), at most 8 (masks in 8 bits). */
+#define WIDE_W 8
 typedef struct wide_node {
-    /* b[4 * axis + lane]: the lanes' minima; b[12 + 4 * axis + lane]:
-     * their maxima; an unused lane has an empty box (minima +inf, maxima
-     * -inf), which no ray hits (wide_run) */
-    float b[24];
+    /* b[WIDE_W * axis + lane]: the lanes' minima; b[3 * WIDE_W + WIDE_W *
+     * axis + lane]: their maxima; an unused lane has an empty box (minima
+     * +inf, maxima -inf), which no ray hits (wide_run) */
+    float b[6 * WIDE_W];
     /* >= 0: a wide node; < 0: a leaf, ~(count << 32 | first): the binary
      * leaf's references prim_indices[first, first + count) (see
      * WIDE_LEAF).  While the copy is made, child[0] holds the binary
      * node's index and (above bit 32) the wide depth. */
-    int64_t child[4];
+    int64_t child[WIDE_W];
 } wide_node;
 
 /* A leaf entry of wide_node.child. */
 #define WIDE_LEAF(first, count)                                                \
     (~(int64_t)((uint64_t)(count) << 32 | (uint64_t)(first)))
 
-/* A wide node pushes at most 3 entries and pops one: 3 * depth + 1 entries
- * for a tree of wide depth `depth`. */
+/* A wide node pushes at most WIDE_W - 1 entries and pops one: (WIDE_W -
+ * 1) * depth + 1 entries for a tree of wide depth `depth`. */
 #define WIDE_MAX_DEPTH 80
-#define WIDE_STACK (3 * WIDE_MAX_DEPTH + 4)
+#define WIDE_STACK ((WIDE_W - 1) * WIDE_MAX_DEPTH + WIDE_W)
 /* Batches below this many rays take the binary traversal (the copy costs
  * about as much as tracing a few rays per node). */
 #define WIDE_MIN_RAYS 1024u
@@ -209,17 +220,36 @@ static int box_inside(const atrbvh_node *a, const atrbvh_node *b)
     return 1;
 }
 
-/* The 4-wide copy of a binary tree whose root is internal, or NULL (see
- * above; *nomem 1 when memory was short).  Wide nodes are numbered breadth
- * first; while being filled, child[] holds binary indices. */
+/* Room for `count` wide nodes starting on a 64-byte boundary (a node then
+ * fills four cache lines, not five): one node more than asked, the block
+ * as allocated (what atrbvh_i_free takes and bvh->wide holds), or NULL.
+ * wide_nodes gives the first node. */
+static void *wide_alloc(size_t count)
+{
+    if (count >= SIZE_MAX / sizeof(wide_node))
+        return NULL;
+    return atrbvh_i_alloc_array(count + 1u, sizeof(wide_node));
+}
+
+static wide_node *wide_nodes(void *block)
+{
+    uintptr_t a = (uintptr_t)block;
+    return (wide_node *)((unsigned char *)block + ((64u - a % 64u) % 64u));
+}
+
+/* The 8-wide copy of a binary tree whose root is internal, as allocated
+ * (wide_alloc), or NULL (see above; *nomem 1 when memory was short).  Wide
+ * nodes are numbered breadth first; while being filled, child[] holds
+ * binary indices. */
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((noinline)) /* its own entry in profiles */
 #endif
-static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
-                            size_t prim_count, int *nomem)
+static void *wide_make(const atrbvh_node *nodes, size_t node_count,
+                       size_t prim_count, int *nomem)
 {
-    size_t internal = 0, i, n_wide = 1;
+    size_t internal = 0, i, n_wide = 1, cap;
     wide_node *w;
+    void *block;
     *nomem = 0;
     if (node_count < 3 || nodes[0].count != 0u)
         return NULL;
@@ -246,20 +276,28 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
     }
     if (node_count > (size_t)INT32_MAX)
         return NULL;
-    w = atrbvh_i_alloc_array(internal, sizeof *w);
-    if (!w) {
+    /* a wide node has WIDE_W lanes, holding WIDE_W - 1 internal nodes of
+     * its own (none shared), or fewer lanes, then all leaves (at least
+     * two of its own): at most internal / (WIDE_W - 1) + (internal + 1) /
+     * 2 wide nodes in a tree (more: malformed, below) */
+    cap = internal / (WIDE_W - 1) + (internal + 1) / 2 + 1;
+    if (cap > internal)
+        cap = internal;
+    block = wide_alloc(cap);
+    if (!block) {
         *nomem = 1;
         return NULL;
     }
+    w = wide_nodes(block);
     w[0].child[0] = (int64_t)1 << 32; /* binary node 0, depth 1 */
     for (i = 0; i < n_wide; i++) {
-        uint32_t list[4];
+        uint32_t list[WIDE_W];
         int lanes = 2, lane, axis;
         uint32_t b = (uint32_t)w[i].child[0];
         int64_t depth = w[i].child[0] >> 32;
         list[0] = b + 1u;
         list[1] = nodes[b].index;
-        while (lanes < 4) {
+        while (lanes < WIDE_W) {
             int best = -1;
             double best_area = -1.0;
             for (lane = 0; lane < lanes; lane++) {
@@ -278,16 +316,16 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
             list[best] = b + 1u;
             list[lanes++] = nodes[b].index;
         }
-        for (lane = 0; lane < 4; lane++) {
+        for (lane = 0; lane < WIDE_W; lane++) {
             const atrbvh_node *c = &nodes[list[lane < lanes ? lane : 0]];
             for (axis = 0; axis < 3; axis++) {
-                w[i].b[4 * axis + lane] =
+                w[i].b[WIDE_W * axis + lane] =
                     lane < lanes ? c->min[axis] : INFINITY;
-                w[i].b[12 + 4 * axis + lane] =
+                w[i].b[3 * WIDE_W + WIDE_W * axis + lane] =
                     lane < lanes ? c->max[axis] : -INFINITY;
             }
         }
-        for (lane = 0; lane < 4; lane++) {
+        for (lane = 0; lane < WIDE_W; lane++) {
             const atrbvh_node *c;
             if (lane >= lanes) {
                 w[i].child[lane] = 0;
@@ -298,10 +336,10 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
                 w[i].child[lane] = WIDE_LEAF(c->index, c->count);
                 continue;
             }
-            /* a tree has at most `internal` internal nodes: more wide
-             * nodes means a malformed tree (a node reached twice) */
-            if (n_wide >= internal || depth >= WIDE_MAX_DEPTH) {
-                atrbvh_i_free(w);
+            /* more wide nodes than `cap` means a malformed tree (a node
+             * reached twice) */
+            if (n_wide >= cap || depth >= WIDE_MAX_DEPTH) {
+                atrbvh_i_free(block);
                 return NULL;
             }
             w[n_wide].child[0] = (depth + 1) << 32 | (int64_t)list[lane];
@@ -309,18 +347,17 @@ static wide_node *wide_make(const atrbvh_node *nodes, size_t node_count,
             n_wide++;
         }
     }
-    /* the copy has fewer nodes than the tree has internal ones (0.4 to
-     * 0.5 of them on the shared scenes): keep only those when memory
+    /* the copy has fewer nodes than `cap`: keep only those when memory
      * allows */
-    if (n_wide < internal) {
-        wide_node *fit = atrbvh_i_alloc_array(n_wide, sizeof *w);
+    if (n_wide < cap) {
+        void *fit = wide_alloc(n_wide);
         if (fit) {
-            memcpy(fit, w, n_wide * sizeof *w);
-            atrbvh_i_free(w);
-            w = fit;
+            memcpy(wide_nodes(fit), w, n_wide * sizeof *w);
+            atrbvh_i_free(block);
+            block = fit;
         }
     }
-    return w;
+    return block;
 }
 
 /* Stands for "no wide copy can be made of this tree" in bvh->wide. */
@@ -353,16 +390,25 @@ static const wide_node *wide_get(const atrbvh_bvh *bvh)
             w = expected;
         }
     }
-    return w == (const void *)&wide_none ? NULL : (const wide_node *)w;
+    return w == (const void *)&wide_none ? NULL : wide_nodes(w);
 #else
     (void)bvh;
     return NULL;
 #endif
 }
 
-/* The lowest lane of a nonzero 4-bit mask. */
-static const signed char wide_first_lane[16] = {0, 0, 1, 0, 2, 0, 1, 0,
-                                                3, 0, 1, 0, 2, 0, 1, 0};
+/* The lowest lane of a nonzero mask. */
+static inline unsigned wide_ctz(unsigned m)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return (unsigned)__builtin_ctz(m);
+#else
+    unsigned l = 0;
+    while (!(m >> l & 1u))
+        l++;
+    return l;
+#endif
+}
 
 /* ------------------------------------------------- triangles of a leaf
  * Beside the wide nodes, the uncounted batches over triangles keep the
@@ -675,18 +721,97 @@ static WIDE_NOINLINE int wide_leaf_any(const atrbvh_trav_scene *s,
     return wide_leaf_tris(s, c, first, count, r, q, 1, best);
 }
 
+/* The node test of all WIDE_W lanes of the box block b: the mask of the
+ * lanes hit, their entry distances in t.  nx, ny, nz: where each axis's
+ * near planes are past its minima (0: the minima, 3 * WIDE_W: the
+ * maxima, by the sign of the direction).  For a box with min <= max,
+ * (min - o) * id <= (max - o) * id exactly when id > 0 (rounding is
+ * monotone), so the near and far values are those the binary test's min
+ * and max pick (but for the sign of a zero, which no comparison sees).
+ * SSE2: four lanes at a time. */
+ATRBVH_TRAV_HOT unsigned wide_hit_sse(const float *b, int nx, int ny, int nz,
+                                      __m128 ox, __m128 oy, __m128 oz,
+                                      __m128 ix, __m128 iy, __m128 iz,
+                                      __m128 tlo4, __m128 thi4, __m128 widen,
+                                      __m128 slack, float *t)
+{
+    unsigned m = 0;
+    int h;
+    for (h = 0; h < WIDE_W; h += 4) {
+        const float *bx = b + h, *by = b + WIDE_W + h, *bz = b + 2 * WIDE_W + h;
+        __m128 xn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bx + nx), ox), ix);
+        __m128 xf = _mm_mul_ps(
+            _mm_sub_ps(_mm_loadu_ps(bx + (3 * WIDE_W - nx)), ox), ix);
+        __m128 yn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(by + ny), oy), iy);
+        __m128 yf = _mm_mul_ps(
+            _mm_sub_ps(_mm_loadu_ps(by + (3 * WIDE_W - ny)), oy), iy);
+        __m128 zn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bz + nz), oz), iz);
+        __m128 zf = _mm_mul_ps(
+            _mm_sub_ps(_mm_loadu_ps(bz + (3 * WIDE_W - nz)), oz), iz);
+        __m128 lo = _mm_max_ps(xn, tlo4);
+        __m128 hi = _mm_min_ps(xf, thi4);
+        lo = _mm_max_ps(yn, lo);
+        hi = _mm_min_ps(yf, hi);
+        lo = _mm_max_ps(zn, lo);
+        hi = _mm_min_ps(zf, hi);
+        hi = _mm_add_ps(_mm_mul_ps(hi, widen), slack);
+        m |= (unsigned)_mm_movemask_ps(_mm_cmple_ps(lo, hi)) << h;
+        _mm_storeu_ps(t + h, lo);
+    }
+    return m;
+}
+
+#if WIDE_AVX2
+/* wide_hit_sse with AVX2: the eight lanes at once, with the same
+ * operations on the same operands lane by lane (vsubps, vmulps, vmaxps,
+ * vminps, vaddps and an ordered <= round and compare as their SSE
+ * forms), so the same bits.  Not always_inline (GCC refuses to inline an
+ * AVX2 function into the generic wide_run); inlined into the AVX2
+ * callers all the same. */
+__attribute__((target("avx2"))) static inline unsigned
+wide_hit_avx2(const float *b, int nx, int ny, int nz, const float *o,
+              const float *id, float tlo, float thi, float *t)
+{
+    __m256 ox = _mm256_set1_ps(o[0]), oy = _mm256_set1_ps(o[1]);
+    __m256 oz = _mm256_set1_ps(o[2]);
+    __m256 ix = _mm256_set1_ps(id[0]), iy = _mm256_set1_ps(id[1]);
+    __m256 iz = _mm256_set1_ps(id[2]);
+    const float *by = b + 8, *bz = b + 16;
+    __m256 xn = _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(b + nx), ox), ix);
+    __m256 xf =
+        _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(b + (24 - nx)), ox), ix);
+    __m256 yn = _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(by + ny), oy), iy);
+    __m256 yf =
+        _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(by + (24 - ny)), oy), iy);
+    __m256 zn = _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(bz + nz), oz), iz);
+    __m256 zf =
+        _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(bz + (24 - nz)), oz), iz);
+    __m256 lo = _mm256_max_ps(xn, _mm256_set1_ps(tlo));
+    __m256 hi = _mm256_min_ps(xf, _mm256_set1_ps(thi));
+    lo = _mm256_max_ps(yn, lo);
+    hi = _mm256_min_ps(yf, hi);
+    lo = _mm256_max_ps(zn, lo);
+    hi = _mm256_min_ps(zf, hi);
+    hi = _mm256_add_ps(_mm256_mul_ps(hi, _mm256_set1_ps(ATRBVH_TRAV_WIDEN_F)),
+                       _mm256_set1_ps(ATRBVH_TRAV_SLACK_F));
+    _mm256_storeu_ps(t, lo);
+    return (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(lo, hi, _CMP_LE_OS));
+}
+#endif
+
 /* atrbvh_trav_run over the wide copy, for a ray with use_float; inlined
- * into wide_run_closest and wide_run_any with `any` constant, and those
- * into wide_closest and wide_any (the ray's fields reach it without a
- * call). */
+ * with `any` and `avx` (the AVX2 node test: only in functions made for
+ * AVX2) constant into wide_closest_t and wide_any_t, and those into the
+ * per-ray functions (the ray's fields reach it without a call). */
 ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
                              const wide_tris *tris,
-                             const atrbvh_trav_ray *r, int any,
+                             const atrbvh_trav_ray *r, int any, int avx,
                              atrbvh_trav_best *best)
 {
     wide_tri_ray q;
     int64_t stack_node[WIDE_STACK];
     float stack_t[WIDE_STACK];
+    float t8[WIDE_W];
     unsigned sp = 0;
     int64_t cur = 0;
     float tlo = atrbvh_trav_best_start(r, best);
@@ -698,18 +823,19 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
     __m128 widen = _mm_set1_ps(ATRBVH_TRAV_WIDEN_F);
     __m128 slack = _mm_set1_ps(ATRBVH_TRAV_SLACK_F);
     __m128 tlo4, thi4;
-    /* where each axis's near and far planes are, past its minima in
-     * wide_node.b: the minima (0) or the maxima (12) by the sign of the
+    /* where each axis's near planes are, past its minima in wide_node.b:
+     * the minima (0) or the maxima (3 * WIDE_W) by the sign of the
      * direction */
-    int nxo = r->idirf[0] < 0.0f ? 12 : 0, nyo = r->idirf[1] < 0.0f ? 12 : 0;
-    int nzo = r->idirf[2] < 0.0f ? 12 : 0;
+    int nxo = r->idirf[0] < 0.0f ? 3 * WIDE_W : 0;
+    int nyo = r->idirf[1] < 0.0f ? 3 * WIDE_W : 0;
+    int nzo = r->idirf[2] < 0.0f ? 3 * WIDE_W : 0;
     /* no test of the root's box: it holds every box of the copy (see
      * box_inside), so the first node's tests reject the rays it would */
 #if defined(__GNUC__) || defined(__clang__)
     __asm__("" : "+x"(widen), "+x"(slack));
 #endif
+    (void)avx;
     wide_tri_ray_make(r, &q); /* used when tris */
-    stack_node[0] = 0; /* read by the any-hit step on an empty stack */
     thi = best->tlim;
     tlo4 = _mm_set1_ps(tlo);
     thi4 = _mm_set1_ps(thi);
@@ -738,98 +864,66 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
             }
         } else {
             const wide_node *n = &w[cur];
-            const float *bx = n->b, *by = n->b + 4, *bz = n->b + 8;
-            /* the near and far distances of each slab: for a box with
-             * min <= max, (min - o) * id <= (max - o) * id exactly when
-             * id > 0 (rounding is monotone), so these are the values
-             * the binary test's min and max pick (but for the sign of a
-             * zero, which no comparison sees) */
-            __m128 xn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bx + nxo), ox), ix);
-            __m128 xf = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bx + (12 - nxo)), ox), ix);
-            __m128 yn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(by + nyo), oy), iy);
-            __m128 yf = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(by + (12 - nyo)), oy), iy);
-            __m128 zn = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bz + nzo), oz), iz);
-            __m128 zf = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(bz + (12 - nzo)), oz), iz);
-            __m128 lo = _mm_max_ps(xn, tlo4);
-            __m128 hi = _mm_min_ps(xf, thi4);
-            int m;
-            lo = _mm_max_ps(yn, lo);
-            hi = _mm_min_ps(yf, hi);
-            lo = _mm_max_ps(zn, lo);
-            hi = _mm_min_ps(zf, hi);
-            hi = _mm_add_ps(_mm_mul_ps(hi, widen), slack);
-            m = _mm_movemask_ps(_mm_cmple_ps(lo, hi));
+            unsigned m;
+#if WIDE_AVX2
+            if (avx)
+                m = wide_hit_avx2(n->b, nxo, nyo, nzo, r->orgf, r->idirf, tlo,
+                                  thi, t8);
+            else
+#endif
+                m = wide_hit_sse(n->b, nxo, nyo, nzo, ox, oy, oz, ix, iy, iz,
+                                 tlo4, thi4, widen, slack, t8);
             if (any) {
                 /* any hit: whether one exists does not depend on the
-                 * order, so no sorting, and no branch on the lanes hit
-                 * (those were most of the mispredicted branches): the
-                 * next node is the lowest hit lane's child, else the
-                 * stack's top (by selects), and the other hit children
-                 * are pushed, highest lane first.  This stack holds its
-                 * entries at 1..sp (slot 0, never an entry, is read when
-                 * it is empty); the stores reach sp + 3 < WIDE_STACK. */
-                unsigned mu = (unsigned)m, rest = mu & (mu - 1u), k;
-                int64_t c0 = n->child[0], c1 = n->child[1];
-                int64_t c2 = n->child[2], c3 = n->child[3];
-                int64_t nxt = stack_node[sp];
-                if (!(mu | sp))
-                    return 0;
-                nxt = mu & 8u ? c3 : nxt;
-                nxt = mu & 4u ? c2 : nxt;
-                nxt = mu & 2u ? c1 : nxt;
-                nxt = mu & 1u ? c0 : nxt;
-                stack_node[sp + 1u] = c3;
-                k = sp + (rest >> 3);
-                stack_node[k + 1u] = c2;
-                k += rest >> 2 & 1u;
-                stack_node[k + 1u] = c1;
-                k += rest >> 1 & 1u;
-                sp = k - (mu == 0u);
-                cur = nxt;
-                continue;
-            } else if (m) {
-                float t4[4];
-                int64_t c[4];
-                float ct[4];
-                int cnt = 0, lane, a, b2;
-                if (!(m & (m - 1))) {
-                    cur = n->child[wide_first_lane[m]];
+                 * order, so no sorting: the lowest hit lane's child is
+                 * visited next, and the others stay with their node as
+                 * one entry (the node's index above bit 8, the lanes
+                 * left below), pushed without a branch, taken one at a
+                 * time by the pops below.  This stack holds its entries
+                 * at 1..sp, at most one per wide level. */
+                unsigned rest = m & (m - 1u);
+                stack_node[sp + 1u] = (int64_t)((uint64_t)cur << 8 | rest);
+                sp += rest != 0u;
+                if (m) {
+                    cur = n->child[wide_ctz(m)];
                     continue;
                 }
-                _mm_storeu_ps(t4, lo);
-                {
+            } else if (m) {
+                unsigned rest = m & (m - 1u);
+                int64_t c[WIDE_W];
+                float ct[WIDE_W];
+                int cnt = 0, a;
+                if (!rest) {
+                    cur = n->child[wide_ctz(m)];
+                    continue;
+                }
+                if (!(rest & (rest - 1u))) {
                     /* two hits, the most common case: the nearer
                      * visited, the other pushed */
-                    int l0 = wide_first_lane[m];
-                    int rest = m & (m - 1);
-                    if (!(rest & (rest - 1))) {
-                        int l1 = wide_first_lane[rest];
-                        if (t4[l1] < t4[l0]) {
-                            int sw = l0;
-                            l0 = l1;
-                            l1 = sw;
-                        }
-                        stack_node[sp] = n->child[l1];
-                        stack_t[sp] = t4[l1];
-                        sp++;
-                        cur = n->child[l0];
-                        continue;
+                    unsigned l0 = wide_ctz(m), l1 = wide_ctz(rest);
+                    if (t8[l1] < t8[l0]) {
+                        unsigned sw = l0;
+                        l0 = l1;
+                        l1 = sw;
                     }
+                    stack_node[sp] = n->child[l1];
+                    stack_t[sp] = t8[l1];
+                    sp++;
+                    cur = n->child[l0];
+                    continue;
                 }
-                for (lane = 0; lane < 4; lane++) {
-                    if (!(m >> lane & 1))
-                        continue;
+                for (; m; m &= m - 1u) {
+                    unsigned lane = wide_ctz(m);
+                    float tl = t8[lane];
                     /* insertion by descending entry distance */
-                    b2 = cnt++;
-                    for (a = b2; a > 0 && ct[a - 1] < t4[lane]; a--) {
+                    for (a = cnt++; a > 0 && ct[a - 1] < tl; a--) {
                         ct[a] = ct[a - 1];
                         c[a] = c[a - 1];
                     }
-                    ct[a] = t4[lane];
+                    ct[a] = tl;
                     c[a] = n->child[lane];
                 }
-                /* sp + 3 <= WIDE_STACK: 3 per wide level, see
-                 * WIDE_MAX_DEPTH */
+                /* sp + WIDE_W - 1 <= WIDE_STACK: see WIDE_MAX_DEPTH */
                 for (a = 0; a < cnt - 1; a++) {
                     stack_node[sp] = c[a];
                     stack_t[sp] = ct[a];
@@ -840,10 +934,14 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
             }
         }
         if (any) { /* entries at 1..sp: see above */
+            uint64_t e;
             if (sp == 0u)
                 return 0;
-            cur = stack_node[sp];
-            sp--;
+            e = (uint64_t)stack_node[sp];
+            cur = w[e >> 8].child[wide_ctz((unsigned)e & 0xffu)];
+            e &= e - 1u; /* that lane taken */
+            stack_node[sp] = (int64_t)e;
+            sp -= (e & 0xffu) == 0u;
             continue;
         }
         while (sp > 0u && !(stack_t[sp - 1u] <= thi))
@@ -853,23 +951,6 @@ ATRBVH_TRAV_HOT int wide_run(const atrbvh_trav_scene *s, const wide_node *w,
         sp--;
         cur = stack_node[sp];
     }
-}
-
-ATRBVH_TRAV_HOT int wide_run_closest(const atrbvh_trav_scene *s,
-                                     const wide_node *w,
-                                     const wide_tris *tris,
-                                     const atrbvh_trav_ray *r,
-                                     atrbvh_trav_best *best)
-{
-    return wide_run(s, w, tris, r, 0, best);
-}
-
-ATRBVH_TRAV_HOT int wide_run_any(const atrbvh_trav_scene *s,
-                                 const wide_node *w, const wide_tris *tris,
-                                 const atrbvh_trav_ray *r,
-                                 atrbvh_trav_best *best)
-{
-    return wide_run(s, w, tris, r, 1, best);
 }
 #endif
 
@@ -925,10 +1006,11 @@ static inline int wide_setup(const atrbvh_ray *ray, atrbvh_trav_ray *r)
 }
 
 /* atrbvh_trav_closest and atrbvh_trav_any with the wide copy `w` (NULL:
- * none) for the rays that take the float test. */
-static void wide_closest(const atrbvh_trav_scene *s, const void *w,
-                         const void *tris, const atrbvh_ray *ray,
-                         atrbvh_hit *hit)
+ * none) for the rays that take the float test; `avx` constant (see
+ * wide_run), inlined into wide_closest, wide_any and their AVX2 forms. */
+ATRBVH_TRAV_HOT void wide_closest_t(const atrbvh_trav_scene *s, const void *w,
+                                    const void *tris, const atrbvh_ray *ray,
+                                    atrbvh_hit *hit, int avx)
 {
 #ifdef ATRBVH_TRAV_SSE
     atrbvh_trav_ray r;
@@ -939,9 +1021,9 @@ static void wide_closest(const atrbvh_trav_scene *s, const void *w,
         hit->primitive = ATRBVH_NO_HIT;
         if (!wide_setup(ray, &r))
             return;
-        if (!(r.use_float ? wide_run_closest(s, (const wide_node *)w,
-                                             (const wide_tris *)tris, &r,
-                                             &best)
+        if (!(r.use_float ? wide_run(s, (const wide_node *)w,
+                                     (const wide_tris *)tris, &r, 0, avx,
+                                     &best)
                           : atrbvh_trav_run(s, &r, 0, &best)))
             return;
         hit->t = best.t;
@@ -952,12 +1034,15 @@ static void wide_closest(const atrbvh_trav_scene *s, const void *w,
     }
 #else
     (void)w;
+    (void)tris;
 #endif
+    (void)avx;
     closest(s, ray, hit);
 }
 
-static int wide_any(const atrbvh_trav_scene *s, const void *w,
-                    const void *tris, const atrbvh_ray *ray)
+ATRBVH_TRAV_HOT int wide_any_t(const atrbvh_trav_scene *s, const void *w,
+                               const void *tris, const atrbvh_ray *ray,
+                               int avx)
 {
 #ifdef ATRBVH_TRAV_SSE
     atrbvh_trav_ray r;
@@ -965,15 +1050,59 @@ static int wide_any(const atrbvh_trav_scene *s, const void *w,
     if (w) {
         if (!wide_setup(ray, &r))
             return 0;
-        return r.use_float ? wide_run_any(s, (const wide_node *)w,
-                                          (const wide_tris *)tris, &r, &best)
+        return r.use_float ? wide_run(s, (const wide_node *)w,
+                                      (const wide_tris *)tris, &r, 1, avx,
+                                      &best)
                            : atrbvh_trav_run(s, &r, 1, &best);
     }
 #else
     (void)w;
+    (void)tris;
 #endif
+    (void)avx;
     return atrbvh_trav_any(s, ray->origin, ray->dir, ray->tmin, ray->tmax);
 }
+
+static void wide_closest(const atrbvh_trav_scene *s, const void *w,
+                         const void *tris, const atrbvh_ray *ray,
+                         atrbvh_hit *hit)
+{
+    wide_closest_t(s, w, tris, ray, hit, 0);
+}
+
+static int wide_any(const atrbvh_trav_scene *s, const void *w,
+                    const void *tris, const atrbvh_ray *ray)
+{
+    return wide_any_t(s, w, tris, ray, 0);
+}
+
+#if defined(ATRBVH_TRAV_SSE) && WIDE_AVX2
+__attribute__((target("avx2"))) static void
+wide_closest_avx2(const atrbvh_trav_scene *s, const void *w, const void *tris,
+                  const atrbvh_ray *ray, atrbvh_hit *hit)
+{
+    wide_closest_t(s, w, tris, ray, hit, 1);
+}
+
+__attribute__((target("avx2"))) static int
+wide_any_avx2(const atrbvh_trav_scene *s, const void *w, const void *tris,
+              const atrbvh_ray *ray)
+{
+    return wide_any_t(s, w, tris, ray, 1);
+}
+
+/* Whether the wide batches take the AVX2 node test: the CPU (and the
+ * system) support AVX2, and the environment variable ATRBVH_NO_AVX2 is
+ * unset, empty or "0" (set: the SSE2 node test, which gives the same
+ * bits; the tests run both). */
+static int wide_avx2(void)
+{
+    const char *no = getenv("ATRBVH_NO_AVX2");
+    if (no && no[0] && strcmp(no, "0") != 0)
+        return 0;
+    return __builtin_cpu_supports("avx2");
+}
+#endif
 
 void atrbvh_i_bvh_drop_wide(atrbvh_bvh *bvh)
 {
@@ -1097,11 +1226,17 @@ static void cpu_batch(const atrbvh_bvh *bvh, const atrbvh_trav_scene *s,
 #endif
     if (!boxes) {
         const void *w = NULL, *tris = NULL;
+#if WIDE_AVX2
+        int avx = 0;
+#endif
 #ifdef ATRBVH_TRAV_SSE
         if (s->float_slabs && count >= WIDE_MIN_RAYS)
             w = wide_get(bvh);
         if (w && !s->boxes)
             tris = wide_tris_get(bvh, s, threads);
+#if WIDE_AVX2
+        avx = w && wide_avx2();
+#endif
 #else
         (void)bvh;
 #endif
@@ -1110,6 +1245,15 @@ static void cpu_batch(const atrbvh_bvh *bvh, const atrbvh_trav_scene *s,
 #endif
         for (i = 0; i < n; i++) {
             const atrbvh_ray *r = &rays[i];
+#if WIDE_AVX2
+            if (avx) {
+                if (hits)
+                    wide_closest_avx2(s, w, tris, r, &hits[i]);
+                else
+                    occluded[i] = (uint8_t)(wide_any_avx2(s, w, tris, r) != 0);
+                continue;
+            }
+#endif
             if (hits)
                 wide_closest(s, w, tris, r, &hits[i]);
             else

@@ -1717,6 +1717,51 @@ START_TEST(wide_tris_layouts)
 }
 END_TEST
 
+/* ------------------------------------ 8-wide batches: SSE2 and AVX2
+ * The uncounted batches test the wide nodes' boxes with AVX2 where the CPU
+ * has it, else with SSE2 (four lanes at a time); ATRBVH_NO_AVX2 set makes
+ * them take SSE2 (lib/traverse.c, wide_avx2).  Both node tests must give
+ * the counted batch's hits (the binary traversal) and every primitive's,
+ * bit for bit; on a CPU without AVX2 both passes take SSE2.  setenv and
+ * unsetenv are POSIX's (this file is compiled as plain C99). */
+int setenv(const char *name, const char *value, int overwrite);
+int unsetenv(const char *name);
+
+START_TEST(wide_isa_paths)
+{
+    mesh ms[4];
+    const char *names[4] = {"soup 900", "icosphere", "terrain", "boxes"};
+    const size_t cfg[3] = {1, 3, 5};
+    int s, isa;
+    ms[0] = soup(900, 77, 10.0f, -5.0f);
+    ms[1] = icosphere(4);
+    ms[2] = terrain(24, 9);
+    ms[3] = random_boxes(500, 78);
+    for (s = 0; s < 4; s++) {
+        atrbvh_geometry g = mesh_geometry(&ms[s]);
+        reference ref = ref_make(&ms[s]);
+        size_t c;
+        for (c = 0; c < 3; c++) {
+            atrbvh_bvh *b = build_config(&g, &configs[cfg[c]]);
+            if (!b)
+                continue;
+            for (isa = 0; isa < 2; isa++) {
+                char what[128];
+                ck_assert_int_eq(isa ? unsetenv("ATRBVH_NO_AVX2")
+                                     : setenv("ATRBVH_NO_AVX2", "1", 1),
+                                 0);
+                snprintf(what, sizeof what, "%s config %zu node test %s",
+                         names[s], cfg[c], isa ? "AVX2 if any" : "SSE2");
+                check_wide(&ms[s], b, &ref, 4096, 1100 + (uint64_t)c, what);
+            }
+            atrbvh_bvh_free(b);
+        }
+        ref_free(&ref);
+        mesh_free(&ms[s]);
+    }
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("traverse");
@@ -1747,6 +1792,7 @@ static Suite *suite(void)
     tcase_add_test(t, wide_setup_edges);
     tcase_add_test(t, wide_tris_other_geometry);
     tcase_add_test(t, wide_tris_layouts);
+    tcase_add_test(t, wide_isa_paths);
     tcase_set_timeout(t, 600);
     suite_add_tcase(s, t);
     return s;
