@@ -1186,9 +1186,9 @@ START_TEST(threads_limit)
 }
 END_TEST
 
-/* ------------------------------------------------------ 4-wide batches */
+/* ------------------------------------------------------ wide batches */
 /* The uncounted batch calls trace the rays with nonzero direction
- * components over a 4-wide copy of the tree (lib/traverse.c); rays whose
+ * components over an 8-wide copy of the tree (lib/traverse.c); rays whose
  * float slab tests are most at risk graze boxes: aimed at primitives'
  * vertices (on the boxes of every node holding them) and at corners and
  * edge midpoints of the tree's own node boxes.  Those batches must give
@@ -1538,7 +1538,7 @@ START_TEST(wide_setup_edges)
 }
 END_TEST
 
-/* ------------------------------------------- 4-wide batches: triangles
+/* --------------------------------------------- wide batches: triangles
  * Over triangles the batches keep a copy of the leaves' vertices, made
  * for the geometry of the first batch (lib/traverse.c): its vertex and
  * index arrays, counts and strides.  A batch given other arrays must read

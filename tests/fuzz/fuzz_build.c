@@ -36,7 +36,7 @@ static void brute(atrbvh_bvh *const *singles, const atrbvh_geometry *sg,
     }
 }
 
-/* The uncounted batch calls trace a 4-wide copy of the tree, and over
+/* The uncounted batch calls trace an 8-wide copy of the tree, and over
  * triangles a copy of the leaves' vertices made by a batch of 1024 rays or
  * more (lib/traverse.c): the same rays, repeated to that size, must give
  * the single-ray calls' answers bit for bit. */
