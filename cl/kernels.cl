@@ -293,6 +293,10 @@ __kernel void sort_buckets(__global ulong *tmp_k, __global uint *tmp_v,
  * the CPU's second pass reads them from its tree.  The refit stage then
  * has nothing to launch (st_refit). */
 
+/* The pass's helpers are specialised in place (PoCL's compiler left
+ * hier_emit a call otherwise: callgrind counted it apart). */
+#define HIER_INLINE inline __attribute__((always_inline))
+
 /* A finished subtree: its root and its values. */
 typedef struct hier_sub {
     atrbvh_box box;
@@ -320,51 +324,60 @@ typedef struct hier_tree {
 
 /* Leaf position i as a finished subtree: its box gathered from the
  * primitive boxes, its count, cost and (an LBVH) size, written. */
-static void hier_leaf(const hier_tree *t, long i,
-                      __global const atrbvh_box *prim_boxes,
-                      __global const uint *order, hier_sub *out)
+static HIER_INLINE void hier_leaf(const hier_tree *t, long i,
+                                  __global const atrbvh_box *prim_boxes,
+                                  __global const uint *order, hier_sub *out)
 {
-    uint id = (uint)(t->n - 1 + i);
-    out->node = id;
-    out->box = prim_boxes[order[i]];
-    out->cost = atrbvh_refit_leaf_cost(&t->p, out->box);
-    out->size = 1u | ATRBVH_SIZE_LEAF;
+    const uint id = (uint)(t->n - 1 + i);
+    const atrbvh_box b = prim_boxes[order[i]];
+    const double co = atrbvh_refit_leaf_cost(&t->p, b);
+    const uint size = 1u | ATRBVH_SIZE_LEAF;
+    /* (results in registers first, then the stores: PoCL's CPU code has
+     * one address space, so a value read back after a global store would
+     * be loaded again) */
     t->count[id] = 1u;
-    t->box[id] = out->box;
-    t->cost[id] = out->cost;
+    t->box[id] = b;
+    t->cost[id] = co;
     if (t->sizes)
-        t->size[id] = out->size;
+        t->size[id] = size;
+    out->box = b;
+    out->cost = co;
+    out->node = id;
+    out->size = size;
 }
 
 /* Internal node of split s from its neighbours ps (-1: none) and ns (n-1:
  * none) with their deltas (shared/arith.h's atrbvh_hier_node), its left
  * subtree *l and its right subtree *r; *r becomes the node. */
-static void hier_emit(const hier_tree *t, long s, long ps, int dps, long ns,
-                      int dns, const hier_sub *l, hier_sub *r)
+static HIER_INLINE void hier_emit(const hier_tree *t, long s, long ps,
+                                  int dps, long ns, int dns,
+                                  const hier_sub *l, hier_sub *r)
 {
-    uint lc, rc, c, cnt;
-    uint id = atrbvh_hier_node(t->n, s, ps, dps, ns, dns, &lc, &rc, &c);
+    uint lc, rc, c, cnt, size = 0u;
+    const uint id =
+        atrbvh_hier_node(t->n, s, ps, dps, ns, dns, &lc, &rc, &c);
     atrbvh_box b;
     double co;
+    if (t->sizes)
+        size = atrbvh_refit_node_size(
+            &t->p, l->box, (uint)(s - ps), l->cost, l->size, r->box,
+            (uint)(ns - s), r->cost, r->size, &b, &cnt, &co);
+    else
+        atrbvh_refit_node(&t->p, l->box, (uint)(s - ps), l->cost, r->box,
+                          (uint)(ns - s), r->cost, &b, &cnt, &co);
+    /* (every result computed, then the stores: see hier_leaf) */
     t->left[id] = lc;
     t->right[id] = rc;
     t->count[id] = c;
     t->parent[lc] = id;
     t->parent[rc] = id;
-    if (t->sizes) {
-        uint size = atrbvh_refit_node_size(
-            &t->p, l->box, (uint)(s - ps), l->cost, l->size, r->box,
-            (uint)(ns - s), r->cost, r->size, &b, &cnt, &co);
-        t->size[id] = size;
-        r->size = size;
-    } else {
-        atrbvh_refit_node(&t->p, l->box, (uint)(s - ps), l->cost, r->box,
-                          (uint)(ns - s), r->cost, &b, &cnt, &co);
-    }
     t->box[id] = b;
     t->cost[id] = co;
+    if (t->sizes)
+        t->size[id] = size;
     r->box = b;
     r->cost = co;
+    r->size = size;
     r->node = id;
 }
 
