@@ -383,12 +383,14 @@ static HIER_INLINE void hier_emit(const hier_tree *t, long s, long ps,
 
 /* The merge over every block's leftovers (other items' writes: volatile),
  * then the last leaf and the root; `st` is the caller's stack, free. */
-static void hier_merge(const hier_tree *t, __global const ulong *keys,
-                       __global uint *leaf_prim,
-                       __global const atrbvh_box *prim_boxes,
-                       __global const uint *order, __global const uint *ids,
-                       volatile __global const uint *over, uint blocks,
-                       uint has_ids, hier_entry *st)
+static HIER_INLINE void hier_merge(const hier_tree *t,
+                                   __global const ulong *keys,
+                                   __global uint *leaf_prim,
+                                   __global const atrbvh_box *prim_boxes,
+                                   __global const uint *order,
+                                   __global const uint *ids,
+                                   volatile __global const uint *over,
+                                   uint blocks, uint has_ids, hier_entry *st)
 {
     long n = t->n;
     uint sp = 0u, b, k;
@@ -440,14 +442,13 @@ static void hier_merge(const hier_tree *t, __global const ulong *keys,
  * leftovers: split position, subtree root), then the blocks' leftover
  * counts.  `blocks` >= 1 (one block of no split when n == 1).  `size`
  * is read only for an LBVH (a.sizes). */
-__kernel void hierarchy(__global const ulong *keys, __global uint *left,
-                        __global uint *right, __global uint *parent,
-                        __global uint *count, __global uint *leaf_prim,
-                        __global const uint *order, __global const uint *ids,
-                        __global uint *over, __global atrbvh_box *box,
-                        __global double *cost, __global uint *size,
-                        __global const atrbvh_box *prim_boxes,
-                        __global uint *sync, uint blocks, atrbvh_kargs_tree a)
+static HIER_INLINE void hier_pass(
+    __global const ulong *keys, __global uint *left, __global uint *right,
+    __global uint *parent, __global uint *count, __global uint *leaf_prim,
+    __global const uint *order, __global const uint *ids, __global uint *over,
+    __global atrbvh_box *box, __global double *cost, __global uint *size,
+    __global const atrbvh_box *prim_boxes, __global uint *sync, uint blocks,
+    atrbvh_kargs_tree a, uint sizes)
 {
     uint b = (uint)get_global_id(0), sp = 0u, nout = 0u, k;
     long lo, hi, s;
@@ -466,7 +467,7 @@ __kernel void hierarchy(__global const ulong *keys, __global uint *left,
     t.cost = cost;
     t.n = (long)a.n;
     t.p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse, a.max_leaf);
-    t.sizes = a.sizes;
+    t.sizes = sizes;
     out = over + (size_t)b * ATRBVH_CL_HIER_OVER;
     lo = (long)((ulong)(t.n - 1) * (ulong)b / (ulong)blocks);
     hi = (long)((ulong)(t.n - 1) * (ulong)(b + 1u) / (ulong)blocks);
@@ -502,6 +503,25 @@ __kernel void hierarchy(__global const ulong *keys, __global uint *left,
     if (last_arrival(sync, blocks))
         hier_merge(&t, keys, leaf_prim, prim_boxes, order, ids, over, blocks,
                    a.has_ids, st);
+}
+
+/* One copy of the pass for each mode (the constant `sizes` folds its
+ * branches away). */
+__kernel void hierarchy(__global const ulong *keys, __global uint *left,
+                        __global uint *right, __global uint *parent,
+                        __global uint *count, __global uint *leaf_prim,
+                        __global const uint *order, __global const uint *ids,
+                        __global uint *over, __global atrbvh_box *box,
+                        __global double *cost, __global uint *size,
+                        __global const atrbvh_box *prim_boxes,
+                        __global uint *sync, uint blocks, atrbvh_kargs_tree a)
+{
+    if (a.sizes)
+        hier_pass(keys, left, right, parent, count, leaf_prim, order, ids,
+                  over, box, cost, size, prim_boxes, sync, blocks, a, 1u);
+    else
+        hier_pass(keys, left, right, parent, count, leaf_prim, order, ids,
+                  over, box, cost, size, prim_boxes, sync, blocks, a, 0u);
 }
 
 /* ------------------------------------------------------------------- refit */
