@@ -8,11 +8,13 @@
  * shared function, writes the result.  Scalars come in one struct per
  * stage (shared/kargs.h), by value.
  *
- * Bottom-up passes (refit, optimise, collapse) use an atomic counter per
- * node: each work-item writes its node, fences, increments the parent's
- * counter; the first arrival stops, the last continues upwards after a
- * fence and sets the counter back to zero, so the next pass needs no
- * fill (the hierarchy kernel zeroes them first).  Whole launches end the
+ * Bottom-up passes (a caller's tree's refit, optimise, collapse) use an
+ * atomic counter per node: each work-item writes its node, fences,
+ * increments the parent's counter; the first arrival stops, the last
+ * continues upwards after a fence and sets the counter back to zero, so
+ * the next pass needs no fill (a fill, or opt_prepare, zeroes them
+ * first).  The hierarchy kernel's tree needs none: it is refitted in
+ * the kernel's own post-order pass.  Whole launches end the
  * same way where a step needs everything before it (last_arrival): the
  * sort's scan, the hierarchy's merge.  No work-item ever waits for another (no spinning, no lock-step
  * assumption, no barrier across work-groups), so the passes are correct
