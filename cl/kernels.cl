@@ -8,11 +8,13 @@
  * shared function, writes the result.  Scalars come in one struct per
  * stage (shared/kargs.h), by value.
  *
- * Bottom-up passes (refit, optimise, collapse) use an atomic counter per
- * node: each work-item writes its node, fences, increments the parent's
- * counter; the first arrival stops, the last continues upwards after a
- * fence and sets the counter back to zero, so the next pass needs no
- * fill (the hierarchy kernel zeroes them first).  Whole launches end the
+ * Bottom-up passes (a caller's tree's refit, optimise, collapse) use an
+ * atomic counter per node: each work-item writes its node, fences,
+ * increments the parent's counter; the first arrival stops, the last
+ * continues upwards after a fence and sets the counter back to zero, so
+ * the next pass needs no fill (a fill, or opt_prepare, zeroes them
+ * first).  The hierarchy kernel's tree needs none: it is refitted in
+ * the kernel's own post-order pass.  Whole launches end the
  * same way where a step needs everything before it (last_arrival): the
  * sort's scan, the hierarchy's merge.  No work-item ever waits for another (no spinning, no lock-step
  * assumption, no barrier across work-groups), so the passes are correct
@@ -268,131 +270,260 @@ __kernel void sort_buckets(__global ulong *tmp_k, __global uint *tmp_v,
 }
 
 /* --------------------------------------------------------------- hierarchy */
-/* The CPU's algorithm (lib/cpu/hierarchy.c), in one launch: the node
- * whose split is s spans from its nearest split to the left with a smaller
- * delta to the nearest one to the right; each item (one per contiguous
- * block of splits) finds them with a stack, writes every node whose two
- * neighbours lie in its block and leaves the rest (its prefix minima and
- * its final stack, both strictly monotone in delta, so at most
- * ATRBVH_CL_HIER_SIDE each) in `over`; the last item to finish
- * (last_arrival) runs the same stack over all blocks' leftovers in
+/* The CPU's algorithm (lib/cpu/hierarchy.c), in one launch, the refit
+ * included: the node whose split is s spans from its nearest split to the
+ * left with a smaller delta to the nearest one to the right; each item
+ * (one per contiguous block of splits) finds them with a stack, writes
+ * every node whose two neighbours lie in its block and leaves the rest
+ * (its prefix minima and its final stack, both strictly monotone in
+ * delta, so at most ATRBVH_CL_HIER_SIDE each) in `over`; the last item to
+ * finish (last_arrival) runs the same stack over all blocks' leftovers in
  * position order.  The tree is Karras's (atrbvh_karras_delta's tie rule),
- * identical for any block count.  Each item also zeroes the bottom-up
- * arrival counters of its splits' ids (0 .. n - 2, all of them), so the
- * refit launch needs no fill. */
-#define ATRBVH_CL_HIER_SIDE 128u
+ * identical for any block count.
+ *
+ * The refit in the same pass, as on the CPU: the stack pops nodes in
+ * post-order, so each entry carries its left subtree's box, cost and
+ * collapse size, the item carries the subtree finished last (its right
+ * subtree), and every node is computed from the two in registers by the
+ * refit's rule (shared/stages.h: atrbvh_refit_node_size for an LBVH,
+ * a.sizes, atrbvh_refit_node otherwise; atrbvh_refit_leaf_cost for a
+ * leaf), left first: the bits of the CPU's pass and of the refit kernel's
+ * climb, with no arrival counter.  A leftover is recorded with the root
+ * of the subtree between the previous leftover and it (written to the
+ * tree by its block, as every node is): the merge reads its box, cost
+ * and size back after last_arrival's fence, through volatile loads, as
+ * the CPU's second pass reads them from its tree.  The refit stage then
+ * has nothing to launch (st_refit). */
+
+/* The pass's helpers are specialised in place (PoCL's compiler left
+ * hier_emit a call otherwise: callgrind counted it apart). */
+#define HIER_INLINE inline __attribute__((always_inline))
+
+/* A finished subtree: its root and its values. */
+typedef struct hier_sub {
+    atrbvh_box box;
+    double cost;
+    uint node, size;
+} hier_sub;
+
+/* A stack entry: split s, its delta, and the subtree ending at leaf s
+ * (s's left child). */
+typedef struct hier_entry {
+    hier_sub left;
+    uint s;
+    int d;
+} hier_entry;
+
+/* The tree the pass writes, and the build's constants. */
+typedef struct hier_tree {
+    __global uint *left, *right, *parent, *count, *size;
+    __global atrbvh_box *box;
+    __global double *cost;
+    long n;
+    atrbvh_cost_params p;
+    uint sizes; /* an LBVH: the collapse sizes too */
+} hier_tree;
+
+/* Leaf position i as a finished subtree: its box gathered from the
+ * primitive boxes, its count, cost and (an LBVH) size, written. */
+static HIER_INLINE void hier_leaf(const hier_tree *t, long i,
+                                  __global const atrbvh_box *prim_boxes,
+                                  __global const uint *order, hier_sub *out)
+{
+    const uint id = (uint)(t->n - 1 + i);
+    const atrbvh_box b = prim_boxes[order[i]];
+    const double co = atrbvh_refit_leaf_cost(&t->p, b);
+    const uint size = 1u | ATRBVH_SIZE_LEAF;
+    /* (results in registers first, then the stores: PoCL's CPU code has
+     * one address space, so a value read back after a global store would
+     * be loaded again) */
+    t->count[id] = 1u;
+    t->box[id] = b;
+    t->cost[id] = co;
+    if (t->sizes)
+        t->size[id] = size;
+    out->box = b;
+    out->cost = co;
+    out->node = id;
+    out->size = size;
+}
 
 /* Internal node of split s from its neighbours ps (-1: none) and ns (n-1:
- * none) with their deltas (shared/arith.h's atrbvh_hier_node). */
-static void hier_emit(__global uint *left, __global uint *right,
-                      __global uint *count, __global uint *parent, long n,
-                      long s, long ps, int dps, long ns, int dns)
+ * none) with their deltas (shared/arith.h's atrbvh_hier_node), its left
+ * subtree *l and its right subtree *r; *r becomes the node. */
+static HIER_INLINE void hier_emit(const hier_tree *t, long s, long ps,
+                                  int dps, long ns, int dns,
+                                  const hier_sub *l, hier_sub *r)
 {
-    uint lc, rc, c;
-    uint id = atrbvh_hier_node(n, s, ps, dps, ns, dns, &lc, &rc, &c);
-    left[id] = lc;
-    right[id] = rc;
-    count[id] = c;
-    parent[lc] = id;
-    parent[rc] = id;
+    uint lc, rc, c, cnt, size = 0u;
+    const uint id =
+        atrbvh_hier_node(t->n, s, ps, dps, ns, dns, &lc, &rc, &c);
+    atrbvh_box b;
+    double co;
+    if (t->sizes)
+        size = atrbvh_refit_node_size(
+            &t->p, l->box, (uint)(s - ps), l->cost, l->size, r->box,
+            (uint)(ns - s), r->cost, r->size, &b, &cnt, &co);
+    else
+        atrbvh_refit_node(&t->p, l->box, (uint)(s - ps), l->cost, r->box,
+                          (uint)(ns - s), r->cost, &b, &cnt, &co);
+    /* (every result computed, then the stores: see hier_leaf) */
+    t->left[id] = lc;
+    t->right[id] = rc;
+    t->count[id] = c;
+    t->parent[lc] = id;
+    t->parent[rc] = id;
+    t->box[id] = b;
+    t->cost[id] = co;
+    if (t->sizes)
+        t->size[id] = size;
+    r->box = b;
+    r->cost = co;
+    r->size = size;
+    r->node = id;
 }
 
 /* The merge over every block's leftovers (other items' writes: volatile),
- * and the last leaf and the root. */
-static void hier_merge(__global const ulong *keys, __global uint *left,
-                       __global uint *right, __global uint *parent,
-                       __global uint *count, __global uint *leaf_prim,
-                       __global const uint *order, __global const uint *ids,
-                       volatile __global const uint *over, uint blocks,
-                       atrbvh_kargs_tree a)
+ * then the last leaf and the root; `st` is the caller's stack, free. */
+static HIER_INLINE void hier_merge(const hier_tree *t,
+                                   __global const ulong *keys,
+                                   __global uint *leaf_prim,
+                                   __global const atrbvh_box *prim_boxes,
+                                   __global const uint *order,
+                                   __global const uint *ids,
+                                   volatile __global const uint *over,
+                                   uint blocks, uint has_ids, hier_entry *st)
 {
-    long n = (long)a.n;
-    uint st_s[ATRBVH_CL_HIER_SIDE];
-    int st_d[ATRBVH_CL_HIER_SIDE];
+    long n = t->n;
     uint sp = 0u, b, k;
-    parent[0] = ATRBVH_U32_MAX;
-    count[2 * n - 2] = 1u;
-    leaf_prim[n - 1] = a.has_ids ? ids[order[n - 1]] : order[n - 1];
-    if (n == 1)
-        return;
-    for (b = 0u; b < blocks; b++) {
-        volatile __global const uint *in =
-            over + (size_t)b * (2u * ATRBVH_CL_HIER_SIDE);
-        uint m = over[(size_t)blocks * (2u * ATRBVH_CL_HIER_SIDE) + b];
-        for (k = 0u; k < m; k++) {
-            long s = (long)in[k];
-            int d = atrbvh_karras_delta(keys, n, s, s + 1);
-            while (sp > 0u && st_d[sp - 1u] > d) {
-                uint x = st_s[--sp];
-                if (sp > 0u)
-                    hier_emit(left, right, count, parent, n, (long)x,
-                              (long)st_s[sp - 1u], st_d[sp - 1u], s, d);
-                else
-                    hier_emit(left, right, count, parent, n, (long)x, -1, 0,
-                              s, d);
+    hier_sub carry;
+    t->parent[0] = ATRBVH_U32_MAX;
+    leaf_prim[n - 1] = has_ids ? ids[order[n - 1]] : order[n - 1];
+    if (n > 1) {
+        for (b = 0u; b < blocks; b++) {
+            volatile __global const uint *in =
+                over + (size_t)b * ATRBVH_CL_HIER_OVER;
+            uint m = over[(size_t)blocks * ATRBVH_CL_HIER_OVER + b];
+            for (k = 0u; k < m; k++) {
+                long s = (long)in[2u * k];
+                int d = atrbvh_karras_delta(keys, n, s, s + 1);
+                carry.node = in[2u * k + 1u];
+                carry.box = load_box_v(t->box, carry.node);
+                carry.cost = load_f64_v(t->cost, carry.node);
+                carry.size = t->sizes ? load_u32_v(t->size, carry.node) : 0u;
+                while (sp > 0u && st[sp - 1u].d > d) {
+                    sp--;
+                    if (sp > 0u)
+                        hier_emit(t, (long)st[sp].s, (long)st[sp - 1u].s,
+                                  st[sp - 1u].d, s, d, &st[sp].left, &carry);
+                    else
+                        hier_emit(t, (long)st[sp].s, -1, 0, s, d,
+                                  &st[sp].left, &carry);
+                }
+                if (sp == ATRBVH_CL_HIER_SIDE)
+                    continue; /* keys out of order (cannot happen sorted) */
+                st[sp].s = (uint)s;
+                st[sp].d = d;
+                st[sp++].left = carry;
             }
-            if (sp == ATRBVH_CL_HIER_SIDE)
-                continue; /* keys out of order (cannot happen when sorted) */
-            st_s[sp] = (uint)s;
-            st_d[sp++] = d;
         }
     }
+    hier_leaf(t, n - 1, prim_boxes, order, &carry);
     while (sp > 0u) {
-        uint x = st_s[--sp];
+        sp--;
         if (sp > 0u)
-            hier_emit(left, right, count, parent, n, (long)x,
-                      (long)st_s[sp - 1u], st_d[sp - 1u], n - 1, 0);
+            hier_emit(t, (long)st[sp].s, (long)st[sp - 1u].s, st[sp - 1u].d,
+                      n - 1, 0, &st[sp].left, &carry);
         else
-            hier_emit(left, right, count, parent, n, (long)x, -1, 0, n - 1,
-                      0);
+            hier_emit(t, (long)st[sp].s, -1, 0, n - 1, 0, &st[sp].left,
+                      &carry);
     }
 }
 
-/* `over`: 2 * ATRBVH_CL_HIER_SIDE split positions per block, then the
- * blocks' leftover counts.  `blocks` >= 1 (one block of no split when
- * n == 1). */
+/* `over`: ATRBVH_CL_HIER_OVER words per block (2 * ATRBVH_CL_HIER_SIDE
+ * leftovers: split position, subtree root), then the blocks' leftover
+ * counts.  `blocks` >= 1 (one block of no split when n == 1).  `size`
+ * is read only for an LBVH (a.sizes). */
+static HIER_INLINE void hier_pass(
+    __global const ulong *keys, __global uint *left, __global uint *right,
+    __global uint *parent, __global uint *count, __global uint *leaf_prim,
+    __global const uint *order, __global const uint *ids, __global uint *over,
+    __global atrbvh_box *box, __global double *cost, __global uint *size,
+    __global const atrbvh_box *prim_boxes, __global uint *sync, uint blocks,
+    atrbvh_kargs_tree a, uint sizes)
+{
+    uint b = (uint)get_global_id(0), sp = 0u, nout = 0u, k;
+    long lo, hi, s;
+    hier_entry st[ATRBVH_CL_HIER_SIDE];
+    hier_sub carry;
+    hier_tree t;
+    __global uint *out;
+    if (b >= blocks)
+        return;
+    t.left = left;
+    t.right = right;
+    t.parent = parent;
+    t.count = count;
+    t.size = size;
+    t.box = box;
+    t.cost = cost;
+    t.n = (long)a.n;
+    t.p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse, a.max_leaf);
+    t.sizes = sizes;
+    out = over + (size_t)b * ATRBVH_CL_HIER_OVER;
+    lo = (long)((ulong)(t.n - 1) * (ulong)b / (ulong)blocks);
+    hi = (long)((ulong)(t.n - 1) * (ulong)(b + 1u) / (ulong)blocks);
+    for (s = lo; s < hi; s++) {
+        int d = atrbvh_karras_delta(keys, t.n, s, s + 1);
+        leaf_prim[s] = a.has_ids ? ids[order[s]] : order[s];
+        hier_leaf(&t, s, prim_boxes, order, &carry);
+        while (sp > 0u && st[sp - 1u].d > d) {
+            sp--;
+            /* (the bottom entry is a prefix minimum, already out) */
+            if (sp > 0u)
+                hier_emit(&t, (long)st[sp].s, (long)st[sp - 1u].s,
+                          st[sp - 1u].d, s, d, &st[sp].left, &carry);
+        }
+        if (sp == 0u && nout < ATRBVH_CL_HIER_SIDE) { /* a prefix minimum */
+            out[2u * nout] = (uint)s;
+            out[2u * nout + 1u] = carry.node;
+            nout++;
+        }
+        if (sp == ATRBVH_CL_HIER_SIDE)
+            continue; /* keys out of order: cannot happen when sorted */
+        st[sp].s = (uint)s;
+        st[sp].d = d;
+        st[sp++].left = carry;
+    }
+    /* st[0] is the last prefix minimum, already out. */
+    for (k = 1u; k < sp; k++) {
+        out[2u * nout] = st[k].s;
+        out[2u * nout + 1u] = st[k].left.node;
+        nout++;
+    }
+    over[(size_t)blocks * ATRBVH_CL_HIER_OVER + b] = nout;
+    if (last_arrival(sync, blocks))
+        hier_merge(&t, keys, leaf_prim, prim_boxes, order, ids, over, blocks,
+                   a.has_ids, st);
+}
+
+/* One copy of the pass for each mode (the constant `sizes` folds its
+ * branches away). */
 __kernel void hierarchy(__global const ulong *keys, __global uint *left,
                         __global uint *right, __global uint *parent,
                         __global uint *count, __global uint *leaf_prim,
                         __global const uint *order, __global const uint *ids,
-                        __global uint *over, __global uint *counter,
+                        __global uint *over, __global atrbvh_box *box,
+                        __global double *cost, __global uint *size,
+                        __global const atrbvh_box *prim_boxes,
                         __global uint *sync, uint blocks, atrbvh_kargs_tree a)
 {
-    uint b = (uint)get_global_id(0), sp = 0u, nout = 0u, k;
-    long n = (long)a.n, lo, hi, s;
-    uint st_s[ATRBVH_CL_HIER_SIDE];
-    int st_d[ATRBVH_CL_HIER_SIDE];
-    __global uint *out;
-    if (b >= blocks)
-        return;
-    out = over + (size_t)b * (2u * ATRBVH_CL_HIER_SIDE);
-    lo = (long)((ulong)(n - 1) * (ulong)b / (ulong)blocks);
-    hi = (long)((ulong)(n - 1) * (ulong)(b + 1u) / (ulong)blocks);
-    for (s = lo; s < hi; s++) {
-        int d = atrbvh_karras_delta(keys, n, s, s + 1);
-        count[n - 1 + s] = 1u;
-        counter[s] = 0u;
-        leaf_prim[s] = a.has_ids ? ids[order[s]] : order[s];
-        while (sp > 0u && st_d[sp - 1u] > d) {
-            uint x = st_s[--sp];
-            if (sp > 0u)
-                hier_emit(left, right, count, parent, n, (long)x,
-                          (long)st_s[sp - 1u], st_d[sp - 1u], s, d);
-        }
-        if (sp == 0u && nout < ATRBVH_CL_HIER_SIDE)
-            out[nout++] = (uint)s; /* a prefix minimum */
-        if (sp == ATRBVH_CL_HIER_SIDE)
-            continue; /* keys out of order: cannot happen when sorted */
-        st_s[sp] = (uint)s;
-        st_d[sp++] = d;
-    }
-    /* st[0] is the last prefix minimum, already out. */
-    for (k = 1u; k < sp; k++)
-        out[nout++] = st_s[k];
-    over[(size_t)blocks * (2u * ATRBVH_CL_HIER_SIDE) + b] = nout;
-    if (last_arrival(sync, blocks))
-        hier_merge(keys, left, right, parent, count, leaf_prim, order, ids,
-                   over, blocks, a);
+    if (a.sizes)
+        hier_pass(keys, left, right, parent, count, leaf_prim, order, ids,
+                  over, box, cost, size, prim_boxes, sync, blocks, a, 1u);
+    else
+        hier_pass(keys, left, right, parent, count, leaf_prim, order, ids,
+                  over, box, cost, size, prim_boxes, sync, blocks, a, 0u);
 }
 
 /* ------------------------------------------------------------------- refit */

@@ -9,12 +9,13 @@
  *
  * Roles never live at once share one buffer (home_of): the sort's
  * scratch pair is dead once the keys are sorted, the keys once the
- * hierarchy is built, so the bottom-up arrival counters (refit, optimise,
- * collapse) take the scratch keys' buffer, the optimise stage's crown
- * children the scratch order's, the optimise stage's skip marks and
- * the collapse sizes the keys'; a
- * handle keeps 20 bytes per primitive less and a build touches that much
- * less memory.
+ * hierarchy is built, so the collapse sizes (which an LBVH's hierarchy
+ * kernel writes while it reads the keys) and the optimise stage's skip
+ * marks take the scratch keys' buffer, the optimise stage's crown
+ * children the scratch order's, and the bottom-up arrival counters
+ * (optimise, collapse, a caller's tree's refit) the keys'; a handle keeps
+ * 20 bytes per primitive less and a build touches that much less
+ * memory.
  *
  * Every launch records a profiling event; atrbvh_i_cl_finish waits for the
  * queue and adds each launch's device time to the current time table (the
@@ -31,13 +32,13 @@
 static int home_of(int slot)
 {
     switch (slot) {
-    case B_COUNTER: /* from the refit on */
-        return B_KEYS_TMP; /* the sort only */
-    case B_NEEDED: /* the optimise stage */
-        return B_ORDER_TMP;
-    case B_SIZE: /* the collapse and the layout */
-    case B_MARKS: /* the optimise stage */
+    case B_COUNTER: /* after the hierarchy */
         return B_KEYS; /* morton to hierarchy */
+    case B_NEEDED: /* the optimise stage */
+        return B_ORDER_TMP; /* the sort only */
+    case B_SIZE: /* from the hierarchy (LBVH) or the collapse on */
+    case B_MARKS: /* the optimise stage */
+        return B_KEYS_TMP; /* the sort only */
     default:
         return slot;
     }

@@ -142,9 +142,11 @@ typedef struct atrbvh_cl_device {
                                tree (set_tree's is not)          */
     cl_uint counted;        /* this build: the morton kernel found
                                the keys' varying bits (B_VARY)   */
-    cl_uint counters_zero;  /* B_COUNTER is all zero (the hierarchy
-                               kernel zeroes it, every bottom-up
-                               launch leaves it so)              */
+    cl_uint counters_zero;  /* B_COUNTER is all zero (a fill, the
+                               optimise rounds and every bottom-up
+                               launch leave it so)               */
+    cl_uint refitted;       /* this build: the hierarchy kernel
+                               refitted its tree (no refit launch) */
     /* The last build's optimise stage (tests, measurements): treelets
      * processed, of which written back, and treelets skipped by the skip
      * marks (atrbvh_treelet_process_marked). */

@@ -24,6 +24,7 @@ atrbvh_status atrbvh_i_cl_set_tree(atrbvh_device *dev, atrbvh_i_run *run,
     uint32_t *parent, i;
     c->has_ids = 0;
     c->ranges = 0; /* any tree: the layout walks its leaves */
+    c->refitted = 0; /* the refit kernel climbs it */
     parent = atrbvh_i_scratch_get(&dev->scratch, 0, nodes, sizeof *parent);
     if (!parent)
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, ATRBVH_CL_NO_INDEX,

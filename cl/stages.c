@@ -81,6 +81,7 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
     c->ranges = 0;
     c->counted = 0;
     c->counters_zero = 0;
+    c->refitted = 0;
     c->opt_treelets = c->opt_applied = c->opt_skipped = 0;
     c->n_launches = c->n_writes = c->n_fills = c->n_reads = 0;
     c->n_finishes = 0;
@@ -274,6 +275,7 @@ static atrbvh_status st_morton(atrbvh_device *dev, atrbvh_i_run *run,
     CL_CHECK(atrbvh_i_cl_buffer(c, B_VARY, 2u * (size_t)a.blocks + 1u,
                                 sizeof(cl_ulong), "key bits", error));
     CL_CHECK(atrbvh_i_cl_sync(c, error));
+    c->counters_zero = 0; /* B_KEYS is B_COUNTER's home */
     CL_RUN(c, K_MORTON, a.blocks, error, CL_BUF(B_BOXES), CL_BUF(B_KEYS),
            CL_BUF(B_ORDER), CL_BUF(B_VARY), CL_BUF(B_SYNC), CL_VAL(a));
     c->counted = 1;
@@ -305,7 +307,6 @@ static atrbvh_status st_sort(atrbvh_device *dev, atrbvh_i_run *run,
     CL_CHECK(atrbvh_i_cl_buffer(c, B_HIST, a.entries, sizeof(cl_uint),
                                 "digit counts", error));
     CL_CHECK(atrbvh_i_cl_sync(c, error));
-    c->counters_zero = 0; /* B_KEYS_TMP is B_COUNTER's home */
     CL_RUN(c, K_SORT_COUNT, a.blocks, error, CL_BUF(B_KEYS), CL_BUF(B_HIST),
            CL_BUF(B_VARY), CL_BUF(B_SYNC), CL_VAL(a));
     CL_RUN(c, K_SORT_SCATTER, a.blocks, error, CL_BUF(B_KEYS),
@@ -318,6 +319,10 @@ static atrbvh_status st_sort(atrbvh_device *dev, atrbvh_i_run *run,
 }
 
 /* ------------------------------------------------------------ hierarchy */
+/* The topology and the refit in one launch (kernels.cl: the CPU's pass):
+ * boxes, counts and costs of every node and, for an LBVH, the collapse
+ * sizes (st_refit and st_collapse then launch nothing).  The sizes' home
+ * is the sort's scratch keys, not the keys the kernel reads (memory.c). */
 static atrbvh_status st_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
                                   atrbvh_error *error)
 {
@@ -331,27 +336,34 @@ static atrbvh_status st_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
     CL_CHECK(atrbvh_i_cl_buffer(c, B_COUNT, nodes, 4, "count", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_LEAF_PRIM, run->n, 4, "leaf primitives",
                                 error));
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_COUNTER, nodes, 4, "node counters",
-                                error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_BOX, nodes, sizeof(atrbvh_box),
+                                "node boxes", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_COST, nodes, sizeof(double),
+                                "node costs", error));
+    /* (an optimised tree's sizes come from the collapse: passed unused) */
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_SIZE, nodes, 4, "subtree sizes", error));
     CL_CHECK(atrbvh_i_cl_sync(c, error));
     /* Blocks: enough items for every compute unit (one block of no split
-     * for a single primitive); their leftovers (2 * 128 positions each,
-     * then the counts) in B_JUMP, which layout reuses later. */
+     * for a single primitive); their leftovers (ATRBVH_CL_HIER_OVER words
+     * each, then the counts) in B_JUMP, which layout reuses later. */
     blocks = c->compute_units * 16u;
     if (blocks > 256u)
         blocks = 256u;
     if (blocks > run->n - 1u)
         blocks = run->n > 1 ? run->n - 1u : 1u;
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_JUMP, (size_t)blocks * 257u + 1u, 4,
-                                "hierarchy leftovers", error));
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_JUMP,
+                                (size_t)blocks * (ATRBVH_CL_HIER_OVER + 1u),
+                                4, "hierarchy leftovers", error));
+    a.sizes = run->cfg->method == ATRBVH_METHOD_LBVH;
     /* ids: read only when has_ids; B_ORDER stands in otherwise. */
     CL_RUN(c, K_HIERARCHY, blocks, error, CL_BUF(B_KEYS), CL_BUF(B_LEFT),
            CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
            CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_BUF(B_JUMP),
-           CL_BUF(B_COUNTER), CL_BUF(B_SYNC), CL_VAL(blocks), CL_VAL(a));
+           CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_SIZE), CL_BUF(B_BOXES),
+           CL_BUF(B_SYNC), CL_VAL(blocks), CL_VAL(a));
     c->ranges = 1;
-    c->counters_zero = 1; /* the kernel zeroed the internal nodes' */
+    c->refitted = 1;
     return ATRBVH_OK;
 }
 
@@ -362,6 +374,8 @@ static atrbvh_status st_refit(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_cl_device *c = cl_of(dev);
     atrbvh_kargs_tree a = tree_args(c, run);
     size_t nodes = tree_nodes(run);
+    if (c->refitted)
+        return ATRBVH_OK; /* the hierarchy kernel's pass did it */
     CL_CHECK(atrbvh_i_cl_buffer(c, B_BOX, nodes, sizeof(atrbvh_box),
                                 "node boxes", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_COST, nodes, sizeof(double),
@@ -372,10 +386,9 @@ static atrbvh_status st_refit(atrbvh_device *dev, atrbvh_i_run *run,
         CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4, "node counters",
                                   error));
     c->counters_zero = 1; /* the kernel leaves them zero */
-    /* An LBVH's collapse sizes in the same climb (st_collapse then only
-     * reads the root's); B_SIZE takes the keys' buffer, free since the
-     * hierarchy, so this creates none (an optimised tree's refit passes
-     * it unused). */
+    /* A caller's tree (set_tree): the climb.  An LBVH's collapse sizes
+     * in the same climb (st_collapse then only reads the root's; an
+     * optimised tree's refit passes them unused). */
     a.sizes = run->cfg->method == ATRBVH_METHOD_LBVH;
     CL_CHECK(atrbvh_i_cl_buffer(c, B_SIZE, nodes, 4, "subtree sizes", error));
     CL_RUN(c, K_REFIT, run->n, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
@@ -463,6 +476,7 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
      * beyond the list have no share; the tree does not depend on how
      * many items share the list). */
     a.workers = workers_max;
+    c->counters_zero = 0; /* (the kernels' own zeroing from here on) */
     for (round = 0; round < cfg->rounds; round++) {
         cl_ulong gamma = (cl_ulong)cfg->gamma << (round < 40u ? round : 40u);
         if (atrbvh_i_stage_progress(run, round, cfg->rounds)) {
@@ -497,6 +511,9 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
                                  "cancelled in stage optimise, round %u",
                                  (unsigned)round + 1);
         }
+        /* opt_prepare zeroed every internal node's counter and each
+         * round's last arrivals set theirs back: zero for the collapse */
+        c->counters_zero = 1;
     }
     CL_CHECK(atrbvh_i_cl_download(c, B_TALLY, tally, sizeof tally,
                                   "treelet counts", error));

@@ -490,10 +490,11 @@ START_TEST(kernel_times_and_device)
 }
 END_TEST
 
-/* An LBVH's collapse sizes come out of the refit kernel's climb
- * (atrbvh_refit_node_size), as on the CPU: the collapse kernel is not
- * launched, and the tree is the CPU's, with and without collapse and with
- * a leaf limit; an optimised build still launches it. */
+/* An LBVH's collapse sizes come out of the hierarchy kernel's refit
+ * (atrbvh_refit_node_size), as on the CPU: neither the refit nor the
+ * collapse kernel is launched, and the tree is the CPU's, with and
+ * without collapse and with a leaf limit; an optimised build launches the
+ * collapse (its refit is the hierarchy kernel's too). */
 static int launched(const atrbvh_bvh *b, const char *kernel)
 {
     const char *name;
@@ -525,7 +526,7 @@ START_TEST(lbvh_refit_takes_the_collapse)
         c = tu_build(&g, &o);
         ck_assert_msg(tu_same_bvh(b, c, msg, sizeof msg), "case %d: %s", k,
                       msg);
-        ck_assert(launched(c, "refit"));
+        ck_assert_msg(!launched(c, "refit"), "case %d: refit launched", k);
         ck_assert_msg(launched(c, "collapse") == (k == 3),
                       "case %d: collapse kernel %slaunched", k,
                       k == 3 ? "not " : "");
@@ -624,6 +625,65 @@ START_TEST(device_sort_adversarial_keys)
 }
 END_TEST
 
+/* The refit in the hierarchy kernel's pass (cl/kernels.cl, as
+ * lib/cpu/hierarchy.c): boxes, counts, costs and an LBVH's collapse sizes
+ * of every node equal to the CPU's at every stage, where the blocks'
+ * leftovers carry their subtrees to the merge: fewer splits than blocks
+ * (one split a block), clusters of equal keys (deep stacks, the deltas
+ * 64 .. 95) beside spread ones, boxes of random sizes (so that a box
+ * taken from the wrong subtree shows); and no refit launch. */
+START_TEST(hierarchy_refits_in_its_pass)
+{
+    static const size_t sizes[] = {2, 3, 5, 17, 33, 34, 100, 2500};
+    static const config cfgs[] = {{ATRBVH_METHOD_LBVH, 0, 0, 1},
+                                  {ATRBVH_METHOD_LBVH, 0, 0, 0},
+                                  {ATRBVH_METHOD_ATRBVH, 9, 2, 1}};
+    float *b = malloc(sizeof(float) * 6 * 2500);
+    tu_rng r;
+    size_t s, i, k, c;
+    REQUIRE_DEVICE();
+    ck_assert_ptr_nonnull(b);
+    tu_rng_seed(&r, 4242);
+    for (s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
+        const size_t n = sizes[s];
+        atrbvh_geometry g;
+        atrbvh_build_options o;
+        atrbvh_bvh *bvh;
+        char what[64];
+        for (i = 0; i < n; i++) {
+            /* a third at one of 3 points, the rest spread */
+            float p[3], h;
+            const unsigned pick = (unsigned)(tu_rng_next(&r) % 9u);
+            for (k = 0; k < 3; k++)
+                p[k] = pick < 3 ? 0.25f * (float)(pick + 1)
+                                : tu_rng_float(&r);
+            h = 0.001f + 0.05f * tu_rng_float(&r);
+            for (k = 0; k < 3; k++) {
+                b[6 * i + k] = p[k] - h * (float)(k + 1);
+                b[6 * i + 3 + k] = p[k] + h;
+            }
+        }
+        g = atrbvh_geometry_boxes(b, n);
+        for (c = 0; c < sizeof cfgs / sizeof cfgs[0]; c++) {
+            snprintf(what, sizeof what, "%lu clustered boxes",
+                     (unsigned long)n);
+            expect_identical(&g, &cfgs[c], what);
+            atrbvh_build_options_init(&o);
+            o.method = cfgs[c].method;
+            o.treelet_size = cfgs[c].treelet;
+            o.rounds = cfgs[c].rounds;
+            o.collapse = cfgs[c].collapse;
+            o.backend = ATRBVH_BACKEND_OPENCL;
+            bvh = tu_build(&g, &o);
+            ck_assert_msg(!launched(bvh, "refit") && launched(bvh, "hierarchy"),
+                          "%s: refit launched", what);
+            atrbvh_bvh_free(bvh);
+        }
+    }
+    free(b);
+}
+END_TEST
+
 static Suite *opencl_suite(void)
 {
     Suite *s = suite_create("opencl");
@@ -651,6 +711,7 @@ static Suite *opencl_suite(void)
     tcase_add_test(tc, device_handle);
     tcase_add_test(tc, kernel_times_and_device);
     tcase_add_test(tc, lbvh_refit_takes_the_collapse);
+    tcase_add_test(tc, hierarchy_refits_in_its_pass);
     tcase_set_timeout(tc, 120);
     suite_add_tcase(s, tc);
     return s;

@@ -47,6 +47,15 @@ typedef struct atrbvh_kargs_sort {
     atrbvh_u32 entries; /* buckets * blocks: the counts' size */
 } atrbvh_kargs_sort;
 
+/* The hierarchy kernel's leftovers (cl/kernels.cl): a block's prefix
+ * minima and its final stack are strictly monotone in delta (0 .. 95), so
+ * at most ATRBVH_CL_HIER_SIDE each, as lib/cpu/hierarchy.c's; each is
+ * recorded as two words (split position, subtree root), so a block's
+ * share of the host's leftover buffer is ATRBVH_CL_HIER_OVER words, and
+ * one count per block follows all shares. */
+#define ATRBVH_CL_HIER_SIDE 96u
+#define ATRBVH_CL_HIER_OVER (4u * ATRBVH_CL_HIER_SIDE)
+
 /* hierarchy, refit, collapse, layout */
 typedef struct atrbvh_kargs_tree {
     double ci, ct;        /* the cost model (atrbvh_cost_params) */
@@ -54,7 +63,8 @@ typedef struct atrbvh_kargs_tree {
     atrbvh_u32 collapse;
     atrbvh_u32 max_leaf;
     atrbvh_u32 has_ids;   /* hierarchy: 1 when kept ids map the leaves */
-    atrbvh_u32 sizes;     /* refit: 1 for the collapse sizes too (LBVH) */
+    atrbvh_u32 sizes;     /* hierarchy, refit: 1 for the collapse sizes
+                             too (LBVH) */
     atrbvh_u32 ranges;    /* layout: 1 when every subtree holds the leaves
                              of a range of sorted positions, in order (the
                              hierarchy's tree, not optimised) */
