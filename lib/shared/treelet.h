@@ -185,7 +185,9 @@ ATRBVH_FN void atrbvh_treelet_gather(const atrbvh_treelet_tree *t,
  *         processed, its optimal cost C(S);
  *  count: primitives N(S);
  *  split: the best left part P of S.
- * The sizes in bytes are those of 2^n atrbvh_box, double and two u32. */
+ * The sizes in bytes are those of 2^n atrbvh_box, double and two u32.
+ * Once every subset's box is made, the DP reuses the start of `box` as
+ * 2^n doubles (see atrbvh_trbvh_dp). */
 typedef struct atrbvh_trbvh_scratch {
     ATRBVH_GLOBAL float *box;
     ATRBVH_GLOBAL double *cost;
@@ -335,7 +337,9 @@ ATRBVH_FN void atrbvh_trbvh_subsets(atrbvh_u32 n, atrbvh_u32 k,
 #endif
 
 /* The best partition of S (|S| >= 2; every proper subset's cost final in
- * cost[], base = ci*A(S)): the minimum over P of (base + C(P)) + C(S\P),
+ * cost[], and at rest[P] = C(S\P) for every subset P of S (rest =
+ * rev + (full ^ S), see atrbvh_trbvh_dp), base = ci*A(S)): the minimum
+ * over P of (base + C(P)) + C(S\P),
  * P running through the nonempty subsets of delta = S minus its lowest
  * leaf in increasing order (the paper's P = (P - delta) & S), the first P
  * among equal minima (strict <).  *bestp receives it.  The comparison is
@@ -351,16 +355,17 @@ ATRBVH_FN void atrbvh_trbvh_subsets(atrbvh_u32 n, atrbvh_u32 k,
         best = c_ < best ? c_ : best;                                          \
     } while (0)
 ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
+                                   ATRBVH_GLOBAL const double *rest,
                                    atrbvh_trbvh_mask S, double base,
                                    atrbvh_trbvh_mask *bestp)
 {
     const atrbvh_trbvh_mask delta = (S - 1u) & S;
     atrbvh_trbvh_mask P = delta & (0u - delta), bp = P;
     double best = base + cost[P];
-    best = best + cost[S ^ P];
+    best = best + rest[P];
     for (P = (P - delta) & delta; P; P = (P - delta) & delta) {
         double c = base + cost[P];
-        c = c + cost[S ^ P];
+        c = c + rest[P];
         ATRBVH_TRBVH_TRY(c, P);
     }
     *bestp = bp;
@@ -384,8 +389,13 @@ ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
  * order); P becomes the left child.  Subsets are visited in increasing
  * numeric order, so every proper subset is final before S.  The boxes,
  * areas and counts come first, by highest leaf (atrbvh_trbvh_subsets, a
- * loop without dependences between its iterations), then the partition
- * loop of each S reads only costs.
+ * loop without dependences between its iterations), all of them before
+ * the first partition, then the partition loop of each S reads only
+ * costs: C(P) from cost[P] and C(S\P) from a mirror, rev[full ^ X] =
+ * C(X) written with each final cost, at rev[(full ^ S) + P] (full ^ S
+ * and P are disjoint): both loads indexed by P, no complement computed
+ * per partition.  The mirror lives in the box planes, dead by then (2^n
+ * doubles within 6 * 2^n floats, at the scratch's aligned start).
  *
  * Exactness: the partition cost is computed as (ci*A + C(P)) + C(S\P),
  * literally atrbvh_node_cost's sum, and rounding is monotone, so the
@@ -417,19 +427,24 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
                                                : p->max_leaf;
     const double ci = p->ci, ct = p->ct;
     ATRBVH_GLOBAL double *cost = s.cost;
+    ATRBVH_GLOBAL double *rev =
+        (ATRBVH_GLOBAL double *)(ATRBVH_GLOBAL void *)s.box;
 
+    for (k = 0; k < n; k++)
+        atrbvh_trbvh_subsets(n, k, lv, s);
     for (k = 0; k < n; k++) {
         const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k;
         atrbvh_trbvh_mask S;
-        atrbvh_trbvh_subsets(n, k, lv, s);
         cost[bit] = lv->cost[k];
+        rev[full ^ bit] = lv->cost[k];
         s.split[bit] = 0;
         /* Every S whose highest leaf is k: S = bit | rest, 0 < rest < bit. */
         for (S = bit + 1u; S < bit + bit; S++) {
             const double area = cost[S];
             const double base = ci * area;
             atrbvh_trbvh_mask bestp;
-            double best = atrbvh_trbvh_best(cost, S, base, &bestp);
+            double best =
+                atrbvh_trbvh_best(cost, rev + (full ^ S), S, base, &bestp);
             if (s.count[S] <= lim) {
                 double flat = ct * area;
                 flat = flat * (double)s.count[S];
@@ -437,6 +452,7 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
                     best = flat;
             }
             cost[S] = best;
+            rev[full ^ S] = best;
             s.split[S] = (atrbvh_u32)bestp;
         }
     }
