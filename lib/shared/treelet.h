@@ -441,8 +441,9 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
                                                : p->max_leaf;
     const double ci = p->ci, ct = p->ct;
     ATRBVH_GLOBAL double *cost = s.cost;
-    ATRBVH_GLOBAL double *rev =
-        (ATRBVH_GLOBAL double *)(ATRBVH_GLOBAL void *)s.box;
+    /* The mirror's last entry: rev + (full ^ S) = rev_top - S. */
+    ATRBVH_GLOBAL double *rev_top =
+        (ATRBVH_GLOBAL double *)(ATRBVH_GLOBAL void *)s.box + full;
 
     for (k = 0; k < n; k++)
         atrbvh_trbvh_subsets(n, k, lv, s);
@@ -450,15 +451,15 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
         const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k;
         atrbvh_trbvh_mask S;
         cost[bit] = lv->cost[k];
-        rev[full ^ bit] = lv->cost[k];
+        *(rev_top - bit) = lv->cost[k];
         s.split[bit] = 0;
         /* Every S whose highest leaf is k: S = bit | rest, 0 < rest < bit. */
         for (S = bit + 1u; S < bit + bit; S++) {
             const double area = cost[S];
             const double base = ci * area;
+            ATRBVH_GLOBAL double *rest = rev_top - S;
             atrbvh_trbvh_mask bestp;
-            double best =
-                atrbvh_trbvh_best(cost, rev + (full ^ S), S, base, &bestp);
+            double best = atrbvh_trbvh_best(cost, rest, S, base, &bestp);
             if (s.count[S] <= lim) {
                 double flat = ct * area;
                 flat = flat * (double)s.count[S];
@@ -466,7 +467,7 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
                     best = flat;
             }
             cost[S] = best;
-            rev[full ^ S] = best;
+            rest[0] = best; /* rev[full ^ S] */
             s.split[S] = (atrbvh_u32)bestp;
         }
     }
