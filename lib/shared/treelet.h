@@ -419,6 +419,15 @@ ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
  * extracted topology.  Ties keep the first partition in enumeration order
  * (strict <), i.e. the numerically smallest P.  Masks fit in 32 bits
  * (n <= ATRBVH_TRBVH_MAX). */
+/* The box planes change type (floats, then the doubles of the mirror,
+ * then floats again for the next treelet): C allows it in allocated
+ * memory, and this compiler barrier (no instruction) keeps any
+ * type-based reordering from moving an access across the change. */
+#if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__))
+#define ATRBVH_TRBVH_RETYPE() __asm__ __volatile__("" ::: "memory")
+#else
+#define ATRBVH_TRBVH_RETYPE() ((void)0)
+#endif
 #if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__))
 /* Not inlined into atrbvh_treelet_process: in a frame of its own the
  * partition loop keeps its variables in registers (GCC spilled one per
@@ -447,6 +456,7 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
 
     for (k = 0; k < n; k++)
         atrbvh_trbvh_subsets(n, k, lv, s);
+    ATRBVH_TRBVH_RETYPE();
     for (k = 0; k < n; k++) {
         const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k;
         atrbvh_trbvh_mask S;
@@ -471,6 +481,8 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
             s.split[S] = (atrbvh_u32)bestp;
         }
     }
+
+    ATRBVH_TRBVH_RETYPE();
 
     /* Extract the topology top-down (explicit stack, no recursion):
      * local node 0 is the root; children get local ids as discovered. */
