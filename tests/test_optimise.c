@@ -388,8 +388,9 @@ END_TEST
  * partition P = (P - delta) & S in turn, strict <): atrbvh_trbvh_dp
  * computes its tables differently (boxes, areas and counts in a separate
  * pass, four subsets at a time on x86; the partition loop over costs
- * only) and must fill them with exactly these bits, split for split, ties
- * included. */
+ * only, by pairs P = E, E|lb, the complement's cost from a mirror kept in
+ * the box planes) and must fill them with exactly these bits, split for
+ * split, ties included (swapping a pair's order fails here). */
 static void plain_dp(const atrbvh_cost_params *p, unsigned n,
                      const atrbvh_treelet_leaves *lv, double *cost,
                      uint32_t *split)

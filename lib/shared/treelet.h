@@ -185,7 +185,9 @@ ATRBVH_FN void atrbvh_treelet_gather(const atrbvh_treelet_tree *t,
  *         processed, its optimal cost C(S);
  *  count: primitives N(S);
  *  split: the best left part P of S.
- * The sizes in bytes are those of 2^n atrbvh_box, double and two u32. */
+ * The sizes in bytes are those of 2^n atrbvh_box, double and two u32.
+ * Once every subset's box is made, the DP reuses the start of `box` as
+ * 2^n doubles (see atrbvh_trbvh_dp). */
 typedef struct atrbvh_trbvh_scratch {
     ATRBVH_GLOBAL float *box;
     ATRBVH_GLOBAL double *cost;
@@ -335,10 +337,21 @@ ATRBVH_FN void atrbvh_trbvh_subsets(atrbvh_u32 n, atrbvh_u32 k,
 #endif
 
 /* The best partition of S (|S| >= 2; every proper subset's cost final in
- * cost[], base = ci*A(S)): the minimum over P of (base + C(P)) + C(S\P),
+ * cost[], and at rest[P] = C(S\P) for every subset P of S (rest =
+ * rev + (full ^ S), see atrbvh_trbvh_dp), base = ci*A(S)): the minimum
+ * over P of (base + C(P)) + C(S\P),
  * P running through the nonempty subsets of delta = S minus its lowest
  * leaf in increasing order (the paper's P = (P - delta) & S), the first P
- * among equal minima (strict <).  *bestp receives it.  The comparison is
+ * among equal minima (strict <).  *bestp receives it.  The enumeration
+ * goes by pairs: with lb the lowest bit of delta and d2 = delta minus lb,
+ * the subsets of delta in increasing order are 0, lb, then E, E|lb for
+ * each nonempty subset E of d2 in increasing order (E|lb lies below the
+ * next E, which differs from E above lb): P = lb first, then one mask
+ * update and one loop test per two partitions, all four loads indexed by
+ * E (E|lb = E + lb through pointers moved by lb).  The partitions, their
+ * sums and the order of the comparisons are exactly the one-by-one
+ * loop's.  (By fours, on the two lowest bits, the setup per subset cost
+ * about what the loop saved.)  The comparison is
  * written as two selects so that it compiles to a conditional move: the
  * outcome is data-dependent and a branch mispredicts.  (An SSE2 version
  * taking four partitions per step with a branch on "any lane lower" ran
@@ -351,17 +364,23 @@ ATRBVH_FN void atrbvh_trbvh_subsets(atrbvh_u32 n, atrbvh_u32 k,
         best = c_ < best ? c_ : best;                                          \
     } while (0)
 ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
+                                   ATRBVH_GLOBAL const double *rest,
                                    atrbvh_trbvh_mask S, double base,
                                    atrbvh_trbvh_mask *bestp)
 {
     const atrbvh_trbvh_mask delta = (S - 1u) & S;
-    atrbvh_trbvh_mask P = delta & (0u - delta), bp = P;
-    double best = base + cost[P];
-    best = best + cost[S ^ P];
-    for (P = (P - delta) & delta; P; P = (P - delta) & delta) {
-        double c = base + cost[P];
-        c = c + cost[S ^ P];
-        ATRBVH_TRBVH_TRY(c, P);
+    const atrbvh_trbvh_mask lb = delta & (0u - delta), d2 = delta ^ lb;
+    ATRBVH_GLOBAL const double *cost_lb = cost + lb, *rest_lb = rest + lb;
+    atrbvh_trbvh_mask E, bp = lb;
+    double best = base + cost[lb];
+    best = best + rest[lb];
+    for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
+        double c = base + cost[E];
+        c = c + rest[E];
+        ATRBVH_TRBVH_TRY(c, E);
+        c = base + cost_lb[E];
+        c = c + rest_lb[E];
+        ATRBVH_TRBVH_TRY(c, E + lb);
     }
     *bestp = bp;
     return best;
@@ -384,8 +403,13 @@ ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
  * order); P becomes the left child.  Subsets are visited in increasing
  * numeric order, so every proper subset is final before S.  The boxes,
  * areas and counts come first, by highest leaf (atrbvh_trbvh_subsets, a
- * loop without dependences between its iterations), then the partition
- * loop of each S reads only costs.
+ * loop without dependences between its iterations), all of them before
+ * the first partition, then the partition loop of each S reads only
+ * costs: C(P) from cost[P] and C(S\P) from a mirror, rev[full ^ X] =
+ * C(X) written with each final cost, at rev[(full ^ S) + P] (full ^ S
+ * and P are disjoint): both loads indexed by P, no complement computed
+ * per partition.  The mirror lives in the box planes, dead by then (2^n
+ * doubles within 6 * 2^n floats, at the scratch's aligned start).
  *
  * Exactness: the partition cost is computed as (ci*A + C(P)) + C(S\P),
  * literally atrbvh_node_cost's sum, and rounding is monotone, so the
@@ -395,6 +419,15 @@ ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
  * extracted topology.  Ties keep the first partition in enumeration order
  * (strict <), i.e. the numerically smallest P.  Masks fit in 32 bits
  * (n <= ATRBVH_TRBVH_MAX). */
+/* The box planes change type (floats, then the doubles of the mirror,
+ * then floats again for the next treelet): C allows it in allocated
+ * memory, and this compiler barrier (no instruction) keeps any
+ * type-based reordering from moving an access across the change. */
+#if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__))
+#define ATRBVH_TRBVH_RETYPE() __asm__ __volatile__("" ::: "memory")
+#else
+#define ATRBVH_TRBVH_RETYPE() ((void)0)
+#endif
 #if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__))
 /* Not inlined into atrbvh_treelet_process: in a frame of its own the
  * partition loop keeps its variables in registers (GCC spilled one per
@@ -417,19 +450,26 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
                                                : p->max_leaf;
     const double ci = p->ci, ct = p->ct;
     ATRBVH_GLOBAL double *cost = s.cost;
+    /* The mirror's last entry: rev + (full ^ S) = rev_top - S. */
+    ATRBVH_GLOBAL double *rev_top =
+        (ATRBVH_GLOBAL double *)(ATRBVH_GLOBAL void *)s.box + full;
 
+    for (k = 0; k < n; k++)
+        atrbvh_trbvh_subsets(n, k, lv, s);
+    ATRBVH_TRBVH_RETYPE();
     for (k = 0; k < n; k++) {
         const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k;
         atrbvh_trbvh_mask S;
-        atrbvh_trbvh_subsets(n, k, lv, s);
         cost[bit] = lv->cost[k];
+        *(rev_top - bit) = lv->cost[k];
         s.split[bit] = 0;
         /* Every S whose highest leaf is k: S = bit | rest, 0 < rest < bit. */
         for (S = bit + 1u; S < bit + bit; S++) {
             const double area = cost[S];
             const double base = ci * area;
+            ATRBVH_GLOBAL double *rest = rev_top - S;
             atrbvh_trbvh_mask bestp;
-            double best = atrbvh_trbvh_best(cost, S, base, &bestp);
+            double best = atrbvh_trbvh_best(cost, rest, S, base, &bestp);
             if (s.count[S] <= lim) {
                 double flat = ct * area;
                 flat = flat * (double)s.count[S];
@@ -437,9 +477,12 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
                     best = flat;
             }
             cost[S] = best;
+            rest[0] = best; /* rev[full ^ S] */
             s.split[S] = (atrbvh_u32)bestp;
         }
     }
+
+    ATRBVH_TRBVH_RETYPE();
 
     /* Extract the topology top-down (explicit stack, no recursion):
      * local node 0 is the root; children get local ids as discovered. */
