@@ -11,21 +11,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [12.1915094:393.836101]
+set xrange [12.0273213:393.136985]
 set xtics (20, 50, 100, 200)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 17.0401418,64.4719989 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 148.107251,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 77.2294705,38.1056054 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 58.080105,34.3270082 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 102.143288,32.7969937 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 146.731177,32.8484421 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 196.938662,35.3227309 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 59.2247099,32.614126 left font ',8' noenhanced front
-set label 'embree_low' at 24.553879,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 98.8956165,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 64.6919559,43.2759982 left font ',8' noenhanced front
+set label 'LBVH' at 16.8297495,64.4719989 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 140.475642,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 76.7113117,38.1056054 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 59.6432631,34.3270082 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 100.289292,32.7969937 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 148.060983,32.8484421 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 196.127689,35.3227309 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 59.0378303,32.614126 left font ',8' noenhanced front
+set label 'embree_low' at 24.6571459,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 98.9082258,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 65.0759112,43.2759982 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -45,21 +45,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [12.1915094:393.836101]
+set xrange [12.0273213:393.136985]
 set xtics (20, 50, 100, 200)
-set yrange [6.19981329:11.8310337]
+set yrange [7.94247106:14.6375472]
 unset label
-set label 'LBVH' at 17.0401418,7.87182348 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 146.758947,10.5941038 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 77.2294705,10.5677532 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 90.5844294,10.8433407 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 102.143288,11.1260411 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 146.731177,11.2145411 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 196.938662,10.8555616 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 59.2247099,11.1659289 left font ',8' noenhanced front
-set label 'embree_low' at 24.553879,6.73189711 left font ',8' noenhanced front
-set label 'embree_medium' at 98.8956165,10.0560063 left font ',8' noenhanced front
-set label 'embree_high' at 97.8970777,9.88941492 left font ',8' noenhanced front
+set label 'LBVH' at 16.8297495,9.97049961 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 140.475642,13.3527635 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 77.418474,13.1187166 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 59.0984647,13.4113688 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 79.8769863,13.6444873 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 146.708552,13.8497198 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 196.127689,13.5641371 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 59.0378303,13.8467901 left font ',8' noenhanced front
+set label 'embree_low' at 24.6571459,8.57507668 left font ',8' noenhanced front
+set label 'embree_medium' at 98.9082258,12.622712 left font ',8' noenhanced front
+set label 'embree_high' at 98.6165256,12.4205053 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 0 using 2:4 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:4 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -78,21 +78,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [12.1915094:393.836101]
+set xrange [12.0273213:393.136985]
 set xtics (20, 50, 100, 200)
 set yrange [36.3654314:96.1032186]
 unset label
-set label 'LBVH' at 17.0401418,81.0882218 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 148.107251,45.8398031 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 77.9389927,45.9114409 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 57.5513693,43.5123416 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 102.143288,39.8470263 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 146.731177,39.6917784 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 196.938662,42.4925613 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 59.7688189,40.4817708 left font ',8' noenhanced front
-set label 'embree_low' at 24.553879,89.0475745 left font ',8' noenhanced front
-set label 'embree_medium' at 98.8956165,53.862866 left font ',8' noenhanced front
-set label 'embree_high' at 64.6919559,53.862866 left font ',8' noenhanced front
+set label 'LBVH' at 16.8297495,81.0882218 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 140.475642,45.8398031 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 77.418474,45.9114409 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 59.0984647,43.5123416 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 100.289292,39.8470263 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 148.060983,39.6917784 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 196.127689,42.4925613 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 59.5820698,40.4817708 left font ',8' noenhanced front
+set label 'embree_low' at 24.6571459,89.0475745 left font ',8' noenhanced front
+set label 'embree_medium' at 98.9082258,53.862866 left font ',8' noenhanced front
+set label 'embree_high' at 65.0759112,53.862866 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -112,21 +112,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [12.1915094:393.836101]
+set xrange [12.0273213:393.136985]
 set xtics (20, 50, 100, 200)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 17.0401418,64.4719989 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 148.107251,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 77.2294705,38.1056054 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 58.080105,34.3270082 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 102.143288,32.7969937 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 146.731177,32.8484421 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 196.938662,35.3227309 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 59.2247099,32.614126 left font ',8' noenhanced front
-set label 'embree_low' at 24.553879,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 98.8956165,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 64.6919559,43.2759982 left font ',8' noenhanced front
+set label 'LBVH' at 16.8297495,64.4719989 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 140.475642,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 76.7113117,38.1056054 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 59.6432631,34.3270082 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 100.289292,32.7969937 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 148.060983,32.8484421 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 196.127689,35.3227309 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 59.0378303,32.614126 left font ',8' noenhanced front
+set label 'embree_low' at 24.6571459,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 98.9082258,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 65.0759112,43.2759982 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -139,21 +139,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [12.1915094:393.836101]
+set xrange [12.0273213:393.136985]
 set xtics (20, 50, 100, 200)
 set yrange [36.3654314:96.1032186]
 unset label
-set label 'LBVH' at 17.0401418,81.0882218 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 148.107251,45.8398031 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 77.9389927,45.9114409 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 57.5513693,43.5123416 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 102.143288,39.8470263 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 146.731177,39.6917784 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 196.938662,42.4925613 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 59.7688189,40.4817708 left font ',8' noenhanced front
-set label 'embree_low' at 24.553879,89.0475745 left font ',8' noenhanced front
-set label 'embree_medium' at 98.8956165,53.862866 left font ',8' noenhanced front
-set label 'embree_high' at 64.6919559,53.862866 left font ',8' noenhanced front
+set label 'LBVH' at 16.8297495,81.0882218 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 140.475642,45.8398031 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 77.418474,45.9114409 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 59.0984647,43.5123416 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 100.289292,39.8470263 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 148.060983,39.6917784 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 196.127689,42.4925613 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 59.5820698,40.4817708 left font ',8' noenhanced front
+set label 'embree_low' at 24.6571459,89.0475745 left font ',8' noenhanced front
+set label 'embree_medium' at 98.9082258,53.862866 left font ',8' noenhanced front
+set label 'embree_high' at 65.0759112,53.862866 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
@@ -171,21 +171,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [12.1915094:393.836101]
+set xrange [12.0273213:393.136985]
 set xtics (20, 50, 100, 200)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 17.0401418,64.4719989 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 148.107251,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 77.2294705,38.1056054 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 58.080105,34.3270082 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 102.143288,32.7969937 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 146.731177,32.8484421 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 196.938662,35.3227309 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 59.2247099,32.614126 left font ',8' noenhanced front
-set label 'embree_low' at 24.553879,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 98.8956165,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 64.6919559,43.2759982 left font ',8' noenhanced front
+set label 'LBVH' at 16.8297495,64.4719989 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 140.475642,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 76.7113117,38.1056054 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 59.6432631,34.3270082 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 100.289292,32.7969937 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 148.060983,32.8484421 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 196.127689,35.3227309 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 59.0378303,32.614126 left font ',8' noenhanced front
+set label 'embree_low' at 24.6571459,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 98.9082258,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 65.0759112,43.2759982 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -198,21 +198,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [12.1915094:393.836101]
+set xrange [12.0273213:393.136985]
 set xtics (20, 50, 100, 200)
 set yrange [36.3654314:96.1032186]
 unset label
-set label 'LBVH' at 17.0401418,81.0882218 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 148.107251,45.8398031 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 77.9389927,45.9114409 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 57.5513693,43.5123416 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 102.143288,39.8470263 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 146.731177,39.6917784 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 196.938662,42.4925613 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 59.7688189,40.4817708 left font ',8' noenhanced front
-set label 'embree_low' at 24.553879,89.0475745 left font ',8' noenhanced front
-set label 'embree_medium' at 98.8956165,53.862866 left font ',8' noenhanced front
-set label 'embree_high' at 64.6919559,53.862866 left font ',8' noenhanced front
+set label 'LBVH' at 16.8297495,81.0882218 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 140.475642,45.8398031 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 77.418474,45.9114409 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 59.0984647,43.5123416 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 100.289292,39.8470263 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 148.060983,39.6917784 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 196.127689,42.4925613 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 59.5820698,40.4817708 left font ',8' noenhanced front
+set label 'embree_low' at 24.6571459,89.0475745 left font ',8' noenhanced front
+set label 'embree_medium' at 98.9082258,53.862866 left font ',8' noenhanced front
+set label 'embree_high' at 65.0759112,53.862866 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
