@@ -216,6 +216,8 @@ if run 0 build builtin:sphere:3000 --split 0.3 --json -o "$T/split.bvh"; then
     r=$(json_value references)
     p=$(json_value primitives)
     [ "$p" = "$t" ] || fail "--split: primitives '$p', triangles '$t'"
+    [ "$(json_value split_rule)" = '"tree"' ] ||
+        fail "--split: split_rule '$(json_value split_rule)', expected \"tree\""
     [ -n "$r" ] && [ "$r" -gt "$t" ] && [ $((r * 10)) -le $((t * 13)) ] ||
         fail "--split 0.3: references '$r' for $t triangles"
     ver=$(od -An -tu4 -j8 -N4 "$T/split.bvh" | tr -d ' ')
@@ -227,6 +229,8 @@ run 2 build "$T/nothere.ply" --split 0.3 --split-rule bogus &&
 if run 0 build builtin:sphere:3000 --split 0.3 --split-rule priority --json; then
     [ "$(json_value references)" -gt "$(json_value triangles)" ] ||
         fail "--split-rule priority: nothing split"
+    [ "$(json_value split_rule)" = '"priority"' ] ||
+        fail "--split-rule priority: split_rule '$(json_value split_rule)'"
 fi
 
 # ------------------------------------------------------------- build

@@ -565,6 +565,9 @@ void cli_build_json(json_writer *w, const cli_build_args *a,
         size_t refs = 0;
         (void)atrbvh_bvh_primitive_indices(b->bvh, &refs);
         json_kv_double(w, "split_budget", a->options.split_budget);
+        json_kv_string(w, "split_rule",
+                       split_rule_names[a->options.split_rule ==
+                                        ATRBVH_SPLIT_PRIORITY]);
         json_kv_uint(w, "references", refs);
     }
     json_kv_string(w, "method", cli_method_name(s->method));
