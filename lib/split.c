@@ -549,8 +549,6 @@ static atrbvh_status first_tree_open(const atrbvh_i_run *run,
     return ATRBVH_OK;
 }
 
-/* Sum over triangles of splits_of: integer, so the
- * same for any thread count. */
 /* The splits of triangle i at scale d: by the tree rule (chosen) all its
  * chosen ones when its gain per split p reaches 1 / d, else none; by the
  * priority rule floor(d p), at most MAX_SPLITS. */
@@ -564,7 +562,9 @@ static uint32_t splits_of(double d, double p, const uint32_t *chosen,
     return s >= (double)MAX_SPLITS ? MAX_SPLITS : (uint32_t)s;
 }
 
-static uint64_t total_splits(const double *p, const uint32_t *fixed,
+/* Sum over triangles of splits_of: integer, so the same for any thread
+ * count. */
+static uint64_t total_splits(const double *p, const uint32_t *chosen,
                              size_t n, double d, int threads)
 {
     uint64_t sum = 0;
@@ -574,7 +574,7 @@ static uint64_t total_splits(const double *p, const uint32_t *fixed,
 #pragma omp parallel for num_threads(threads) schedule(static) reduction(+ : sum)
 #endif
     for (i = 0; i < (int64_t)n; i++)
-        sum += splits_of(d, p[i], fixed, (size_t)i);
+        sum += splits_of(d, p[i], chosen, (size_t)i);
     return sum;
 }
 
