@@ -89,25 +89,74 @@ static int last_arrival(__global uint *sync, uint items)
 /* ------------------------------------------------------------------ bounds */
 /* Item w of a.parts: the box of each primitive of block w
  * (atrbvh_prim_box_triangle / _box, the CPU's functions, in index order),
- * and the block's scene and centroid boxes (atrbvh_scene_add), in
- * partial[2w], partial[2w + 1]; its count of invalid primitives (NaN/Inf,
- * an index out of range, an inverted box) after the 2 * a.parts boxes.
- * The host unites the partials (min/max: order-independent) in the same
- * read; when any primitive is invalid, the pipeline finds the exact error
- * on the host, or compacts, and hands the boxes back (set_prims). */
-static void bounds_part(__global atrbvh_box *partial, uint w, uint parts,
+ * and the block's scene and centroid boxes (atrbvh_scene_add) and count
+ * of invalid primitives (NaN/Inf, an index out of range, an inverted
+ * box), after the record (kargs.h atrbvh_bounds_record) at the start of
+ * `rec`'s buffer: the boxes of block w at 2w and 2w + 1, then one count
+ * per block.  The last block to finish (last_arrival) unites them in
+ * block order (min/max) into the record, with the count of invalid
+ * primitives and the Morton frame of the centroid box
+ * (atrbvh_morton_frame, the host's function), which the morton kernel
+ * reads: the host waits for nothing here, and reads the record in one
+ * read when it needs it (cl/stages.c).  When some primitive is invalid
+ * the pipeline finds the exact error on the host, or compacts and hands
+ * the boxes back (set_prims); an invalid primitive's box here is the
+ * zero box, so the kernels that run before the host has read the count
+ * see finite boxes only (the build then fails, or its boxes are
+ * replaced). */
+static __global atrbvh_box *bounds_boxes_of(__global atrbvh_bounds_record *rec)
+{
+    return (__global atrbvh_box *)(rec + 1);
+}
+
+static void bounds_part(__global atrbvh_bounds_record *rec,
+                        __global uint *sync, uint w, uint parts,
                         atrbvh_box scene, atrbvh_box centroids, uint bad)
 {
+    __global atrbvh_box *partial = bounds_boxes_of(rec);
+    __global uint *counts = (__global uint *)(partial + 2u * parts);
+    uint u;
     partial[2u * w] = scene;
     partial[2u * w + 1u] = centroids;
-    ((__global uint *)(partial + 2u * parts))[w] = bad;
+    counts[w] = bad;
+    if (!last_arrival(sync, parts))
+        return;
+    scene = load_box_v(partial, 0u);
+    centroids = load_box_v(partial, 1u);
+    bad = load_u32_v(counts, 0u);
+    for (u = 1u; u < parts; u++) {
+        scene = atrbvh_box_union(scene, load_box_v(partial, 2u * u));
+        centroids = atrbvh_box_union(centroids,
+                                     load_box_v(partial, 2u * u + 1u));
+        bad += load_u32_v(counts, u);
+    }
+    {
+        double lo[3], scale[3];
+        uint k;
+        atrbvh_morton_frame(centroids, lo, scale);
+        for (k = 0u; k < 3u; k++) {
+            rec->lo[k] = lo[k];
+            rec->scale[k] = scale[k];
+        }
+    }
+    rec->scene = scene;
+    rec->centroids = centroids;
+    rec->invalid = bad;
+}
+
+static atrbvh_box bounds_zero_box(void)
+{
+    atrbvh_box z;
+    z.min[0] = z.min[1] = z.min[2] = 0.0f;
+    z.max[0] = z.max[1] = z.max[2] = 0.0f;
+    return z;
 }
 
 __kernel void bounds_triangles(__global const float *vertices,
                                __global const uint *indices,
                                __global atrbvh_box *boxes,
-                               __global atrbvh_box *partial,
-                               atrbvh_kargs_bounds a)
+                               __global atrbvh_bounds_record *rec,
+                               __global uint *sync, atrbvh_kargs_bounds a)
 {
     uint w = (uint)get_global_id(0), lo, hi, i, bad = 0u, why;
     atrbvh_box scene, centroids, b;
@@ -120,17 +169,20 @@ __kernel void bounds_triangles(__global const float *vertices,
         why = 0u;
         if (atrbvh_prim_box_triangle(vertices, a.vstride, a.vertex_count,
                                      indices, a.istride, (int)a.indexed,
-                                     (ulong)i, &b, &why) != ATRBVH_PRIM_OK)
+                                     (ulong)i, &b, &why) != ATRBVH_PRIM_OK) {
             bad++;
-        else
+            b = bounds_zero_box();
+        } else {
             atrbvh_scene_add(&scene, &centroids, b);
+        }
         boxes[i] = b;
     }
-    bounds_part(partial, w, a.parts, scene, centroids, bad);
+    bounds_part(rec, sync, w, a.parts, scene, centroids, bad);
 }
 
 __kernel void bounds_boxes(__global const float *in, __global atrbvh_box *boxes,
-                           __global atrbvh_box *partial, atrbvh_kargs_bounds a)
+                           __global atrbvh_bounds_record *rec,
+                           __global uint *sync, atrbvh_kargs_bounds a)
 {
     uint w = (uint)get_global_id(0), lo, hi, i, bad = 0u;
     atrbvh_box scene, centroids, b;
@@ -140,13 +192,16 @@ __kernel void bounds_boxes(__global const float *in, __global atrbvh_box *boxes,
     scene = atrbvh_box_empty();
     centroids = atrbvh_box_empty();
     for (i = lo; i < hi; i++) {
-        if (atrbvh_prim_box_box(in, a.bstride, (ulong)i, &b) != ATRBVH_PRIM_OK)
+        if (atrbvh_prim_box_box(in, a.bstride, (ulong)i, &b) !=
+            ATRBVH_PRIM_OK) {
             bad++;
-        else
+            b = bounds_zero_box();
+        } else {
             atrbvh_scene_add(&scene, &centroids, b);
+        }
         boxes[i] = b;
     }
-    bounds_part(partial, w, a.parts, scene, centroids, bad);
+    bounds_part(rec, sync, w, a.parts, scene, centroids, bad);
 }
 
 /* -------------------------------------------------------------------- sort */
@@ -164,27 +219,37 @@ static ulong sort_varying(__global const ulong *vary, uint blocks)
 
 /* ------------------------------------------------------------------ morton */
 /* Item b of the sort's a.blocks: the key of each primitive of block b
- * (atrbvh_morton_quantise, atrbvh_morton_key in the host's frame), the
+ * (atrbvh_morton_quantise, atrbvh_morton_key in the bounds record's
+ * frame, or the host's after it replaced the boxes), the
  * identity order (the sort's values: build indices), and the OR and AND
  * of the block's keys; the last block unites them (sort_varying). */
 __kernel void morton(__global const atrbvh_box *boxes, __global ulong *keys,
                      __global uint *order, __global ulong *vary,
-                     __global uint *sync, atrbvh_kargs_morton a)
+                     __global uint *sync,
+                     __global const atrbvh_bounds_record *rec,
+                     atrbvh_kargs_morton a)
 {
     uint b = (uint)get_global_id(0), lo, hi, i;
     ulong any = 0ul, all = ~0ul;
+    double lo0 = a.lo[0], lo1 = a.lo[1], lo2 = a.lo[2], s0 = a.scale[0],
+           s1 = a.scale[1], s2 = a.scale[2];
     if (b >= a.blocks)
         return;
+    if (a.device_frame) { /* the bounds kernel's (an earlier launch) */
+        lo0 = rec->lo[0];
+        lo1 = rec->lo[1];
+        lo2 = rec->lo[2];
+        s0 = rec->scale[0];
+        s1 = rec->scale[1];
+        s2 = rec->scale[2];
+    }
     atrbvh_block_range(a.n, b, a.blocks, &lo, &hi);
     for (i = lo; i < hi; i++) {
         atrbvh_box x = boxes[i];
         ulong k = atrbvh_morton_key(
-            atrbvh_morton_quantise(atrbvh_box_centre(x, 0), a.lo[0],
-                                   a.scale[0]),
-            atrbvh_morton_quantise(atrbvh_box_centre(x, 1), a.lo[1],
-                                   a.scale[1]),
-            atrbvh_morton_quantise(atrbvh_box_centre(x, 2), a.lo[2],
-                                   a.scale[2]));
+            atrbvh_morton_quantise(atrbvh_box_centre(x, 0), lo0, s0),
+            atrbvh_morton_quantise(atrbvh_box_centre(x, 1), lo1, s1),
+            atrbvh_morton_quantise(atrbvh_box_centre(x, 2), lo2, s2));
         keys[i] = k;
         order[i] = i;
         any |= k;

@@ -143,20 +143,42 @@ atrbvh_status atrbvh_i_cl_sync(atrbvh_cl_device *c, atrbvh_error *error)
     return st;
 }
 
-atrbvh_status atrbvh_i_cl_download(atrbvh_cl_device *c, int slot, void *data,
-                                   size_t bytes, const char *what,
-                                   atrbvh_error *error)
+/* One read from slot's buffer: blocking (everything queued before it is
+ * then done too) or queued. */
+static atrbvh_status download(atrbvh_cl_device *c, int slot, void *data,
+                              size_t bytes, cl_bool blocking,
+                              const char *what, atrbvh_error *error)
 {
     cl_int err;
     if (bytes == 0)
         return ATRBVH_OK;
-    c->n_reads++;
-    err = clEnqueueReadBuffer(c->queue, c->buf[home_of(slot)], CL_TRUE, 0, bytes, data,
-                              0, NULL, NULL);
+    if (blocking)
+        c->n_reads++;
+    else
+        c->n_queued_reads++;
+    c->pending = 1;
+    err = clEnqueueReadBuffer(c->queue, c->buf[home_of(slot)], blocking, 0,
+                              bytes, data, 0, NULL, NULL);
     if (err != CL_SUCCESS)
         return atrbvh_i_cl_error(error, err, "clEnqueueReadBuffer", what);
-    c->pending = 0; /* blocking: everything before it is done too */
+    if (blocking)
+        c->pending = 0;
     return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cl_download(atrbvh_cl_device *c, int slot, void *data,
+                                   size_t bytes, const char *what,
+                                   atrbvh_error *error)
+{
+    return download(c, slot, data, bytes, CL_TRUE, what, error);
+}
+
+atrbvh_status atrbvh_i_cl_download_queued(atrbvh_cl_device *c, int slot,
+                                          void *data, size_t bytes,
+                                          const char *what,
+                                          atrbvh_error *error)
+{
+    return download(c, slot, data, bytes, CL_FALSE, what, error);
 }
 
 atrbvh_status atrbvh_i_cl_zero(atrbvh_cl_device *c, int slot, size_t bytes,
@@ -199,17 +221,10 @@ void atrbvh_i_cl_drop_events(atrbvh_cl_device *c)
     c->event_count = 0;
 }
 
-atrbvh_status atrbvh_i_cl_finish(atrbvh_cl_device *c, atrbvh_error *error)
+/* The device times of the recorded launches, all finished. */
+static void add_times(atrbvh_cl_device *c)
 {
     int k;
-    cl_int err;
-    c->n_finishes++;
-    c->pending = 0;
-    err = clFinish(c->queue);
-    if (err != CL_SUCCESS) {
-        atrbvh_i_cl_drop_events(c);
-        return atrbvh_i_cl_error(error, err, "clFinish", NULL);
-    }
     for (k = 0; k < c->event_count; k++) {
         cl_ulong a = 0, b = 0;
         if (clGetEventProfilingInfo(c->events[k], CL_PROFILING_COMMAND_START,
@@ -221,6 +236,27 @@ atrbvh_status atrbvh_i_cl_finish(atrbvh_cl_device *c, atrbvh_error *error)
                  b > a ? (double)(b - a) * 1e-6 : 0.0);
     }
     atrbvh_i_cl_drop_events(c);
+}
+
+atrbvh_status atrbvh_i_cl_finish(atrbvh_cl_device *c, atrbvh_error *error)
+{
+    cl_int err;
+    c->n_finishes++;
+    c->pending = 0;
+    err = clFinish(c->queue);
+    if (err != CL_SUCCESS) {
+        atrbvh_i_cl_drop_events(c);
+        return atrbvh_i_cl_error(error, err, "clFinish", NULL);
+    }
+    add_times(c);
+    return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cl_collect(atrbvh_cl_device *c, atrbvh_error *error)
+{
+    if (c->pending)
+        return atrbvh_i_cl_finish(c, error);
+    add_times(c);
     return ATRBVH_OK;
 }
 

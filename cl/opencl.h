@@ -59,8 +59,10 @@ enum {
     B_GEOMETRY,   /* vertices or input boxes             */
     B_INDICES,    /* triangle indices (or a dummy)        */
     B_BOXES,      /* primitive boxes, build order         */
-    B_PARTIAL,    /* bounds: partial scene/centroid boxes,
-                     then invalid primitive counts        */
+    B_PARTIAL,    /* bounds: the record (kargs.h
+                     atrbvh_bounds_record), the blocks'
+                     scene/centroid boxes, their invalid
+                     primitive counts                     */
     B_KEYS,
     B_KEYS_TMP,
     B_ORDER,
@@ -128,8 +130,11 @@ typedef struct atrbvh_cl_device {
     unsigned long buffers_created; /* clCreateBuffer calls (tests) */
     /* The current build's commands (reset by begin; tests and
      * docs/opencl.md): kernel launches, host-to-device writes, fills,
-     * device-to-host reads (each one blocks) and clFinish waits. */
+     * blocking device-to-host reads (each one a wait), queued ones (no
+     * wait: a later blocking read on the in-order queue completes them)
+     * and clFinish waits. */
     unsigned long n_launches, n_writes, n_fills, n_reads, n_finishes;
+    unsigned long n_queued_reads;
     cl_event events[ATRBVH_CL_MAX_EVENTS];
     int event_kernel[ATRBVH_CL_MAX_EVENTS];
     int event_count;
@@ -147,6 +152,16 @@ typedef struct atrbvh_cl_device {
                                launch leave it so)               */
     cl_uint refitted;       /* this build: the hierarchy kernel
                                refitted its tree (no refit launch) */
+    cl_uint prims_set;      /* this build: set_prims replaced the
+                               bounds kernel's boxes (the host's
+                               Morton frame then)                 */
+    cl_uint bounds_late;    /* this build: the bounds record is read
+                               by the collapse stage (run->
+                               bounds_deferred), not by bounds    */
+    cl_uint tally_late;     /* this build: `tally` is being read  */
+    cl_uint tally[3];       /* the optimise stage's counts, read
+                               without a wait                     */
+    atrbvh_bounds_record bounds_rec; /* read from B_PARTIAL        */
     /* The last build's optimise stage (tests, measurements): treelets
      * processed, of which written back, and treelets skipped by the skip
      * marks (atrbvh_treelet_process_marked). */
@@ -209,6 +224,13 @@ atrbvh_status atrbvh_i_cl_sync(atrbvh_cl_device *c, atrbvh_error *error);
 atrbvh_status atrbvh_i_cl_download(atrbvh_cl_device *c, int slot, void *data,
                                    size_t bytes, const char *what,
                                    atrbvh_error *error);
+/* The same without waiting: `data` must stay valid until a later
+ * blocking read or atrbvh_i_cl_finish (the in-order queue completes it
+ * before them). */
+atrbvh_status atrbvh_i_cl_download_queued(atrbvh_cl_device *c, int slot,
+                                          void *data, size_t bytes,
+                                          const char *what,
+                                          atrbvh_error *error);
 atrbvh_status atrbvh_i_cl_zero(atrbvh_cl_device *c, int slot, size_t bytes,
                                const char *what, atrbvh_error *error);
 /* A kernel argument: a buffer slot, or a value of `size` bytes. */
@@ -227,6 +249,10 @@ atrbvh_status atrbvh_i_cl_run(atrbvh_cl_device *c, int k, size_t items,
 /* Waits for the queue and adds the finished launches' device times to
  * c->times. */
 atrbvh_status atrbvh_i_cl_finish(atrbvh_cl_device *c, atrbvh_error *error);
+/* The finished launches' device times into c->times, waiting only when
+ * something is still queued (atrbvh_i_cl_finish); after a blocking read
+ * every launch before it is done on the in-order queue. */
+atrbvh_status atrbvh_i_cl_collect(atrbvh_cl_device *c, atrbvh_error *error);
 /* Releases pending events without reading them. */
 void atrbvh_i_cl_drop_events(atrbvh_cl_device *c);
 

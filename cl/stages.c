@@ -4,14 +4,20 @@
  * kernel(s) with one argument struct), plus begin/end, set_prims,
  * capture and kernel_time.
  *
- * The host waits only where it needs a result: the bounds stage's one
- * read (the scene and centroid boxes, for the Morton frame the pipeline
- * computes, and the count of invalid primitives), the collapse stage's
- * root size (the output's node count, which the pipeline allocates) and
- * the layout's output; every other launch is queued behind the previous
- * one on the in-order queue, so a stage's wall time in the pipeline is
- * mostly its queueing and its kernels' time shows in the next wait
- * (atrbvh_bvh_kernel_time has each kernel's own).
+ * The host waits twice per build: the collapse stage's root size (the
+ * output's node count, which the pipeline allocates; the bounds record,
+ * with the count of invalid primitives, and the optimise stage's counts
+ * are read in the same wait, queued before it) and the layout's output
+ * (the nodes' read queued, the primitives' read blocking).  The Morton
+ * frame is the bounds kernel's, computed on the device from the united
+ * centroid box by the host's function.  The bounds stage reads its
+ * record at once only when the pipeline needs it then (a capture,
+ * triangle splitting, skip_invalid, a reoptimise).  Every other launch
+ * is queued behind the previous one on the in-order queue, so a stage's
+ * wall time in the pipeline is mostly its queueing and its kernels'
+ * time shows in the next wait (atrbvh_bvh_kernel_time has each kernel's
+ * own, read from the profiling events after the last wait, without a
+ * clFinish).
  *
  * The per-item work is in cl/kernels.cl, thin
  * wrappers around lib/shared/; the sequencing, timing, progress between
@@ -82,9 +88,12 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
     c->counted = 0;
     c->counters_zero = 0;
     c->refitted = 0;
+    c->prims_set = 0;
+    c->bounds_late = 0;
+    c->tally_late = 0;
     c->opt_treelets = c->opt_applied = c->opt_skipped = 0;
     c->n_launches = c->n_writes = c->n_fills = c->n_reads = 0;
-    c->n_finishes = 0;
+    c->n_finishes = c->n_queued_reads = 0;
     run->state = c;
     return ATRBVH_OK;
 }
@@ -152,19 +161,31 @@ static atrbvh_status upload_geometry(atrbvh_cl_device *c,
 /* The bounds kernel's blocks: a few per compute unit, at most 256. */
 #define BOUNDS_PARTS_MAX 256u
 
-/* One launch (boxes, partial scene and centroid boxes and invalid counts
- * per block) and one read of the partials, united here. */
+/* The bounds record's results for the pipeline (scene, centroid boxes,
+ * and `bad` when some primitive is invalid: the pipeline then finds the
+ * error, or compacts and calls set_prims). */
+static void bounds_results(atrbvh_cl_device *c, atrbvh_i_run *run)
+{
+    run->scene = c->bounds_rec.scene;
+    run->centroids = c->bounds_rec.centroids;
+    run->bad = c->bounds_rec.invalid != 0u;
+    run->bounds_deferred = 0;
+    c->bounds_late = 0;
+}
+
+/* One launch: the boxes and, by its last block, the bounds record
+ * (kernels.cl: the united boxes, the invalid count, the Morton frame,
+ * which the morton kernel reads on the device).  The host reads the
+ * record here when the pipeline needs it now (run->bounds_late_ok
+ * unset: a capture, triangle splitting, skip_invalid, a reoptimise);
+ * otherwise the collapse stage reads it in the wait it makes anyway
+ * (run->bounds_deferred), and the host waits for nothing here. */
 static atrbvh_status st_bounds(atrbvh_device *dev, atrbvh_i_run *run,
                                atrbvh_error *error)
 {
     atrbvh_cl_device *c = cl_of(dev);
     atrbvh_kargs_bounds a;
-    /* 2 boxes per block, then one u32 per block */
-    atrbvh_box part[2u * BOUNDS_PARTS_MAX +
-                    (BOUNDS_PARTS_MAX * sizeof(cl_uint) + sizeof(atrbvh_box) -
-                     1u) / sizeof(atrbvh_box)];
-    cl_uint bad[BOUNDS_PARTS_MAX], u, any = 0;
-    size_t boxes_bytes;
+    size_t partial_bytes;
     memset(&a, 0, sizeof a);
     a.n = (atrbvh_u32)run->in.g->primitive_count;
     a.parts = c->compute_units * 8u;
@@ -172,38 +193,34 @@ static atrbvh_status st_bounds(atrbvh_device *dev, atrbvh_i_run *run,
         a.parts = BOUNDS_PARTS_MAX;
     if (a.parts > a.n)
         a.parts = a.n;
-    boxes_bytes = 2u * (size_t)a.parts * sizeof(atrbvh_box);
+    /* the record, 2 boxes per block, one u32 per block */
+    partial_bytes = sizeof(atrbvh_bounds_record) +
+                    2u * (size_t)a.parts * sizeof(atrbvh_box) +
+                    (size_t)a.parts * sizeof(cl_uint);
     CL_CHECK(atrbvh_i_cl_buffer(c, B_BOXES, a.n, sizeof(atrbvh_box),
                                 "primitive boxes", error));
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_PARTIAL,
-                                boxes_bytes + a.parts * sizeof(cl_uint), 1,
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_PARTIAL, partial_bytes, 1,
                                 "partial boxes", error));
+    CL_CHECK(atrbvh_i_cl_sync(c, error));
     CL_CHECK(upload_geometry(c, &run->in, &a, error));
     if (run->in.g->type == ATRBVH_GEOMETRY_TRIANGLES)
         CL_RUN(c, K_BOUNDS_TRIANGLES, a.parts, error, CL_BUF(B_GEOMETRY),
                CL_BUF(B_INDICES), CL_BUF(B_BOXES), CL_BUF(B_PARTIAL),
-               CL_VAL(a));
+               CL_BUF(B_SYNC), CL_VAL(a));
     else
         CL_RUN(c, K_BOUNDS_BOXES, a.parts, error, CL_BUF(B_GEOMETRY),
-               CL_BUF(B_BOXES), CL_BUF(B_PARTIAL), CL_VAL(a));
-    CL_CHECK(atrbvh_i_cl_download(c, B_PARTIAL, part,
-                                  boxes_bytes + a.parts * sizeof(cl_uint),
-                                  "partial boxes", error));
-    memcpy(bad, (const unsigned char *)part + boxes_bytes,
-           a.parts * sizeof(cl_uint));
+               CL_BUF(B_BOXES), CL_BUF(B_PARTIAL), CL_BUF(B_SYNC),
+               CL_VAL(a));
     run->n = a.n;
-    for (u = 0; u < a.parts; u++)
-        any |= bad[u];
-    if (any) {
-        run->bad = 1; /* the pipeline finds the error, then set_prims */
+    if (run->bounds_late_ok) {
+        c->bounds_late = 1;
+        run->bounds_deferred = 1;
         return ATRBVH_OK;
     }
-    run->scene = part[0];
-    run->centroids = part[1];
-    for (u = 1; u < a.parts; u++) {
-        run->scene = atrbvh_box_union(run->scene, part[2 * u]);
-        run->centroids = atrbvh_box_union(run->centroids, part[2 * u + 1]);
-    }
+    CL_CHECK(atrbvh_i_cl_download(c, B_PARTIAL, &c->bounds_rec,
+                                  sizeof c->bounds_rec, "bounds record",
+                                  error));
+    bounds_results(c, run);
     return ATRBVH_OK;
 }
 
@@ -214,6 +231,7 @@ static atrbvh_status cl_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
 {
     atrbvh_cl_device *c = cl_of(dev);
     c->has_ids = 0;
+    c->prims_set = 1; /* the host's Morton frame from here on */
     if (run->n == 0)
         return ATRBVH_OK;
     CL_CHECK(atrbvh_i_cl_buffer(c, B_BOXES, run->n, sizeof(atrbvh_box),
@@ -268,6 +286,11 @@ static atrbvh_status st_morton(atrbvh_device *dev, atrbvh_i_run *run,
     }
     a.n = run->n;
     a.blocks = sa.blocks;
+    /* The bounds record's frame (the same function of the same centroid
+     * box as the host's: the same bits), unless the host replaced the
+     * boxes (an invalid primitive left out, triangle splitting): then
+     * the pipeline's frame of its centroid box. */
+    a.device_frame = !c->prims_set;
     CL_CHECK(atrbvh_i_cl_buffer(c, B_KEYS, a.n, sizeof(cl_ulong), "keys",
                                 error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_ORDER, a.n, sizeof(cl_uint), "order",
@@ -277,7 +300,8 @@ static atrbvh_status st_morton(atrbvh_device *dev, atrbvh_i_run *run,
     CL_CHECK(atrbvh_i_cl_sync(c, error));
     c->counters_zero = 0; /* B_KEYS is B_COUNTER's home */
     CL_RUN(c, K_MORTON, a.blocks, error, CL_BUF(B_BOXES), CL_BUF(B_KEYS),
-           CL_BUF(B_ORDER), CL_BUF(B_VARY), CL_BUF(B_SYNC), CL_VAL(a));
+           CL_BUF(B_ORDER), CL_BUF(B_VARY), CL_BUF(B_SYNC), CL_BUF(B_PARTIAL),
+           CL_VAL(a));
     c->counted = 1;
     return ATRBVH_OK;
 }
@@ -427,7 +451,7 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_cl_device *c = cl_of(dev);
     const atrbvh_i_config *cfg = run->cfg;
     atrbvh_kargs_optimise a;
-    cl_uint workers_max, round, tally[3];
+    cl_uint workers_max, round;
     size_t marks;
     if (cfg->method == ATRBVH_METHOD_LBVH || cfg->rounds == 0 ||
         run->n < 2 ||
@@ -515,11 +539,11 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
          * round's last arrivals set theirs back: zero for the collapse */
         c->counters_zero = 1;
     }
-    CL_CHECK(atrbvh_i_cl_download(c, B_TALLY, tally, sizeof tally,
-                                  "treelet counts", error));
-    c->opt_treelets = tally[0];
-    c->opt_applied = tally[1];
-    c->opt_skipped = tally[2];
+    /* The counts arrive with the collapse stage's wait. */
+    CL_CHECK(atrbvh_i_cl_download_queued(c, B_TALLY, c->tally,
+                                         sizeof c->tally, "treelet counts",
+                                         error));
+    c->tally_late = 1;
     return ATRBVH_OK;
 }
 
@@ -543,8 +567,24 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
                CL_BUF(B_PARENT), CL_BUF(B_SIZE), CL_BUF(B_COUNTER),
                CL_VAL(a));
     }
+    /* The host's one wait before the output: the root's size, and with
+     * it (queued before it on the in-order queue) the bounds record when
+     * the bounds stage left it (the pipeline then checks `bad`) and the
+     * optimise stage's counts. */
+    if (c->bounds_late)
+        CL_CHECK(atrbvh_i_cl_download_queued(c, B_PARTIAL, &c->bounds_rec,
+                                             sizeof c->bounds_rec,
+                                             "bounds record", error));
     CL_CHECK(atrbvh_i_cl_download(c, B_SIZE, &root_size, 4, "subtree sizes",
                                   error));
+    if (c->bounds_late)
+        bounds_results(c, run);
+    if (c->tally_late) {
+        c->opt_treelets = c->tally[0];
+        c->opt_applied = c->tally[1];
+        c->opt_skipped = c->tally[2];
+        c->tally_late = 0;
+    }
     run->node_count = root_size & ATRBVH_SIZE_MASK;
     return ATRBVH_OK;
 }
@@ -579,13 +619,17 @@ static atrbvh_status st_layout(atrbvh_device *dev, atrbvh_i_run *run,
            CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_SIZE),
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_JUMP), CL_BUF(B_OUT_NODES),
            CL_BUF(B_OUT_PRIMS), CL_BUF(B_FLAG), CL_VAL(workers), CL_VAL(a));
-    CL_CHECK(atrbvh_i_cl_download(c, B_OUT_NODES, run->nodes,
-                                  (size_t)run->node_count * sizeof(atrbvh_node),
-                                  "output nodes", error));
+    /* One wait: the nodes' read queued, the primitives' read blocking
+     * behind it on the in-order queue; then the launches' times, without
+     * a clFinish (everything queued is done). */
+    CL_CHECK(atrbvh_i_cl_download_queued(
+        c, B_OUT_NODES, run->nodes,
+        (size_t)run->node_count * sizeof(atrbvh_node), "output nodes",
+        error));
     CL_CHECK(atrbvh_i_cl_download(c, B_OUT_PRIMS, run->prim_indices,
                                   (size_t)run->n * 4,
                                   "output primitive indices", error));
-    return atrbvh_i_cl_finish(c, error);
+    return atrbvh_i_cl_collect(c, error);
 }
 
 /* -------------------------------------------------------------- capture */

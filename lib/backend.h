@@ -160,6 +160,14 @@ struct atrbvh_i_run {
     atrbvh_box scene, centroids;
     int bad;
     size_t invalid; /* primitives left out (skip_invalid)            */
+    /* pipeline, before bounds: nothing reads scene, centroids and bad
+     * before the collapse stage (no capture, splitting or skip_invalid),
+     * so a backend may report them late: it then sets bounds_deferred
+     * in bounds, computes the Morton frame itself, and its collapse
+     * stage sets the three (and `bad` then fails the build with the
+     * host's exact error) and clears bounds_deferred. */
+    int bounds_late_ok;
+    int bounds_deferred;
     /* pipeline, with triangle splitting (lib/split.c): the primitives
      * kept; n is then the number of references, each with the id of
      * its primitive (set_prims). 0: no splitting. */

@@ -121,6 +121,40 @@ static atrbvh_status invalid_prims(atrbvh_device *dev, atrbvh_i_run *run,
     return st;
 }
 
+/* The bounds stage's invalid count arrived late (run->bounds_deferred):
+ * the host's scan gives the exact error (never skip_invalid here). */
+static atrbvh_status invalid_late(atrbvh_i_run *run, atrbvh_error *error)
+{
+    atrbvh_box *boxes = NULL, scene, centroids;
+    uint32_t *ids = NULL, kept = 0;
+    size_t invalid = 0;
+    atrbvh_status st = atrbvh_i_scan_prims(&run->in, run->cfg, &boxes, &ids,
+                                           &kept, &scene, &centroids,
+                                           &invalid, error);
+    atrbvh_i_free(boxes);
+    atrbvh_i_free(ids);
+    return st != ATRBVH_OK
+               ? st
+               : atrbvh_i_fail(error, ATRBVH_ERR_BACKEND, NO_INDEX,
+                               "internal error: the device found an invalid "
+                               "primitive that the host did not");
+}
+
+/* A build failed (or was cancelled) while the bounds' invalid count was
+ * still on the device: an invalid primitive's error comes first, as when
+ * the bounds stage reports it at once. */
+static atrbvh_status invalid_first(atrbvh_i_run *run, atrbvh_status st,
+                                   atrbvh_error *error)
+{
+    atrbvh_error mine;
+    atrbvh_status bad = invalid_late(run, &mine);
+    if (bad == ATRBVH_ERR_BACKEND || bad == ATRBVH_ERR_NOMEM)
+        return st; /* none found (or no memory to look) */
+    if (error)
+        *error = mine;
+    return bad;
+}
+
 /* Statistics of the tree built, the device record, stage times. */
 static atrbvh_status finish(atrbvh_bvh *bvh, atrbvh_device *dev,
                             const atrbvh_i_run *run, const double *stage_ms,
@@ -229,9 +263,11 @@ static atrbvh_status run_stages(atrbvh_device *dev, atrbvh_i_run *run,
                 st = atrbvh_i_split_prims(dev, run, error); /* split.c */
             else if (run->bad)
                 st = invalid_prims(dev, run, error);
-            if (st == ATRBVH_OK)
+            if (st == ATRBVH_OK && !run->bounds_deferred)
                 atrbvh_i_morton_frame(&run->centroids, run->morton_lo,
                                       run->morton_scale);
+        } else if (st == ATRBVH_OK && run->bad) {
+            st = invalid_late(run, error); /* from bounds_deferred */
         }
         ms[s] = runs ? atrbvh_i_now_ms() - t : 0.0;
         if (prog->failed != ATRBVH_OK) {
@@ -248,6 +284,8 @@ static atrbvh_status run_stages(atrbvh_device *dev, atrbvh_i_run *run,
             break;
         prog->base += prog->span;
     }
+    if (st != ATRBVH_OK && run->bounds_deferred)
+        st = invalid_first(run, st, error);
     if (st == ATRBVH_OK)
         st = finish(bvh, dev, run, ms, t0, error);
     be->end(dev, run);
@@ -314,6 +352,11 @@ atrbvh_status atrbvh_i_build_run(const atrbvh_geometry *geometry,
         dev = &temp;
     }
     prog.dev = dev;
+    /* Nothing reads the bounds' results before the collapse stage:
+     * a backend may report them there (backend.h). */
+    run.bounds_late_ok = !cap && !prog.capture && !req.cfg.skip_invalid &&
+                         !(req.cfg.split_budget > 0.0 &&
+                           geometry->type == ATRBVH_GEOMETRY_TRIANGLES);
     atrbvh_i_device_lock(dev);
     st = run_stages(dev, &run, &prog, cap, out, t0, error);
     atrbvh_i_device_unlock(dev);

@@ -304,11 +304,5 @@ atrbvh_status atrbvh_i_scan_prims(const atrbvh_i_input *in,
 void atrbvh_i_morton_frame(const atrbvh_box *centroids, double lo[3],
                            double scale[3])
 {
-    int k;
-    for (k = 0; k < 3; k++) {
-        double extent = (double)centroids->max[k] - (double)centroids->min[k];
-        lo[k] = (double)centroids->min[k];
-        scale[k] = extent > 0.0 ? (double)(1u << ATRBVH_MORTON_BITS) / extent
-                                : 0.0;
-    }
+    atrbvh_morton_frame(*centroids, lo, scale); /* shared/stages.h */
 }

@@ -154,16 +154,20 @@ END_TEST
  * the handle's state, cl/memory.c): an LBVH of unindexed triangles
  * queues 8 launches (bounds 1, morton 1, sort 3: the MSD pass's count and
  * scatter and the buckets, hierarchy 1 with the refit, layout 2; 21 with
- * the sort's eight LSD passes and the refit's own launch), one queued write (the vertices) and no fill, and blocks in
- * 4 reads (the bounds' partial boxes, the collapse's root size, the
- * output's nodes and primitives) and one clFinish; before the launches
- * were fused and the waits between stages dropped, it took 32 launches,
+ * the sort's eight LSD passes and the refit's own launch), one queued
+ * write (the vertices) and no fill, and waits twice: the collapse's
+ * root size (the bounds record's read queued before it: the Morton frame
+ * is the device's, the invalid count is checked there) and the output's
+ * primitives (the nodes' read queued before it), with no clFinish (the
+ * profiling times are read after the last wait).  Before: 4 blocking
+ * reads (the bounds' partial boxes first) and a clFinish; before the
+ * launches were fused and the waits between stages dropped, 32 launches,
  * 2 fills, 6 reads and 7 clFinish calls.  ATRBVH(9, 2) of indexed
- * triangles adds 2 launches and a fill per round, one read (the treelet
- * counts) and the indices' write, and no wait per round.  Every tree is
- * the CPU's. */
+ * triangles adds 2 launches and a fill per round, one queued read (the
+ * treelet counts, which arrive with the root size) and the indices'
+ * write, and no wait.  Every tree is the CPU's. */
 static void counted_build(atrbvh_device *dev, const atrbvh_geometry *g,
-                          atrbvh_method method, unsigned long out[5])
+                          atrbvh_method method, unsigned long out[6])
 {
     const atrbvh_cl_device *c = device_build(dev, g, method, 9, 2);
     out[0] = c->n_launches;
@@ -171,6 +175,7 @@ static void counted_build(atrbvh_device *dev, const atrbvh_geometry *g,
     out[2] = c->n_fills;
     out[3] = c->n_reads;
     out[4] = c->n_finishes;
+    out[5] = c->n_queued_reads;
 }
 
 START_TEST(launches_and_waits_per_build)
@@ -181,7 +186,7 @@ START_TEST(launches_and_waits_per_build)
     float *v;
     uint32_t *idx;
     atrbvh_geometry g;
-    unsigned long a[5];
+    unsigned long a[6];
     atrbvh_status st = atrbvh_device_open("opencl", &dev, &e);
     if (st == ATRBVH_ERR_UNSUPPORTED) {
         fprintf(stderr, "SKIP launches_and_waits_per_build: %s\n", e.text);
@@ -192,11 +197,12 @@ START_TEST(launches_and_waits_per_build)
     g = atrbvh_geometry_triangles(v, 3 * n, NULL, n);
     counted_build(dev, &g, ATRBVH_METHOD_LBVH, a); /* makes the buffers */
     counted_build(dev, &g, ATRBVH_METHOD_LBVH, a);
-    ck_assert_msg(a[0] == 8 && a[1] == 1 && a[2] == 0 && a[3] == 4 &&
-                      a[4] == 1,
-                  "LBVH: %lu launches, %lu writes, %lu fills, %lu reads, "
-                  "%lu clFinish (want 8, 1, 0, 4, 1)",
-                  a[0], a[1], a[2], a[3], a[4]);
+    ck_assert_msg(a[0] == 8 && a[1] == 1 && a[2] == 0 && a[3] == 2 &&
+                      a[4] == 0 && a[5] == 2,
+                  "LBVH: %lu launches, %lu writes, %lu fills, %lu blocking "
+                  "reads, %lu clFinish, %lu queued reads (want 8, 1, 0, 2, "
+                  "0, 2)",
+                  a[0], a[1], a[2], a[3], a[4], a[5]);
     /* indexed (each triangle's own three vertices), ATRBVH(9, 2) */
     idx = malloc(3 * (size_t)n * sizeof *idx);
     ck_assert_ptr_nonnull(idx);
@@ -204,11 +210,12 @@ START_TEST(launches_and_waits_per_build)
         idx[k] = k;
     g = atrbvh_geometry_triangles(v, 3 * n, idx, n);
     counted_build(dev, &g, ATRBVH_METHOD_ATRBVH, a);
-    ck_assert_msg(a[0] == 13 && a[1] == 2 && a[2] == 4 && a[3] == 5 &&
-                      a[4] == 1,
+    ck_assert_msg(a[0] == 13 && a[1] == 2 && a[2] == 4 && a[3] == 2 &&
+                      a[4] == 0 && a[5] == 3,
                   "ATRBVH(9,2): %lu launches, %lu writes, %lu fills, %lu "
-                  "reads, %lu clFinish (want 13, 2, 4, 5, 1)",
-                  a[0], a[1], a[2], a[3], a[4]);
+                  "blocking reads, %lu clFinish, %lu queued reads (want 13, "
+                  "2, 4, 2, 0, 3)",
+                  a[0], a[1], a[2], a[3], a[4], a[5]);
     free(idx);
     free(v);
     atrbvh_device_close(dev);

@@ -684,6 +684,110 @@ START_TEST(hierarchy_refits_in_its_pass)
 }
 END_TEST
 
+/* ------------------------------------------------ invalid primitives, late */
+/* Cancels at the stage named by `user` (the bounds stage has run). */
+static int cancel_at(const char *stage, double fraction, void *user)
+{
+    (void)fraction;
+    return strcmp(stage, (const char *)user) == 0;
+}
+
+/* One build of g on the CPU and on dev (no capture: on the device the
+ * bounds stage leaves its invalid count on the device and the collapse
+ * stage's read brings it, cl/stages.c): the same status, index and text. */
+static void same_error(const atrbvh_geometry *g, atrbvh_build_options *o,
+                       atrbvh_device *dev, atrbvh_status want,
+                       const char *what)
+{
+    atrbvh_error e1, e2;
+    atrbvh_bvh *x = NULL, *y = NULL;
+    atrbvh_status s1, s2;
+    o->device = NULL;
+    s1 = atrbvh_build(g, o, &x, &e1);
+    o->device = dev;
+    s2 = atrbvh_build(g, o, &y, &e2);
+    ck_assert_msg(s1 == want, "%s: the CPU gave %s (%s)", what,
+                  atrbvh_strerror(s1), e1.text);
+    ck_assert_msg(s2 == s1, "%s: %s (%s) on the device, %s on the CPU", what,
+                  atrbvh_strerror(s2), e2.text, atrbvh_strerror(s1));
+    ck_assert_msg(strcmp(e1.text, e2.text) == 0 && e1.index == e2.index,
+                  "%s: \"%s\" at %lu on the device, \"%s\" at %lu on "
+                  "the CPU",
+                  what, e2.text, (unsigned long)e2.index, e1.text,
+                  (unsigned long)e1.index);
+    ck_assert_ptr_null(x);
+    ck_assert_ptr_null(y);
+}
+
+/* Since the Morton frame is the device's, an invalid primitive is found
+ * after the build's first wait (the root size), not after bounds: the
+ * error must still be the CPU's (code, index, text) for NaN/Inf, a bad
+ * vertex index, an inverted box, for an LBVH and an optimised build,
+ * also when the build is cancelled or fails before that wait (the host
+ * then looks first), and the handle builds the next scene as the CPU. */
+START_TEST(invalid_found_late)
+{
+    enum { N = 2000 };
+    atrbvh_device *dev = NULL;
+    atrbvh_build_options o;
+    atrbvh_geometry g;
+    atrbvh_error e;
+    atrbvh_bvh *x, *y;
+    float *v, b[6 * 64];
+    uint32_t *idx;
+    size_t k;
+    int m;
+    REQUIRE_DEVICE();
+    ck_assert_int_eq(atrbvh_device_open("opencl", &dev, &e), ATRBVH_OK);
+    v = tu_random_triangles(N, 29, 2.0f, -1.0f);
+    idx = malloc(3 * (size_t)N * sizeof *idx);
+    ck_assert_ptr_nonnull(idx);
+    for (k = 0; k < 3 * (size_t)N; k++)
+        idx[k] = (uint32_t)k;
+    for (m = 0; m < 2; m++) {
+        atrbvh_build_options_init(&o);
+        o.method = m ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_LBVH;
+        v[9 * 1500 + 2] = 0.0f / 0.0f; /* NaN, then Inf lower down */
+        v[9 * 777 + 7] = -1.0f / 0.0f;
+        g = atrbvh_geometry_triangles(v, 3 * N, NULL, N);
+        same_error(&g, &o, dev, ATRBVH_ERR_NONFINITE, "NaN and Inf");
+        o.progress = cancel_at;
+        o.progress_user = (void *)"morton";
+        same_error(&g, &o, dev, ATRBVH_ERR_NONFINITE, "cancelled at morton");
+        o.progress_user = (void *)"collapse";
+        same_error(&g, &o, dev, ATRBVH_ERR_NONFINITE,
+                   "cancelled at collapse");
+        o.progress = NULL;
+        v[9 * 1500 + 2] = 0.5f;
+        v[9 * 777 + 7] = 0.5f;
+        idx[3 * 1234 + 1] = 3 * N + 5; /* a bad index, and NaN above it */
+        v[9 * 1600 + 4] = 0.0f / 0.0f;
+        g = atrbvh_geometry_triangles(v, 3 * N, idx, N);
+        same_error(&g, &o, dev, ATRBVH_ERR_INDEX_RANGE, "bad index");
+        idx[3 * 1234 + 1] = 3 * 1234 + 1;
+        v[9 * 1600 + 4] = 0.5f;
+        for (k = 0; k < 64; k++)
+            box_at(b + 6 * k, (float)k, (float)(k % 5), 1.0f);
+        b[6 * 40 + 1] = b[6 * 40 + 4] + 1.0f; /* min above max */
+        g = atrbvh_geometry_boxes(b, 64);
+        same_error(&g, &o, dev, ATRBVH_ERR_INVALID_ARGUMENT, "inverted box");
+        /* valid again: the handle's next build is the CPU's */
+        g = atrbvh_geometry_triangles(v, 3 * N, idx, N);
+        o.device = NULL;
+        x = tu_build(&g, &o);
+        o.device = dev;
+        y = tu_build(&g, &o);
+        ck_assert_msg(atrbvh_compare(x, y, &e) == 0, "after the errors: %s",
+                      e.text);
+        atrbvh_bvh_free(x);
+        atrbvh_bvh_free(y);
+    }
+    free(idx);
+    free(v);
+    atrbvh_device_close(dev);
+}
+END_TEST
+
 static Suite *opencl_suite(void)
 {
     Suite *s = suite_create("opencl");
@@ -712,6 +816,7 @@ static Suite *opencl_suite(void)
     tcase_add_test(tc, kernel_times_and_device);
     tcase_add_test(tc, lbvh_refit_takes_the_collapse);
     tcase_add_test(tc, hierarchy_refits_in_its_pass);
+    tcase_add_test(tc, invalid_found_late);
     tcase_set_timeout(tc, 120);
     suite_add_tcase(s, tc);
     return s;

@@ -27,14 +27,30 @@ typedef struct atrbvh_kargs_bounds {
     atrbvh_u32 pad0;
 } atrbvh_kargs_bounds;
 
-/* morton: the host's Morton frame (atrbvh_morton_quantise), and the
- * sort's blocks (the morton kernel finds the keys' varying bits by them) */
+/* What the bounds kernels' last block writes at the start of the partial
+ * boxes' buffer (not an argument: a record in device memory, read by the
+ * morton kernel and, in one read, by the host): the blocks' scene and
+ * centroid boxes united in block order, the Morton frame of the centroid
+ * box (shared/stages.h atrbvh_morton_frame) and the count of invalid
+ * primitives.  Its size keeps the boxes after it aligned. */
+typedef struct atrbvh_bounds_record {
+    double lo[3];
+    double scale[3];
+    atrbvh_box scene;
+    atrbvh_box centroids;
+    atrbvh_u32 invalid;
+    atrbvh_u32 pad0;
+} atrbvh_bounds_record;
+
+/* morton: the Morton frame (atrbvh_morton_quantise): the host's, or with
+ * device_frame the bounds record's; and the sort's blocks (the morton
+ * kernel finds the keys' varying bits by them) */
 typedef struct atrbvh_kargs_morton {
     double lo[3];
     double scale[3];
     atrbvh_u32 n;
     atrbvh_u32 blocks;  /* as atrbvh_kargs_sort */
-    atrbvh_u32 pad0;
+    atrbvh_u32 device_frame; /* 1: the frame of the bounds record */
     atrbvh_u32 pad1;
 } atrbvh_kargs_morton;
 
@@ -124,6 +140,11 @@ ATRBVH_FN atrbvh_cost_params atrbvh_kargs_cost(double ci, double ct,
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_bounds) == 48, kargs_bounds);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_bounds, n) == 32,
                      kargs_bounds_n);
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_bounds_record) == 104, bounds_record);
+ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_bounds_record, scene) == 48,
+                     bounds_record_scene);
+ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_bounds_record, invalid) == 96,
+                     bounds_record_invalid);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_morton) == 64, kargs_morton);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_morton, n) == 48,
                      kargs_morton_n);

@@ -145,6 +145,26 @@ ATRBVH_FN int atrbvh_prim_box_box(ATRBVH_CONST_GLOBAL float *boxes,
     return atrbvh_prim_box_from_box(f, out);
 }
 
+/* ---------------------------------------------------------- Morton frame */
+/* The Morton frame of a centroid box, per axis: the low end, and the
+ * scale 2^21 / extent (0 for a zero extent) that atrbvh_morton_quantise
+ * takes.  The host computes it (lib/prims.c, for the CPU backend and
+ * triangle splitting) and so does the OpenCL bounds kernels' last block,
+ * from the same box, so both key the primitives in the same frame, bit
+ * for bit (double subtraction and division are correctly rounded on
+ * both). */
+ATRBVH_FN void atrbvh_morton_frame(atrbvh_box centroids, double *lo,
+                                   double *scale)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        double extent = (double)centroids.max[k] - (double)centroids.min[k];
+        lo[k] = (double)centroids.min[k];
+        scale[k] = extent > 0.0 ? (double)(1u << ATRBVH_MORTON_BITS) / extent
+                                : 0.0;
+    }
+}
+
 /* ---------------------------------------------------------- scene boxes */
 /* Adds a primitive box to the scene box and its centre to the centroid
  * box (min/max only: any reduction order gives the same result). */
