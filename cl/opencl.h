@@ -159,6 +159,8 @@ typedef struct atrbvh_cl_device {
                                by the collapse stage (run->
                                bounds_deferred), not by bounds    */
     cl_uint tally_late;     /* this build: `tally` is being read  */
+    cl_uint laid_out;       /* this build: the layout kernels are
+                               queued (by the collapse stage)     */
     cl_uint tally[3];       /* the optimise stage's counts, read
                                without a wait                     */
     atrbvh_bounds_record bounds_rec; /* read from B_PARTIAL        */

@@ -90,6 +90,7 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
     c->refitted = 0;
     c->prims_set = 0;
     c->bounds_late = 0;
+    c->laid_out = 0;
     c->tally_late = 0;
     c->opt_treelets = c->opt_applied = c->opt_skipped = 0;
     c->n_launches = c->n_writes = c->n_fills = c->n_reads = 0;
@@ -548,6 +549,9 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
 }
 
 /* ------------------------------------------------------------- collapse */
+static atrbvh_status queue_layout(atrbvh_cl_device *c, const atrbvh_i_run *run,
+                                  atrbvh_error *error);
+
 static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
                                  atrbvh_error *error)
 {
@@ -567,10 +571,12 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
                CL_BUF(B_PARENT), CL_BUF(B_SIZE), CL_BUF(B_COUNTER),
                CL_VAL(a));
     }
-    /* The host's one wait before the output: the root's size, and with
+    /* The layout's kernels first (they need nothing from the host), then
+     * the host's one wait before the output: the root's size, and with
      * it (queued before it on the in-order queue) the bounds record when
      * the bounds stage left it (the pipeline then checks `bad`) and the
      * optimise stage's counts. */
+    CL_CHECK(queue_layout(c, run, error));
     if (c->bounds_late)
         CL_CHECK(atrbvh_i_cl_download_queued(c, B_PARTIAL, &c->bounds_rec,
                                              sizeof c->bounds_rec,
@@ -590,10 +596,13 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
 }
 
 /* --------------------------------------------------------------- layout */
-static atrbvh_status st_layout(atrbvh_device *dev, atrbvh_i_run *run,
-                               atrbvh_error *error)
+/* Queues layout_top and layout (kernels.cl), which read nothing from the
+ * host: the collapse stage queues them before its wait, so the device
+ * runs them while the host waits for the root size and allocates the
+ * output, and st_layout only reads it. */
+static atrbvh_status queue_layout(atrbvh_cl_device *c, const atrbvh_i_run *run,
+                                  atrbvh_error *error)
 {
-    atrbvh_cl_device *c = cl_of(dev);
     atrbvh_kargs_tree a = tree_args(c, run);
     cl_uint workers;
     /* Sized for the most nodes n leaves can give (2n - 1), not this
@@ -619,6 +628,16 @@ static atrbvh_status st_layout(atrbvh_device *dev, atrbvh_i_run *run,
            CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_SIZE),
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_JUMP), CL_BUF(B_OUT_NODES),
            CL_BUF(B_OUT_PRIMS), CL_BUF(B_FLAG), CL_VAL(workers), CL_VAL(a));
+    c->laid_out = 1;
+    return ATRBVH_OK;
+}
+
+static atrbvh_status st_layout(atrbvh_device *dev, atrbvh_i_run *run,
+                               atrbvh_error *error)
+{
+    atrbvh_cl_device *c = cl_of(dev);
+    if (!c->laid_out)
+        CL_CHECK(queue_layout(c, run, error));
     /* One wait: the nodes' read queued, the primitives' read blocking
      * behind it on the in-order queue; then the launches' times, without
      * a clFinish (everything queued is done). */
