@@ -82,8 +82,8 @@ atrbvh_status atrbvh_i_split_merge(atrbvh_bvh *bvh, size_t input_count,
                                    atrbvh_error *error);
 
 /* The Morton frame of a centroid box: per axis the low end and the scale
- * 2^21 / extent (0 for a zero extent), computed once on the host for
- * every backend. */
+ * 2^21 / extent (0 for a zero extent): shared/stages.h's
+ * atrbvh_morton_frame, which the OpenCL bounds kernel also runs. */
 void atrbvh_i_morton_frame(const atrbvh_box *centroids, double lo[3],
                            double scale[3]);
 
