@@ -284,7 +284,7 @@ typedef struct atrbvh_build_options {
  * triangles says the cut lowers its SAH, or by the Karras-Aila priority
  * (box area above the triangle's own, weighted by the Morton level of the
  * grid plane crossing it). */
-enum { ATRBVH_SPLIT_TREE = 0, ATRBVH_SPLIT_PRIORITY = 1 };
+enum { ATRBVH_SPLIT_TREE = 0, ATRBVH_SPLIT_PRIORITY = 1, ATRBVH_SPLIT_SAH = 2 };
 
 ATRBVH_API void atrbvh_build_options_init(atrbvh_build_options *options);
 

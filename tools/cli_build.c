@@ -17,8 +17,10 @@
 #include <unistd.h>
 
 static const char *const method_names[] = {"lbvh", "trbvh", "atrbvh", NULL};
-/* in the order of ATRBVH_SPLIT_TREE, ATRBVH_SPLIT_PRIORITY */
-static const char *const split_rule_names[] = {"tree", "priority", NULL};
+/* in the order of ATRBVH_SPLIT_TREE, ATRBVH_SPLIT_PRIORITY,
+ * ATRBVH_SPLIT_SAH */
+static const char *const split_rule_names[] = {"tree", "priority", "sah",
+                                               NULL};
 static const atrbvh_method method_values[] = {
     ATRBVH_METHOD_LBVH, ATRBVH_METHOD_TRBVH, ATRBVH_METHOD_ATRBVH};
 static const char *const backend_names[] = {"cpu", "opencl", NULL};
@@ -566,8 +568,7 @@ void cli_build_json(json_writer *w, const cli_build_args *a,
         (void)atrbvh_bvh_primitive_indices(b->bvh, &refs);
         json_kv_double(w, "split_budget", a->options.split_budget);
         json_kv_string(w, "split_rule",
-                       split_rule_names[a->options.split_rule ==
-                                        ATRBVH_SPLIT_PRIORITY]);
+                       split_rule_names[a->options.split_rule]);
         json_kv_uint(w, "references", refs);
     }
     json_kv_string(w, "method", cli_method_name(s->method));
