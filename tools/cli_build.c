@@ -152,8 +152,9 @@ void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table)
             {.name = "--split-rule", .kind = CLI_OPT_ENUM,
              .dest = &o->split_rule, .choices = split_rule_names,
              .help = "which triangles --split cuts: tree (where a\n"
-                     "first LBVH says the cut pays; default) or\n"
-                     "priority (Karras-Aila)"},
+                     "first LBVH says the cut pays; default),\n"
+                     "priority (Karras-Aila) or sah (top down per\n"
+                     "grid cell, a cell's triangles judged together)"},
             {.name = "--skip-invalid", .kind = CLI_OPT_FLAG,
              .dest = &o->skip_invalid, .flag_value = 1,
              .help = "leave out triangles with NaN or infinite\n"
