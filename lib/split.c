@@ -672,7 +672,10 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
             out_ids[total++] = ids ? ids[i] : (uint32_t)i;
         }
     }
-    for (level = 3 * ATRBVH_MORTON_BITS - 1; level >= 0 && ncur; level--) {
+    /* once the budget is spent, nothing more can be cut: the nodes left
+     * are emitted as they are */
+    for (level = 3 * ATRBVH_MORTON_BITS - 1; level >= 0 && ncur && remaining;
+         level--) {
         const int k = 2 - level % 3;
         const uint32_t half = 1u << (level / 3);
         size_t nnext = 0, pos = 0, c;
@@ -682,8 +685,8 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
             const uint32_t mid = nd.qlo[k] + half;
             const float x = (float)(g->lo[k] + (double)mid * g->step[k]);
             atrbvh_box lo = atrbvh_box_empty(), ro = atrbvh_box_empty();
-            atrbvh_box lobj, robj;
-            uint64_t nl = 0, nr = 0, nlo, nro, cut = 0;
+            atrbvh_box lobj = lo, robj = ro;
+            uint64_t nl = 0, nr = 0, nlo = 0, nro = 0, cut = 0, cutl = 0;
             uint32_t ns = 0, a, s;
             /* the object partition: straddlers whole at their centroid */
             for (a = 0; a < nd.count; a++) {
@@ -696,23 +699,22 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
                     side[a] = S_RIGHT;
                     ro = atrbvh_box_union(ro, *b);
                     nr++;
+                } else if (atrbvh_box_centre(*b, k) >= x) {
+                    side[a] = S_STRADDLE | S_RIGHT;
+                    robj = atrbvh_box_union(robj, *b);
+                    nro++;
+                    ns++;
                 } else {
-                    side[a] = S_STRADDLE |
-                              (atrbvh_box_centre(*b, k) >= x ? S_RIGHT : 0u);
+                    side[a] = S_STRADDLE;
+                    lobj = atrbvh_box_union(lobj, *b);
+                    nlo++;
                     ns++;
                 }
             }
-            lobj = lo;
-            robj = ro;
-            nlo = nl;
-            nro = nr;
-            for (a = 0; a < nd.count && ns; a++)
-                if (side[a] & S_STRADDLE) {
-                    if (side[a] & S_RIGHT)
-                        robj = atrbvh_box_union(robj, r[a].box), nro++;
-                    else
-                        lobj = atrbvh_box_union(lobj, r[a].box), nlo++;
-                }
+            lobj = atrbvh_box_union(lobj, lo);
+            robj = atrbvh_box_union(robj, ro);
+            nlo += nl;
+            nro += nr;
             if (ns && remaining && nlo && nro &&
                 overlap_area(&lobj, &robj) > min_overlap) {
                 /* the spatial split: every straddler cut ... */
@@ -768,6 +770,7 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
                             lsp = wb, nrs--;
                     } else {
                         cut++;
+                        cutl += !(side[a] & S_RIGHT);
                     }
                 }
                 if (cut && cut <= remaining &&
@@ -775,46 +778,57 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
                         side_cost(&lobj, nlo) + side_cost(&robj, nro)) {
                     remaining -= cut;
                 } else {
-                    cut = 0;
+                    cut = cutl = 0;
                     for (a = 0; a < nd.count; a++)
                         side[a] &= (unsigned char)~S_CUT;
                 }
             }
-            /* the halves, left first, each in the references' order */
+            /* the halves, left first, each in the references' order:
+             * left at pos, right after the left's count */
             {
+                const size_t nh[2] = {(size_t)(nlo + cut - cutl),
+                                      (size_t)(nro + cutl)};
+                size_t at[2];
                 int h;
-                for (h = 0; h < 2; h++) {
-                    const size_t first = pos;
+                at[0] = pos;
+                at[1] = pos + nh[0];
+                if (!cut && (!nh[0] || !nh[1])) { /* all on one side */
+                    memcpy(nxt + pos, r, nd.count * sizeof *r);
+                } else {
                     for (a = 0, s = 0; a < nd.count; a++) {
                         const unsigned sd = side[a];
                         if (sd & S_CUT) {
-                            nxt[pos].box = h ? pr[s] : pl[s];
-                            nxt[pos++].j = r[a].j;
-                        } else if ((sd & S_RIGHT) == (unsigned)h) {
-                            nxt[pos++] = r[a];
+                            nxt[at[0]].box = pl[s];
+                            nxt[at[0]++].j = r[a].j;
+                            nxt[at[1]].box = pr[s];
+                            nxt[at[1]++].j = r[a].j;
+                        } else {
+                            nxt[at[sd & S_RIGHT]++] = r[a];
                         }
                         if (sd & S_STRADDLE)
                             s++;
                     }
-                    if (pos == first)
+                }
+                for (h = 0; h < 2; h++) {
+                    const size_t first = h ? pos + nh[0] : pos;
+                    size_t e;
+                    if (!nh[h])
                         continue;
-                    if (pos - first <= SAH_STOP || level == 0) {
-                        size_t e;
-                        for (e = first; e < pos; e++) {
-                            out[total] = nxt[e].box;
-                            out_ids[total++] =
-                                ids ? ids[nxt[e].j] : nxt[e].j;
-                        }
-                        pos = first;
-                    } else {
+                    if (nh[h] > SAH_STOP && level > 0) {
                         nn[nnext] = nd;
                         nn[nnext].first = (uint32_t)first;
-                        nn[nnext].count = (uint32_t)(pos - first);
+                        nn[nnext].count = (uint32_t)nh[h];
                         if (h)
                             nn[nnext].qlo[k] = mid;
                         nnext++;
+                        continue;
+                    }
+                    for (e = first; e < first + nh[h]; e++) {
+                        out[total] = nxt[e].box;
+                        out_ids[total++] = ids ? ids[nxt[e].j] : nxt[e].j;
                     }
                 }
+                pos += nh[0] + nh[1];
             }
         }
         {
@@ -826,6 +840,13 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
             nn = tn;
         }
         ncur = nnext;
+    }
+    for (i = 0; i < ncur; i++) {
+        size_t e;
+        for (e = cn[i].first; e < (size_t)cn[i].first + cn[i].count; e++) {
+            out[total] = cur[e].box;
+            out_ids[total++] = ids ? ids[cur[e].j] : cur[e].j;
+        }
     }
     *out_total = total;
 done:
