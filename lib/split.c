@@ -25,15 +25,20 @@
  *    |c_y| + |c_z|) with c the edge cross product, d the depth of the most
  *    important grid plane crossing the box; s = floor(D * p) splits with
  *    the largest D whose total is within B;
- *  - either way the totals are integer sums found by bisection on a
+ *  - by those two the totals are integer sums found by bisection on a
  *    scale, so the result does not depend on the thread count;
- *  - each split cuts the current piece at the most important grid plane
+ *  - ATRBVH_SPLIT_SAH: top down over the grid's cells, a cell's
+ *    triangles judged together, cut at the cell's midplane where that
+ *    lowers the SAH of its halves (sah_refs, below); single-threaded;
+ *  - each split (tree and priority rules) cuts the current piece at the most important grid plane
  *    crossing its box, the triangle clipped exactly to both halves (in
  *    double, rounded outward to float), and the remaining splits are
  *    shared between the halves in proportion to their longest extent.
- * The grid is the scene box's, at the Morton stage's resolution (2^21 per
- * axis), so cuts fall on the planes the LBVH splits at.  Ties go to the
- * lower axis (x before y before z, as in the Morton key).
+ * The grid is at the Morton stage's resolution (2^21 per axis), over the
+ * scene box (tree and priority rules) or the triangles' centroid box, the
+ * Morton frame (SAH rule), so cuts fall on (or near) the planes the LBVH
+ * splits at.  Ties go to the lower axis (x before y before z, as in the
+ * Morton key).
  *
  * Leaves may then reference a primitive more than once: the layout's
  * output is post-processed here (atrbvh_i_split_merge) so that no leaf
@@ -58,6 +63,20 @@ typedef struct grid {
     double lo[3], scale[3]; /* cells = (x - lo) * scale, 2^21 per axis */
     double step[3];         /* extent / 2^21 */
 } grid;
+
+/* The grid over box fr, 2^21 cells per axis (none on a flat axis). */
+static void grid_over(const atrbvh_box *fr, grid *g)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        double extent = (double)fr->max[k] - (double)fr->min[k];
+        g->lo[k] = (double)fr->min[k];
+        g->scale[k] = extent > 0.0
+                          ? (double)(1u << ATRBVH_MORTON_BITS) / extent
+                          : 0.0;
+        g->step[k] = extent / (double)(1u << ATRBVH_MORTON_BITS);
+    }
+}
 
 static uint32_t quant(const grid *g, int k, float x)
 {
@@ -572,7 +591,8 @@ static uint64_t total_splits(const double *p, const uint32_t *chosen,
 }
 
 /* ---- The SAH rule (ATRBVH_SPLIT_SAH) -------------------------------- *
- * Top down over the cells of the grid, level by level in Morton bit
+ * Top down over the cells of the grid (over the centroids' box: the
+ * Morton frame before splitting), level by level in Morton bit
  * order (x before y before z), each node holding the references whose
  * centroids fall in its cell (what the LBVH groups).  At a node the
  * plane is the cell's midplane on the level's axis: the references on
@@ -586,7 +606,8 @@ static uint64_t total_splits(const double *p, const uint32_t *chosen,
  * share one box (a quad's halves), which a rule judging each triangle
  * alone never does (Ganestam and Doggett 2016 decide top down per
  * node in the same spirit).  The budget goes level by level, each
- * level's nodes in cell order, so the top levels get it first. */
+ * level's nodes in cell order, so the top levels get it first; once it
+ * is spent the nodes left are emitted as they are. */
 
 typedef struct sref {
     atrbvh_box box;
@@ -679,6 +700,8 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
         const int k = 2 - level % 3;
         const uint32_t half = 1u << (level / 3);
         size_t nnext = 0, pos = 0, c;
+        if (g->scale[k] == 0.0)
+            continue; /* the centroids are flat on this axis: no plane */
         for (c = 0; c < ncur; c++) {
             const snode nd = cn[c];
             const sref *r = cur + nd.first;
@@ -886,15 +909,10 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
     run->invalid = invalid;
     run->bad = 0;
     run->split_prims = kept;
-    for (k = 0; k < 3; k++) {
-        const atrbvh_box fr = scene;
-        double extent = (double)fr.max[k] - (double)fr.min[k];
-        g.lo[k] = (double)fr.min[k];
-        g.scale[k] = extent > 0.0
-                         ? (double)(1u << ATRBVH_MORTON_BITS) / extent
-                         : 0.0;
-        g.step[k] = extent / (double)(1u << ATRBVH_MORTON_BITS);
-    }
+    /* the SAH rule models the LBVH's partitions, so its grid is the
+     * Morton frame's (the centroids' box); the others cut on the scene
+     * box's grid */
+    grid_over(cfg->split_rule == ATRBVH_SPLIT_SAH ? &centroids : &scene, &g);
     want = (uint64_t)floor(cfg->split_budget * (double)kept);
     budget = MAX_REFS - (uint64_t)kept;
     if (want < budget)
