@@ -741,6 +741,16 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
             robj = atrbvh_box_union(robj, ro);
             nlo += nl;
             nro += nr;
+            if (!(atrbvh_box_area(atrbvh_box_union(lobj, robj)) >
+                  min_overlap)) {
+                /* no overlap below can pass: every box below lies in
+                 * this node's, so nothing more is cut here */
+                for (a = 0; a < nd.count; a++) {
+                    out[total] = r[a].box;
+                    out_ids[total++] = ids ? ids[r[a].j] : r[a].j;
+                }
+                continue;
+            }
             if (ns && remaining && nlo && nro &&
                 overlap_area(&lobj, &robj) > min_overlap) {
                 /* the spatial split: every straddler cut ... */
