@@ -650,7 +650,24 @@ static double side_cost(const atrbvh_box *b, uint64_t n)
 /* side[] of a reference in the node being cut */
 #define S_RIGHT 1u    /* else left (its centroid's side if it straddles) */
 #define S_STRADDLE 4u /* crosses the plane */
-#define S_CUT 2u      /* cut into both halves (pl, pr) */
+#define S_CUT 2u      /* cut into both halves */
+
+/* Reference f's triangle clipped to both sides of the plane x on axis k,
+ * within f's box: 1 with both halves' boxes, 0 when rounding leaves one
+ * side empty.  The same result every time it is called (it is called
+ * again to write the halves, rather than keeping them). */
+static int cut_ref(const atrbvh_i_run *run, const uint32_t *ids,
+                   const atrbvh_box *boxes, const sref *f, int k, float x,
+                   atrbvh_box *l, atrbvh_box *r)
+{
+    double v[3][3];
+    atrbvh_box rl = f->box, rr = f->box;
+    rl.max[k] = x;
+    rr.min[k] = x;
+    tri_vertices(&run->in, ids ? ids[f->j] : f->j, v);
+    return clip_box(v, &rl, &boxes[f->j], l) &&
+           clip_box(v, &rr, &boxes[f->j], r);
+}
 
 static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
                               const atrbvh_box *boxes, const uint32_t *ids,
@@ -665,8 +682,6 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
     /* a node that is cut further holds more than SAH_STOP references */
     snode *cn = atrbvh_i_alloc_array(cap / (SAH_STOP + 1) + 1, sizeof *cn);
     snode *nn = atrbvh_i_alloc_array(cap / (SAH_STOP + 1) + 1, sizeof *nn);
-    atrbvh_box *pl = atrbvh_i_alloc_array(cap, sizeof *pl);
-    atrbvh_box *pr = atrbvh_i_alloc_array(cap, sizeof *pr);
     unsigned char *side = atrbvh_i_alloc_array(cap, sizeof *side);
     const double min_overlap = SAH_ALPHA * atrbvh_box_area(*scene);
     uint64_t remaining = budget, total = 0;
@@ -674,7 +689,7 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
     int level;
     atrbvh_status st = ATRBVH_OK;
 
-    if (!cur || !nxt || !cn || !nn || !pl || !pr || !side) {
+    if (!cur || !nxt || !cn || !nn || !side) {
         st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                            "cannot allocate the SAH split of %lu "
                            "references",
@@ -713,7 +728,7 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
             atrbvh_box lo = atrbvh_box_empty(), ro = atrbvh_box_empty();
             atrbvh_box lobj = lo, robj = ro;
             uint64_t nl = 0, nr = 0, nlo = 0, nro = 0, cut = 0, cutl = 0;
-            uint32_t ns = 0, a, s;
+            uint32_t ns = 0, a;
             /* the object partition: straddlers whole at their centroid */
             for (a = 0; a < nd.count; a++) {
                 const atrbvh_box *b = &r[a].box;
@@ -756,20 +771,14 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
                 /* the spatial split: every straddler cut ... */
                 atrbvh_box lsp = lo, rsp = ro;
                 uint64_t nls = nl, nrs = nr;
-                for (a = 0, s = 0; a < nd.count; a++) {
-                    double v[3][3];
-                    atrbvh_box rl = r[a].box, rr = r[a].box;
-                    const uint32_t j = r[a].j;
+                for (a = 0; a < nd.count; a++) {
+                    atrbvh_box bl, br;
                     if (!(side[a] & S_STRADDLE))
                         continue;
-                    rl.max[k] = x;
-                    rr.min[k] = x;
-                    tri_vertices(&run->in, ids ? ids[j] : j, v);
-                    if (clip_box(v, &rl, &boxes[j], &pl[s]) &&
-                        clip_box(v, &rr, &boxes[j], &pr[s])) {
+                    if (cut_ref(run, ids, boxes, &r[a], k, x, &bl, &br)) {
                         side[a] |= S_CUT;
-                        lsp = atrbvh_box_union(lsp, pl[s]);
-                        rsp = atrbvh_box_union(rsp, pr[s]);
+                        lsp = atrbvh_box_union(lsp, bl);
+                        rsp = atrbvh_box_union(rsp, br);
                         nls++;
                         nrs++;
                     } else if (side[a] & S_RIGHT) { /* rounding: whole */
@@ -779,7 +788,6 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
                         lsp = atrbvh_box_union(lsp, r[a].box);
                         nls++;
                     }
-                    s++;
                 }
                 /* ... then each kept whole at its centroid's side where
                  * that costs no more */
@@ -831,18 +839,16 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
                 if (!cut && (!nh[0] || !nh[1])) { /* all on one side */
                     memcpy(nxt + pos, r, nd.count * sizeof *r);
                 } else {
-                    for (a = 0, s = 0; a < nd.count; a++) {
+                    for (a = 0; a < nd.count; a++) {
                         const unsigned sd = side[a];
-                        if (sd & S_CUT) {
-                            nxt[at[0]].box = pl[s];
+                        if (sd & S_CUT) { /* the halves weighed above */
+                            (void)cut_ref(run, ids, boxes, &r[a], k, x,
+                                          &nxt[at[0]].box, &nxt[at[1]].box);
                             nxt[at[0]++].j = r[a].j;
-                            nxt[at[1]].box = pr[s];
                             nxt[at[1]++].j = r[a].j;
                         } else {
                             nxt[at[sd & S_RIGHT]++] = r[a];
                         }
-                        if (sd & S_STRADDLE)
-                            s++;
                     }
                 }
                 for (h = 0; h < 2; h++) {
@@ -890,8 +896,6 @@ done:
     atrbvh_i_free(nxt);
     atrbvh_i_free(cn);
     atrbvh_i_free(nn);
-    atrbvh_i_free(pl);
-    atrbvh_i_free(pr);
     atrbvh_i_free(side);
     return st;
 }
