@@ -380,10 +380,11 @@ atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
                              o.split_budget, ATRBVH_I_SPLIT_MAX);
     c->split_budget = o.split_budget;
     if (o.split_rule != ATRBVH_SPLIT_TREE &&
-        o.split_rule != ATRBVH_SPLIT_PRIORITY)
+        o.split_rule != ATRBVH_SPLIT_PRIORITY &&
+        o.split_rule != ATRBVH_SPLIT_SAH)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
-                             "split_rule %d is not ATRBVH_SPLIT_TREE or "
-                             "ATRBVH_SPLIT_PRIORITY",
+                             "split_rule %d is not ATRBVH_SPLIT_TREE, "
+                             "ATRBVH_SPLIT_PRIORITY or ATRBVH_SPLIT_SAH",
                              o.split_rule);
     c->split_rule = o.split_rule;
     r->backend = o.backend;

@@ -276,15 +276,17 @@ typedef struct atrbvh_build_options {
                                     leaf may then share a primitive with
                                     another leaf (atrbvh(3))             */
     int split_rule;              /* which triangles split_budget splits:
-                                    ATRBVH_SPLIT_TREE (0, default) or
-                                    ATRBVH_SPLIT_PRIORITY (atrbvh(3))     */
+                                    ATRBVH_SPLIT_TREE (0, default),
+                                    ATRBVH_SPLIT_PRIORITY or
+                                    ATRBVH_SPLIT_SAH (atrbvh(3))          */
 } atrbvh_build_options;
 
 /* atrbvh_build_options.split_rule: cut where a first LBVH of the unsplit
- * triangles says the cut lowers its SAH, or by the Karras-Aila priority
+ * triangles says the cut lowers its SAH, by the Karras-Aila priority
  * (box area above the triangle's own, weighted by the Morton level of the
- * grid plane crossing it). */
-enum { ATRBVH_SPLIT_TREE = 0, ATRBVH_SPLIT_PRIORITY = 1 };
+ * grid plane crossing it), or top down per Morton grid cell where cutting
+ * the cell's straddlers at its mid plane lowers the SAH of its halves. */
+enum { ATRBVH_SPLIT_TREE = 0, ATRBVH_SPLIT_PRIORITY = 1, ATRBVH_SPLIT_SAH = 2 };
 
 ATRBVH_API void atrbvh_build_options_init(atrbvh_build_options *options);
 

@@ -25,15 +25,20 @@
  *    |c_y| + |c_z|) with c the edge cross product, d the depth of the most
  *    important grid plane crossing the box; s = floor(D * p) splits with
  *    the largest D whose total is within B;
- *  - either way the totals are integer sums found by bisection on a
+ *  - by those two the totals are integer sums found by bisection on a
  *    scale, so the result does not depend on the thread count;
- *  - each split cuts the current piece at the most important grid plane
+ *  - ATRBVH_SPLIT_SAH: top down over the grid's cells, a cell's
+ *    triangles judged together, cut at the cell's midplane where that
+ *    lowers the SAH of its halves (sah_refs, below); single-threaded;
+ *  - each split (tree and priority rules) cuts the current piece at the most important grid plane
  *    crossing its box, the triangle clipped exactly to both halves (in
  *    double, rounded outward to float), and the remaining splits are
  *    shared between the halves in proportion to their longest extent.
- * The grid is the scene box's, at the Morton stage's resolution (2^21 per
- * axis), so cuts fall on the planes the LBVH splits at.  Ties go to the
- * lower axis (x before y before z, as in the Morton key).
+ * The grid is at the Morton stage's resolution (2^21 per axis), over the
+ * scene box (tree and priority rules) or the triangles' centroid box, the
+ * Morton frame (SAH rule), so cuts fall on (or near) the planes the LBVH
+ * splits at.  Ties go to the lower axis (x before y before z, as in the
+ * Morton key).
  *
  * Leaves may then reference a primitive more than once: the layout's
  * output is post-processed here (atrbvh_i_split_merge) so that no leaf
@@ -42,6 +47,7 @@
 #include "config.h"
 
 #include "internal.h"
+#include "shared/sort.h"
 
 #include <math.h>
 #include <string.h>
@@ -58,6 +64,20 @@ typedef struct grid {
     double step[3];         /* extent / 2^21 */
 } grid;
 
+/* The grid over box fr, 2^21 cells per axis (none on a flat axis). */
+static void grid_over(const atrbvh_box *fr, grid *g)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        double extent = (double)fr->max[k] - (double)fr->min[k];
+        g->lo[k] = (double)fr->min[k];
+        g->scale[k] = extent > 0.0
+                          ? (double)(1u << ATRBVH_MORTON_BITS) / extent
+                          : 0.0;
+        g->step[k] = extent / (double)(1u << ATRBVH_MORTON_BITS);
+    }
+}
+
 static uint32_t quant(const grid *g, int k, float x)
 {
     double t = ((double)x - g->lo[k]) * g->scale[k];
@@ -66,14 +86,6 @@ static uint32_t quant(const grid *g, int k, float x)
     if (t >= (double)ATRBVH_MORTON_MAX)
         return ATRBVH_MORTON_MAX;
     return (uint32_t)t;
-}
-
-static int high_bit(uint32_t x)
-{
-    int h = 0;
-    while (x >>= 1)
-        h++;
-    return h;
 }
 
 /* The most important grid plane strictly inside box b on axis k: its
@@ -93,7 +105,7 @@ static int axis_plane(const grid *g, const atrbvh_box *b, int k, float *at)
     for (;;) {
         if (qa >= qb)
             break;
-        h = high_bit(qa ^ qb);
+        h = atrbvh_sort_highest_bit(qa ^ qb);
         cell = (qb >> h) << h;
         x = (float)(g->lo[k] + (double)cell * g->step[k]);
         if (x >= b->max[k]) {
@@ -578,6 +590,316 @@ static uint64_t total_splits(const double *p, const uint32_t *chosen,
     return sum;
 }
 
+/* ---- The SAH rule (ATRBVH_SPLIT_SAH) -------------------------------- *
+ * Top down over the cells of the grid (over the centroids' box: the
+ * Morton frame before splitting), level by level in Morton bit
+ * order (x before y before z), each node holding the references whose
+ * centroids fall in its cell (what the LBVH groups).  At a node the
+ * plane is the cell's midplane on the level's axis: the references on
+ * one side go there; a straddler either goes whole to the side of its
+ * centroid (the object partition the LBVH makes) or is cut in two, the
+ * triangle clipped to each half.  The node is cut where the SAH of the
+ * two halves, A(L) nL + A(R) nR, is lower with the straddlers cut than
+ * without; before that, each straddler stays whole where that is
+ * cheaper still (reference unsplitting, Stich et al. 2009).  Judging a
+ * node's straddlers together is what cuts two large triangles that
+ * share one box (a quad's halves), which a rule judging each triangle
+ * alone never does (Ganestam and Doggett 2016 decide top down per
+ * node in the same spirit).  The budget goes level by level, each
+ * level's nodes in cell order, so the top levels get it first; once it
+ * is spent the nodes left are emitted as they are. */
+
+typedef struct sref {
+    atrbvh_box box;
+    uint32_t j; /* the triangle: its index among the kept ones */
+} sref;
+
+typedef struct snode {
+    uint32_t first, count;
+    uint32_t qlo[3]; /* the cell's low corner in grid units */
+} snode;
+
+/* A node of at most SAH_STOP references is not cut further; a node is
+ * weighed for cutting only where its object partition's halves overlap
+ * by more than SAH_ALPHA times the scene box's area (SBVH's alpha; 1e-2
+ * rather than their 1e-5 spends the budget where the overlap is large:
+ * on the shared scenes fewer references, the same SAH, a lower ray
+ * cost, docs/splitting.md). */
+#define SAH_STOP 4u
+#define SAH_ALPHA 1e-2
+
+/* The surface area of the overlap of a and b (0 when they are apart). */
+static double overlap_area(const atrbvh_box *a, const atrbvh_box *b)
+{
+    atrbvh_box o;
+    int k;
+    for (k = 0; k < 3; k++) {
+        o.min[k] = a->min[k] > b->min[k] ? a->min[k] : b->min[k];
+        o.max[k] = a->max[k] < b->max[k] ? a->max[k] : b->max[k];
+        if (!(o.min[k] <= o.max[k]))
+            return 0.0;
+    }
+    return atrbvh_box_area(o);
+}
+
+static double side_cost(const atrbvh_box *b, uint64_t n)
+{
+    return n ? atrbvh_box_area(*b) * (double)n : 0.0;
+}
+
+/* side[] of a reference in the node being cut */
+#define S_RIGHT 1u    /* else left (its centroid's side if it straddles) */
+#define S_STRADDLE 4u /* crosses the plane */
+#define S_CUT 2u      /* cut into both halves */
+
+/* Reference f's triangle clipped to both sides of the plane x on axis k,
+ * within f's box: 1 with both halves' boxes, 0 when rounding leaves one
+ * side empty.  The same result every time it is called (it is called
+ * again to write the halves, rather than keeping them). */
+static int cut_ref(const atrbvh_i_run *run, const uint32_t *ids,
+                   const atrbvh_box *boxes, const sref *f, int k, float x,
+                   atrbvh_box *l, atrbvh_box *r)
+{
+    double v[3][3];
+    atrbvh_box rl = f->box, rr = f->box;
+    rl.max[k] = x;
+    rr.min[k] = x;
+    tri_vertices(&run->in, ids ? ids[f->j] : f->j, v);
+    return clip_box(v, &rl, &boxes[f->j], l) &&
+           clip_box(v, &rr, &boxes[f->j], r);
+}
+
+static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
+                              const atrbvh_box *boxes, const uint32_t *ids,
+                              uint32_t kept, const atrbvh_box *scene,
+                              uint64_t budget, atrbvh_box *out,
+                              uint32_t *out_ids, uint64_t *out_total,
+                              atrbvh_error *error)
+{
+    const size_t cap = (size_t)kept + (size_t)budget;
+    sref *cur = atrbvh_i_alloc_array(cap, sizeof *cur);
+    sref *nxt = atrbvh_i_alloc_array(cap, sizeof *nxt);
+    /* a node that is cut further holds more than SAH_STOP references */
+    snode *cn = atrbvh_i_alloc_array(cap / (SAH_STOP + 1) + 1, sizeof *cn);
+    snode *nn = atrbvh_i_alloc_array(cap / (SAH_STOP + 1) + 1, sizeof *nn);
+    unsigned char *side = atrbvh_i_alloc_array(cap, sizeof *side);
+    const double min_overlap = SAH_ALPHA * atrbvh_box_area(*scene);
+    uint64_t remaining = budget, total = 0;
+    size_t ncur = 0, i;
+    int level;
+    atrbvh_status st = ATRBVH_OK;
+
+    if (!cur || !nxt || !cn || !nn || !side) {
+        st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                           "cannot allocate the SAH split of %lu "
+                           "references",
+                           (unsigned long)cap);
+        goto done;
+    }
+    for (i = 0; i < kept; i++) {
+        cur[i].box = boxes[i];
+        cur[i].j = (uint32_t)i;
+    }
+    if (kept > SAH_STOP) {
+        cn[0].first = 0;
+        cn[0].count = kept;
+        cn[0].qlo[0] = cn[0].qlo[1] = cn[0].qlo[2] = 0;
+        ncur = 1;
+    } else {
+        for (i = 0; i < kept; i++) {
+            out[total] = boxes[i];
+            out_ids[total++] = ids ? ids[i] : (uint32_t)i;
+        }
+    }
+    /* once the budget is spent, nothing more can be cut: the nodes left
+     * are emitted as they are */
+    for (level = 3 * ATRBVH_MORTON_BITS - 1; level >= 0 && ncur && remaining;
+         level--) {
+        const int k = 2 - level % 3;
+        const uint32_t half = 1u << (level / 3);
+        size_t nnext = 0, pos = 0, c;
+        if (g->scale[k] == 0.0)
+            continue; /* the centroids are flat on this axis: no plane */
+        for (c = 0; c < ncur; c++) {
+            const snode nd = cn[c];
+            const sref *r = cur + nd.first;
+            const uint32_t mid = nd.qlo[k] + half;
+            const float x = (float)(g->lo[k] + (double)mid * g->step[k]);
+            atrbvh_box lo = atrbvh_box_empty(), ro = atrbvh_box_empty();
+            atrbvh_box lobj = lo, robj = ro;
+            uint64_t nl = 0, nr = 0, nlo = 0, nro = 0, cut = 0, cutl = 0;
+            uint32_t ns = 0, a;
+            /* the object partition: straddlers whole at their centroid */
+            for (a = 0; a < nd.count; a++) {
+                const atrbvh_box *b = &r[a].box;
+                if (b->max[k] <= x) {
+                    side[a] = 0;
+                    lo = atrbvh_box_union(lo, *b);
+                    nl++;
+                } else if (b->min[k] >= x) {
+                    side[a] = S_RIGHT;
+                    ro = atrbvh_box_union(ro, *b);
+                    nr++;
+                } else if (atrbvh_box_centre(*b, k) >= x) {
+                    side[a] = S_STRADDLE | S_RIGHT;
+                    robj = atrbvh_box_union(robj, *b);
+                    nro++;
+                    ns++;
+                } else {
+                    side[a] = S_STRADDLE;
+                    lobj = atrbvh_box_union(lobj, *b);
+                    nlo++;
+                    ns++;
+                }
+            }
+            lobj = atrbvh_box_union(lobj, lo);
+            robj = atrbvh_box_union(robj, ro);
+            nlo += nl;
+            nro += nr;
+            if (!(atrbvh_box_area(atrbvh_box_union(lobj, robj)) >
+                  min_overlap)) {
+                /* no overlap below can pass: every box below lies in
+                 * this node's, so nothing more is cut here */
+                for (a = 0; a < nd.count; a++) {
+                    out[total] = r[a].box;
+                    out_ids[total++] = ids ? ids[r[a].j] : r[a].j;
+                }
+                continue;
+            }
+            if (ns && remaining && nlo && nro &&
+                overlap_area(&lobj, &robj) > min_overlap) {
+                /* the spatial split: every straddler cut ... */
+                atrbvh_box lsp = lo, rsp = ro;
+                uint64_t nls = nl, nrs = nr;
+                for (a = 0; a < nd.count; a++) {
+                    atrbvh_box bl, br;
+                    if (!(side[a] & S_STRADDLE))
+                        continue;
+                    if (cut_ref(run, ids, boxes, &r[a], k, x, &bl, &br)) {
+                        side[a] |= S_CUT;
+                        lsp = atrbvh_box_union(lsp, bl);
+                        rsp = atrbvh_box_union(rsp, br);
+                        nls++;
+                        nrs++;
+                    } else if (side[a] & S_RIGHT) { /* rounding: whole */
+                        rsp = atrbvh_box_union(rsp, r[a].box);
+                        nrs++;
+                    } else {
+                        lsp = atrbvh_box_union(lsp, r[a].box);
+                        nls++;
+                    }
+                }
+                /* ... then each kept whole at its centroid's side where
+                 * that costs no more */
+                for (a = 0; a < nd.count; a++) {
+                    double split_c, whole_c;
+                    atrbvh_box wb;
+                    if (!(side[a] & S_CUT))
+                        continue;
+                    split_c = side_cost(&lsp, nls) + side_cost(&rsp, nrs);
+                    if (side[a] & S_RIGHT) {
+                        wb = atrbvh_box_union(rsp, r[a].box);
+                        whole_c = side_cost(&lsp, nls - 1) +
+                                  side_cost(&wb, nrs);
+                    } else {
+                        wb = atrbvh_box_union(lsp, r[a].box);
+                        whole_c = side_cost(&wb, nls) +
+                                  side_cost(&rsp, nrs - 1);
+                    }
+                    if (whole_c <= split_c) {
+                        side[a] &= (unsigned char)~S_CUT;
+                        if (side[a] & S_RIGHT)
+                            rsp = wb, nls--;
+                        else
+                            lsp = wb, nrs--;
+                    } else {
+                        cut++;
+                        cutl += !(side[a] & S_RIGHT);
+                    }
+                }
+                if (cut && cut <= remaining &&
+                    side_cost(&lsp, nls) + side_cost(&rsp, nrs) <
+                        side_cost(&lobj, nlo) + side_cost(&robj, nro)) {
+                    remaining -= cut;
+                } else {
+                    cut = cutl = 0;
+                    for (a = 0; a < nd.count; a++)
+                        side[a] &= (unsigned char)~S_CUT;
+                }
+            }
+            /* the halves, left first, each in the references' order:
+             * left at pos, right after the left's count */
+            {
+                const size_t nh[2] = {(size_t)(nlo + cut - cutl),
+                                      (size_t)(nro + cutl)};
+                size_t at[2];
+                int h;
+                at[0] = pos;
+                at[1] = pos + nh[0];
+                if (!cut && (!nh[0] || !nh[1])) { /* all on one side */
+                    memcpy(nxt + pos, r, nd.count * sizeof *r);
+                } else {
+                    for (a = 0; a < nd.count; a++) {
+                        const unsigned sd = side[a];
+                        if (sd & S_CUT) { /* the halves weighed above */
+                            (void)cut_ref(run, ids, boxes, &r[a], k, x,
+                                          &nxt[at[0]].box, &nxt[at[1]].box);
+                            nxt[at[0]++].j = r[a].j;
+                            nxt[at[1]++].j = r[a].j;
+                        } else {
+                            nxt[at[sd & S_RIGHT]++] = r[a];
+                        }
+                    }
+                }
+                for (h = 0; h < 2; h++) {
+                    const size_t first = h ? pos + nh[0] : pos;
+                    size_t e;
+                    if (!nh[h])
+                        continue;
+                    if (nh[h] > SAH_STOP && level > 0) {
+                        nn[nnext] = nd;
+                        nn[nnext].first = (uint32_t)first;
+                        nn[nnext].count = (uint32_t)nh[h];
+                        if (h)
+                            nn[nnext].qlo[k] = mid;
+                        nnext++;
+                        continue;
+                    }
+                    for (e = first; e < first + nh[h]; e++) {
+                        out[total] = nxt[e].box;
+                        out_ids[total++] = ids ? ids[nxt[e].j] : nxt[e].j;
+                    }
+                }
+                pos += nh[0] + nh[1];
+            }
+        }
+        {
+            sref *t = cur;
+            snode *tn = cn;
+            cur = nxt;
+            nxt = t;
+            cn = nn;
+            nn = tn;
+        }
+        ncur = nnext;
+    }
+    for (i = 0; i < ncur; i++) {
+        size_t e;
+        for (e = cn[i].first; e < (size_t)cn[i].first + cn[i].count; e++) {
+            out[total] = cur[e].box;
+            out_ids[total++] = ids ? ids[cur[e].j] : cur[e].j;
+        }
+    }
+    *out_total = total;
+done:
+    atrbvh_i_free(cur);
+    atrbvh_i_free(nxt);
+    atrbvh_i_free(cn);
+    atrbvh_i_free(nn);
+    atrbvh_i_free(side);
+    return st;
+}
+
 atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
                                    atrbvh_error *error)
 {
@@ -588,7 +910,7 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
     double *prio = NULL;
     first_tree ft;
     uint32_t *chosen = NULL;
-    const int tree = cfg->split_rule != ATRBVH_SPLIT_PRIORITY;
+    const int tree = cfg->split_rule == ATRBVH_SPLIT_TREE;
     uint64_t *offset = NULL, budget, total = 0, want;
     size_t invalid = 0, i;
     atrbvh_status st;
@@ -604,20 +926,40 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
     run->invalid = invalid;
     run->bad = 0;
     run->split_prims = kept;
-    for (k = 0; k < 3; k++) {
-        const atrbvh_box fr = scene;
-        double extent = (double)fr.max[k] - (double)fr.min[k];
-        g.lo[k] = (double)fr.min[k];
-        g.scale[k] = extent > 0.0
-                         ? (double)(1u << ATRBVH_MORTON_BITS) / extent
-                         : 0.0;
-        g.step[k] = extent / (double)(1u << ATRBVH_MORTON_BITS);
-    }
+    /* the SAH rule models the LBVH's partitions, so its grid is the
+     * Morton frame's (the centroids' box); the others cut on the scene
+     * box's grid */
+    grid_over(cfg->split_rule == ATRBVH_SPLIT_SAH ? &centroids : &scene, &g);
     want = (uint64_t)floor(cfg->split_budget * (double)kept);
     budget = MAX_REFS - (uint64_t)kept;
     if (want < budget)
         budget = want;
 
+    if (cfg->split_rule == ATRBVH_SPLIT_SAH) {
+        const size_t cap = (size_t)kept + (size_t)budget;
+        refs = atrbvh_i_alloc_array(cap, sizeof *refs);
+        ref_ids = atrbvh_i_alloc_array(cap, sizeof *ref_ids);
+        if (!refs || !ref_ids) {
+            st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                               "cannot allocate %lu split references",
+                               (unsigned long)cap);
+            goto done;
+        }
+        st = sah_refs(run, &g, boxes, ids, kept, &scene, budget, refs,
+                      ref_ids, &total, error);
+        if (st != ATRBVH_OK)
+            goto done;
+        centroids = atrbvh_box_empty();
+        for (i = 0; i < total; i++)
+            for (k = 0; k < 3; k++) {
+                float m = atrbvh_box_centre(refs[i], k);
+                if (m < centroids.min[k])
+                    centroids.min[k] = m;
+                if (m > centroids.max[k])
+                    centroids.max[k] = m;
+            }
+        goto emit;
+    }
     prio = atrbvh_i_alloc_array(kept, sizeof *prio);
     if (tree)
         chosen = atrbvh_i_alloc_array(kept, sizeof *chosen);
@@ -790,6 +1132,7 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
             total++;
         }
     }
+emit:
     run->n = (uint32_t)total;
     if (total == kept) /* nothing split: an ordinary tree */
         run->split_prims = 0;

@@ -232,6 +232,14 @@ if run 0 build builtin:sphere:3000 --split 0.3 --split-rule priority --json; the
     [ "$(json_value split_rule)" = '"priority"' ] ||
         fail "--split-rule priority: split_rule '$(json_value split_rule)'"
 fi
+if run 0 build builtin:sphere:3000 --split 0.3 --split-rule sah --json; then
+    r=$(json_value references) t=$(json_value triangles)
+    [ "$r" -gt "$t" ] || fail "--split-rule sah: nothing split"
+    [ "$r" -le $((t + t * 3 / 10)) ] ||
+        fail "--split-rule sah: references '$r' for $t triangles"
+    [ "$(json_value split_rule)" = '"sah"' ] ||
+        fail "--split-rule sah: split_rule '$(json_value split_rule)'"
+fi
 
 # ------------------------------------------------------------- build
 run 0 build "$DATA/cube.obj" --method lbvh && {

@@ -13,9 +13,10 @@
  *    to the box is not empty), and every triangle's vertices and its
  *    points on the scene's mid planes lie in the box of a leaf that
  *    lists it; stats.primitives counts primitives, not references.
- *  - Both rules (ATRBVH_SPLIT_TREE, the default, and _PRIORITY) in the
- *    tests below; split_rule outside them is ATRBVH_ERR_INVALID_ARGUMENT,
- *    and a caller compiled before the field gets the tree rule.
+ *  - The three rules (ATRBVH_SPLIT_TREE, the default, _PRIORITY and
+ *    _SAH) in the tests below; split_rule outside them (3, -1) is
+ *    ATRBVH_ERR_INVALID_ARGUMENT, and a caller compiled before the field
+ *    gets the tree rule.
  *  - The same tree for 1, 2, 3 and 4 threads; the same on OpenCL
  *    (atrbvh_validate_backends; skipped, saying so, without a device).
  *  - Closest and any hit through split trees (LBVH and ATRBVH, collapsed
@@ -33,6 +34,8 @@
  *    LBVH's SAH falls (collapsed and not), no triangle gets more than 8
  *    references; a sliver present twice is not split (its twin holds
  *    every box above it) where the same sliver alone is.
+ *  - The SAH rule, judging a node's straddlers together, does cut such
+ *    twins, and the SAH falls.
  *  - Every allocation of a split build failing in turn: ATRBVH_ERR_NOMEM,
  *    nothing leaked.
  */
@@ -251,7 +254,7 @@ START_TEST(off_by_default)
     ck_assert_int_eq(atrbvh_build(&g, &o, &c, &e),
                      ATRBVH_ERR_INVALID_ARGUMENT);
     o.split_budget = 0.3;
-    o.split_rule = 2;
+    o.split_rule = 3;
     ck_assert_int_eq(atrbvh_build(&g, &o, &c, &e),
                      ATRBVH_ERR_INVALID_ARGUMENT);
     ck_assert_ptr_nonnull(strstr(e.text, "split_rule"));
@@ -321,11 +324,11 @@ START_TEST(references_cover_triangles)
     const size_t nt = 1650;
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     size_t k;
-    for (k = 0; k < 6; k++) {
+    for (k = 0; k < 9; k++) {
         atrbvh_build_options o = split_options(budgets[k % 3]);
         atrbvh_bvh *b;
         o.method = k % 3 == 0 ? ATRBVH_METHOD_LBVH : ATRBVH_METHOD_ATRBVH;
-        o.split_rule = k < 3 ? ATRBVH_SPLIT_TREE : ATRBVH_SPLIT_PRIORITY;
+        o.split_rule = (int)(k / 3); /* tree, priority, sah */
         b = tu_build(&g, &o);
         check_split_tree(b, v, nt, budgets[k % 3]);
         atrbvh_bvh_free(b);
@@ -345,7 +348,7 @@ START_TEST(same_for_threads)
     const size_t nt = 4030;
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     int rule;
-    for (rule = ATRBVH_SPLIT_TREE; rule <= ATRBVH_SPLIT_PRIORITY; rule++) {
+    for (rule = ATRBVH_SPLIT_TREE; rule <= ATRBVH_SPLIT_SAH; rule++) {
         atrbvh_build_options o = split_options(0.3);
         atrbvh_bvh *ref;
         char msg[256];
@@ -377,7 +380,7 @@ START_TEST(same_on_opencl)
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     static const double budgets[] = {0.1, 0.5};
     size_t k;
-    for (k = 0; k < 4; k++) {
+    for (k = 0; k < 6; k++) {
         atrbvh_build_options o = split_options(budgets[k % 2]);
         atrbvh_error e;
         atrbvh_bvh *b;
@@ -385,7 +388,7 @@ START_TEST(same_on_opencl)
         int same = 0;
         atrbvh_status st;
         o.method = k % 2 ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_TRBVH;
-        o.split_rule = k < 2 ? ATRBVH_SPLIT_TREE : ATRBVH_SPLIT_PRIORITY;
+        o.split_rule = (int)(k / 2); /* tree, priority, sah */
         b = tu_build(&g, &o);
         (void)atrbvh_bvh_primitive_indices(b, &np);
         ck_assert_msg(np > nt, "case %zu: nothing split", k);
@@ -467,13 +470,15 @@ START_TEST(rays_equal_brute_force)
         ry->tmin = 0.0f;
         ry->tmax = i % 3 ? INFINITY : 0.9f;
     }
-    for (k = 0; k < 6; k++) {
+    for (k = 0; k < 9; k++) {
         atrbvh_build_options o = split_options(k % 4 < 2 ? 0.3 : 2.0);
         atrbvh_bvh *b;
         size_t np;
         o.method = k % 2 ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_LBVH;
-        o.split_rule = k < 4 ? ATRBVH_SPLIT_TREE : ATRBVH_SPLIT_PRIORITY;
-        if (k == 3) {
+        o.split_rule = k < 4   ? ATRBVH_SPLIT_TREE
+                       : k < 6 ? ATRBVH_SPLIT_PRIORITY
+                               : ATRBVH_SPLIT_SAH;
+        if (k == 3 || k == 8) {
             o.collapse = 0;
             o.max_leaf_size = 0;
         }
@@ -523,21 +528,27 @@ START_TEST(skip_invalid_with_split)
     size_t nn, np, i, j;
     const atrbvh_node *nodes;
     const uint32_t *idx;
+    int rule;
     v[9 * 7 + 4] = NAN;
-    ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_ERR_NONFINITE);
-    ck_assert_uint_eq(e.index, 7);
-    o.skip_invalid = 1;
-    b = tu_build(&g, &o);
-    ck_assert_int_eq(atrbvh_bvh_stats(b, &st), ATRBVH_OK);
-    ck_assert_uint_eq(st.invalid_skipped, 1);
-    ck_assert_uint_eq(st.primitives, nt - 1);
-    nodes = atrbvh_bvh_nodes(b, &nn);
-    idx = atrbvh_bvh_primitive_indices(b, &np);
-    ck_assert_uint_gt(np, nt);
-    for (i = 0; i < nn; i++)
-        for (j = 0; j < nodes[i].count; j++)
-            ck_assert_uint_ne(idx[nodes[i].index + j], 7);
-    atrbvh_bvh_free(b);
+    for (rule = ATRBVH_SPLIT_TREE; rule <= ATRBVH_SPLIT_SAH; rule++) {
+        o.split_rule = rule;
+        o.skip_invalid = 0;
+        ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e),
+                         ATRBVH_ERR_NONFINITE);
+        ck_assert_uint_eq(e.index, 7);
+        o.skip_invalid = 1;
+        b = tu_build(&g, &o);
+        ck_assert_int_eq(atrbvh_bvh_stats(b, &st), ATRBVH_OK);
+        ck_assert_uint_eq(st.invalid_skipped, 1);
+        ck_assert_uint_eq(st.primitives, nt - 1);
+        nodes = atrbvh_bvh_nodes(b, &nn);
+        idx = atrbvh_bvh_primitive_indices(b, &np);
+        ck_assert_msg(np > nt, "rule %d: nothing split", rule);
+        for (i = 0; i < nn; i++)
+            for (j = 0; j < nodes[i].count; j++)
+                ck_assert_uint_ne(idx[nodes[i].index + j], 7);
+        atrbvh_bvh_free(b);
+    }
     free(v);
 }
 END_TEST
@@ -734,6 +745,59 @@ START_TEST(twins_not_split)
 }
 END_TEST
 
+/* The SAH rule decides per node, all of a node's straddlers together.
+ * Floors across the whole scene among small triangles, each a square of
+ * two axis-aligned triangles sharing one box: the tree rule cuts neither
+ * half (each holds the other's boxes up: twins_not_split), the priority
+ * rule neither (an axis-aligned triangle's box is as small as its area
+ * allows); the SAH rule cuts every one, and the LBVH's SAH falls,
+ * collapsed and not. */
+START_TEST(sah_rule_cuts_twins)
+{
+    const size_t n = 3000, floors = 8, nt = n + 2 * floors;
+    float *v = sliver_scene(n, 0, 33);
+    atrbvh_geometry g;
+    size_t i;
+    int collapse;
+    v = realloc(v, nt * 9 * sizeof *v);
+    ck_assert_ptr_nonnull(v);
+    for (i = 0; i < floors; i++) {
+        const float z = 0.06f + 0.12f * (float)i;
+        const float q[2][9] = {{0, 0, z, 1, 0, z, 0, 1, z},
+                               {1, 0, z, 1, 1, z, 0, 1, z}};
+        memcpy(v + 9 * (n + 2 * i), q, sizeof q);
+    }
+    g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
+    for (collapse = 0; collapse < 2; collapse++) {
+        atrbvh_build_options o = split_options(0.3);
+        atrbvh_bvh *a, *b;
+        atrbvh_stats sa, sb;
+        unsigned *seen;
+        o.method = ATRBVH_METHOD_LBVH;
+        o.split_rule = ATRBVH_SPLIT_SAH;
+        o.collapse = collapse;
+        o.max_leaf_size = collapse ? 8 : 0;
+        a = tu_build(&g, &o);
+        o.split_budget = 0.0;
+        b = tu_build(&g, &o);
+        check_split_tree(a, v, nt, 0.3);
+        seen = ref_counts(a, nt);
+        for (i = n; i < nt; i++)
+            ck_assert_msg(seen[i] > 1, "floor triangle %zu: %u reference",
+                          i, seen[i]);
+        ck_assert_int_eq(atrbvh_bvh_stats(a, &sa), ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_bvh_stats(b, &sb), ATRBVH_OK);
+        ck_assert_msg(sa.sah < 0.95 * sb.sah,
+                      "collapse %d: SAH %g split, %g unsplit", collapse,
+                      sa.sah, sb.sah);
+        free(seen);
+        atrbvh_bvh_free(a);
+        atrbvh_bvh_free(b);
+    }
+    free(v);
+}
+END_TEST
+
 START_TEST(allocation_failures)
 {
     const size_t nt = 200;
@@ -741,10 +805,11 @@ START_TEST(allocation_failures)
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     int variant;
     v[9 * 3] = NAN;
-    for (variant = 0; variant < 2; variant++) {
+    for (variant = 0; variant < 4; variant++) {
         atrbvh_build_options o = split_options(0.5);
         long k;
-        o.threads = variant ? 3 : 1;
+        o.threads = variant % 2 ? 3 : 1;
+        o.split_rule = variant < 2 ? ATRBVH_SPLIT_TREE : ATRBVH_SPLIT_SAH;
         o.skip_invalid = 1;
         atrbvh_set_allocator(tu_count_malloc, tu_count_free);
         for (k = 0;; k++) {
@@ -770,7 +835,8 @@ START_TEST(allocation_failures)
                           tu_alloc.outstanding);
         }
         atrbvh_set_allocator(NULL, NULL);
-        ck_assert_int_gt(k, 8); /* the split's own allocations among them */
+        /* the split's own allocations among them */
+        ck_assert_int_gt(k, variant < 2 ? 8 : 6);
     }
     free(v);
 }
@@ -792,6 +858,7 @@ static Suite *suite(void)
     tcase_add_test(t, refit_refuses_split_trees);
     tcase_add_test(t, splitting_pays);
     tcase_add_test(t, twins_not_split);
+    tcase_add_test(t, sah_rule_cuts_twins);
     tcase_add_test(t, allocation_failures);
     suite_add_tcase(s, t);
     return s;

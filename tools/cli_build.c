@@ -17,8 +17,10 @@
 #include <unistd.h>
 
 static const char *const method_names[] = {"lbvh", "trbvh", "atrbvh", NULL};
-/* in the order of ATRBVH_SPLIT_TREE, ATRBVH_SPLIT_PRIORITY */
-static const char *const split_rule_names[] = {"tree", "priority", NULL};
+/* in the order of ATRBVH_SPLIT_TREE, ATRBVH_SPLIT_PRIORITY,
+ * ATRBVH_SPLIT_SAH */
+static const char *const split_rule_names[] = {"tree", "priority", "sah",
+                                               NULL};
 static const atrbvh_method method_values[] = {
     ATRBVH_METHOD_LBVH, ATRBVH_METHOD_TRBVH, ATRBVH_METHOD_ATRBVH};
 static const char *const backend_names[] = {"cpu", "opencl", NULL};
@@ -150,8 +152,9 @@ void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table)
             {.name = "--split-rule", .kind = CLI_OPT_ENUM,
              .dest = &o->split_rule, .choices = split_rule_names,
              .help = "which triangles --split cuts: tree (where a\n"
-                     "first LBVH says the cut pays; default) or\n"
-                     "priority (Karras-Aila)"},
+                     "first LBVH says the cut pays; default),\n"
+                     "priority (Karras-Aila) or sah (top down per\n"
+                     "grid cell, a cell's triangles judged together)"},
             {.name = "--skip-invalid", .kind = CLI_OPT_FLAG,
              .dest = &o->skip_invalid, .flag_value = 1,
              .help = "leave out triangles with NaN or infinite\n"
@@ -566,8 +569,7 @@ void cli_build_json(json_writer *w, const cli_build_args *a,
         (void)atrbvh_bvh_primitive_indices(b->bvh, &refs);
         json_kv_double(w, "split_budget", a->options.split_budget);
         json_kv_string(w, "split_rule",
-                       split_rule_names[a->options.split_rule ==
-                                        ATRBVH_SPLIT_PRIORITY]);
+                       split_rule_names[a->options.split_rule]);
         json_kv_uint(w, "references", refs);
     }
     json_kv_string(w, "method", cli_method_name(s->method));

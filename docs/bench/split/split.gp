@@ -1,4 +1,4 @@
-# SAH against the split budget for both rules (docs/splitting.md's
+# SAH against the split budget for the three rules (docs/splitting.md's
 # measurements; gnuplot split.gp from this folder).  Budget 0 is the
 # unsplit tree, the first point of every line.
 set terminal pngcairo size 1200,420 font ",10" noenhanced
@@ -19,6 +19,10 @@ do for [s in "conference dabrovic_sponza sibenik"] {
          "< grep -E '^".s." ATRBVH\\(".c."\\) (none|tree)' split.dat" \
          using 4:6 with linespoints lt (c eq "9,2" ? 1 : c eq "16,3" ? 2 : 3) \
          dashtype 3 pt 6 title "tree ATRBVH(".c.")", \
+       for [c in "9,2 16,3 32,6"] \
+         "< grep -E '^".s." ATRBVH\\(".c."\\) (none|sah)' split.dat" \
+         using 4:6 with linespoints lt (c eq "9,2" ? 1 : c eq "16,3" ? 2 : 3) \
+         lw 2 pt 7 title "sah ATRBVH(".c.")", \
        embree(s) with lines lt 0 dashtype 2 lw 2 title "Embree HIGH + splits"
 }
 unset multiplot
