@@ -268,7 +268,7 @@ void atrbvh_build_options_init(atrbvh_build_options *o)
     o->capture = NULL;
     o->capture_user = NULL;
     o->split_budget = 0.0;
-    o->split_rule = ATRBVH_SPLIT_TREE;
+    o->split_rule = ATRBVH_SPLIT_SAH;
 }
 
 atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,

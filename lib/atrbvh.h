@@ -276,9 +276,9 @@ typedef struct atrbvh_build_options {
                                     leaf may then share a primitive with
                                     another leaf (atrbvh(3))             */
     int split_rule;              /* which triangles split_budget splits:
-                                    ATRBVH_SPLIT_TREE (0, default),
-                                    ATRBVH_SPLIT_PRIORITY or
-                                    ATRBVH_SPLIT_SAH (atrbvh(3))          */
+                                    ATRBVH_SPLIT_SAH (default),
+                                    ATRBVH_SPLIT_TREE or
+                                    ATRBVH_SPLIT_PRIORITY (atrbvh(3))     */
 } atrbvh_build_options;
 
 /* atrbvh_build_options.split_rule: cut where a first LBVH of the unsplit

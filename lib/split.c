@@ -13,7 +13,7 @@
  *
  * Choosing what to split, under a budget of B = budget * n extra
  * references (docs/splitting.md):
- *  - ATRBVH_SPLIT_TREE (default): a first LBVH of the unsplit triangles
+ *  - ATRBVH_SPLIT_TREE: a first LBVH of the unsplit triangles
  *    (CPU, one primitive per leaf) is read per triangle: what taking it
  *    out saves (its leaf, its parent, the ancestors shrunk to the rest of
  *    their subtrees) less what its pieces cost where their Morton keys
@@ -27,7 +27,7 @@
  *    the largest D whose total is within B;
  *  - by those two the totals are integer sums found by bisection on a
  *    scale, so the result does not depend on the thread count;
- *  - ATRBVH_SPLIT_SAH: top down over the grid's cells, a cell's
+ *  - ATRBVH_SPLIT_SAH (default): top down over the grid's cells, a cell's
  *    triangles judged together, cut at the cell's midplane where that
  *    lowers the SAH of its halves (sah_refs, below); single-threaded;
  *  - each split (tree and priority rules) cuts the current piece at the most important grid plane

@@ -216,8 +216,8 @@ if run 0 build builtin:sphere:3000 --split 0.3 --json -o "$T/split.bvh"; then
     r=$(json_value references)
     p=$(json_value primitives)
     [ "$p" = "$t" ] || fail "--split: primitives '$p', triangles '$t'"
-    [ "$(json_value split_rule)" = '"tree"' ] ||
-        fail "--split: split_rule '$(json_value split_rule)', expected \"tree\""
+    [ "$(json_value split_rule)" = '"sah"' ] ||
+        fail "--split: split_rule '$(json_value split_rule)', expected \"sah\""
     [ -n "$r" ] && [ "$r" -gt "$t" ] && [ $((r * 10)) -le $((t * 13)) ] ||
         fail "--split 0.3: references '$r' for $t triangles"
     ver=$(od -An -tu4 -j8 -N4 "$T/split.bvh" | tr -d ' ')
@@ -226,6 +226,13 @@ if run 0 build builtin:sphere:3000 --split 0.3 --json -o "$T/split.bvh"; then
 fi
 run 2 build "$T/nothere.ply" --split 0.3 --split-rule bogus &&
     err_has '^atrbvh: build: --split-rule: '
+if run 0 build builtin:sphere:3000 --split 0.3 --split-rule tree --json; then
+    r=$(json_value references) t=$(json_value triangles)
+    [ "$r" -ge "$t" ] && [ $((r * 10)) -le $((t * 13)) ] ||
+        fail "--split-rule tree: references '$r' for $t triangles"
+    [ "$(json_value split_rule)" = '"tree"' ] ||
+        fail "--split-rule tree: split_rule '$(json_value split_rule)'"
+fi
 if run 0 build builtin:sphere:3000 --split 0.3 --split-rule priority --json; then
     [ "$(json_value references)" -gt "$(json_value triangles)" ] ||
         fail "--split-rule priority: nothing split"

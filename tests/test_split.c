@@ -13,10 +13,10 @@
  *    to the box is not empty), and every triangle's vertices and its
  *    points on the scene's mid planes lie in the box of a leaf that
  *    lists it; stats.primitives counts primitives, not references.
- *  - The three rules (ATRBVH_SPLIT_TREE, the default, _PRIORITY and
- *    _SAH) in the tests below; split_rule outside them (3, -1) is
+ *  - The three rules (ATRBVH_SPLIT_SAH, the default, _TREE and
+ *    _PRIORITY) in the tests below; split_rule outside them (3, -1) is
  *    ATRBVH_ERR_INVALID_ARGUMENT, and a caller compiled before the field
- *    gets the tree rule.
+ *    gets the default rule.
  *  - The same tree for 1, 2, 3 and 4 threads; the same on OpenCL
  *    (atrbvh_validate_backends; skipped, saying so, without a device).
  *  - Closest and any hit through split trees (LBVH and ATRBVH, collapsed
@@ -261,8 +261,9 @@ START_TEST(off_by_default)
     o.split_rule = -1;
     ck_assert_int_eq(atrbvh_build(&g, &o, &c, &e),
                      ATRBVH_ERR_INVALID_ARGUMENT);
-    /* a caller compiled before split_rule gets the tree rule */
+    /* a caller compiled before split_rule gets the default (sah) rule */
     o = split_options(0.3);
+    ck_assert_int_eq(o.split_rule, ATRBVH_SPLIT_SAH); /* the default */
     old = o;
     old.size = offsetof(atrbvh_build_options, split_budget) + sizeof(double);
     old.split_rule = 7; /* past the caller's size: never read */
@@ -667,10 +668,10 @@ static unsigned *ref_counts(const atrbvh_bvh *b, size_t nt)
     return seen;
 }
 
-/* The tree-guided rule splits where the first tree says it pays: over a
- * few slivers among small triangles, the LBVH's SAH (one primitive per
- * leaf: the first tree's own form, and collapsed) falls by a tenth, and
- * no triangle gets more than 7 splits (8 references). */
+/* The tree rule (ATRBVH_SPLIT_TREE) splits where the first tree says it
+ * pays: over a few slivers among small triangles, the LBVH's SAH (one
+ * primitive per leaf: the first tree's own form, and collapsed) falls by
+ * a tenth, and no triangle gets more than 7 splits (8 references). */
 START_TEST(splitting_pays)
 {
     const size_t n = 3000, s = 20, nt = n + s;
@@ -683,6 +684,7 @@ START_TEST(splitting_pays)
         atrbvh_stats sa, sb;
         unsigned *seen;
         size_t i;
+        o.split_rule = ATRBVH_SPLIT_TREE;
         o.method = ATRBVH_METHOD_LBVH;
         o.collapse = collapse;
         o.max_leaf_size = collapse ? 8 : 0;
@@ -706,10 +708,10 @@ START_TEST(splitting_pays)
 }
 END_TEST
 
-/* A triangle is split for what it alone adds to the nodes above it: each
- * of two identical slivers leaves the other to hold every box above it,
- * so no sliver of a pair is split, while in the same scene with one of
- * each, slivers are. */
+/* By the tree rule a triangle is split for what it alone adds to the
+ * nodes above it: each of two identical slivers leaves the other to hold
+ * every box above it, so no sliver of a pair is split, while in the same
+ * scene with one of each, slivers are. */
 START_TEST(twins_not_split)
 {
     const size_t n = 3000, s = 20, nt = n + 2 * s;
@@ -723,6 +725,7 @@ START_TEST(twins_not_split)
     ck_assert_ptr_nonnull(v);
     memcpy(v, one, (n + s) * 9 * sizeof *v);
     memcpy(v + 9 * (n + s), one + 9 * n, s * 9 * sizeof *v);
+    o.split_rule = ATRBVH_SPLIT_TREE;
     o.method = ATRBVH_METHOD_LBVH;
     g = atrbvh_geometry_triangles(one, 3 * (n + s), NULL, n + s);
     a = tu_build(&g, &o);

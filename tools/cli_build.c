@@ -151,10 +151,10 @@ void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table)
                      "off)"},
             {.name = "--split-rule", .kind = CLI_OPT_ENUM,
              .dest = &o->split_rule, .choices = split_rule_names,
-             .help = "which triangles --split cuts: tree (where a\n"
-                     "first LBVH says the cut pays; default),\n"
-                     "priority (Karras-Aila) or sah (top down per\n"
-                     "grid cell, a cell's triangles judged together)"},
+             .help = "which triangles --split cuts: sah (top down\n"
+                     "per grid cell, a cell's triangles judged\n"
+                     "together; default), tree (where a first LBVH\n"
+                     "says the cut pays) or priority (Karras-Aila)"},
             {.name = "--skip-invalid", .kind = CLI_OPT_FLAG,
              .dest = &o->skip_invalid, .flag_value = 1,
              .help = "leave out triangles with NaN or infinite\n"
