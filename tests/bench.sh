@@ -115,31 +115,40 @@ assert sorted((r["treelet_size"], r["rounds"]) for r in rows) == \
     [("48", "1"), ("auto", "2")], rows
 PY
 checks=$((checks + 1))
-# triangle splitting: +split=B builds what `build --split B` builds (same
-# SAH, same references, more than the triangles on this sphere); rows
-# without it list each triangle once; Embree's spatial splits stay within
-# their 20% room.
-run 0 bench "$SCENE" --repeat 1 --no-rays \
-    --configs atrbvh:9:2,atrbvh:9:2+split=0.5,embree_split --csv "$T/sp.csv" &&
+# triangle splitting: +split=B builds what `build --split B` builds and
+# +split=B/tree what `--split-rule tree` adds (same SAH, same references,
+# more than the triangles on this sphere, the rule named in the CSV);
+# rows without it list each triangle once; Embree's spatial splits stay
+# within their 20% room.
+run 0 build "$SCENE" --treelet 9 --rounds 2 --max-leaf 8 --split 0.5 \
+    --split-rule tree --json && cp "$T/out" "$T/tree.json" &&
+    run 0 bench "$SCENE" --repeat 1 --no-rays --csv "$T/sp.csv" \
+    --configs atrbvh:9:2,atrbvh:9:2+split=0.5,atrbvh:9:2+split=0.5/tree,embree_split &&
     run 0 build "$SCENE" --treelet 9 --rounds 2 --max-leaf 8 --split 0.5 \
-    --json && python3 - "$T/sp.csv" "$T/out" <<'PY' || fail "bench +split=0.5: $(cat "$T/sp.csv")"
+    --json && python3 - "$T/sp.csv" "$T/out" "$T/tree.json" <<'PY' || fail "bench +split=0.5: $(cat "$T/sp.csv")"
 import csv, json, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
-js = json.load(open(sys.argv[2]))
+js = {"sah": json.load(open(sys.argv[2])), "tree": json.load(open(sys.argv[3]))}
 sp = [r for r in rows if r["method"] == "atrbvh" and r["split_budget"] == "0.5"]
-assert len(sp) == 1, rows
+assert sorted(r["split_rule"] for r in sp) == ["sah", "tree"], rows
 n = int(sp[0]["triangles"])
-assert repr(float(sp[0]["sah"])) == repr(js["sah"]), (sp[0]["sah"], js["sah"])
-assert int(sp[0]["references"]) == js["references"], js["references"]
-assert n < int(sp[0]["references"]) <= n + n // 2, sp[0]["references"]
+for r in sp:
+    j = js[r["split_rule"]]
+    assert j["split_rule"] == r["split_rule"], j["split_rule"]
+    assert repr(float(r["sah"])) == repr(j["sah"]), (r["sah"], j["sah"])
+    assert int(r["references"]) == j["references"], j["references"]
+    assert n < int(r["references"]) <= n + n // 2, r["references"]
 for r in rows:
     if r["method"] == "embree_split":
-        assert float(r["split_budget"]) == 0.2
+        assert float(r["split_budget"]) == 0.2 and r["split_rule"] == "sbvh"
         assert n <= int(r["references"]) <= n + n // 5, r["references"]
-    elif r is not sp[0]:
+    elif r not in sp:
         assert float(r["split_budget"]) == 0 and int(r["references"]) == n, r
+        assert r["split_rule"] == "", r
 PY
 checks=$((checks + 1))
+run 2 bench "$SCENE" --repeat 1 --no-rays --configs atrbvh:9:2+split=0.1/bogus &&
+    { grep -q "split rule 'bogus'" "$T/err" || fail "+split=0.1/bogus: $(cat "$T/err")"; }
 run 2 bench "$SCENE" --repeat 1 --no-rays --configs atrbvh:9:2+split=0
 run 2 bench "$SCENE" --repeat 1 --no-rays --configs lbvh+split=4.5
 run 2 bench "$SCENE" --repeat 1 --no-rays --configs embree_high+split=0.2

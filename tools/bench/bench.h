@@ -33,7 +33,13 @@ typedef struct config {
     unsigned treelet, rounds; /* 0: the method's default */
     atrbvh_backend backend;
     double split; /* "+split=B": the library's split budget; 0 off */
+    int split_rule; /* with split: "+split=B/RULE" an ATRBVH_SPLIT_
+                       value, -1 (no "/RULE") the library's default */
 } config;
+
+/* The name of a split rule as build --split-rule takes it ("sah", "tree",
+ * "priority"), or "" for -1 (the default). */
+const char *split_rule_name(int rule);
 
 typedef struct row {
     config c;

@@ -35,12 +35,27 @@ const char *row_method(const row *r)
                        : cli_method_name(r->c.method);
 }
 
+const char *split_rule_name(int rule)
+{
+    switch (rule) {
+    case ATRBVH_SPLIT_SAH:
+        return "sah";
+    case ATRBVH_SPLIT_TREE:
+        return "tree";
+    case ATRBVH_SPLIT_PRIORITY:
+        return "priority";
+    default:
+        return "";
+    }
+}
+
 void config_label(const config *c, unsigned treelet, unsigned rounds,
                   char *buf, size_t n)
 {
-    char tb[16], sp[32] = "";
+    char tb[16], sp[48] = "";
     if (c->split > 0.0)
-        snprintf(sp, sizeof sp, "+split%g", c->split);
+        snprintf(sp, sizeof sp, "+split%g%s%s", c->split,
+                 c->split_rule >= 0 ? "/" : "", split_rule_name(c->split_rule));
     if (c->embree)
         snprintf(buf, n, "%s", embree_quality_name(c->eq));
     else if (c->method == ATRBVH_METHOD_LBVH)
@@ -92,7 +107,8 @@ static int parse_uint_list(const char *opt, const char *s, unsigned long max,
 /* "lbvh", "trbvh[:N[:R]]", "atrbvh[:N[:R]]", "fast|balanced|high",
  * "embree" (the first three), "embree_low|medium|high|split"; the
  * library's configurations with an optional "+split=B" (the split budget,
- * as build --split) and then "@opencl" or "@cpu". */
+ * as build --split) or "+split=B/RULE" (and --split-rule RULE), and then
+ * "@opencl" or "@cpu". */
 static int parse_configs(bench_args *a, const char *s, atrbvh_backend be)
 {
     char buf[1024], *tok, *save = NULL;
@@ -117,10 +133,23 @@ static int parse_configs(bench_args *a, const char *s, atrbvh_backend be)
                                  at), -1;
         }
         if ((p = strstr(tok, "+split=")) != NULL) {
-            char *end;
+            char *end, *rule;
             double b;
             *p = '\0';
             p += 7;
+            c.split_rule = -1;
+            if ((rule = strchr(p, '/')) != NULL) {
+                *rule++ = '\0';
+                for (c.split_rule = ATRBVH_SPLIT_TREE;
+                     c.split_rule <= ATRBVH_SPLIT_SAH &&
+                     strcmp(rule, split_rule_name(c.split_rule)) != 0;
+                     c.split_rule++)
+                    ;
+                if (c.split_rule > ATRBVH_SPLIT_SAH)
+                    return cli_usage("bench", "--configs: split rule '%s' "
+                                     "is not sah, tree or priority", rule),
+                           -1;
+            }
             b = strtod(p, &end);
             if (end == p || *end || !(b > 0.0 && b <= 4.0))
                 return cli_usage("bench", "--configs: split budget '%s' is "
@@ -244,7 +273,9 @@ static void bench_opts(bench_cl *b, cli_opt *table)
                  "high), embree_low, embree_medium,\n"
                  "embree_high, embree_split (high with\n"
                  "spatial splits, 20% more references);\n"
-                 "@cpu or\n"
+                 "+split=B[/RULE] after a library one splits\n"
+                 "triangles (as build --split B --split-rule\n"
+                 "RULE); @cpu or\n"
                  "@opencl after one picks its backend\n"
                  "(default " DEFAULT_CONFIGS ")"},
         {.name = "--methods", .kind = CLI_OPT_STRING, .arg = "LIST",

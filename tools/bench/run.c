@@ -200,6 +200,8 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
         o.rounds = c->rounds;
         o.backend = c->backend;
         o.split_budget = c->split;
+        if (c->split_rule >= 0)
+            o.split_rule = c->split_rule;
         {
             /* One device per configuration, opened before the timed builds
              * (as users open it once): its first build also makes the

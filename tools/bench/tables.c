@@ -19,8 +19,15 @@ static void text_num(FILE *f, const char *fmt, double v, int width)
 
 void table_sweep(FILE *f, const row *rows, int n, int have_rays)
 {
-    int i;
-    fprintf(f, "%-18s %9s %9s %9s %9s %9s %8s", "config", "build ms",
+    int i, w = 18; /* the config column: as wide as its longest label */
+    for (i = 0; i < n; i++) {
+        char label[64];
+        config_label(&rows[i].c, rows[i].treelet, rows[i].rounds, label,
+                     sizeof label);
+        if ((int)strlen(label) > w)
+            w = (int)strlen(label);
+    }
+    fprintf(f, "%-*s %9s %9s %9s %9s %9s %8s", w, "config", "build ms",
             "opt ms", "SAH", "SAH bin", "nodes", "peak MB");
     if (have_rays)
         fprintf(f, " %7s %7s %7s %7s %8s %7s %7s %7s", "prim", "ao", "diff",
@@ -30,7 +37,7 @@ void table_sweep(FILE *f, const row *rows, int n, int have_rays)
         const row *r = &rows[i];
         char label[64];
         config_label(&r->c, r->treelet, r->rounds, label, sizeof label);
-        fprintf(f, "%-18s", label);
+        fprintf(f, "%-*s", w, label);
         text_num(f, " %*.1f", r->build_ms, 9);
         text_num(f, " %*.1f", r->stage_ms[ATRBVH_STAGE_OPTIMISE], 9);
         text_num(f, " %*.3f", r->sah, 9);
