@@ -119,19 +119,31 @@ int tu_triangle_meets_box(const float *a, const float *b, const float *c,
                           const float lo[3], const float hi[3])
 {
     /* Sutherland-Hodgman in double: each of the six planes adds at most
-     * one vertex to the polygon, so 9 is the most it can have. */
-    double p[9][3], q[9][3];
+     * one vertex to the polygon, so 9 is the most it can have.  A
+     * triangle may touch the box only on its boundary (a split piece
+     * ending on a cell's face), where the clip's rounding would lose the
+     * contact: the planes move out by 2^-40 of the triangle's largest
+     * coordinate on that axis, far above the clip's rounding (a few
+     * 2^-53 of it) and far below a float's ulp (2^-24). */
+    double p[9][3], q[9][3], tol[3];
     const float *v[3];
     int np = 3, nq, i, j, k, side;
     v[0] = a;
     v[1] = b;
     v[2] = c;
+    for (k = 0; k < 3; k++)
+        tol[k] = 0.0;
     for (i = 0; i < 3; i++)
-        for (k = 0; k < 3; k++)
+        for (k = 0; k < 3; k++) {
             p[i][k] = v[i][k];
+            if (fabs(p[i][k]) > tol[k])
+                tol[k] = fabs(p[i][k]);
+        }
+    for (k = 0; k < 3; k++)
+        tol[k] = ldexp(tol[k], -40);
     for (k = 0; k < 3; k++)
         for (side = 0; side < 2; side++) {
-            double x = side ? hi[k] : lo[k];
+            double x = side ? hi[k] + tol[k] : lo[k] - tol[k];
             nq = 0;
             for (i = 0; i < np; i++) {
                 const double *s = p[i], *e = p[(i + 1) % np];

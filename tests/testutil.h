@@ -34,7 +34,9 @@ int tu_check_bvh_split(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
                        double budget, char *msg, size_t msg_len);
 
 /* Whether triangle (a, b, c) meets the box [lo, hi]: the triangle clipped
- * by the box's six planes (in double, boundaries included) is not empty. */
+ * by the box's six planes (in double, boundaries included, each plane
+ * moved out by 2^-40 of the triangle's largest coordinate on its axis for
+ * the clip's rounding) is not empty. */
 int tu_triangle_meets_box(const float *a, const float *b, const float *c,
                           const float lo[3], const float hi[3]);
 
