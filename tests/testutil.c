@@ -308,6 +308,19 @@ static int check_tree(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
                                        cur, p);
                             break;
                         }
+                        /* pieces are clamped to the triangle's box: a
+                         * leaf of one triangle lies inside it */
+                        prim_box(g, p, lo, hi);
+                        for (k = 0; k < 3 && n->count == 1; k++)
+                            if (n->min[k] < lo[k] || n->max[k] > hi[k]) {
+                                ok = failf(msg, len,
+                                           "leaf %zu of triangle %u outside "
+                                           "the triangle's box (axis %d)",
+                                           cur, p, k);
+                                break;
+                            }
+                        if (!ok)
+                            break;
                         for (c = 0; c < 3; c++) {
                             for (k = 0; k < 3; k++)
                                 pt[k] = v[c][k];

@@ -26,10 +26,11 @@ int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
  * in one leaf, at most budget * (valid primitives) extra references, and
  * boxes geometry never split (each box exactly once, its leaf box around
  * it).  Each triangle reference's leaf box meets the triangle (the
- * triangle clipped to the box is not empty), and each vertex and the
- * centroid of every triangle lie in the box of a leaf listing it.  Node
- * boxes nested, counts and SAH as tu_check_bvh; stats.primitives counts
- * the distinct (valid) primitives, not the references. */
+ * triangle clipped to the box is not empty), a leaf of one reference lies
+ * inside its triangle's box, and each vertex and the centroid of every
+ * triangle lie in the box of a leaf listing it.  Node boxes nested,
+ * counts and SAH as tu_check_bvh; stats.primitives counts the distinct
+ * (valid) primitives, not the references. */
 int tu_check_bvh_split(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
                        double budget, char *msg, size_t msg_len);
 
