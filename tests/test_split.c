@@ -105,40 +105,12 @@ static const float *tri(const float *v, uint32_t t, int c)
     return v + 9 * (size_t)t + 3 * c;
 }
 
-/* Whether triangle t meets box [lo, hi]: the triangle clipped by the six
- * planes (Sutherland-Hodgman, double) is not empty. */
+/* Whether triangle t meets box [lo, hi] (testutil's clipping test). */
 static int touches(const float *v, uint32_t t, const float *lo,
                    const float *hi)
 {
-    double a[12][3], b[12][3];
-    int na = 3, nb, i, k, side, j;
-    for (i = 0; i < 3; i++)
-        for (k = 0; k < 3; k++)
-            a[i][k] = tri(v, t, i)[k];
-    for (k = 0; k < 3; k++)
-        for (side = 0; side < 2; side++) {
-            double x = side ? hi[k] : lo[k];
-            nb = 0;
-            for (i = 0; i < na; i++) {
-                double *p = a[i], *q = a[(i + 1) % na];
-                int pin = side ? p[k] <= x : p[k] >= x;
-                int qin = side ? q[k] <= x : q[k] >= x;
-                if (pin)
-                    memcpy(b[nb++], p, sizeof b[0]);
-                if (pin != qin) {
-                    double s = (x - p[k]) / (q[k] - p[k]);
-                    for (j = 0; j < 3; j++)
-                        b[nb][j] = p[j] + s * (q[j] - p[j]);
-                    b[nb][k] = x;
-                    nb++;
-                }
-            }
-            na = nb;
-            if (!na)
-                return 0;
-            memcpy(a, b, (size_t)na * sizeof a[0]);
-        }
-    return 1;
+    return tu_triangle_meets_box(tri(v, t, 0), tri(v, t, 1), tri(v, t, 2), lo,
+                                 hi);
 }
 
 static int inside(const atrbvh_node *n, const double p[3])
@@ -159,6 +131,10 @@ static void check_split_tree(const atrbvh_bvh *b, const float *v, size_t nt,
     const uint32_t *idx = atrbvh_bvh_primitive_indices(b, &np);
     unsigned *seen = calloc(nt, sizeof *seen);
     atrbvh_stats st;
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
+    char msg[256];
+    ck_assert_msg(tu_check_bvh_split(b, &g, budget, msg, sizeof msg), "%s",
+                  msg);
     ck_assert_ptr_nonnull(seen);
     ck_assert_int_eq(atrbvh_bvh_stats(b, &st), ATRBVH_OK);
     ck_assert_uint_eq(st.primitives, nt);

@@ -115,35 +115,112 @@ static int prim_valid(const atrbvh_geometry *g, size_t i)
     return 1;
 }
 
-int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
-                 size_t len)
+int tu_triangle_meets_box(const float *a, const float *b, const float *c,
+                          const float lo[3], const float hi[3])
+{
+    /* Sutherland-Hodgman in double: each of the six planes adds at most
+     * one vertex to the polygon, so 9 is the most it can have.  A
+     * triangle may touch the box only on its boundary (a split piece
+     * ending on a cell's face), where the clip's rounding would lose the
+     * contact: the planes move out by 2^-40 of the triangle's largest
+     * coordinate on that axis, far above the clip's rounding (a few
+     * 2^-53 of it) and far below a float's ulp (2^-24). */
+    double p[9][3], q[9][3], tol[3];
+    const float *v[3];
+    int np = 3, nq, i, j, k, side;
+    v[0] = a;
+    v[1] = b;
+    v[2] = c;
+    for (k = 0; k < 3; k++)
+        tol[k] = 0.0;
+    for (i = 0; i < 3; i++)
+        for (k = 0; k < 3; k++) {
+            p[i][k] = v[i][k];
+            if (fabs(p[i][k]) > tol[k])
+                tol[k] = fabs(p[i][k]);
+        }
+    for (k = 0; k < 3; k++)
+        tol[k] = ldexp(tol[k], -40);
+    for (k = 0; k < 3; k++)
+        for (side = 0; side < 2; side++) {
+            double x = side ? hi[k] + tol[k] : lo[k] - tol[k];
+            nq = 0;
+            for (i = 0; i < np; i++) {
+                const double *s = p[i], *e = p[(i + 1) % np];
+                int s_in = side ? s[k] <= x : s[k] >= x;
+                int e_in = side ? e[k] <= x : e[k] >= x;
+                if (s_in)
+                    memcpy(q[nq++], s, sizeof q[0]);
+                if (s_in != e_in) {
+                    double t = (x - s[k]) / (e[k] - s[k]);
+                    for (j = 0; j < 3; j++)
+                        q[nq][j] = s[j] + t * (e[j] - s[j]);
+                    q[nq][k] = x;
+                    nq++;
+                }
+            }
+            if (nq == 0)
+                return 0;
+            np = nq;
+            memcpy(p, q, (size_t)np * sizeof p[0]);
+        }
+    return 1;
+}
+
+static int node_holds(const atrbvh_node *n, const double p[3])
+{
+    int k;
+    for (k = 0; k < 3; k++)
+        if (!(p[k] >= n->min[k] && p[k] <= n->max[k]))
+            return 0;
+    return 1;
+}
+
+/* seen[] bits: referenced, then (split triangles) vertex 0, 1, 2 and the
+ * centroid found in the box of a leaf listing the triangle. */
+#define SEEN_REF 1u
+#define SEEN_COVERED 30u
+
+/* The checker of tu_check_bvh (split 0) and tu_check_bvh_split (split 1,
+ * with the budget). */
+static int check_tree(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
+                      int split, double budget, char *msg, size_t len)
 {
     size_t nn, np, i, valid = 0, leaves = 0, sp = 0;
     const atrbvh_node *nodes = atrbvh_bvh_nodes(bvh, &nn);
     const uint32_t *idx = atrbvh_bvh_primitive_indices(bvh, &np);
     atrbvh_stats st;
     unsigned char *seen;
-    size_t *stack, *depth;
+    size_t *stack, *depth, *last;
     unsigned max_depth = 0, largest = 0;
     long double inner = 0, leafsum = 0, sah;
     int ok = 1;
+    int pieces = split && g->type == ATRBVH_GEOMETRY_TRIANGLES;
 
     atrbvh_bvh_stats(bvh, &st);
     if (!nodes || nn == 0 || !idx)
         return failf(msg, len, "empty BVH");
     for (i = 0; i < g->primitive_count; i++)
         valid += (size_t)prim_valid(g, i);
-    if (np != valid)
+    if (!split && np != valid)
         return failf(msg, len, "%zu primitive slots for %zu valid primitives",
                      np, valid);
+    /* boxes are never split; triangles get at most budget * valid more */
+    if (split && (np < valid || (!pieces && np != valid) ||
+                  !((double)(np - valid) <= budget * (double)valid)))
+        return failf(msg, len,
+                     "%zu references for %zu valid primitives (budget %g)",
+                     np, valid, budget);
     if (st.invalid_skipped != g->primitive_count - valid)
         return failf(msg, len, "stats say %zu skipped, %zu are invalid",
                      st.invalid_skipped, g->primitive_count - valid);
     seen = calloc(g->primitive_count, 1);
+    last = calloc(g->primitive_count, sizeof *last);
     stack = malloc(sizeof *stack * (nn + 1));
     depth = malloc(sizeof *depth * (nn + 1));
-    if (!seen || !stack || !depth) {
+    if (!seen || !last || !stack || !depth) {
         free(seen);
+        free(last);
         free(stack);
         free(depth);
         return failf(msg, len, "test out of memory");
@@ -204,9 +281,57 @@ int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
                                    cur, p);
                         break;
                     }
-                    if (seen[p]++) {
+                    if (split && last[p] == cur + 1) {
+                        ok = failf(msg, len, "leaf %zu lists primitive %u twice",
+                                   cur, p);
+                        break;
+                    }
+                    if (!split && (seen[p] & SEEN_REF)) {
                         ok = failf(msg, len, "primitive %u referenced twice", p);
                         break;
+                    }
+                    last[p] = cur + 1;
+                    seen[p] |= SEEN_REF;
+                    if (pieces) {
+                        /* the leaf box holds a part of the triangle; which
+                         * of the vertices and the centroid it holds */
+                        const float *v[3];
+                        double pt[3];
+                        int c;
+                        for (c = 0; c < 3; c++)
+                            v[c] = tu_vertex(g, p, c);
+                        if (!tu_triangle_meets_box(v[0], v[1], v[2], n->min,
+                                                   n->max)) {
+                            ok = failf(msg, len,
+                                       "leaf %zu lists triangle %u, which "
+                                       "does not meet its box",
+                                       cur, p);
+                            break;
+                        }
+                        /* pieces are clamped to the triangle's box: a
+                         * leaf of one triangle lies inside it */
+                        prim_box(g, p, lo, hi);
+                        for (k = 0; k < 3 && n->count == 1; k++)
+                            if (n->min[k] < lo[k] || n->max[k] > hi[k]) {
+                                ok = failf(msg, len,
+                                           "leaf %zu of triangle %u outside "
+                                           "the triangle's box (axis %d)",
+                                           cur, p, k);
+                                break;
+                            }
+                        if (!ok)
+                            break;
+                        for (c = 0; c < 3; c++) {
+                            for (k = 0; k < 3; k++)
+                                pt[k] = v[c][k];
+                            if (node_holds(n, pt))
+                                seen[p] |= (unsigned char)(2u << c);
+                        }
+                        for (k = 0; k < 3; k++)
+                            pt[k] = ((double)v[0][k] + v[1][k] + v[2][k]) / 3;
+                        if (node_holds(n, pt))
+                            seen[p] |= 16u;
+                        continue;
                     }
                     prim_box(g, p, lo, hi);
                     for (k = 0; k < 3; k++)
@@ -224,10 +349,21 @@ int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
                 ok = failf(msg, len, "node %zu unreachable", i);
         free(reached);
     }
-    for (i = 0; ok && i < g->primitive_count; i++)
-        if (prim_valid(g, i) && !seen[i])
+    for (i = 0; ok && i < g->primitive_count; i++) {
+        if (!prim_valid(g, i))
+            continue;
+        if (!(seen[i] & SEEN_REF))
             ok = failf(msg, len, "primitive %zu missing", i);
+        else if (pieces && (seen[i] & SEEN_COVERED) != SEEN_COVERED)
+            ok = failf(msg, len,
+                       "triangle %zu: its %s is in no leaf box listing it", i,
+                       !(seen[i] & 2u)   ? "vertex 0"
+                       : !(seen[i] & 4u) ? "vertex 1"
+                       : !(seen[i] & 8u) ? "vertex 2"
+                                         : "centroid");
+    }
     free(seen);
+    free(last);
     free(stack);
     free(depth);
     if (!ok)
@@ -235,12 +371,12 @@ int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
     if (nn != 2 * leaves - 1)
         return failf(msg, len, "%zu nodes for %zu leaves", nn, leaves);
     if (st.nodes != nn || st.leaves != leaves || st.max_depth != max_depth ||
-        st.max_leaf_primitives != largest || st.primitives != np)
+        st.max_leaf_primitives != largest || st.primitives != valid)
         return failf(msg, len,
-                     "stats (nodes %zu leaves %zu depth %u largest %u) vs "
-                     "measured (%zu %zu %u %u)",
+                     "stats (nodes %zu leaves %zu depth %u largest %u "
+                     "primitives %zu) vs measured (%zu %zu %u %u %zu)",
                      st.nodes, st.leaves, st.max_depth, st.max_leaf_primitives,
-                     nn, leaves, max_depth, largest);
+                     st.primitives, nn, leaves, max_depth, largest, valid);
     {
         long double root = area_ld(nodes[0].min, nodes[0].max);
         sah = root > 0 ? (st.ci * inner + st.ct * leafsum) / root : 0;
@@ -250,6 +386,18 @@ int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
                          st.sah, sah);
     }
     return 1;
+}
+
+int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
+                 size_t len)
+{
+    return check_tree(bvh, g, 0, 0.0, msg, len);
+}
+
+int tu_check_bvh_split(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
+                       double budget, char *msg, size_t len)
+{
+    return check_tree(bvh, g, 1, budget, msg, len);
 }
 
 int tu_same_bvh(const atrbvh_bvh *a, const atrbvh_bvh *b, char *msg,

@@ -21,6 +21,26 @@
 int tu_check_bvh(const atrbvh_bvh *bvh, const atrbvh_geometry *g, char *msg,
                  size_t msg_len);
 
+/* The same for a tree built with split_budget `budget` (triangle
+ * splitting): every valid primitive referenced at least once, none twice
+ * in one leaf, at most budget * (valid primitives) extra references, and
+ * boxes geometry never split (each box exactly once, its leaf box around
+ * it).  Each triangle reference's leaf box meets the triangle (the
+ * triangle clipped to the box is not empty), a leaf of one reference lies
+ * inside its triangle's box, and each vertex and the centroid of every
+ * triangle lie in the box of a leaf listing it.  Node boxes nested,
+ * counts and SAH as tu_check_bvh; stats.primitives counts the distinct
+ * (valid) primitives, not the references. */
+int tu_check_bvh_split(const atrbvh_bvh *bvh, const atrbvh_geometry *g,
+                       double budget, char *msg, size_t msg_len);
+
+/* Whether triangle (a, b, c) meets the box [lo, hi]: the triangle clipped
+ * by the box's six planes (in double, boundaries included, each plane
+ * moved out by 2^-40 of the triangle's largest coordinate on its axis for
+ * the clip's rounding) is not empty. */
+int tu_triangle_meets_box(const float *a, const float *b, const float *c,
+                          const float lo[3], const float hi[3]);
+
 /* Primitive i of g as the library reads it (strides, indices): vertex c
  * (0..2) of a triangle, or the box's 6 floats (min x, y, z, max x, y, z). */
 const float *tu_vertex(const atrbvh_geometry *g, size_t i, int c);

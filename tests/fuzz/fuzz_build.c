@@ -3,17 +3,84 @@
  *
  * The first 8 bytes choose the geometry kind (unindexed triangles, indexed
  * triangles, boxes), the method, collapse, the largest leaf, skip_invalid,
- * treelet size and rounds; the rest are raw floats (any bit pattern: NaN,
- * Inf, subnormals) and, for indexed triangles, indices taken modulo a
- * little more than the vertex count (so some are out of range).  A build
- * must either succeed with a tree that passes tu_check_bvh (the tests'
- * independent checker) and answers rays exactly like a brute-force scan
- * over one-primitive BVHs, or fail with a clean status and message.
+ * treelet size and rounds, and triangle splitting (split_budget and
+ * split_rule, set only when bit 6 of byte 6 is: see split_options); the
+ * rest are raw floats (any bit pattern: NaN, Inf, subnormals) and, for
+ * indexed triangles, indices taken modulo a little more than the vertex
+ * count (so some are out of range).  A build must either succeed with a
+ * tree that passes tu_check_bvh, or tu_check_bvh_split with splitting on
+ * (the tests' independent checkers), saves and loads back equal, and
+ * answers rays exactly like a brute-force scan over one-primitive BVHs
+ * (over split triangles, a ray with a roundoff hit outside the pieces'
+ * boxes only one-sidedly: unseen_hit), or fail with a clean status and
+ * message: an invalid split_budget or split_rule is
+ * ATRBVH_ERR_INVALID_ARGUMENT whatever the geometry.
  */
 #include "fuzz_common.h"
 #include "testutil.h"
 
+#include <float.h>
+#include <limits.h>
+
 #define MAX_PRIMS 64
+
+/* Byte 6: bit 6 turns the splitting options on (the seeds from before
+ * them have it clear); its low 6 bits pick the budget: below 16 from the
+ * table (the edges, and invalid values: negative, NaN, infinite, above 4,
+ * the double just above 4), else 0 to 4 in 47 steps.  Byte 7: the rule,
+ * valid (0, 1) half the time, else out of range. */
+static void split_options(const uint8_t *head, atrbvh_build_options *o)
+{
+    static const double budgets[16] = {0.0,  0.05,      0.1,  0.25,
+                                       0.5,  1.0,       2.0,  4.0,
+                                       -0.1, NAN,       4.5,  -0.0,
+                                       3.0,  -INFINITY, INFINITY,
+                                       4.0 + 4.0 * DBL_EPSILON};
+    static const int rules[8] = {ATRBVH_SPLIT_TREE, ATRBVH_SPLIT_PRIORITY,
+                                 ATRBVH_SPLIT_TREE, ATRBVH_SPLIT_PRIORITY,
+                                 2, -1, INT_MAX, INT_MIN};
+    unsigned s = head[6] & 0x3Fu;
+    if (!(head[6] & 0x40u))
+        return;
+    o->split_budget = s < 16 ? budgets[s] : (double)(s - 16) * 4.0 / 47.0;
+    o->split_rule = rules[head[7] % 8];
+}
+
+/* Saved to memory and loaded back: the same tree, which passes the same
+ * checker; a tree with repeated references is format version 2 (version 1
+ * rejects them).  Returns the version written (0: out of memory). */
+static unsigned round_trip(const atrbvh_bvh *b, const atrbvh_geometry *g,
+                           int split, double budget)
+{
+    void *mem = NULL;
+    size_t size, np;
+    atrbvh_bvh *l = NULL;
+    atrbvh_stats st;
+    atrbvh_error e;
+    char msg[256];
+    unsigned version;
+    atrbvh_status s = atrbvh_save_memory(b, &mem, &size, &e);
+    if (s == ATRBVH_ERR_NOMEM)
+        return 0; /* -malloc_limit_mb: allocator_may_return_null */
+    FUZZ_CHECK(s == ATRBVH_OK && size >= 12, "save_memory: %s", e.text);
+    atrbvh_bvh_stats(b, &st);
+    (void)atrbvh_bvh_primitive_indices(b, &np);
+    version = tu_rd32((const unsigned char *)mem + 8);
+    FUZZ_CHECK(version == 2 || (version == 1 && np == st.primitives),
+               "format version %u for %lu references of %lu primitives",
+               version, (unsigned long)np, (unsigned long)st.primitives);
+    s = atrbvh_load_memory(mem, size, &l, &e);
+    atrbvh_free(mem);
+    if (s == ATRBVH_ERR_NOMEM)
+        return 0;
+    FUZZ_CHECK(s == ATRBVH_OK, "load_memory: %s", e.text);
+    FUZZ_CHECK(tu_same_bvh(b, l, msg, sizeof msg), "loaded: %s", msg);
+    FUZZ_CHECK(split ? tu_check_bvh_split(l, g, budget, msg, sizeof msg)
+                     : tu_check_bvh(l, g, msg, sizeof msg),
+               "loaded: %s", msg);
+    atrbvh_bvh_free(l);
+    return version;
+}
 
 static void brute(atrbvh_bvh *const *singles, const atrbvh_geometry *sg,
                   size_t n, const atrbvh_ray *r, atrbvh_hit *best, int *occ)
@@ -34,6 +101,43 @@ static void brute(atrbvh_bvh *const *singles, const atrbvh_geometry *sg,
             best->primitive = (uint32_t)i;
         }
     }
+}
+
+/* Whether some ray's hit of a primitive (by its one-primitive BVH) lies
+ * in no leaf box of b listing that primitive.  A split tree only tests a
+ * triangle where the ray meets one of its pieces' boxes, which cover the
+ * triangle but not all of its box: over extreme coordinates (subnormal
+ * and 1e37 in one triangle) the triangle test can report a hit off the
+ * triangle (roundoff, e.g. t = -0 at the ray's origin) inside the
+ * triangle's box, which a one-primitive BVH accepts and the pieces never
+ * see.  Only such a ray may differ from the brute force, and only so far
+ * (a real hit is inside a piece box). */
+static int unseen_hit(const atrbvh_bvh *b, atrbvh_bvh *const *singles,
+                      const atrbvh_geometry *sg, size_t n,
+                      const atrbvh_ray *r)
+{
+    size_t nn, np, i, j, q;
+    const atrbvh_node *nd = atrbvh_bvh_nodes(b, &nn);
+    const uint32_t *idx = atrbvh_bvh_primitive_indices(b, &np);
+    for (i = 0; i < n; i++) {
+        atrbvh_hit h;
+        double pt[3];
+        int k, seen = 0;
+        if (!singles[i] || !atrbvh_intersect(singles[i], &sg[i], r, &h))
+            continue;
+        for (k = 0; k < 3; k++)
+            pt[k] = (double)r->origin[k] + (double)h.t * r->dir[k];
+        for (j = 0; j < nn && !seen; j++) {
+            int in = nd[j].count > 0;
+            for (k = 0; k < 3 && in; k++)
+                in = pt[k] >= nd[j].min[k] && pt[k] <= nd[j].max[k];
+            for (q = 0; in && q < nd[j].count && !seen; q++)
+                seen = idx[nd[j].index + q] == i;
+        }
+        if (!seen)
+            return 1;
+    }
+    return 0;
 }
 
 /* The uncounted batch calls trace an 8-wide copy of the tree, and over
@@ -97,7 +201,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     atrbvh_error e;
     atrbvh_status st;
     char msg[256];
-    int kind;
+    int kind, split, split_ok;
     if (size < 8)
         return 0;
     kind = data[0] % 3;
@@ -112,6 +216,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     else if (o.method == ATRBVH_METHOD_ATRBVH)
         o.treelet_size = data[4] % 31 ? 3 + (unsigned)data[4] % 30 : 0;
     o.rounds = (unsigned)data[5] % 5;
+    split_options(data, &o);
+    split_ok = o.split_budget >= 0.0 && o.split_budget <= 4.0 &&
+               (o.split_rule == ATRBVH_SPLIT_TREE ||
+                o.split_rule == ATRBVH_SPLIT_PRIORITY);
+    split = o.split_budget > 0.0;
     data += 8;
     size -= 8;
     nf = size / 4 < sizeof f / sizeof *f ? size / 4 : sizeof f / sizeof *f;
@@ -144,7 +253,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                        st == ATRBVH_ERR_INVALID_ARGUMENT,
                    "status %d: %s", (int)st, e.text);
         FUZZ_CHECK(e.text[0] != '\0', "no message");
-        if (st == ATRBVH_ERR_INVALID_ARGUMENT && n > 0)
+        if (!split_ok)
+            FUZZ_CHECK(st == ATRBVH_ERR_INVALID_ARGUMENT &&
+                           (strstr(e.text, "split_budget") ||
+                            strstr(e.text, "split_rule") ||
+                            strstr(e.text, "treelet") ||
+                            strstr(e.text, "gamma")),
+                       "split_budget %g split_rule %d: status %d: %s",
+                       o.split_budget, o.split_rule, (int)st, e.text);
+        else if (st == ATRBVH_ERR_INVALID_ARGUMENT && n > 0)
             FUZZ_CHECK(strstr(e.text, "min greater than max") ||
                            strstr(e.text, "vertices") ||
                            strstr(e.text, "treelet") ||
@@ -152,7 +269,26 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                        "unexpected: %s", e.text);
         return 0;
     }
-    FUZZ_CHECK(tu_check_bvh(b, &g, msg, sizeof msg), "%s", msg);
+    FUZZ_CHECK(split_ok, "split_budget %g split_rule %d accepted",
+               o.split_budget, o.split_rule);
+    if (!split)
+        FUZZ_CHECK(tu_check_bvh(b, &g, msg, sizeof msg), "%s", msg);
+    else
+        FUZZ_CHECK(tu_check_bvh_split(b, &g, o.split_budget, msg, sizeof msg),
+                   "split_budget %g split_rule %d: %s", o.split_budget,
+                   o.split_rule, msg);
+    if (round_trip(b, &g, split, o.split_budget) == 1 && split) {
+        /* nothing split (boxes never are: version 1): the tree built
+         * without splitting, bit for bit */
+        atrbvh_build_options plain = o;
+        atrbvh_bvh *pb = NULL;
+        plain.split_budget = 0.0;
+        if (atrbvh_build(&g, &plain, &pb, &e) == ATRBVH_OK) {
+            FUZZ_CHECK(tu_same_bvh(b, pb, msg, sizeof msg),
+                       "nothing split, yet not the unsplit tree: %s", msg);
+            atrbvh_bvh_free(pb);
+        }
+    }
     {
         /* every primitive alone, then rays between random points of the
          * input (finite ones) compared with the brute force */
@@ -197,6 +333,33 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             hit = atrbvh_intersect(b, &g, &ray, &h);
             occ = atrbvh_occluded(b, &g, &ray);
             brute(singles, sg, n, &ray, &bh, &bocc);
+            if (split && kind != 2 &&
+                (hit != (bh.primitive != ATRBVH_NO_HIT) || occ != bocc ||
+                 (hit && (h.primitive != bh.primitive ||
+                          memcmp(&h.t, &bh.t, sizeof h.t) != 0))) &&
+                unseen_hit(b, singles, sg, n, &ray)) {
+                /* the brute force saw a roundoff hit the pieces cannot:
+                 * what the tree found is still a hit of that primitive
+                 * alone, and none closer than the brute force's */
+                atrbvh_hit sh;
+                if (hit) {
+                    FUZZ_CHECK(h.primitive < n && singles[h.primitive] &&
+                                   atrbvh_intersect(singles[h.primitive],
+                                                    &sg[h.primitive], &ray,
+                                                    &sh) &&
+                                   memcmp(&sh.t, &h.t, sizeof h.t) == 0,
+                               "hit %u at %g is not its own", h.primitive,
+                               (double)h.t);
+                    FUZZ_CHECK(bh.primitive != ATRBVH_NO_HIT &&
+                                   (bh.t < h.t || (bh.t == h.t &&
+                                                   bh.primitive < h.primitive)),
+                               "hit %u at %g before brute force %u at %g",
+                               h.primitive, (double)h.t, bh.primitive,
+                               (double)bh.t);
+                }
+                FUZZ_CHECK(!occ || bocc, "occluded, brute force not");
+                continue;
+            }
             FUZZ_CHECK(hit == (bh.primitive != ATRBVH_NO_HIT),
                        "hit %d vs brute force %u", hit, bh.primitive);
             FUZZ_CHECK(occ == bocc, "occluded %d vs brute force %d", occ,
