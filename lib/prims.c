@@ -152,6 +152,7 @@ void atrbvh_i_prims_sweep(const atrbvh_i_input *in, int threads,
     out->first_bad = -1;
     out->bad_kind = PRIM_OK;
     out->bad_value = 0;
+    (void)threads; /* unused without OpenMP */
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads)
 #endif

@@ -571,6 +571,9 @@ static uint32_t splits_of(double d, double p, const uint32_t *chosen,
     if (chosen)
         return d * p >= 1.0 ? chosen[i] : 0u;
     s = floor(d * p);
+    if (!(s >= 1.0))
+        return 0u; /* also NaN: d 0 against an infinite priority (a box
+                      whose area overflows float) */
     return s >= (double)MAX_SPLITS ? MAX_SPLITS : (uint32_t)s;
 }
 
@@ -949,6 +952,14 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
                       ref_ids, &total, error);
         if (st != ATRBVH_OK)
             goto done;
+        if (total == kept) {
+            /* nothing cut: the triangles in index order, as without
+             * splitting (the recursion's order would change how the
+             * Morton sort breaks ties, so not the ordinary tree) */
+            memcpy(refs, boxes, (size_t)kept * sizeof *refs);
+            for (i = 0; i < kept; i++)
+                ref_ids[i] = ids ? ids[i] : (uint32_t)i;
+        }
         centroids = atrbvh_box_empty();
         for (i = 0; i < total; i++)
             for (k = 0; k < 3; k++) {
