@@ -28,7 +28,7 @@
  * them have it clear); its low 6 bits pick the budget: below 16 from the
  * table (the edges, and invalid values: negative, NaN, infinite, above 4,
  * the double just above 4), else 0 to 4 in 47 steps.  Byte 7: the rule,
- * valid (0, 1) half the time, else out of range. */
+ * valid (0, 1, 2) half the time, else out of range. */
 static void split_options(const uint8_t *head, atrbvh_build_options *o)
 {
     static const double budgets[16] = {0.0,  0.05,      0.1,  0.25,
@@ -37,8 +37,9 @@ static void split_options(const uint8_t *head, atrbvh_build_options *o)
                                        3.0,  -INFINITY, INFINITY,
                                        4.0 + 4.0 * DBL_EPSILON};
     static const int rules[8] = {ATRBVH_SPLIT_TREE, ATRBVH_SPLIT_PRIORITY,
-                                 ATRBVH_SPLIT_TREE, ATRBVH_SPLIT_PRIORITY,
-                                 2, -1, INT_MAX, INT_MIN};
+                                 ATRBVH_SPLIT_SAH,  ATRBVH_SPLIT_SAH,
+                                 3,                 -1,
+                                 INT_MAX,           INT_MIN};
     unsigned s = head[6] & 0x3Fu;
     if (!(head[6] & 0x40u))
         return;
@@ -219,7 +220,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     split_options(data, &o);
     split_ok = o.split_budget >= 0.0 && o.split_budget <= 4.0 &&
                (o.split_rule == ATRBVH_SPLIT_TREE ||
-                o.split_rule == ATRBVH_SPLIT_PRIORITY);
+                o.split_rule == ATRBVH_SPLIT_PRIORITY ||
+                o.split_rule == ATRBVH_SPLIT_SAH);
     split = o.split_budget > 0.0;
     data += 8;
     size -= 8;
