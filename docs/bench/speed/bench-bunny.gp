@@ -11,20 +11,20 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.50854329:57.1142352]
-set xtics (5, 10, 20, 50)
+set xrange [2.55014901:43.2381933]
+set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 4.59055458,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 15.7421929,38.740404 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 22.5057805,38.4434634 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 32.7428843,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 14.783664,38.2564636 left font ',8' noenhanced front
-set label 'embree_low' at 4.89884539,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 23.9925753,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 16.4777019,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 7.63395378,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 7.95480403,38.740404 left font ',8' noenhanced front
+set label 'LBVH' at 3.34971421,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 12.9653441,39.0521322 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 12.935235,38.1317351 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 24.5874435,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.0510173,38.5681918 left font ',8' noenhanced front
+set label 'embree_low' at 4.28147926,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 22.4017009,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 15.6671772,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 5.48614118,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 8.43266487,38.740404 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

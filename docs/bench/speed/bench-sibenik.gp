@@ -11,20 +11,20 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.34459968:49.8301772]
+set xrange [3.90409248:40.8580753]
 set xtics (5, 10, 20)
 set yrange [48.0282379:83.2612389]
 unset label
-set label 'LBVH' at 5.63266768,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 15.5869714,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 20.175246,51.6548364 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 29.0761397,52.3325777 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 16.6334582,50.456031 left font ',8' noenhanced front
-set label 'embree_low' at 5.60881267,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 14.4331387,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 21.2530077,54.6804169 left font ',8' noenhanced front
-set label 'LBVH/cl' at 4.33886344,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 9.57413231,52.9793966 left font ',8' noenhanced front
+set label 'LBVH' at 4.83429677,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 9.93126078,52.9793966 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 19.608917,50.753527 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 25.5806864,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7475119,51.3573403 left font ',8' noenhanced front
+set label 'embree_low' at 4.89522764,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 21.1369717,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 15.9169268,54.6804169 left font ',8' noenhanced front
+set label 'LBVH/cl' at 5.63476716,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 13.6225936,52.9793966 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
