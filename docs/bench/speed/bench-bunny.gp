@@ -11,20 +11,20 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.55014901:43.2381933]
+set xrange [2.46558697:42.7934627]
 set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 3.34971421,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 12.9653441,39.0521322 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 12.935235,38.1317351 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 24.5874435,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.0510173,38.5681918 left font ',8' noenhanced front
-set label 'embree_low' at 4.28147926,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 22.4017009,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 15.6671772,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.48614118,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 8.43266487,38.740404 left font ',8' noenhanced front
+set label 'LBVH' at 3.24594354,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 13.0045227,39.0521322 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 12.8083917,38.1317351 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 24.221335,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.0850821,38.5681918 left font ',8' noenhanced front
+set label 'embree_low' at 4.24062801,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 13.8894189,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 21.2568706,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 5.39814679,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 7.86299498,38.740404 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
