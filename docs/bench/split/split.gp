@@ -26,3 +26,20 @@ do for [s in "conference dabrovic_sponza sibenik"] {
        embree(s) with lines lt 0 dashtype 2 lw 2 title "Embree HIGH + splits"
 }
 unset multiplot
+
+# Build time against the split budget, the SAH rule (the default): the
+# whole build's median ms at 2 threads, split pre-process included, from
+# one quiet `atrbvh bench` run (split-time.dat, 1 December 07:33 UTC, load
+# 0.1-0.6; raw bench-budget-2026-12-01.*); budget 0 the unsplit build.
+set output 'split-time.png'
+set multiplot layout 1,3
+do for [s in "conference dabrovic_sponza sibenik"] {
+  set title s." (sah rule; unsplit at 0)"
+  set xlabel "split budget (extra references / triangles)"
+  set ylabel "build ms (2 threads)"
+  set key top left font ",8"
+  plot for [c in "LBVH ATRBVH(9,2) ATRBVH(16,3) ATRBVH(32,6)"] \
+         "< awk '$1==\"".s."\" && $2==\"".c."\"' split-time.dat" \
+         using 3:6 with linespoints lw 2 pt 7 title c
+}
+unset multiplot
