@@ -68,24 +68,15 @@ typedef struct grid {
 static void grid_over(const atrbvh_box *fr, grid *g)
 {
     int k;
-    for (k = 0; k < 3; k++) {
-        double extent = (double)fr->max[k] - (double)fr->min[k];
-        g->lo[k] = (double)fr->min[k];
-        g->scale[k] = extent > 0.0
-                          ? (double)(1u << ATRBVH_MORTON_BITS) / extent
-                          : 0.0;
-        g->step[k] = extent / (double)(1u << ATRBVH_MORTON_BITS);
-    }
+    atrbvh_morton_frame(*fr, g->lo, g->scale); /* the Morton stage's */
+    for (k = 0; k < 3; k++)
+        g->step[k] = ((double)fr->max[k] - (double)fr->min[k]) /
+                     (double)(1u << ATRBVH_MORTON_BITS);
 }
 
 static uint32_t quant(const grid *g, int k, float x)
 {
-    double t = ((double)x - g->lo[k]) * g->scale[k];
-    if (!(t > 0.0))
-        return 0u;
-    if (t >= (double)ATRBVH_MORTON_MAX)
-        return ATRBVH_MORTON_MAX;
-    return (uint32_t)t;
+    return atrbvh_morton_quantise(x, g->lo[k], g->scale[k]);
 }
 
 /* The most important grid plane strictly inside box b on axis k: its
