@@ -131,6 +131,9 @@ const char *cli_treelet_text(unsigned size, char *buf);
 int cli_parse_treelet(const char *s, unsigned *out);
 int cli_quality_preset(const char *name, atrbvh_method *m, unsigned *treelet,
                        unsigned *rounds);
+/* A split rule's name as --split-rule takes it ("tree", "priority",
+ * "sah"), or "" for a value outside the ATRBVH_SPLIT_ ones. */
+const char *cli_split_rule_name(int rule);
 
 /* An 8-bit RGB PNG (libpng; without HAVE_PNG always fails).  0, or -1
  * after an error line. */

@@ -56,6 +56,13 @@ int cli_quality_preset(const char *name, atrbvh_method *m, unsigned *treelet,
     return 1;
 }
 
+const char *cli_split_rule_name(int rule)
+{
+    return rule >= ATRBVH_SPLIT_TREE && rule <= ATRBVH_SPLIT_SAH
+               ? split_rule_names[rule]
+               : "";
+}
+
 const char *cli_treelet_text(unsigned size, char *buf)
 {
     if (size == ATRBVH_TREELET_AUTO)
@@ -569,7 +576,7 @@ void cli_build_json(json_writer *w, const cli_build_args *a,
         (void)atrbvh_bvh_primitive_indices(b->bvh, &refs);
         json_kv_double(w, "split_budget", a->options.split_budget);
         json_kv_string(w, "split_rule",
-                       split_rule_names[a->options.split_rule]);
+                       cli_split_rule_name(a->options.split_rule));
         json_kv_uint(w, "references", refs);
     }
     json_kv_string(w, "method", cli_method_name(s->method));

@@ -37,10 +37,6 @@ typedef struct config {
                        value, -1 (no "/RULE") the library's default */
 } config;
 
-/* The name of a split rule as build --split-rule takes it ("sah", "tree",
- * "priority"), or "" for -1 (the default). */
-const char *split_rule_name(int rule);
-
 typedef struct row {
     config c;
     const char *scene;

@@ -66,6 +66,19 @@ void csv_header(FILE *f)
           f);
 }
 
+/* The split_rule column: the rule a split configuration ran with (its
+ * "/RULE", else the library's default), "sbvh" for embree_split, else
+ * empty. */
+static const char *row_split_rule(const bench_args *a, const row *r)
+{
+    if (r->c.embree)
+        return r->c.eq == EMBREE_SPLIT ? "sbvh" : "";
+    if (!(r->c.split > 0.0))
+        return "";
+    return cli_split_rule_name(r->c.split_rule >= 0 ? r->c.split_rule
+                                                    : a->base.split_rule);
+}
+
 void csv_row(FILE *f, const bench_args *a, const row *r)
 {
     int s;
@@ -122,12 +135,7 @@ void csv_row(FILE *f, const bench_args *a, const row *r)
     put_double(f, r->c.embree ? (r->c.eq == EMBREE_SPLIT ? EMBREE_SPLIT_BUDGET
                                                          : 0.0)
                               : r->c.split);
-    fprintf(f, ",%zu,%s\n", r->references,
-            r->c.embree ? (r->c.eq == EMBREE_SPLIT ? "sbvh" : "")
-            : r->c.split > 0.0 ? split_rule_name(r->c.split_rule >= 0
-                                                      ? r->c.split_rule
-                                                      : a->base.split_rule)
-                               : "");
+    fprintf(f, ",%zu,%s\n", r->references, row_split_rule(a, r));
 }
 
 void csv_scaling_header(FILE *f)

@@ -35,27 +35,14 @@ const char *row_method(const row *r)
                        : cli_method_name(r->c.method);
 }
 
-const char *split_rule_name(int rule)
-{
-    switch (rule) {
-    case ATRBVH_SPLIT_SAH:
-        return "sah";
-    case ATRBVH_SPLIT_TREE:
-        return "tree";
-    case ATRBVH_SPLIT_PRIORITY:
-        return "priority";
-    default:
-        return "";
-    }
-}
-
 void config_label(const config *c, unsigned treelet, unsigned rounds,
                   char *buf, size_t n)
 {
     char tb[16], sp[48] = "";
     if (c->split > 0.0)
         snprintf(sp, sizeof sp, "+split%g%s%s", c->split,
-                 c->split_rule >= 0 ? "/" : "", split_rule_name(c->split_rule));
+                 c->split_rule >= 0 ? "/" : "",
+                 cli_split_rule_name(c->split_rule));
     if (c->embree)
         snprintf(buf, n, "%s", embree_quality_name(c->eq));
     else if (c->method == ATRBVH_METHOD_LBVH)
@@ -142,7 +129,7 @@ static int parse_configs(bench_args *a, const char *s, atrbvh_backend be)
                 *rule++ = '\0';
                 for (c.split_rule = ATRBVH_SPLIT_TREE;
                      c.split_rule <= ATRBVH_SPLIT_SAH &&
-                     strcmp(rule, split_rule_name(c.split_rule)) != 0;
+                     strcmp(rule, cli_split_rule_name(c.split_rule)) != 0;
                      c.split_rule++)
                     ;
                 if (c.split_rule > ATRBVH_SPLIT_SAH)
