@@ -155,9 +155,6 @@ typedef struct atrbvh_cl_device {
     cl_uint prims_set;      /* this build: set_prims replaced the
                                bounds kernel's boxes (the host's
                                Morton frame then)                 */
-    cl_uint bounds_late;    /* this build: the bounds record is read
-                               by the collapse stage (run->
-                               bounds_deferred), not by bounds    */
     cl_uint tally_late;     /* this build: `tally` is being read  */
     cl_uint laid_out;       /* this build: the layout kernels are
                                queued (by the collapse stage)     */

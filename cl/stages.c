@@ -89,7 +89,6 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
     c->counters_zero = 0;
     c->refitted = 0;
     c->prims_set = 0;
-    c->bounds_late = 0;
     c->laid_out = 0;
     c->tally_late = 0;
     c->opt_treelets = c->opt_applied = c->opt_skipped = 0;
@@ -171,7 +170,6 @@ static void bounds_results(atrbvh_cl_device *c, atrbvh_i_run *run)
     run->centroids = c->bounds_rec.centroids;
     run->bad = c->bounds_rec.invalid != 0u;
     run->bounds_deferred = 0;
-    c->bounds_late = 0;
 }
 
 /* One launch: the boxes and, by its last block, the bounds record
@@ -214,7 +212,6 @@ static atrbvh_status st_bounds(atrbvh_device *dev, atrbvh_i_run *run,
                CL_VAL(a));
     run->n = a.n;
     if (run->bounds_late_ok) {
-        c->bounds_late = 1;
         run->bounds_deferred = 1;
         return ATRBVH_OK;
     }
@@ -577,13 +574,13 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
      * the bounds stage left it (the pipeline then checks `bad`) and the
      * optimise stage's counts. */
     CL_CHECK(queue_layout(c, run, error));
-    if (c->bounds_late)
+    if (run->bounds_deferred)
         CL_CHECK(atrbvh_i_cl_download_queued(c, B_PARTIAL, &c->bounds_rec,
                                              sizeof c->bounds_rec,
                                              "bounds record", error));
     CL_CHECK(atrbvh_i_cl_download(c, B_SIZE, &root_size, 4, "subtree sizes",
                                   error));
-    if (c->bounds_late)
+    if (run->bounds_deferred)
         bounds_results(c, run);
     if (c->tally_late) {
         c->opt_treelets = c->tally[0];
