@@ -282,8 +282,11 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
              * before a block writes an internal node over a primitive
              * box, or a size or cost over a key) */
         }
+        /* nowait: the second pass reads the blocks' leftovers after the
+         * region's end, which waits for them; the loop's own barrier was
+         * one more thread hand-over. */
 #ifdef _OPENMP
-#pragma omp for schedule(static, 1)
+#pragma omp for schedule(static, 1) nowait
 #endif
         for (b = 0; b < blocks; b++) {
             counts[b] = block_pass(

@@ -102,31 +102,39 @@ atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
             for (j = lo; j < hi; j++)
                 c[atrbvh_sort_digit_bits(keys[j], shift, bits)]++;
         }
-#ifdef _OPENMP
-#pragma omp single
-#endif
-        {
-            uint32_t d, total = 0;
-            int bb;
-            for (d = 0; d < buckets; d++) {
-                start[d] = total;
-                for (bb = 0; bb < blocks; bb++) {
-                    uint32_t t = counts[(size_t)bb * buckets + d];
-                    counts[(size_t)bb * buckets + d] = total;
-                    total += t;
-                }
-            }
-            start[buckets] = total;
-        }
+        /* No serial scan between the passes (it cost a barrier, a
+         * thread hand-over): each block scans the counts itself, read
+         * only now, for its own output offsets - digit d of block b
+         * starts after every smaller digit of all blocks and digit d of
+         * the blocks before b (atrbvh_sort_slot's digit-major order) -
+         * and block 0's offsets are the buckets' starts.  The scan is
+         * blocks x buckets additions per block, integers: the same
+         * offsets as one scan. */
 #ifdef _OPENMP
 #pragma omp for schedule(static, 1)
 #endif
         for (b = 0; b < blocks; b++) {
-            uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
+            uint32_t next[ATRBVH_SORT_MSD_RADIX];
+            uint32_t lo, hi, j, d, total = 0;
+            int bb;
+            for (d = 0; d < buckets; d++) {
+                uint32_t before = 0, all;
+                for (bb = 0; bb < b; bb++)
+                    before += counts[(size_t)bb * buckets + d];
+                all = before;
+                for (; bb < blocks; bb++)
+                    all += counts[(size_t)bb * buckets + d];
+                next[d] = total + before;
+                total += all;
+            }
+            if (b == 0) {
+                memcpy(start, next, buckets * sizeof *start);
+                start[buckets] = total;
+            }
             atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo, &hi);
             for (j = lo; j < hi; j++) {
                 uint32_t o = atrbvh_sort_place(
-                    c, atrbvh_sort_digit_bits(keys[j], shift, bits));
+                    next, atrbvh_sort_digit_bits(keys[j], shift, bits));
                 tmp_keys[o] = keys[j];
                 tmp_values[o] = values[j];
             }
