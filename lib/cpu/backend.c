@@ -100,7 +100,10 @@ static atrbvh_status cpu_begin(atrbvh_device *dev, atrbvh_i_run *run,
 
 static void cpu_end(atrbvh_device *dev, atrbvh_i_run *run)
 {
+    atrbvh_i_cpu_run *c = run->state;
     (void)dev;
+    if (c) /* (a build that stopped between morton and sort) */
+        atrbvh_i_free(c->msd_counts);
     atrbvh_i_free(run->state);
     run->state = NULL;
 }

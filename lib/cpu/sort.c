@@ -51,37 +51,34 @@ atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
                                        threads, varying);
 }
 
-atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
-                                          uint64_t *tmp_keys,
-                                          uint32_t *tmp_values, uint32_t n,
-                                          int threads, uint64_t varying)
+uint32_t atrbvh_i_sort_blocks(uint32_t n, int threads)
 {
+    uint32_t blocks = threads < 1                ? 1u
+                      : threads > MAX_BLOCKS ? MAX_BLOCKS
+                                                 : (uint32_t)threads;
+    return blocks > n ? (n ? n : 1u) : blocks;
+}
+
+/* The MSD pass and the buckets' sort over `blocks` blocks, on the digit
+ * of `bits` bits at `shift`.  `counted`: each block's digit counts
+ * (blocks x 2^bits, block-major) when the morton stage counted them in
+ * its sweep (morton.c); NULL: counted here, first. */
+static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
+                              uint64_t *tmp_keys, uint32_t *tmp_values,
+                              uint32_t n, int blocks, uint32_t shift,
+                              uint32_t bits, uint32_t *counted)
+{
+    const uint32_t buckets = 1u << bits;
+    const int count_here = counted == NULL;
     uint32_t *counts, *start;
-    int blocks;
-    uint32_t buckets, bits, shift;
 
-    if (n < 2 || !varying)
-        return ATRBVH_OK; /* all keys equal: the input order is sorted */
-    blocks = threads < 1 ? 1 : threads > MAX_BLOCKS ? MAX_BLOCKS : threads;
-    if ((uint32_t)blocks > n)
-        blocks = (int)n;
-
-    /* MSD digit: the top `bits` varying bit positions, enough for buckets
-     * of about ATRBVH_SORT_BUCKET_TARGET items. */
-    {
-        /* (not the shared variables' addresses: the parallel region would
-         * then reload them after every store of a value) */
-        atrbvh_u32 sh, bi;
-        atrbvh_sort_msd(n, varying, &sh, &bi);
-        shift = sh;
-        bits = bi;
-    }
-    buckets = 1u << bits;
-
-    counts = atrbvh_i_alloc_array((size_t)blocks * buckets, sizeof *counts);
+    counts = count_here ? atrbvh_i_alloc_array((size_t)blocks * buckets,
+                                               sizeof *counts)
+                        : counted;
     start = atrbvh_i_alloc_array((size_t)buckets + 1, sizeof *start);
     if (!counts || !start) {
-        atrbvh_i_free(counts);
+        if (count_here)
+            atrbvh_i_free(counts);
         atrbvh_i_free(start);
         return ATRBVH_ERR_NOMEM;
     }
@@ -92,15 +89,18 @@ atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
     {
         int b;
         int64_t bk;
+        if (count_here) { /* (the same for every thread) */
 #ifdef _OPENMP
 #pragma omp for schedule(static, 1)
 #endif
-        for (b = 0; b < blocks; b++) {
-            uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
-            atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo, &hi);
-            memset(c, 0, buckets * sizeof *c);
-            for (j = lo; j < hi; j++)
-                c[atrbvh_sort_digit_bits(keys[j], shift, bits)]++;
+            for (b = 0; b < blocks; b++) {
+                uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
+                atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo,
+                                   &hi);
+                memset(c, 0, buckets * sizeof *c);
+                for (j = lo; j < hi; j++)
+                    c[atrbvh_sort_digit_bits(keys[j], shift, bits)]++;
+            }
         }
         /* No serial scan between the passes (it cost a barrier, a
          * thread hand-over): each block scans the counts itself, read
@@ -150,9 +150,25 @@ atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
                                    values + s, len, 1, (int)shift);
         }
     }
-    atrbvh_i_free(counts);
+    if (count_here)
+        atrbvh_i_free(counts);
     atrbvh_i_free(start);
     return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
+                                          uint64_t *tmp_keys,
+                                          uint32_t *tmp_values, uint32_t n,
+                                          int threads, uint64_t varying)
+{
+    atrbvh_u32 shift, bits;
+    if (n < 2 || !varying)
+        return ATRBVH_OK; /* all keys equal: the input order is sorted */
+    /* MSD digit: the top `bits` varying bit positions, enough for buckets
+     * of about ATRBVH_SORT_BUCKET_TARGET items. */
+    atrbvh_sort_msd(n, varying, &shift, &bits);
+    return msd_sort(keys, values, tmp_keys, tmp_values, n,
+                    (int)atrbvh_i_sort_blocks(n, threads), shift, bits, NULL);
 }
 
 /* The stage: keys (morton) sorted with their build indices. */
@@ -163,6 +179,7 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
     const uint32_t n = run->n;
     uint64_t *tmp_keys;
     uint32_t *tmp_order;
+    atrbvh_status st;
     (void)dev;
     tmp_keys = atrbvh_i_scratch_get(c->scratch, CPU_TMP_KEYS, n,
                                     sizeof *tmp_keys);
@@ -173,10 +190,28 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
                              "cannot allocate sort buffers for %lu "
                              "primitives",
                              (unsigned long)n);
-    /* c->order holds the build indices (morton wrote them). */
-    if (atrbvh_i_radix_sort_varying(c->keys, c->order, tmp_keys, tmp_order,
-                                    n, run->cfg->threads,
-                                    c->key_varying) != ATRBVH_OK)
+    /* c->order holds the build indices (morton wrote them).  When the
+     * morton stage's guess of the MSD digit (morton.c) is the digit of
+     * the keys' varying bits, its counts are this pass's: the sort then
+     * starts with the scatter, one barrier (a thread hand-over) fewer. */
+    if (c->msd_counts && n >= 2 && c->key_varying) {
+        atrbvh_u32 shift, bits;
+        atrbvh_sort_msd(n, c->key_varying, &shift, &bits);
+        if (shift == c->msd_shift && bits == c->msd_bits)
+            st = msd_sort(c->keys, c->order, tmp_keys, tmp_order, n,
+                          (int)c->msd_blocks, shift, bits, c->msd_counts);
+        else
+            st = atrbvh_i_radix_sort_varying(c->keys, c->order, tmp_keys,
+                                             tmp_order, n, run->cfg->threads,
+                                             c->key_varying);
+    } else {
+        st = atrbvh_i_radix_sort_varying(c->keys, c->order, tmp_keys,
+                                         tmp_order, n, run->cfg->threads,
+                                         c->key_varying);
+    }
+    atrbvh_i_free(c->msd_counts);
+    c->msd_counts = NULL;
+    if (st != ATRBVH_OK)
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "cannot allocate sort counters for %lu "
                              "primitives",
