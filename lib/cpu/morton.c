@@ -36,7 +36,8 @@ atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *dev, atrbvh_i_run *run,
     const int blocks = (int)atrbvh_i_sort_blocks(n, run->cfg->threads);
     uint64_t *keys, key_or = 0, key_and = ~(uint64_t)0;
     uint32_t *order, *counts = NULL;
-    atrbvh_u32 shift = 0, bits = 1; /* (no guess: a 2-entry dummy row) */
+    atrbvh_u32 sh = 0, bi = 1; /* (no guess: a 2-entry dummy row) */
+    uint32_t shift, bits;
     int b, top = -1;
     (void)dev;
     keys = c->keys = atrbvh_i_scratch_get(c->scratch, CPU_KEYS, run->n,
@@ -57,31 +58,36 @@ atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *dev, atrbvh_i_run *run,
     atrbvh_i_free(c->msd_counts);
     c->msd_counts = NULL;
     if (n >= 2 && top >= 0) {
-        atrbvh_sort_msd(n, (uint64_t)1 << top, &shift, &bits);
-        counts = atrbvh_i_alloc_array((size_t)blocks << bits, sizeof *counts);
+        atrbvh_sort_msd(n, (uint64_t)1 << top, &sh, &bi);
+        counts = atrbvh_i_alloc_array((size_t)blocks << bi, sizeof *counts);
         if (!counts)
             return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                                  "cannot allocate sort counters for %lu "
                                  "primitives",
                                  (unsigned long)run->n);
     }
+    /* (copies: the region reads the variables whose addresses were taken
+     * through pointers, again after every store of a key) */
+    shift = sh;
+    bits = bi;
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(blocks) schedule(static, 1) \
     reduction(| : key_or) reduction(& : key_and)
 #endif
     for (b = 0; b < blocks; b++) {
         uint32_t dummy[2], *cnt = counts ? counts + ((size_t)b << bits) : dummy;
-        uint32_t lo, hi, i;
+        uint32_t lo, hi;
+        int64_t i;
         atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo, &hi);
         memset(cnt, 0, ((size_t)1 << bits) * sizeof *cnt);
-        for (i = lo; i < hi; i++) {
+        for (i = lo; i < (int64_t)hi; i++) {
             const atrbvh_box bx = boxes[i];
             const uint64_t key = atrbvh_morton_key(
                 atrbvh_morton_quantise(atrbvh_box_centre(bx, 0), lo0, s0),
                 atrbvh_morton_quantise(atrbvh_box_centre(bx, 1), lo1, s1),
                 atrbvh_morton_quantise(atrbvh_box_centre(bx, 2), lo2, s2));
             keys[i] = key;
-            order[i] = i;
+            order[i] = (uint32_t)i;
             cnt[atrbvh_sort_digit_bits(key, shift, bits)]++;
             key_or |= key;
             key_and &= key;
