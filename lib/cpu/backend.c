@@ -37,7 +37,9 @@ static void cpu_close(atrbvh_device *dev)
  *   morton     + keys, in the cost slot (reserved: n keys for
  *              an LBVH, 2n-1 costs otherwise)                    56     64
  *   sort       + order 4, sort temporaries 12 in the parent
- *              and left slots                                    72     80
+ *              and left slots, count 8 (its buckets' phase
+ *              gathers the leaf boxes and writes the deltas for
+ *              the hierarchy, sort.c)                            80     88
  *   hierarchy  + left, right 8, parent 8, count 8 (leaf_prim is
  *              the order array); the refit in the same pass
  *              (hierarchy.c): node boxes 48 (the primitive boxes

@@ -71,6 +71,10 @@ typedef struct atrbvh_i_cpu_run {
      * them (else cpu_end does) */
     uint32_t *msd_counts;
     uint32_t msd_blocks, msd_shift, msd_bits;
+    /* sort: the leaves of the node box array gathered in sorted order,
+     * and the deltas in the leaves' half of the count array (sort.c's
+     * sort_leaves); 0: the hierarchy stage does it */
+    int leaves_ready;
     uint32_t *order;    /* sort: build index of position p   */
     atrbvh_i_tree tree; /* hierarchy ... optimise            */
     uint32_t *size;     /* collapse                          */

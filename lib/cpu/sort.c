@@ -88,6 +88,47 @@ static void scatter(const uint64_t *keys, const uint32_t *values,
     }
 }
 
+/* What the buckets' phase prepares for the hierarchy stage (hierarchy.c)
+ * as each bucket's positions become final, so that its region needs no
+ * barrier between that sweep and its block passes: leaf n-1+i of `box`
+ * (whose entries 0 .. n-1 are the primitive boxes) takes box[order[i]],
+ * in place (entry n-1, both primitive n-1 and leaf 0, read into `last`
+ * before any leaf is written), and delta[i] the Karras delta of split i
+ * (the hierarchy reads it from the leaves' half of the count array). */
+typedef struct sort_leaves {
+    atrbvh_box *box;
+    atrbvh_box last;
+    uint32_t *delta;
+} sort_leaves;
+
+/* Sorted positions lo .. hi-1 (one bucket): their leaves, and the deltas
+ * of the splits between them; the split after hi-1, whose right key is
+ * another bucket's, waits for the end of the phase (msd_sort).  The
+ * prefetch stays inside the bucket (other buckets' orders may still be
+ * moving). */
+static void bucket_leaves(const uint64_t *keys, const uint32_t *order,
+                          uint32_t n_, uint32_t lo, uint32_t hi_,
+                          const sort_leaves *lv)
+{
+    /* (64-bit indices, the last box in a local: as the hierarchy's own
+     * sweep, cpu.h's atrbvh_i_gather_leaf, runs them) */
+    atrbvh_box *const box = lv->box;
+    uint32_t *const delta = lv->delta;
+    const atrbvh_box last = lv->last;
+    const int64_t n = n_, hi = hi_;
+    int64_t i;
+    for (i = lo; i < hi; i++) {
+        const uint32_t k = order[i];
+#if defined(__GNUC__) || defined(__clang__)
+        if (i + 16 < hi)
+            __builtin_prefetch(&box[order[i + 16]]);
+#endif
+        box[n - 1 + i] = k == (uint32_t)(n - 1) ? last : box[k];
+        if (i + 1 < hi)
+            delta[i] = (uint32_t)atrbvh_karras_delta(keys, n, i, i + 1);
+    }
+}
+
 /* The MSD pass and the buckets' sort over `blocks` blocks, on the digit
  * of `bits` bits at `shift`.  `counted`: each block's digit counts
  * (blocks x 2^bits, block-major) when the morton stage counted them in
@@ -95,7 +136,8 @@ static void scatter(const uint64_t *keys, const uint32_t *values,
 static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
                               uint64_t *tmp_keys, uint32_t *tmp_values,
                               uint32_t n, int blocks, uint32_t shift,
-                              uint32_t bits, uint32_t *counted)
+                              uint32_t bits, uint32_t *counted,
+                              sort_leaves *lv)
 {
     const uint32_t buckets = 1u << bits;
     const int count_here = counted == NULL;
@@ -173,6 +215,17 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
             if (len)
                 atrbvh_sort_bucket(tmp_keys + s, tmp_values + s, keys + s,
                                    values + s, len, 1, (int)shift);
+            if (len && lv)
+                bucket_leaves(keys, values, n, s, s + len, lv);
+        }
+    }
+    if (lv) { /* the splits between buckets, all keys now in place */
+        uint32_t bk2;
+        for (bk2 = 0; bk2 < buckets; bk2++) {
+            const uint32_t e = start[bk2 + 1];
+            if (e > start[bk2] && e < n)
+                lv->delta[e - 1] =
+                    (uint32_t)atrbvh_karras_delta(keys, n, e - 1, e);
         }
     }
     if (count_here)
@@ -193,7 +246,8 @@ atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
      * of about ATRBVH_SORT_BUCKET_TARGET items. */
     atrbvh_sort_msd(n, varying, &shift, &bits);
     return msd_sort(keys, values, tmp_keys, tmp_values, n,
-                    (int)atrbvh_i_sort_blocks(n, threads), shift, bits, NULL);
+                    (int)atrbvh_i_sort_blocks(n, threads), shift, bits, NULL,
+                    NULL);
 }
 
 /* The stage: keys (morton) sorted with their build indices. */
@@ -215,24 +269,44 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
                              "cannot allocate sort buffers for %lu "
                              "primitives",
                              (unsigned long)n);
-    /* c->order holds the build indices (morton wrote them).  When the
-     * morton stage's guess of the MSD digit (morton.c) is the digit of
-     * the keys' varying bits, its counts are this pass's: the sort then
-     * starts with the scatter, one barrier (a thread hand-over) fewer. */
-    if (c->msd_counts && n >= 2 && c->key_varying) {
-        atrbvh_u32 shift, bits;
-        atrbvh_sort_msd(n, c->key_varying, &shift, &bits);
-        if (shift == c->msd_shift && bits == c->msd_bits)
-            st = msd_sort(c->keys, c->order, tmp_keys, tmp_order, n,
-                          (int)c->msd_blocks, shift, bits, c->msd_counts);
-        else
-            st = atrbvh_i_radix_sort_varying(c->keys, c->order, tmp_keys,
-                                             tmp_order, n, run->cfg->threads,
-                                             c->key_varying);
+    c->leaves_ready = 0;
+    if (n < 2 || !c->key_varying) {
+        /* already sorted (build order): the hierarchy gathers */
+        st = ATRBVH_OK;
     } else {
-        st = atrbvh_i_radix_sort_varying(c->keys, c->order, tmp_keys,
-                                         tmp_order, n, run->cfg->threads,
-                                         c->key_varying);
+        /* c->order holds the build indices (morton wrote them).  When
+         * the morton stage's guess of the MSD digit (morton.c) is the
+         * digit of the keys' varying bits, its counts are this pass's:
+         * the sort then starts with the scatter, one barrier (a thread
+         * hand-over) fewer.  The buckets' phase gathers the leaf boxes
+         * and writes the deltas for the hierarchy stage (sort_leaves),
+         * in the node box and count arrays it would get there (the
+         * memory plan, backend.c). */
+        atrbvh_u32 shift, bits;
+        uint32_t *counted = NULL;
+        int blocks = (int)atrbvh_i_sort_blocks(n, run->cfg->threads);
+        sort_leaves lv;
+        const size_t nodes = 2 * (size_t)n - 1;
+        lv.box = atrbvh_i_scratch_get(c->scratch, CPU_BOX, nodes,
+                                      sizeof *lv.box);
+        lv.delta = atrbvh_i_scratch_get(c->scratch, CPU_COUNT, nodes,
+                                        sizeof *lv.delta);
+        if (!lv.box || !lv.delta)
+            return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                                 "cannot allocate the node boxes and "
+                                 "counts for %lu primitives",
+                                 (unsigned long)n);
+        c->boxes = lv.box; /* (moved along if the slot had to grow) */
+        lv.last = lv.box[n - 1];
+        lv.delta += n - 1;
+        atrbvh_sort_msd(n, c->key_varying, &shift, &bits);
+        if (c->msd_counts && shift == c->msd_shift && bits == c->msd_bits) {
+            counted = c->msd_counts;
+            blocks = (int)c->msd_blocks;
+        }
+        st = msd_sort(c->keys, c->order, tmp_keys, tmp_order, n, blocks,
+                      shift, bits, counted, &lv);
+        c->leaves_ready = st == ATRBVH_OK;
     }
     atrbvh_i_free(c->msd_counts);
     c->msd_counts = NULL;
