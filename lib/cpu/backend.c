@@ -37,7 +37,9 @@ static void cpu_close(atrbvh_device *dev)
  *   morton     + keys, in the cost slot (reserved: n keys for
  *              an LBVH, 2n-1 costs otherwise)                    56     64
  *   sort       + order 4, sort temporaries 12 in the parent
- *              and left slots                                    72     80
+ *              and left slots, count 8 (its buckets' phase
+ *              gathers the leaf boxes and writes the deltas for
+ *              the hierarchy, sort.c)                            80     88
  *   hierarchy  + left, right 8, parent 8, count 8 (leaf_prim is
  *              the order array); the refit in the same pass
  *              (hierarchy.c): node boxes 48 (the primitive boxes
@@ -100,7 +102,10 @@ static atrbvh_status cpu_begin(atrbvh_device *dev, atrbvh_i_run *run,
 
 static void cpu_end(atrbvh_device *dev, atrbvh_i_run *run)
 {
+    atrbvh_i_cpu_run *c = run->state;
     (void)dev;
+    if (c) /* (a build that stopped between morton and sort) */
+        atrbvh_i_free(c->msd_counts);
     atrbvh_i_free(run->state);
     run->state = NULL;
 }

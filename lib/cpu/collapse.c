@@ -88,9 +88,11 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
         x.t = &c->tree;
         x.p = &run->cfg->cost;
         x.size = c->size;
+        /* (nowait: the region's end waits for the tasks; the single's
+         * barrier would only be one more thread hand-over) */
 #ifdef _OPENMP
 #pragma omp parallel num_threads(run->cfg->threads)
-#pragma omp single
+#pragma omp single nowait
 #endif
         (void)decide(&x, 0);
     }

@@ -65,6 +65,16 @@ typedef struct atrbvh_i_cpu_run {
                      box is then kept, not recomputed (collapse.c) */
     uint64_t *keys;     /* morton, sorted by sort            */
     uint64_t key_varying; /* morton: bits where keys differ  */
+    /* morton: the sort's MSD digit counts (blocks x 2^bits, block-major;
+     * NULL: none), counted on its guess of the digit (morton.c); the
+     * sort stage uses them when the keys' digit is that guess, and frees
+     * them (else cpu_end does) */
+    uint32_t *msd_counts;
+    uint32_t msd_blocks, msd_shift, msd_bits;
+    /* sort: the leaves of the node box array gathered in sorted order,
+     * and the deltas in the leaves' half of the count array (sort.c's
+     * sort_leaves); 0: the hierarchy stage does it */
+    int leaves_ready;
     uint32_t *order;    /* sort: build index of position p   */
     atrbvh_i_tree tree; /* hierarchy ... optimise            */
     uint32_t *size;     /* collapse                          */
@@ -128,6 +138,9 @@ atrbvh_status atrbvh_i_cpu_set_tree(atrbvh_device *, atrbvh_i_run *,
 atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
                                   uint64_t *tmp_keys, uint32_t *tmp_values,
                                   uint32_t n, int threads);
+/* The blocks (contiguous ranges of atrbvh_block_range) of the sort's
+ * MSD pass over n keys with `threads` threads. */
+uint32_t atrbvh_i_sort_blocks(uint32_t n, int threads);
 /* The same, told the bits where the keys differ (the OR of all keys XOR
  * their AND; a superset is also right, only slower). */
 atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,

@@ -54,6 +54,11 @@
  * once read), in the same parallel sweep as the gather, and the block
  * passes start after its barrier.  One parallel region for the hierarchy
  * and the refit, where there were three (hierarchy, gather, climbs).
+ * In a build the sort stage does that sweep (sort.c's sort_leaves: each
+ * bucket's leaves and deltas as soon as its keys are in place), so the
+ * region is the block passes alone, with no barrier: a thread hand-over
+ * fewer (the tool's threads sleep at a barrier, and a wake-up costs tens
+ * of microseconds on a loaded machine).
  */
 #include "config.h"
 
@@ -245,7 +250,8 @@ static void leaf_prims(atrbvh_i_tree *t, const uint32_t *order,
  * SIZES and COSTS first gather the leaf boxes and write the deltas (the
  * file's comment).  With `order`, also each leaf's original primitive. */
 static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
-                               const uint32_t *order, const uint32_t *ids)
+                               const uint32_t *order, const uint32_t *ids,
+                               int ready)
 {
     atrbvh_i_tree *t = x->t;
     const int64_t n = x->n;
@@ -258,14 +264,14 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
     /* Read before any leaf is written over it: the gather is in place,
      * and primitive box n-1 is also leaf 0's entry. */
     const atrbvh_box last =
-        mode != TOPOLOGY ? t->box[n - 1] : atrbvh_box_empty();
+        mode != TOPOLOGY && !ready ? t->box[n - 1] : atrbvh_box_empty();
     int b;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(blocks)
 #endif
     {
         int64_t i;
-        if (mode != TOPOLOGY) {
+        if (mode != TOPOLOGY && !ready) { /* (the same for every thread) */
             atrbvh_box *const box = t->box;
             uint32_t *const count = t->count;
             const uint64_t *const keys = x->keys;
@@ -282,8 +288,11 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
              * before a block writes an internal node over a primitive
              * box, or a size or cost over a key) */
         }
+        /* nowait: the second pass reads the blocks' leftovers after the
+         * region's end, which waits for them; the loop's own barrier was
+         * one more thread hand-over. */
 #ifdef _OPENMP
-#pragma omp for schedule(static, 1)
+#pragma omp for schedule(static, 1) nowait
 #endif
         for (b = 0; b < blocks; b++) {
             counts[b] = block_pass(
@@ -339,11 +348,13 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
 }
 
 /* The topology, and with `p` the refit's values (into `size` when not
- * NULL, else into t->cost); with `order`, each leaf's primitive. */
+ * NULL, else into t->cost); with `order`, each leaf's primitive.
+ * `ready`: the sort stage gathered the leaves and wrote the deltas
+ * (sort.c's sort_leaves). */
 static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                       int threads, const uint32_t *order,
                       const uint32_t *ids, const atrbvh_cost_params *p,
-                      uint32_t *size)
+                      uint32_t *size, int ready)
 {
     const int64_t n = t->n;
     hier_ctx x;
@@ -372,17 +383,17 @@ static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
         blocks = (int)(n - 1);
     /* (three calls: each inlined for its own mode) */
     if (!p)
-        pass(&x, TOPOLOGY, blocks, order, ids);
+        pass(&x, TOPOLOGY, blocks, order, ids, 0);
     else if (size)
-        pass(&x, SIZES, blocks, order, ids);
+        pass(&x, SIZES, blocks, order, ids, ready);
     else
-        pass(&x, COSTS, blocks, order, ids);
+        pass(&x, COSTS, blocks, order, ids, ready);
 }
 
 void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                         int threads)
 {
-    hierarchy(sorted_keys, t, threads, NULL, NULL, NULL, NULL);
+    hierarchy(sorted_keys, t, threads, NULL, NULL, NULL, NULL, 0);
 }
 
 void atrbvh_i_hierarchy_refit(const uint64_t *sorted_keys, atrbvh_i_tree *t,
@@ -390,7 +401,7 @@ void atrbvh_i_hierarchy_refit(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                               const atrbvh_cost_params *p, int threads,
                               uint32_t *size)
 {
-    hierarchy(sorted_keys, t, threads, order, NULL, p, size);
+    hierarchy(sorted_keys, t, threads, order, NULL, p, size, 0);
 }
 
 /* The stage: the tree's arrays (kept for the later stages), the topology,
@@ -414,7 +425,8 @@ atrbvh_status atrbvh_i_cpu_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
     if (st != ATRBVH_OK)
         return st;
     hierarchy(c->keys, t, run->cfg->threads, c->order, c->ids,
-              &run->cfg->cost, lbvh ? c->size : NULL);
+              &run->cfg->cost, lbvh ? c->size : NULL, c->leaves_ready);
+    c->leaves_ready = 0;
     c->refitted = 1;
     /* The keys and the sort's scratch are read no more. */
     atrbvh_i_scratch_done(c->scratch, CPU_KEYS);

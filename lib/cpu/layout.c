@@ -401,9 +401,11 @@ atrbvh_status atrbvh_i_cpu_layout(atrbvh_device *dev, atrbvh_i_run *run,
     x.vstride = run->in.vstride / sizeof(float);
     x.istride = run->in.istride / sizeof(uint32_t);
     x.bstride = run->in.bstride / sizeof(float);
+    /* nowait: the single's own barrier would be a second hand-over
+     * before the region's end, which waits for every task anyway. */
 #ifdef _OPENMP
 #pragma omp parallel num_threads(run->cfg->threads)
-#pragma omp single
+#pragma omp single nowait
 #endif
     emit(&x, 0, 0, 0);
     /* A handle keeps the node boxes of an optimised tree (read here

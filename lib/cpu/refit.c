@@ -206,23 +206,36 @@ static void refit(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
         threads = 1;
     if ((int64_t)threads > n)
         threads = (int)n;
-    if (!gather)
-        gather_in_place(t, order, threads);
     if (threads == 1) {
+        if (!gather)
+            gather_in_place(t, order, 1);
         for (i = 0; i + 1 < n; i++)
             t->count[i] = 0;
         refit_block(t, prim_boxes, order, p, 0, n, 0, gather, size);
         return;
     }
 #ifdef _OPENMP
+    /* The in-place gather in the climbs' region (gather_in_place's loop,
+     * entry n-1 read before any thread writes leaf 0 over it): one region
+     * where there were two, a thread hand-over fewer.  Its loop needs no
+     * barrier of its own: the counters' loop's orders every leaf before
+     * the climbs write internal nodes over the primitive boxes. */
+    const atrbvh_box last = gather ? atrbvh_box_empty() : t->box[n - 1];
 #pragma omp parallel num_threads(threads)
     {
         int b;
+        if (!gather) { /* (the same for every thread) */
+#pragma omp for schedule(static) nowait
+            for (i = 0; i < n; i++)
+                atrbvh_i_gather_leaf(t->box, order, n, i, &last);
+        }
 #pragma omp for schedule(static)
         for (i = 0; i < n - 1; i++)
             t->count[i] = 0;
-        /* (the implied barrier: every counter is zero before a climb) */
-#pragma omp for schedule(static, 1)
+        /* (the implied barrier: every counter is zero and every leaf
+         * gathered before a climb; the region's end waits for the
+         * climbs) */
+#pragma omp for schedule(static, 1) nowait
         for (b = 0; b < threads; b++) {
             const int64_t lo = (int64_t)((uint64_t)n * (uint64_t)b /
                                          (uint64_t)threads),

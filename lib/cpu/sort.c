@@ -17,6 +17,15 @@
  * over (digit, block) gives each block its output offsets, and each block
  * scatters in order; buckets are then independent items.
  *
+ * Thread hand-overs: the tool's threads sleep at a barrier (passive
+ * wait), and each wake-up costs tens of microseconds on a loaded
+ * machine, so the stage keeps to the barriers the data needs.  The
+ * counts come from the morton stage's sweep when its guess of the digit
+ * holds (morton.c), each block scans them itself instead of one thread
+ * between two barriers, and the buckets wait for the scatter only: one
+ * barrier per sort where there were three (LD_PRELOAD count of
+ * GOMP_barrier, bunny and dragon, 2 threads).
+ *
  * Measured on the dragon's 871,414 keys, one thread, this machine: 8 plain
  * LSD passes took ~300 ms (random stores into 512 streams, TLB-bound); this
  * scheme ~45 ms.
@@ -51,37 +60,96 @@ atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
                                        threads, varying);
 }
 
-atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
-                                          uint64_t *tmp_keys,
-                                          uint32_t *tmp_values, uint32_t n,
-                                          int threads, uint64_t varying)
+uint32_t atrbvh_i_sort_blocks(uint32_t n, int threads)
 {
-    uint32_t *counts, *start;
-    int blocks;
-    uint32_t buckets, bits, shift;
+    uint32_t blocks = threads < 1                ? 1u
+                      : threads > MAX_BLOCKS ? MAX_BLOCKS
+                                                 : (uint32_t)threads;
+    return blocks > n ? (n ? n : 1u) : blocks;
+}
 
-    if (n < 2 || !varying)
-        return ATRBVH_OK; /* all keys equal: the input order is sorted */
-    blocks = threads < 1 ? 1 : threads > MAX_BLOCKS ? MAX_BLOCKS : threads;
-    if ((uint32_t)blocks > n)
-        blocks = (int)n;
-
-    /* MSD digit: the top `bits` varying bit positions, enough for buckets
-     * of about ATRBVH_SORT_BUCKET_TARGET items. */
-    {
-        /* (not the shared variables' addresses: the parallel region would
-         * then reload them after every store of a value) */
-        atrbvh_u32 sh, bi;
-        atrbvh_sort_msd(n, varying, &sh, &bi);
-        shift = sh;
-        bits = bi;
+/* Not inlined: in the region's function the loop reloaded its pointers,
+ * shift and mask from the stack at every item (callgrind, dragon: 4 more
+ * instructions per key); as a call they stay in registers. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static void scatter(const uint64_t *keys, const uint32_t *values,
+                    uint64_t *tmp_keys, uint32_t *tmp_values, uint32_t lo,
+                    uint32_t hi, uint32_t shift, uint32_t bits,
+                    uint32_t *next)
+{
+    uint32_t j;
+    for (j = lo; j < hi; j++) {
+        const uint32_t o = atrbvh_sort_place(
+            next, atrbvh_sort_digit_bits(keys[j], shift, bits));
+        tmp_keys[o] = keys[j];
+        tmp_values[o] = values[j];
     }
-    buckets = 1u << bits;
+}
 
-    counts = atrbvh_i_alloc_array((size_t)blocks * buckets, sizeof *counts);
+/* What the buckets' phase prepares for the hierarchy stage (hierarchy.c)
+ * as each bucket's positions become final, so that its region needs no
+ * barrier between that sweep and its block passes: leaf n-1+i of `box`
+ * (whose entries 0 .. n-1 are the primitive boxes) takes box[order[i]],
+ * in place (entry n-1, both primitive n-1 and leaf 0, read into `last`
+ * before any leaf is written), and delta[i] the Karras delta of split i
+ * (the hierarchy reads it from the leaves' half of the count array). */
+typedef struct sort_leaves {
+    atrbvh_box *box;
+    atrbvh_box last;
+    uint32_t *delta;
+} sort_leaves;
+
+/* Sorted positions lo .. hi-1 (one bucket): their leaves, and the deltas
+ * of the splits between them; the split after hi-1, whose right key is
+ * another bucket's, waits for the end of the phase (msd_sort).  The
+ * prefetch stays inside the bucket (other buckets' orders may still be
+ * moving). */
+static void bucket_leaves(const uint64_t *keys, const uint32_t *order,
+                          uint32_t n_, uint32_t lo, uint32_t hi_,
+                          const sort_leaves *lv)
+{
+    /* (64-bit indices, the last box in a local: as the hierarchy's own
+     * sweep, cpu.h's atrbvh_i_gather_leaf, runs them) */
+    atrbvh_box *const box = lv->box;
+    uint32_t *const delta = lv->delta;
+    const atrbvh_box last = lv->last;
+    const int64_t n = n_, hi = hi_;
+    int64_t i;
+    for (i = lo; i < hi; i++) {
+        const uint32_t k = order[i];
+#if defined(__GNUC__) || defined(__clang__)
+        if (i + 16 < hi)
+            __builtin_prefetch(&box[order[i + 16]]);
+#endif
+        box[n - 1 + i] = k == (uint32_t)(n - 1) ? last : box[k];
+        if (i + 1 < hi)
+            delta[i] = (uint32_t)atrbvh_karras_delta(keys, n, i, i + 1);
+    }
+}
+
+/* The MSD pass and the buckets' sort over `blocks` blocks, on the digit
+ * of `bits` bits at `shift`.  `counted`: each block's digit counts
+ * (blocks x 2^bits, block-major) when the morton stage counted them in
+ * its sweep (morton.c); NULL: counted here, first. */
+static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
+                              uint64_t *tmp_keys, uint32_t *tmp_values,
+                              uint32_t n, int blocks, uint32_t shift,
+                              uint32_t bits, uint32_t *counted,
+                              sort_leaves *lv)
+{
+    const uint32_t buckets = 1u << bits;
+    const int count_here = counted == NULL;
+    uint32_t *counts, *start;
+
+    counts = count_here ? atrbvh_i_alloc_array((size_t)blocks * buckets,
+                                               sizeof *counts)
+                        : counted;
     start = atrbvh_i_alloc_array((size_t)buckets + 1, sizeof *start);
     if (!counts || !start) {
-        atrbvh_i_free(counts);
+        if (count_here)
+            atrbvh_i_free(counts);
         atrbvh_i_free(start);
         return ATRBVH_ERR_NOMEM;
     }
@@ -92,44 +160,51 @@ atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
     {
         int b;
         int64_t bk;
+        if (count_here) { /* (the same for every thread) */
+#ifdef _OPENMP
+#pragma omp for schedule(static, 1)
+#endif
+            for (b = 0; b < blocks; b++) {
+                uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
+                atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo,
+                                   &hi);
+                memset(c, 0, buckets * sizeof *c);
+                for (j = lo; j < hi; j++)
+                    c[atrbvh_sort_digit_bits(keys[j], shift, bits)]++;
+            }
+        }
+        /* No serial scan between the passes (it cost a barrier, a
+         * thread hand-over): each block scans the counts itself, read
+         * only now, for its own output offsets - digit d of block b
+         * starts after every smaller digit of all blocks and digit d of
+         * the blocks before b (atrbvh_sort_slot's digit-major order) -
+         * and block 0's offsets are the buckets' starts.  The scan is
+         * blocks x buckets additions per block, integers: the same
+         * offsets as one scan. */
 #ifdef _OPENMP
 #pragma omp for schedule(static, 1)
 #endif
         for (b = 0; b < blocks; b++) {
-            uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
-            atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo, &hi);
-            memset(c, 0, buckets * sizeof *c);
-            for (j = lo; j < hi; j++)
-                c[atrbvh_sort_digit_bits(keys[j], shift, bits)]++;
-        }
-#ifdef _OPENMP
-#pragma omp single
-#endif
-        {
-            uint32_t d, total = 0;
+            uint32_t next[ATRBVH_SORT_MSD_RADIX];
+            uint32_t lo, hi, d, total = 0;
             int bb;
             for (d = 0; d < buckets; d++) {
-                start[d] = total;
-                for (bb = 0; bb < blocks; bb++) {
-                    uint32_t t = counts[(size_t)bb * buckets + d];
-                    counts[(size_t)bb * buckets + d] = total;
-                    total += t;
-                }
+                uint32_t before = 0, all;
+                for (bb = 0; bb < b; bb++)
+                    before += counts[(size_t)bb * buckets + d];
+                all = before;
+                for (; bb < blocks; bb++)
+                    all += counts[(size_t)bb * buckets + d];
+                next[d] = total + before;
+                total += all;
             }
-            start[buckets] = total;
-        }
-#ifdef _OPENMP
-#pragma omp for schedule(static, 1)
-#endif
-        for (b = 0; b < blocks; b++) {
-            uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
+            if (b == 0) {
+                memcpy(start, next, buckets * sizeof *start);
+                start[buckets] = total;
+            }
             atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo, &hi);
-            for (j = lo; j < hi; j++) {
-                uint32_t o = atrbvh_sort_place(
-                    c, atrbvh_sort_digit_bits(keys[j], shift, bits));
-                tmp_keys[o] = keys[j];
-                tmp_values[o] = values[j];
-            }
+            scatter(keys, values, tmp_keys, tmp_values, lo, hi, shift, bits,
+                    next);
         }
         /* Buckets are independent; the result lands back in keys/values. */
 #ifdef _OPENMP
@@ -140,11 +215,39 @@ atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
             if (len)
                 atrbvh_sort_bucket(tmp_keys + s, tmp_values + s, keys + s,
                                    values + s, len, 1, (int)shift);
+            if (len && lv)
+                bucket_leaves(keys, values, n, s, s + len, lv);
         }
     }
-    atrbvh_i_free(counts);
+    if (lv) { /* the splits between buckets, all keys now in place */
+        uint32_t bk2;
+        for (bk2 = 0; bk2 < buckets; bk2++) {
+            const uint32_t e = start[bk2 + 1];
+            if (e > start[bk2] && e < n)
+                lv->delta[e - 1] =
+                    (uint32_t)atrbvh_karras_delta(keys, n, e - 1, e);
+        }
+    }
+    if (count_here)
+        atrbvh_i_free(counts);
     atrbvh_i_free(start);
     return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
+                                          uint64_t *tmp_keys,
+                                          uint32_t *tmp_values, uint32_t n,
+                                          int threads, uint64_t varying)
+{
+    atrbvh_u32 shift, bits;
+    if (n < 2 || !varying)
+        return ATRBVH_OK; /* all keys equal: the input order is sorted */
+    /* MSD digit: the top `bits` varying bit positions, enough for buckets
+     * of about ATRBVH_SORT_BUCKET_TARGET items. */
+    atrbvh_sort_msd(n, varying, &shift, &bits);
+    return msd_sort(keys, values, tmp_keys, tmp_values, n,
+                    (int)atrbvh_i_sort_blocks(n, threads), shift, bits, NULL,
+                    NULL);
 }
 
 /* The stage: keys (morton) sorted with their build indices. */
@@ -155,6 +258,7 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
     const uint32_t n = run->n;
     uint64_t *tmp_keys;
     uint32_t *tmp_order;
+    atrbvh_status st;
     (void)dev;
     tmp_keys = atrbvh_i_scratch_get(c->scratch, CPU_TMP_KEYS, n,
                                     sizeof *tmp_keys);
@@ -165,10 +269,48 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
                              "cannot allocate sort buffers for %lu "
                              "primitives",
                              (unsigned long)n);
-    /* c->order holds the build indices (morton wrote them). */
-    if (atrbvh_i_radix_sort_varying(c->keys, c->order, tmp_keys, tmp_order,
-                                    n, run->cfg->threads,
-                                    c->key_varying) != ATRBVH_OK)
+    c->leaves_ready = 0;
+    if (n < 2 || !c->key_varying) {
+        /* already sorted (build order): the hierarchy gathers */
+        st = ATRBVH_OK;
+    } else {
+        /* c->order holds the build indices (morton wrote them).  When
+         * the morton stage's guess of the MSD digit (morton.c) is the
+         * digit of the keys' varying bits, its counts are this pass's:
+         * the sort then starts with the scatter, one barrier (a thread
+         * hand-over) fewer.  The buckets' phase gathers the leaf boxes
+         * and writes the deltas for the hierarchy stage (sort_leaves),
+         * in the node box and count arrays it would get there (the
+         * memory plan, backend.c). */
+        atrbvh_u32 shift, bits;
+        uint32_t *counted = NULL;
+        int blocks = (int)atrbvh_i_sort_blocks(n, run->cfg->threads);
+        sort_leaves lv;
+        const size_t nodes = 2 * (size_t)n - 1;
+        lv.box = atrbvh_i_scratch_get(c->scratch, CPU_BOX, nodes,
+                                      sizeof *lv.box);
+        lv.delta = atrbvh_i_scratch_get(c->scratch, CPU_COUNT, nodes,
+                                        sizeof *lv.delta);
+        if (!lv.box || !lv.delta)
+            return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                                 "cannot allocate the node boxes and "
+                                 "counts for %lu primitives",
+                                 (unsigned long)n);
+        c->boxes = lv.box; /* (moved along if the slot had to grow) */
+        lv.last = lv.box[n - 1];
+        lv.delta += n - 1;
+        atrbvh_sort_msd(n, c->key_varying, &shift, &bits);
+        if (c->msd_counts && shift == c->msd_shift && bits == c->msd_bits) {
+            counted = c->msd_counts;
+            blocks = (int)c->msd_blocks;
+        }
+        st = msd_sort(c->keys, c->order, tmp_keys, tmp_order, n, blocks,
+                      shift, bits, counted, &lv);
+        c->leaves_ready = st == ATRBVH_OK;
+    }
+    atrbvh_i_free(c->msd_counts);
+    c->msd_counts = NULL;
+    if (st != ATRBVH_OK)
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "cannot allocate sort counters for %lu "
                              "primitives",
