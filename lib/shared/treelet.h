@@ -184,10 +184,11 @@ ATRBVH_FN void atrbvh_treelet_gather(const atrbvh_treelet_tree *t,
  *  cost:  first the surface area A(S) of each subset, then, once S is
  *         processed, its optimal cost C(S);
  *  count: primitives N(S);
- *  split: the best left part P of S.
+ *  split: the best left part P of S, set by atrbvh_trbvh_extract for the
+ *         subsets of the extracted topology only.
  * The sizes in bytes are those of 2^n atrbvh_box, double and two u32.
  * Once every subset's box is made, the DP reuses the start of `box` as
- * 2^n doubles (see atrbvh_trbvh_dp). */
+ * 2 * 2^n doubles (see atrbvh_trbvh_dp). */
 typedef struct atrbvh_trbvh_scratch {
     ATRBVH_GLOBAL float *box;
     ATRBVH_GLOBAL double *cost;
@@ -386,6 +387,41 @@ ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
     return best;
 }
 
+/* The minimum of atrbvh_trbvh_best without its argument: the same sums
+ * over the same partitions, so the same value, bit for bit.  Two running
+ * minima, one for the partitions E and one for E|lb, joined at the end:
+ * the minimum of a set does not depend on the order it is taken in, and
+ * each is written lo < c ? lo : c, which x86 computes in place (MINSD),
+ * no register copy per partition.  That form differs from strict <
+ * (c < lo ? c : lo) only when neither value is below the other, i.e. for
+ * equal values, which have the same bits here: costs are sums and
+ * products of non-negative finite terms, never -0 (an area of min/max
+ * planes is +0 or positive) nor NaN (ci and ct are finite, lib/api.c).
+ * The argument of the minimum (the split) is wanted only for the few
+ * subsets of the extracted topology, and only when the treelet is written
+ * back: atrbvh_trbvh_extract finds it again with atrbvh_trbvh_best. */
+ATRBVH_FN double atrbvh_trbvh_min(ATRBVH_GLOBAL const double *cost,
+                                  ATRBVH_GLOBAL const double *rest,
+                                  atrbvh_trbvh_mask S, double base)
+{
+    const atrbvh_trbvh_mask delta = (S - 1u) & S;
+    const atrbvh_trbvh_mask lb = delta & (0u - delta), d2 = delta ^ lb;
+    ATRBVH_GLOBAL const double *cost_lb = cost + lb, *rest_lb = rest + lb;
+    atrbvh_trbvh_mask E;
+    double lo0 = base + cost[lb], lo1;
+    lo0 = lo0 + rest[lb];
+    lo1 = lo0;
+    for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
+        double c = base + cost[E];
+        c = c + rest[E];
+        lo0 = lo0 < c ? lo0 : c;
+        c = base + cost_lb[E];
+        c = c + rest_lb[E];
+        lo1 = lo1 < c ? lo1 : c;
+    }
+    return lo0 < lo1 ? lo0 : lo1;
+}
+
 /* TRBVH (Karras & Aila 2013, "Fast Parallel Construction of High-Quality
  * Bounding Volume Hierarchies", HPG 2013, section 4.2 and Algorithm 2):
  * dynamic programming over every subset S of the n treelet leaves,
@@ -409,7 +445,18 @@ ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
  * C(X) written with each final cost, at rev[(full ^ S) + P] (full ^ S
  * and P are disjoint): both loads indexed by P, no complement computed
  * per partition.  The mirror lives in the box planes, dead by then (2^n
- * doubles within 6 * 2^n floats, at the scratch's aligned start).
+ * doubles within 6 * 2^n floats, at the scratch's aligned start), and so
+ * do the areas A(S), kept for atrbvh_trbvh_extract in the next 2^n
+ * doubles (cost[S] holds A(S) until C(S) replaces it).
+ *
+ * Two steps: atrbvh_trbvh_costs fills the costs and returns C(all
+ * leaves) - the value only, no split per subset (atrbvh_trbvh_min) -
+ * and atrbvh_trbvh_extract, called only when the treelet is kept, finds
+ * the split of each subset of the optimal topology (atrbvh_trbvh_best
+ * over the final costs: the same sums, the first of equal minima) and
+ * builds it; atrbvh_trbvh_dp is both.  On dragon, TRBVH(7,3) keeps about
+ * 63% of its treelets, and the extracted subsets hold about a tenth of
+ * the partitions.
  *
  * Exactness: the partition cost is computed as (ci*A + C(P)) + C(S\P),
  * literally atrbvh_node_cost's sum, and rounding is monotone, so the
@@ -419,9 +466,9 @@ ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
  * extracted topology.  Ties keep the first partition in enumeration order
  * (strict <), i.e. the numerically smallest P.  Masks fit in 32 bits
  * (n <= ATRBVH_TRBVH_MAX). */
-/* The box planes change type (floats, then the doubles of the mirror,
- * then floats again for the next treelet): C allows it in allocated
- * memory, and this compiler barrier (no instruction) keeps any
+/* The box planes change type (floats, then the doubles of the mirror and
+ * the areas, then floats again for the next treelet): C allows it in
+ * allocated memory, and this compiler barrier (no instruction) keeps any
  * type-based reordering from moving an access across the change. */
 #if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__))
 #define ATRBVH_TRBVH_RETYPE() __asm__ __volatile__("" ::: "memory")
@@ -436,23 +483,21 @@ __attribute__((noinline, unused)) static double
 #else
 ATRBVH_FN double
 #endif
-atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
-                const atrbvh_treelet_leaves *lv, atrbvh_trbvh_scratch s,
-                atrbvh_treelet_topo *topo)
+atrbvh_trbvh_costs(const atrbvh_cost_params *p, atrbvh_u32 n,
+                   const atrbvh_treelet_leaves *lv, atrbvh_trbvh_scratch s)
 {
     atrbvh_u32 k, full = (1u << n) - 1u;
-    atrbvh_u32 stack_mask[ATRBVH_TRBVH_MAX];
-    atrbvh_u32 stack_node[ATRBVH_TRBVH_MAX];
-    atrbvh_u32 sp, next;
     /* Collapsing is allowed for N(S) <= lim (0: never; N(S) >= 1). */
     const atrbvh_u32 lim = !p->collapse          ? 0u
                            : p->max_leaf == 0u ? ATRBVH_U32_MAX
                                                : p->max_leaf;
     const double ci = p->ci, ct = p->ct;
     ATRBVH_GLOBAL double *cost = s.cost;
-    /* The mirror's last entry: rev + (full ^ S) = rev_top - S. */
+    /* The mirror's last entry: rev + (full ^ S) = rev_top - S; the areas
+     * after the mirror. */
     ATRBVH_GLOBAL double *rev_top =
         (ATRBVH_GLOBAL double *)(ATRBVH_GLOBAL void *)s.box + full;
+    ATRBVH_GLOBAL double *areas = rev_top + 1u;
 
     for (k = 0; k < n; k++)
         atrbvh_trbvh_subsets(n, k, lv, s);
@@ -462,30 +507,45 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
         atrbvh_trbvh_mask S;
         cost[bit] = lv->cost[k];
         *(rev_top - bit) = lv->cost[k];
-        s.split[bit] = 0;
         /* Every S whose highest leaf is k: S = bit | rest, 0 < rest < bit. */
         for (S = bit + 1u; S < bit + bit; S++) {
             const double area = cost[S];
             const double base = ci * area;
             ATRBVH_GLOBAL double *rest = rev_top - S;
-            atrbvh_trbvh_mask bestp;
-            double best = atrbvh_trbvh_best(cost, rest, S, base, &bestp);
+            double best = atrbvh_trbvh_min(cost, rest, S, base);
             if (s.count[S] <= lim) {
                 double flat = ct * area;
                 flat = flat * (double)s.count[S];
                 if (flat < best)
                     best = flat;
             }
+            areas[S] = area;
             cost[S] = best;
             rest[0] = best; /* rev[full ^ S] */
-            s.split[S] = (atrbvh_u32)bestp;
         }
     }
-
     ATRBVH_TRBVH_RETYPE();
+    return cost[full];
+}
 
-    /* Extract the topology top-down (explicit stack, no recursion):
-     * local node 0 is the root; children get local ids as discovered. */
+/* The optimal topology after atrbvh_trbvh_costs (its tables untouched
+ * since), top down (explicit stack, no recursion): local node 0 is the
+ * root, children get local ids as discovered.  The split of each subset
+ * S on the way is atrbvh_trbvh_best over the final costs, the argument of
+ * the minimum that atrbvh_trbvh_costs took (same sums, same order; it is
+ * also left in s.split[S]). */
+ATRBVH_FN void atrbvh_trbvh_extract(const atrbvh_cost_params *p,
+                                    atrbvh_u32 n, atrbvh_trbvh_scratch s,
+                                    atrbvh_treelet_topo *topo)
+{
+    atrbvh_u32 full = (1u << n) - 1u;
+    atrbvh_u32 stack_mask[ATRBVH_TRBVH_MAX];
+    atrbvh_u32 stack_node[ATRBVH_TRBVH_MAX];
+    atrbvh_u32 sp, next;
+    ATRBVH_GLOBAL double *rev_top =
+        (ATRBVH_GLOBAL double *)(ATRBVH_GLOBAL void *)s.box + full;
+    ATRBVH_GLOBAL const double *areas = rev_top + 1u;
+    ATRBVH_TRBVH_RETYPE();
     topo->root = 0;
     stack_mask[0] = full;
     stack_node[0] = 0;
@@ -493,10 +553,14 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
     next = 1;
     while (sp > 0) {
         atrbvh_u32 S, node, parts[2], side;
+        atrbvh_trbvh_mask bp;
         sp--;
         S = stack_mask[sp];
         node = stack_node[sp];
-        parts[0] = s.split[S];
+        (void)atrbvh_trbvh_best(s.cost, rev_top - S, S, p->ci * areas[S],
+                                &bp);
+        s.split[S] = (atrbvh_u32)bp;
+        parts[0] = (atrbvh_u32)bp;
         parts[1] = S ^ parts[0];
         for (side = 0; side < 2; side++) {
             atrbvh_u32 part = parts[side], code;
@@ -517,7 +581,18 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
                 topo->right[node] = code;
         }
     }
-    return s.cost[full];
+    ATRBVH_TRBVH_RETYPE();
+}
+
+/* The whole DP: costs, then the topology; returns C(all leaves). */
+ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
+                                 const atrbvh_treelet_leaves *lv,
+                                 atrbvh_trbvh_scratch s,
+                                 atrbvh_treelet_topo *topo)
+{
+    double found = atrbvh_trbvh_costs(p, n, lv, s);
+    atrbvh_trbvh_extract(p, n, s, topo);
+    return found;
 }
 
 /* -------------------------------------------------------------- ATRBVH */
@@ -1004,9 +1079,10 @@ ATRBVH_FN int atrbvh_treelet_process_tl(const atrbvh_treelet_tree *t,
         cost = found;
     } else {
         atrbvh_treelet_gather(t, tl, &lv);
-        found = atrbvh_trbvh_dp(p, tl->n, &lv, s, &topo);
+        found = atrbvh_trbvh_costs(p, tl->n, &lv, s);
         if (!(found < t->cost[root]))
             return 0;
+        atrbvh_trbvh_extract(p, tl->n, s, &topo);
         cost = atrbvh_treelet_evaluate(p, tl->n, &lv, &topo);
     }
     if (!(cost < t->cost[root]))
