@@ -140,11 +140,12 @@ ATRBVH_FN atrbvh_u32 atrbvh_treelet_form(const atrbvh_treelet_tree *t,
     while (m < n) {
         atrbvh_u32 best = ATRBVH_U32_MAX, node, child;
         double best_area = -0.5;
+        /* best moves on strict >; the maximum in place (MAXSD; equal
+         * areas have equal bits: never -0 nor NaN). */
         for (k = 0; k < m; k++) {
-            if (area[k] > best_area) {
-                best = k;
-                best_area = area[k];
-            }
+            const double a = area[k];
+            best = a > best_area ? k : best;
+            best_area = best_area > a ? best_area : a;
         }
         if (best == ATRBVH_U32_MAX)
             break;
@@ -612,11 +613,12 @@ ATRBVH_FN void atrbvh_row_min(ATRBVH_GLOBAL const double *dist, atrbvh_u32 r,
     ATRBVH_GLOBAL const double *row = dist + r * (r - 1u) / 2u;
     atrbvh_u32 k, bc = 0;
     double bv = row[0];
+    /* bc moves on strict <; the minimum in place as in
+     * atrbvh_agglomerate_at's row search (equal values, equal bits). */
     for (k = 1; k < r; k++) {
-        if (row[k] < bv) {
-            bv = row[k];
-            bc = k;
-        }
+        const double d = row[k];
+        bc = d < bv ? k : bc;
+        bv = bv < d ? bv : d;
     }
     *v = bv;
     *c = bc;
@@ -799,11 +801,9 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
             atrbvh_union_areas(&soa, atrbvh_soa_get(&soa, a), 0, a, row);
             bv = row[0];
             for (b = 1; b < a; b++) {
-                double d = row[b];
-                if (d < bv) {
-                    bv = d;
-                    bc = b;
-                }
+                const double d = row[b];
+                bc = d < bv ? b : bc;
+                bv = bv < d ? bv : d;
             }
             rmin[a] = bv;
             rcol[a] = bc;
@@ -834,10 +834,12 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
          * within it (atrbvh_row_min) the lowest column: the lowest linear
          * index. */
         for (r = 2; r < m; r++) {
-            if (rmin[r] < best) {
-                best = rmin[r];
-                i = r;
-            }
+            /* i moves on strict <; best = best < v ? best : v is the
+             * same minimum (equal row minima have the same bits: areas
+             * are +0 or positive, never NaN), computed in place. */
+            const double v = rmin[r];
+            i = v < best ? r : i;
+            best = best < v ? best : v;
         }
         j = rcol[i];
         merged = atrbvh_box_union(atrbvh_soa_get(&soa, j),
@@ -876,8 +878,13 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
             code[i] = code[last];
             for (a = 0; a < i; a++)
                 irow[a] = lrow[a];
-            for (a = i + 1u; a < last; a++)
-                dist[a * (a - 1u) / 2u + i] = lrow[a];
+            /* Column i: entry (a, i) at a(a-1)/2 + i, a step of a from
+             * row a to row a + 1. */
+            irow += i + i;
+            for (a = i + 1u; a < last; a++) {
+                *irow = lrow[a];
+                irow += a;
+            }
         }
         /* (b) distances to the merged cluster in slot j (after (a), so
          * the (i, j) entry gets the new value): row j here, column j
@@ -891,20 +898,28 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
          * below j hold neither column. */
         atrbvh_union_areas(&soa, merged, 0, last, area_of);
         jrow = dist + j * (j - 1u) / 2u;
-#if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
-        /* By pairs: j is small, a library memcpy (what the compiler
-         * makes of the plain loop) costs more than the copy. */
-        for (a = 0; a + 1u < j; a += 2u)
-            _mm_storeu_pd(jrow + a, _mm_loadu_pd(area_of + a));
-        if (a < j)
-            jrow[a] = area_of[a];
-#else
-        for (a = 0; a < j; a++)
-            jrow[a] = area_of[a];
-#endif
+        /* Row j is area_of[0 .. j-1] and changes no more in this merge:
+         * its minimum (atrbvh_row_min's, strict <) on the way (a plain
+         * copy would become a library memcpy call). */
+        if (j > 0u) {
+            double bv = area_of[0];
+            atrbvh_u32 bc = 0;
+            jrow[0] = bv;
+            for (a = 1; a < j; a++) {
+                const double d = area_of[a];
+                jrow[a] = d;
+                bc = d < bv ? a : bc;
+                bv = bv < d ? bv : d;
+            }
+            rmin[j] = bv;
+            rcol[j] = bc;
+        }
+        /* Row r starts r - 1 entries after row r - 1. */
+        jrow += j;
         for (r = j + 1u; r < last; r++) {
-            ATRBVH_GLOBAL double *row = dist + r * (r - 1u) / 2u;
+            ATRBVH_GLOBAL double *row = jrow;
             double v = area_of[r];
+            jrow += r;
             row[j] = v;
             if (r == i || rcol[r] == j || (r > i && rcol[r] == i)) {
                 atrbvh_row_min(dist, r, &rmin[r], &rcol[r]);
@@ -922,8 +937,6 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
                 }
             }
         }
-        if (j > 0u)
-            atrbvh_row_min(dist, j, &rmin[j], &rcol[j]);
     }
     topo->root = n - 2u;
     return root_cost;
