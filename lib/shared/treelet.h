@@ -423,6 +423,40 @@ ATRBVH_FN double atrbvh_trbvh_min(ATRBVH_GLOBAL const double *cost,
     return lo0 < lo1 ? lo0 : lo1;
 }
 
+/* The split of S that atrbvh_trbvh_best returns, found as the first
+ * partition in its order whose cost equals `target`, the minimum
+ * atrbvh_trbvh_costs found over the partitions (equal values have equal
+ * bits here, so the first equal one is the first of equal minima that
+ * strict < keeps).  The caller passes the partitions' minimum, so the
+ * scan stops at it, on average about halfway; should it not be met, the
+ * whole scan of atrbvh_trbvh_best decides. */
+ATRBVH_FN atrbvh_trbvh_mask
+atrbvh_trbvh_first(ATRBVH_GLOBAL const double *cost,
+                   ATRBVH_GLOBAL const double *rest, atrbvh_trbvh_mask S,
+                   double base, double target)
+{
+    const atrbvh_trbvh_mask delta = (S - 1u) & S;
+    const atrbvh_trbvh_mask lb = delta & (0u - delta), d2 = delta ^ lb;
+    ATRBVH_GLOBAL const double *cost_lb = cost + lb, *rest_lb = rest + lb;
+    atrbvh_trbvh_mask E, bp;
+    double c = base + cost[lb];
+    c = c + rest[lb];
+    if (c == target)
+        return lb;
+    for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
+        c = base + cost[E];
+        c = c + rest[E];
+        if (c == target)
+            return E;
+        c = base + cost_lb[E];
+        c = c + rest_lb[E];
+        if (c == target)
+            return E + lb;
+    }
+    (void)atrbvh_trbvh_best(cost, rest, S, base, &bp);
+    return bp;
+}
+
 /* TRBVH (Karras & Aila 2013, "Fast Parallel Construction of High-Quality
  * Bounding Volume Hierarchies", HPG 2013, section 4.2 and Algorithm 2):
  * dynamic programming over every subset S of the n treelet leaves,
@@ -546,6 +580,9 @@ ATRBVH_FN void atrbvh_trbvh_extract(const atrbvh_cost_params *p,
     ATRBVH_GLOBAL double *rev_top =
         (ATRBVH_GLOBAL double *)(ATRBVH_GLOBAL void *)s.box + full;
     ATRBVH_GLOBAL const double *areas = rev_top + 1u;
+    const atrbvh_u32 lim = !p->collapse          ? 0u
+                           : p->max_leaf == 0u ? ATRBVH_U32_MAX
+                                               : p->max_leaf;
     ATRBVH_TRBVH_RETYPE();
     topo->root = 0;
     stack_mask[0] = full;
@@ -558,8 +595,24 @@ ATRBVH_FN void atrbvh_trbvh_extract(const atrbvh_cost_params *p,
         sp--;
         S = stack_mask[sp];
         node = stack_node[sp];
-        (void)atrbvh_trbvh_best(s.cost, rev_top - S, S, p->ci * areas[S],
-                                &bp);
+        {
+            /* C(S) is the partitions' minimum unless the collapse term
+             * (recomputed as atrbvh_trbvh_costs did) equals it: then
+             * the partitions' minimum is unknown, scan them all. */
+            const double area = areas[S], base = p->ci * area;
+            const double target = s.cost[S];
+            int whole = 0;
+            if (s.count[S] <= lim) {
+                double flat = p->ct * area;
+                flat = flat * (double)s.count[S];
+                whole = flat == target;
+            }
+            if (whole)
+                (void)atrbvh_trbvh_best(s.cost, rev_top - S, S, base, &bp);
+            else
+                bp = atrbvh_trbvh_first(s.cost, rev_top - S, S, base,
+                                        target);
+        }
         s.split[S] = (atrbvh_u32)bp;
         parts[0] = (atrbvh_u32)bp;
         parts[1] = S ^ parts[0];
