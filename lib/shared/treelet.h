@@ -140,11 +140,12 @@ ATRBVH_FN atrbvh_u32 atrbvh_treelet_form(const atrbvh_treelet_tree *t,
     while (m < n) {
         atrbvh_u32 best = ATRBVH_U32_MAX, node, child;
         double best_area = -0.5;
+        /* best moves on strict >; the maximum in place (MAXSD; equal
+         * areas have equal bits: never -0 nor NaN). */
         for (k = 0; k < m; k++) {
-            if (area[k] > best_area) {
-                best = k;
-                best_area = area[k];
-            }
+            const double a = area[k];
+            best = a > best_area ? k : best;
+            best_area = best_area > a ? best_area : a;
         }
         if (best == ATRBVH_U32_MAX)
             break;
@@ -184,10 +185,11 @@ ATRBVH_FN void atrbvh_treelet_gather(const atrbvh_treelet_tree *t,
  *  cost:  first the surface area A(S) of each subset, then, once S is
  *         processed, its optimal cost C(S);
  *  count: primitives N(S);
- *  split: the best left part P of S.
+ *  split: the best left part P of S, set by atrbvh_trbvh_extract for the
+ *         subsets of the extracted topology only.
  * The sizes in bytes are those of 2^n atrbvh_box, double and two u32.
  * Once every subset's box is made, the DP reuses the start of `box` as
- * 2^n doubles (see atrbvh_trbvh_dp). */
+ * 2 * 2^n doubles (see atrbvh_trbvh_dp). */
 typedef struct atrbvh_trbvh_scratch {
     ATRBVH_GLOBAL float *box;
     ATRBVH_GLOBAL double *cost;
@@ -386,6 +388,75 @@ ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
     return best;
 }
 
+/* The minimum of atrbvh_trbvh_best without its argument: the same sums
+ * over the same partitions, so the same value, bit for bit.  Two running
+ * minima, one for the partitions E and one for E|lb, joined at the end:
+ * the minimum of a set does not depend on the order it is taken in, and
+ * each is written lo < c ? lo : c, which x86 computes in place (MINSD),
+ * no register copy per partition.  That form differs from strict <
+ * (c < lo ? c : lo) only when neither value is below the other, i.e. for
+ * equal values, which have the same bits here: costs are sums and
+ * products of non-negative finite terms, never -0 (an area of min/max
+ * planes is +0 or positive) nor NaN (ci and ct are finite, lib/api.c).
+ * The argument of the minimum (the split) is wanted only for the few
+ * subsets of the extracted topology, and only when the treelet is written
+ * back: atrbvh_trbvh_extract finds it again with atrbvh_trbvh_best. */
+ATRBVH_FN double atrbvh_trbvh_min(ATRBVH_GLOBAL const double *cost,
+                                  ATRBVH_GLOBAL const double *rest,
+                                  atrbvh_trbvh_mask S, double base)
+{
+    const atrbvh_trbvh_mask delta = (S - 1u) & S;
+    const atrbvh_trbvh_mask lb = delta & (0u - delta), d2 = delta ^ lb;
+    ATRBVH_GLOBAL const double *cost_lb = cost + lb, *rest_lb = rest + lb;
+    atrbvh_trbvh_mask E;
+    double lo0 = base + cost[lb], lo1;
+    lo0 = lo0 + rest[lb];
+    lo1 = lo0;
+    for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
+        double c = base + cost[E];
+        c = c + rest[E];
+        lo0 = lo0 < c ? lo0 : c;
+        c = base + cost_lb[E];
+        c = c + rest_lb[E];
+        lo1 = lo1 < c ? lo1 : c;
+    }
+    return lo0 < lo1 ? lo0 : lo1;
+}
+
+/* The split of S that atrbvh_trbvh_best returns, found as the first
+ * partition in its order whose cost equals `target`, the minimum
+ * atrbvh_trbvh_costs found over the partitions (equal values have equal
+ * bits here, so the first equal one is the first of equal minima that
+ * strict < keeps).  The caller passes the partitions' minimum, so the
+ * scan stops at it, on average about halfway; should it not be met, the
+ * whole scan of atrbvh_trbvh_best decides. */
+ATRBVH_FN atrbvh_trbvh_mask
+atrbvh_trbvh_first(ATRBVH_GLOBAL const double *cost,
+                   ATRBVH_GLOBAL const double *rest, atrbvh_trbvh_mask S,
+                   double base, double target)
+{
+    const atrbvh_trbvh_mask delta = (S - 1u) & S;
+    const atrbvh_trbvh_mask lb = delta & (0u - delta), d2 = delta ^ lb;
+    ATRBVH_GLOBAL const double *cost_lb = cost + lb, *rest_lb = rest + lb;
+    atrbvh_trbvh_mask E, bp;
+    double c = base + cost[lb];
+    c = c + rest[lb];
+    if (c == target)
+        return lb;
+    for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
+        c = base + cost[E];
+        c = c + rest[E];
+        if (c == target)
+            return E;
+        c = base + cost_lb[E];
+        c = c + rest_lb[E];
+        if (c == target)
+            return E + lb;
+    }
+    (void)atrbvh_trbvh_best(cost, rest, S, base, &bp);
+    return bp;
+}
+
 /* TRBVH (Karras & Aila 2013, "Fast Parallel Construction of High-Quality
  * Bounding Volume Hierarchies", HPG 2013, section 4.2 and Algorithm 2):
  * dynamic programming over every subset S of the n treelet leaves,
@@ -409,7 +480,18 @@ ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
  * C(X) written with each final cost, at rev[(full ^ S) + P] (full ^ S
  * and P are disjoint): both loads indexed by P, no complement computed
  * per partition.  The mirror lives in the box planes, dead by then (2^n
- * doubles within 6 * 2^n floats, at the scratch's aligned start).
+ * doubles within 6 * 2^n floats, at the scratch's aligned start), and so
+ * do the areas A(S), kept for atrbvh_trbvh_extract in the next 2^n
+ * doubles (cost[S] holds A(S) until C(S) replaces it).
+ *
+ * Two steps: atrbvh_trbvh_costs fills the costs and returns C(all
+ * leaves) - the value only, no split per subset (atrbvh_trbvh_min) -
+ * and atrbvh_trbvh_extract, called only when the treelet is kept, finds
+ * the split of each subset of the optimal topology (atrbvh_trbvh_best
+ * over the final costs: the same sums, the first of equal minima) and
+ * builds it; atrbvh_trbvh_dp is both.  On dragon, TRBVH(7,3) keeps about
+ * 63% of its treelets, and the extracted subsets hold about a tenth of
+ * the partitions.
  *
  * Exactness: the partition cost is computed as (ci*A + C(P)) + C(S\P),
  * literally atrbvh_node_cost's sum, and rounding is monotone, so the
@@ -419,9 +501,9 @@ ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
  * extracted topology.  Ties keep the first partition in enumeration order
  * (strict <), i.e. the numerically smallest P.  Masks fit in 32 bits
  * (n <= ATRBVH_TRBVH_MAX). */
-/* The box planes change type (floats, then the doubles of the mirror,
- * then floats again for the next treelet): C allows it in allocated
- * memory, and this compiler barrier (no instruction) keeps any
+/* The box planes change type (floats, then the doubles of the mirror and
+ * the areas, then floats again for the next treelet): C allows it in
+ * allocated memory, and this compiler barrier (no instruction) keeps any
  * type-based reordering from moving an access across the change. */
 #if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__))
 #define ATRBVH_TRBVH_RETYPE() __asm__ __volatile__("" ::: "memory")
@@ -436,23 +518,21 @@ __attribute__((noinline, unused)) static double
 #else
 ATRBVH_FN double
 #endif
-atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
-                const atrbvh_treelet_leaves *lv, atrbvh_trbvh_scratch s,
-                atrbvh_treelet_topo *topo)
+atrbvh_trbvh_costs(const atrbvh_cost_params *p, atrbvh_u32 n,
+                   const atrbvh_treelet_leaves *lv, atrbvh_trbvh_scratch s)
 {
     atrbvh_u32 k, full = (1u << n) - 1u;
-    atrbvh_u32 stack_mask[ATRBVH_TRBVH_MAX];
-    atrbvh_u32 stack_node[ATRBVH_TRBVH_MAX];
-    atrbvh_u32 sp, next;
     /* Collapsing is allowed for N(S) <= lim (0: never; N(S) >= 1). */
     const atrbvh_u32 lim = !p->collapse          ? 0u
                            : p->max_leaf == 0u ? ATRBVH_U32_MAX
                                                : p->max_leaf;
     const double ci = p->ci, ct = p->ct;
     ATRBVH_GLOBAL double *cost = s.cost;
-    /* The mirror's last entry: rev + (full ^ S) = rev_top - S. */
+    /* The mirror's last entry: rev + (full ^ S) = rev_top - S; the areas
+     * after the mirror. */
     ATRBVH_GLOBAL double *rev_top =
         (ATRBVH_GLOBAL double *)(ATRBVH_GLOBAL void *)s.box + full;
+    ATRBVH_GLOBAL double *areas = rev_top + 1u;
 
     for (k = 0; k < n; k++)
         atrbvh_trbvh_subsets(n, k, lv, s);
@@ -462,30 +542,48 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
         atrbvh_trbvh_mask S;
         cost[bit] = lv->cost[k];
         *(rev_top - bit) = lv->cost[k];
-        s.split[bit] = 0;
         /* Every S whose highest leaf is k: S = bit | rest, 0 < rest < bit. */
         for (S = bit + 1u; S < bit + bit; S++) {
             const double area = cost[S];
             const double base = ci * area;
             ATRBVH_GLOBAL double *rest = rev_top - S;
-            atrbvh_trbvh_mask bestp;
-            double best = atrbvh_trbvh_best(cost, rest, S, base, &bestp);
+            double best = atrbvh_trbvh_min(cost, rest, S, base);
             if (s.count[S] <= lim) {
                 double flat = ct * area;
                 flat = flat * (double)s.count[S];
                 if (flat < best)
                     best = flat;
             }
+            areas[S] = area;
             cost[S] = best;
             rest[0] = best; /* rev[full ^ S] */
-            s.split[S] = (atrbvh_u32)bestp;
         }
     }
-
     ATRBVH_TRBVH_RETYPE();
+    return cost[full];
+}
 
-    /* Extract the topology top-down (explicit stack, no recursion):
-     * local node 0 is the root; children get local ids as discovered. */
+/* The optimal topology after atrbvh_trbvh_costs (its tables untouched
+ * since), top down (explicit stack, no recursion): local node 0 is the
+ * root, children get local ids as discovered.  The split of each subset
+ * S on the way is atrbvh_trbvh_best over the final costs, the argument of
+ * the minimum that atrbvh_trbvh_costs took (same sums, same order; it is
+ * also left in s.split[S]). */
+ATRBVH_FN void atrbvh_trbvh_extract(const atrbvh_cost_params *p,
+                                    atrbvh_u32 n, atrbvh_trbvh_scratch s,
+                                    atrbvh_treelet_topo *topo)
+{
+    atrbvh_u32 full = (1u << n) - 1u;
+    atrbvh_u32 stack_mask[ATRBVH_TRBVH_MAX];
+    atrbvh_u32 stack_node[ATRBVH_TRBVH_MAX];
+    atrbvh_u32 sp, next;
+    ATRBVH_GLOBAL double *rev_top =
+        (ATRBVH_GLOBAL double *)(ATRBVH_GLOBAL void *)s.box + full;
+    ATRBVH_GLOBAL const double *areas = rev_top + 1u;
+    const atrbvh_u32 lim = !p->collapse          ? 0u
+                           : p->max_leaf == 0u ? ATRBVH_U32_MAX
+                                               : p->max_leaf;
+    ATRBVH_TRBVH_RETYPE();
     topo->root = 0;
     stack_mask[0] = full;
     stack_node[0] = 0;
@@ -493,10 +591,30 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
     next = 1;
     while (sp > 0) {
         atrbvh_u32 S, node, parts[2], side;
+        atrbvh_trbvh_mask bp;
         sp--;
         S = stack_mask[sp];
         node = stack_node[sp];
-        parts[0] = s.split[S];
+        {
+            /* C(S) is the partitions' minimum unless the collapse term
+             * (recomputed as atrbvh_trbvh_costs did) equals it: then
+             * the partitions' minimum is unknown, scan them all. */
+            const double area = areas[S], base = p->ci * area;
+            const double target = s.cost[S];
+            int whole = 0;
+            if (s.count[S] <= lim) {
+                double flat = p->ct * area;
+                flat = flat * (double)s.count[S];
+                whole = flat == target;
+            }
+            if (whole)
+                (void)atrbvh_trbvh_best(s.cost, rev_top - S, S, base, &bp);
+            else
+                bp = atrbvh_trbvh_first(s.cost, rev_top - S, S, base,
+                                        target);
+        }
+        s.split[S] = (atrbvh_u32)bp;
+        parts[0] = (atrbvh_u32)bp;
         parts[1] = S ^ parts[0];
         for (side = 0; side < 2; side++) {
             atrbvh_u32 part = parts[side], code;
@@ -517,7 +635,18 @@ atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
                 topo->right[node] = code;
         }
     }
-    return s.cost[full];
+    ATRBVH_TRBVH_RETYPE();
+}
+
+/* The whole DP: costs, then the topology; returns C(all leaves). */
+ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
+                                 const atrbvh_treelet_leaves *lv,
+                                 atrbvh_trbvh_scratch s,
+                                 atrbvh_treelet_topo *topo)
+{
+    double found = atrbvh_trbvh_costs(p, n, lv, s);
+    atrbvh_trbvh_extract(p, n, s, topo);
+    return found;
 }
 
 /* -------------------------------------------------------------- ATRBVH */
@@ -537,11 +666,12 @@ ATRBVH_FN void atrbvh_row_min(ATRBVH_GLOBAL const double *dist, atrbvh_u32 r,
     ATRBVH_GLOBAL const double *row = dist + r * (r - 1u) / 2u;
     atrbvh_u32 k, bc = 0;
     double bv = row[0];
+    /* bc moves on strict <; the minimum in place as in
+     * atrbvh_agglomerate_at's row search (equal values, equal bits). */
     for (k = 1; k < r; k++) {
-        if (row[k] < bv) {
-            bv = row[k];
-            bc = k;
-        }
+        const double d = row[k];
+        bc = d < bv ? k : bc;
+        bv = bv < d ? bv : d;
     }
     *v = bv;
     *c = bc;
@@ -724,11 +854,9 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
             atrbvh_union_areas(&soa, atrbvh_soa_get(&soa, a), 0, a, row);
             bv = row[0];
             for (b = 1; b < a; b++) {
-                double d = row[b];
-                if (d < bv) {
-                    bv = d;
-                    bc = b;
-                }
+                const double d = row[b];
+                bc = d < bv ? b : bc;
+                bv = bv < d ? bv : d;
             }
             rmin[a] = bv;
             rcol[a] = bc;
@@ -759,10 +887,12 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
          * within it (atrbvh_row_min) the lowest column: the lowest linear
          * index. */
         for (r = 2; r < m; r++) {
-            if (rmin[r] < best) {
-                best = rmin[r];
-                i = r;
-            }
+            /* i moves on strict <; best = best < v ? best : v is the
+             * same minimum (equal row minima have the same bits: areas
+             * are +0 or positive, never NaN), computed in place. */
+            const double v = rmin[r];
+            i = v < best ? r : i;
+            best = best < v ? best : v;
         }
         j = rcol[i];
         merged = atrbvh_box_union(atrbvh_soa_get(&soa, j),
@@ -801,8 +931,13 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
             code[i] = code[last];
             for (a = 0; a < i; a++)
                 irow[a] = lrow[a];
-            for (a = i + 1u; a < last; a++)
-                dist[a * (a - 1u) / 2u + i] = lrow[a];
+            /* Column i: entry (a, i) at a(a-1)/2 + i, a step of a from
+             * row a to row a + 1. */
+            irow += i + i;
+            for (a = i + 1u; a < last; a++) {
+                *irow = lrow[a];
+                irow += a;
+            }
         }
         /* (b) distances to the merged cluster in slot j (after (a), so
          * the (i, j) entry gets the new value): row j here, column j
@@ -816,20 +951,28 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
          * below j hold neither column. */
         atrbvh_union_areas(&soa, merged, 0, last, area_of);
         jrow = dist + j * (j - 1u) / 2u;
-#if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
-        /* By pairs: j is small, a library memcpy (what the compiler
-         * makes of the plain loop) costs more than the copy. */
-        for (a = 0; a + 1u < j; a += 2u)
-            _mm_storeu_pd(jrow + a, _mm_loadu_pd(area_of + a));
-        if (a < j)
-            jrow[a] = area_of[a];
-#else
-        for (a = 0; a < j; a++)
-            jrow[a] = area_of[a];
-#endif
+        /* Row j is area_of[0 .. j-1] and changes no more in this merge:
+         * its minimum (atrbvh_row_min's, strict <) on the way (a plain
+         * copy would become a library memcpy call). */
+        if (j > 0u) {
+            double bv = area_of[0];
+            atrbvh_u32 bc = 0;
+            jrow[0] = bv;
+            for (a = 1; a < j; a++) {
+                const double d = area_of[a];
+                jrow[a] = d;
+                bc = d < bv ? a : bc;
+                bv = bv < d ? bv : d;
+            }
+            rmin[j] = bv;
+            rcol[j] = bc;
+        }
+        /* Row r starts r - 1 entries after row r - 1. */
+        jrow += j;
         for (r = j + 1u; r < last; r++) {
-            ATRBVH_GLOBAL double *row = dist + r * (r - 1u) / 2u;
+            ATRBVH_GLOBAL double *row = jrow;
             double v = area_of[r];
+            jrow += r;
             row[j] = v;
             if (r == i || rcol[r] == j || (r > i && rcol[r] == i)) {
                 atrbvh_row_min(dist, r, &rmin[r], &rcol[r]);
@@ -847,8 +990,6 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
                 }
             }
         }
-        if (j > 0u)
-            atrbvh_row_min(dist, j, &rmin[j], &rcol[j]);
     }
     topo->root = n - 2u;
     return root_cost;
@@ -1004,9 +1145,10 @@ ATRBVH_FN int atrbvh_treelet_process_tl(const atrbvh_treelet_tree *t,
         cost = found;
     } else {
         atrbvh_treelet_gather(t, tl, &lv);
-        found = atrbvh_trbvh_dp(p, tl->n, &lv, s, &topo);
+        found = atrbvh_trbvh_costs(p, tl->n, &lv, s);
         if (!(found < t->cost[root]))
             return 0;
+        atrbvh_trbvh_extract(p, tl->n, s, &topo);
         cost = atrbvh_treelet_evaluate(p, tl->n, &lv, &topo);
     }
     if (!(cost < t->cost[root]))
