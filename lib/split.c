@@ -29,7 +29,9 @@
  *    scale, so the result does not depend on the thread count;
  *  - ATRBVH_SPLIT_SAH (default): top down over the grid's cells, a cell's
  *    triangles judged together, cut at the cell's midplane where that
- *    lowers the SAH of its halves (sah_refs, below); single-threaded;
+ *    lowers the SAH of its halves (sah_refs, below); per level, the
+ *    nodes on the threads, the budget handed out serially in cell order
+ *    (the same references for any thread count);
  *  - each split (tree and priority rules) cuts the current piece at the most important grid plane
  *    crossing its box, the triangle clipped exactly to both halves (in
  *    double, rounded outward to float), and the remaining splits are
@@ -648,8 +650,8 @@ static double side_cost(const atrbvh_box *b, uint64_t n)
 
 /* Reference f's triangle clipped to both sides of the plane x on axis k,
  * within f's box: 1 with both halves' boxes, 0 when rounding leaves one
- * side empty.  The same result every time it is called (it is called
- * again to write the halves, rather than keeping them). */
+ * side empty.  The halves are kept (sah_ctx.halves) from the weighing
+ * to the writing, rather than clipped twice. */
 static int cut_ref(const atrbvh_i_run *run, const uint32_t *ids,
                    const atrbvh_box *boxes, const sref *f, int k, float x,
                    atrbvh_box *l, atrbvh_box *r)
@@ -663,6 +665,372 @@ static int cut_ref(const atrbvh_i_run *run, const uint32_t *ids,
            clip_box(v, &rr, &boxes[f->j], r);
 }
 
+/* What the SAH rule knows of one node (a cell) of the current level.
+ * Partition, clip and weigh fill it in on any thread, a pure function of
+ * the cell; place then hands out the budget and the output positions
+ * serially, in cell order, and write moves the references. */
+typedef struct scell {
+    atrbvh_box lo, ro, lobj, robj; /* sides: wholly, and with straddlers */
+    uint64_t nl, nr, nlo, nro;     /* their counts */
+    uint64_t cut, cutl; /* straddlers cut (of them centroid-left) */
+    size_t out_at, nxt_at, nn_at; /* place's: where its output goes */
+    unsigned char stop; /* no overlap below can pass: emitted whole */
+    unsigned char cand; /* weighed for a spatial split */
+    unsigned char pays; /* the cut lowers the halves' SAH */
+    unsigned char taken; /* place's: the budget took the cut */
+} scell;
+
+/* The state of sah_refs shared by the per-cell steps. */
+typedef struct sah_ctx {
+    const atrbvh_i_run *run;
+    const grid *g;
+    const atrbvh_box *boxes; /* per kept triangle */
+    const uint32_t *ids;     /* kept triangle -> primitive id (or NULL) */
+    double min_overlap;
+    sref *cur, *nxt;
+    snode *cn, *nn;
+    scell *cells;          /* per node of cn */
+    unsigned char *side;   /* per position in cur */
+    atrbvh_box *halves;    /* per position in cur: a straddler's halves */
+    atrbvh_box *out;
+    uint32_t *out_ids;
+    int k;                 /* the level's axis */
+    uint32_t half;         /* half the level's cell width, grid units */
+} sah_ctx;
+
+#define S_CLIPPED 8u /* cut_ref gave both halves (in halves[2p], [2p + 1]) */
+
+/* The plane of node nd at the level: its cell's midplane. */
+static float sah_plane(const sah_ctx *s, const snode *nd)
+{
+    const uint32_t mid = nd->qlo[s->k] + s->half;
+    return (float)(s->g->lo[s->k] + (double)mid * s->g->step[s->k]);
+}
+
+/* Node c's object partition (straddlers whole at their centroid's
+ * side): side[] of its references, the sides' boxes and counts, and
+ * whether it stops here or is weighed for a spatial split (given
+ * budget left: place refuses the cut otherwise). */
+static void sah_partition(const sah_ctx *s, size_t c)
+{
+    const snode nd = s->cn[c];
+    const sref *r = s->cur + nd.first;
+    unsigned char *side = s->side + nd.first;
+    scell *e = &s->cells[c];
+    const int k = s->k;
+    const float x = sah_plane(s, &nd);
+    atrbvh_box lo = atrbvh_box_empty(), ro = atrbvh_box_empty();
+    atrbvh_box lobj = lo, robj = ro;
+    uint64_t nl = 0, nr = 0, nlo = 0, nro = 0;
+    uint32_t ns = 0, a;
+    for (a = 0; a < nd.count; a++) {
+        const atrbvh_box *b = &r[a].box;
+        if (b->max[k] <= x) {
+            side[a] = 0;
+            lo = atrbvh_box_union(lo, *b);
+            nl++;
+        } else if (b->min[k] >= x) {
+            side[a] = S_RIGHT;
+            ro = atrbvh_box_union(ro, *b);
+            nr++;
+        } else if (atrbvh_box_centre(*b, k) >= x) {
+            side[a] = S_STRADDLE | S_RIGHT;
+            robj = atrbvh_box_union(robj, *b);
+            nro++;
+            ns++;
+        } else {
+            side[a] = S_STRADDLE;
+            lobj = atrbvh_box_union(lobj, *b);
+            nlo++;
+            ns++;
+        }
+    }
+    lobj = atrbvh_box_union(lobj, lo);
+    robj = atrbvh_box_union(robj, ro);
+    nlo += nl;
+    nro += nr;
+    e->lo = lo;
+    e->ro = ro;
+    e->lobj = lobj;
+    e->robj = robj;
+    e->nl = nl;
+    e->nr = nr;
+    e->nlo = nlo;
+    e->nro = nro;
+    e->cut = e->cutl = 0;
+    e->pays = e->taken = 0;
+    /* no overlap below can pass: every box below lies in this node's,
+     * so nothing more is cut here */
+    e->stop = !(atrbvh_box_area(atrbvh_box_union(lobj, robj)) >
+                s->min_overlap);
+    e->cand = !e->stop && ns && nlo && nro &&
+              overlap_area(&lobj, &robj) > s->min_overlap;
+}
+
+/* The straddlers of weighed node c at positions [p0, p1) of cur clipped
+ * to both sides of its plane (the expensive part: any range on any
+ * thread; each position is written by one call). */
+static void sah_clip(const sah_ctx *s, size_t c, size_t p0, size_t p1)
+{
+    const snode nd = s->cn[c];
+    const float x = sah_plane(s, &nd);
+    size_t p;
+    for (p = p0; p < p1; p++) {
+        if (!(s->side[p] & S_STRADDLE))
+            continue;
+        if (cut_ref(s->run, s->ids, s->boxes, &s->cur[p], s->k, x,
+                    &s->halves[2 * p], &s->halves[2 * p + 1]))
+            s->side[p] |= S_CLIPPED;
+    }
+}
+
+/* Weighed node c, its straddlers clipped: every straddler cut, then each
+ * kept whole at its centroid's side where that costs no more (in
+ * reference order: each decision sees the ones before), and whether the
+ * cut lowers the halves' SAH. */
+static void sah_weigh(const sah_ctx *s, size_t c)
+{
+    const snode nd = s->cn[c];
+    const sref *r = s->cur + nd.first;
+    unsigned char *side = s->side + nd.first;
+    const atrbvh_box *hv = s->halves + 2 * (size_t)nd.first;
+    scell *e = &s->cells[c];
+    atrbvh_box lsp = e->lo, rsp = e->ro;
+    uint64_t nls = e->nl, nrs = e->nr, cut = 0, cutl = 0;
+    uint32_t a;
+    for (a = 0; a < nd.count; a++) {
+        if (!(side[a] & S_STRADDLE))
+            continue;
+        if (side[a] & S_CLIPPED) {
+            side[a] |= S_CUT;
+            lsp = atrbvh_box_union(lsp, hv[2 * a]);
+            rsp = atrbvh_box_union(rsp, hv[2 * a + 1]);
+            nls++;
+            nrs++;
+        } else if (side[a] & S_RIGHT) { /* rounding: whole */
+            rsp = atrbvh_box_union(rsp, r[a].box);
+            nrs++;
+        } else {
+            lsp = atrbvh_box_union(lsp, r[a].box);
+            nls++;
+        }
+    }
+    for (a = 0; a < nd.count; a++) {
+        double split_c, whole_c;
+        atrbvh_box wb;
+        if (!(side[a] & S_CUT))
+            continue;
+        split_c = side_cost(&lsp, nls) + side_cost(&rsp, nrs);
+        if (side[a] & S_RIGHT) {
+            wb = atrbvh_box_union(rsp, r[a].box);
+            whole_c = side_cost(&lsp, nls - 1) + side_cost(&wb, nrs);
+        } else {
+            wb = atrbvh_box_union(lsp, r[a].box);
+            whole_c = side_cost(&wb, nls) + side_cost(&rsp, nrs - 1);
+        }
+        if (whole_c <= split_c) {
+            side[a] &= (unsigned char)~S_CUT;
+            if (side[a] & S_RIGHT)
+                rsp = wb, nls--;
+            else
+                lsp = wb, nrs--;
+        } else {
+            cut++;
+            cutl += !(side[a] & S_RIGHT);
+        }
+    }
+    e->cut = cut;
+    e->cutl = cutl;
+    e->pays = cut && side_cost(&lsp, nls) + side_cost(&rsp, nrs) <
+                         side_cost(&e->lobj, e->nlo) +
+                             side_cost(&e->robj, e->nro);
+}
+
+/* Where node c's output goes, serially in cell order (what makes the
+ * result the same for any thread count): the budget takes its cut if it
+ * pays and fits what is left; its halves go to nxt at *pos, those still
+ * to cut to nn at *nnext, the rest to out at *total. */
+static void sah_place(const sah_ctx *s, size_t c, int level,
+                      uint64_t *remaining, uint64_t *total, size_t *pos,
+                      size_t *nnext)
+{
+    scell *e = &s->cells[c];
+    uint64_t nh[2];
+    int h;
+    if (e->stop) {
+        e->out_at = (size_t)*total;
+        *total += s->cn[c].count;
+        return;
+    }
+    if (e->cand && e->pays && *remaining && e->cut <= *remaining) {
+        *remaining -= e->cut;
+        e->taken = 1;
+    } else {
+        e->cut = e->cutl = 0;
+    }
+    nh[0] = e->nlo + e->cut - e->cutl;
+    nh[1] = e->nro + e->cutl;
+    e->nxt_at = *pos;
+    e->nn_at = *nnext;
+    e->out_at = (size_t)*total;
+    for (h = 0; h < 2; h++) {
+        if (!nh[h])
+            continue;
+        if (nh[h] > SAH_STOP && level > 0)
+            ++*nnext;
+        else
+            *total += nh[h];
+    }
+    *pos += (size_t)(nh[0] + nh[1]);
+}
+
+/* Entries [f, f + n) of refs to out from position o on: their boxes,
+ * and their primitive ids to out_ids. */
+static void sah_emit(const sah_ctx *s, const sref *refs, size_t f,
+                     size_t n, size_t o)
+{
+    size_t e;
+    for (e = f; e < f + n; e++, o++) {
+        s->out[o] = refs[e].box;
+        s->out_ids[o] = s->ids ? s->ids[refs[e].j] : refs[e].j;
+    }
+}
+
+/* Node c's references where place put them: the halves, left first,
+ * each in the references' order (left at nxt_at, right after the left's
+ * count); a half still to cut becomes a node of nn, the rest go out. */
+static void sah_write(const sah_ctx *s, size_t c, int level)
+{
+    const snode nd = s->cn[c];
+    const sref *r = s->cur + nd.first;
+    const unsigned char *side = s->side + nd.first;
+    const atrbvh_box *hv = s->halves + 2 * (size_t)nd.first;
+    const scell *e = &s->cells[c];
+    const size_t nh[2] = {(size_t)(e->nlo + e->cut - e->cutl),
+                          (size_t)(e->nro + e->cutl)};
+    size_t at[2], nn_at = e->nn_at, out_at = e->out_at;
+    uint32_t a;
+    int h;
+    if (e->stop) {
+        sah_emit(s, s->cur, nd.first, nd.count, out_at);
+        return;
+    }
+    at[0] = e->nxt_at;
+    at[1] = e->nxt_at + nh[0];
+    if (!e->taken && (!nh[0] || !nh[1])) { /* all on one side */
+        memcpy(s->nxt + e->nxt_at, r, nd.count * sizeof *r);
+    } else {
+        for (a = 0; a < nd.count; a++) {
+            const unsigned sd = side[a];
+            if (e->taken && (sd & S_CUT)) { /* the halves weighed */
+                s->nxt[at[0]].box = hv[2 * a];
+                s->nxt[at[0]++].j = r[a].j;
+                s->nxt[at[1]].box = hv[2 * a + 1];
+                s->nxt[at[1]++].j = r[a].j;
+            } else {
+                s->nxt[at[sd & S_RIGHT]++] = r[a];
+            }
+        }
+    }
+    for (h = 0; h < 2; h++) {
+        const size_t first = h ? e->nxt_at + nh[0] : e->nxt_at;
+        if (!nh[h])
+            continue;
+        if (nh[h] > SAH_STOP && level > 0) {
+            snode *m = &s->nn[nn_at++];
+            *m = nd;
+            m->first = (uint32_t)first;
+            m->count = (uint32_t)nh[h];
+            if (h)
+                m->qlo[s->k] = nd.qlo[s->k] + s->half;
+            continue;
+        }
+        sah_emit(s, s->nxt, first, nh[h], out_at);
+        out_at += nh[h];
+    }
+}
+
+/* A level is spread over the threads only when it holds this many
+ * references (below, one thread is faster than the hand-overs); blocks
+ * of SAH_CLIP_BLOCK positions are the clipping step's work items. */
+#define SAH_PAR_REFS 4096u
+#define SAH_CLIP_BLOCK 64u
+
+/* The node of cn holding position p, or the next one after it (cells
+ * are in increasing position order; positions between them belong to
+ * none). */
+static size_t sah_cell_at(const sah_ctx *s, size_t ncur, size_t p)
+{
+    size_t lo = 0, hi = ncur;
+    while (lo < hi) { /* the first node ending after p */
+        const size_t m = lo + (hi - lo) / 2;
+        if ((size_t)s->cn[m].first + s->cn[m].count <= p)
+            lo = m + 1;
+        else
+            hi = m;
+    }
+    return lo;
+}
+
+/* One level on the threads: partition, clip and weigh every node in
+ * parallel (as though the budget lasted the level: a node's result does
+ * not depend on it), place serially, write in parallel.  Nodes after the
+ * one that spends the budget are weighed in vain: the price of not
+ * waiting for the budget, one level's weighing at most, once. */
+static void sah_level_parallel(const sah_ctx *s, size_t ncur, int level,
+                               int threads, uint64_t *remaining,
+                               uint64_t *total, size_t *nnext)
+{
+    const size_t end = (size_t)s->cn[ncur - 1].first + s->cn[ncur - 1].count;
+    const int64_t blocks = (int64_t)((end + SAH_CLIP_BLOCK - 1) /
+                                     SAH_CLIP_BLOCK);
+    int64_t c;
+    (void)threads;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads)
+#endif
+    {
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 8)
+#endif
+        for (c = 0; c < (int64_t)ncur; c++)
+            sah_partition(s, (size_t)c);
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+        for (c = 0; c < blocks; c++) {
+            const size_t p0 = (size_t)c * SAH_CLIP_BLOCK;
+            const size_t p1 = p0 + SAH_CLIP_BLOCK < end ? p0 + SAH_CLIP_BLOCK
+                                                        : end;
+            size_t n = sah_cell_at(s, ncur, p0);
+            for (; n < ncur && s->cn[n].first < p1; n++) {
+                const size_t f = s->cn[n].first, l = f + s->cn[n].count;
+                if (s->cells[n].cand)
+                    sah_clip(s, n, f > p0 ? f : p0, l < p1 ? l : p1);
+            }
+        }
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 8)
+#endif
+        for (c = 0; c < (int64_t)ncur; c++)
+            if (s->cells[c].cand)
+                sah_weigh(s, (size_t)c);
+#ifdef _OPENMP
+#pragma omp single
+#endif
+        {
+            size_t i, pos = 0;
+            for (i = 0; i < ncur; i++)
+                sah_place(s, i, level, remaining, total, &pos, nnext);
+        }
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 8)
+#endif
+        for (c = 0; c < (int64_t)ncur; c++)
+            sah_write(s, (size_t)c, level);
+    }
+}
+
 static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
                               const atrbvh_box *boxes, const uint32_t *ids,
                               uint32_t kept, const atrbvh_box *scene,
@@ -670,227 +1038,119 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
                               uint32_t *out_ids, uint64_t *out_total,
                               atrbvh_error *error)
 {
+    const int threads = run->cfg->threads;
     const size_t cap = (size_t)kept + (size_t)budget;
-    sref *cur = atrbvh_i_alloc_array(cap, sizeof *cur);
-    sref *nxt = atrbvh_i_alloc_array(cap, sizeof *nxt);
     /* a node that is cut further holds more than SAH_STOP references */
-    snode *cn = atrbvh_i_alloc_array(cap / (SAH_STOP + 1) + 1, sizeof *cn);
-    snode *nn = atrbvh_i_alloc_array(cap / (SAH_STOP + 1) + 1, sizeof *nn);
-    unsigned char *side = atrbvh_i_alloc_array(cap, sizeof *side);
-    const double min_overlap = SAH_ALPHA * atrbvh_box_area(*scene);
+    const size_t most = cap / (SAH_STOP + 1) + 1;
+    sah_ctx s;
     uint64_t remaining = budget, total = 0;
     size_t ncur = 0, i;
+    int64_t j;
     int level;
     atrbvh_status st = ATRBVH_OK;
 
-    if (!cur || !nxt || !cn || !nn || !side) {
+    (void)threads;
+    s.run = run;
+    s.g = g;
+    s.boxes = boxes;
+    s.ids = ids;
+    s.min_overlap = SAH_ALPHA * atrbvh_box_area(*scene);
+    s.out = out;
+    s.out_ids = out_ids;
+    s.cur = atrbvh_i_alloc_array(cap, sizeof *s.cur);
+    s.nxt = atrbvh_i_alloc_array(cap, sizeof *s.nxt);
+    s.cn = atrbvh_i_alloc_array(most, sizeof *s.cn);
+    s.nn = atrbvh_i_alloc_array(most, sizeof *s.nn);
+    s.cells = atrbvh_i_alloc_array(most, sizeof *s.cells);
+    s.side = atrbvh_i_alloc_array(cap, sizeof *s.side);
+    s.halves = cap <= SIZE_MAX / 2
+                   ? atrbvh_i_alloc_array(2 * cap, sizeof *s.halves)
+                   : NULL;
+    if (!s.cur || !s.nxt || !s.cn || !s.nn || !s.cells || !s.side ||
+        !s.halves) {
         st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                            "cannot allocate the SAH split of %lu "
                            "references",
                            (unsigned long)cap);
         goto done;
     }
-    for (i = 0; i < kept; i++) {
-        cur[i].box = boxes[i];
-        cur[i].j = (uint32_t)i;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(static) \
+    if (kept >= SAH_PAR_REFS)
+#endif
+    for (j = 0; j < (int64_t)kept; j++) {
+        s.cur[j].box = boxes[j];
+        s.cur[j].j = (uint32_t)j;
     }
     if (kept > SAH_STOP) {
-        cn[0].first = 0;
-        cn[0].count = kept;
-        cn[0].qlo[0] = cn[0].qlo[1] = cn[0].qlo[2] = 0;
+        s.cn[0].first = 0;
+        s.cn[0].count = kept;
+        s.cn[0].qlo[0] = s.cn[0].qlo[1] = s.cn[0].qlo[2] = 0;
         ncur = 1;
     } else {
-        for (i = 0; i < kept; i++) {
-            out[total] = boxes[i];
-            out_ids[total++] = ids ? ids[i] : (uint32_t)i;
-        }
+        sah_emit(&s, s.cur, 0, kept, 0);
+        total = kept;
     }
     /* once the budget is spent, nothing more can be cut: the nodes left
      * are emitted as they are */
     for (level = 3 * ATRBVH_MORTON_BITS - 1; level >= 0 && ncur && remaining;
          level--) {
-        const int k = 2 - level % 3;
-        const uint32_t half = 1u << (level / 3);
-        size_t nnext = 0, pos = 0, c;
-        if (g->scale[k] == 0.0)
+        const size_t refs = (size_t)s.cn[ncur - 1].first +
+                            s.cn[ncur - 1].count - s.cn[0].first;
+        size_t nnext = 0;
+        s.k = 2 - level % 3;
+        s.half = 1u << (level / 3);
+        if (g->scale[s.k] == 0.0)
             continue; /* the centroids are flat on this axis: no plane */
-        for (c = 0; c < ncur; c++) {
-            const snode nd = cn[c];
-            const sref *r = cur + nd.first;
-            const uint32_t mid = nd.qlo[k] + half;
-            const float x = (float)(g->lo[k] + (double)mid * g->step[k]);
-            atrbvh_box lo = atrbvh_box_empty(), ro = atrbvh_box_empty();
-            atrbvh_box lobj = lo, robj = ro;
-            uint64_t nl = 0, nr = 0, nlo = 0, nro = 0, cut = 0, cutl = 0;
-            uint32_t ns = 0, a;
-            /* the object partition: straddlers whole at their centroid */
-            for (a = 0; a < nd.count; a++) {
-                const atrbvh_box *b = &r[a].box;
-                if (b->max[k] <= x) {
-                    side[a] = 0;
-                    lo = atrbvh_box_union(lo, *b);
-                    nl++;
-                } else if (b->min[k] >= x) {
-                    side[a] = S_RIGHT;
-                    ro = atrbvh_box_union(ro, *b);
-                    nr++;
-                } else if (atrbvh_box_centre(*b, k) >= x) {
-                    side[a] = S_STRADDLE | S_RIGHT;
-                    robj = atrbvh_box_union(robj, *b);
-                    nro++;
-                    ns++;
-                } else {
-                    side[a] = S_STRADDLE;
-                    lobj = atrbvh_box_union(lobj, *b);
-                    nlo++;
-                    ns++;
+        if (threads > 1 && refs >= SAH_PAR_REFS) {
+            sah_level_parallel(&s, ncur, level, threads, &remaining, &total,
+                               &nnext);
+        } else {
+            /* one node after the other, each weighed only while budget
+             * is left (the same result, no weighing in vain) */
+            size_t c, pos = 0;
+            for (c = 0; c < ncur; c++) {
+                sah_partition(&s, c);
+                if (s.cells[c].cand && remaining) {
+                    sah_clip(&s, c, s.cn[c].first,
+                             (size_t)s.cn[c].first + s.cn[c].count);
+                    sah_weigh(&s, c);
                 }
+                sah_place(&s, c, level, &remaining, &total, &pos, &nnext);
             }
-            lobj = atrbvh_box_union(lobj, lo);
-            robj = atrbvh_box_union(robj, ro);
-            nlo += nl;
-            nro += nr;
-            if (!(atrbvh_box_area(atrbvh_box_union(lobj, robj)) >
-                  min_overlap)) {
-                /* no overlap below can pass: every box below lies in
-                 * this node's, so nothing more is cut here */
-                for (a = 0; a < nd.count; a++) {
-                    out[total] = r[a].box;
-                    out_ids[total++] = ids ? ids[r[a].j] : r[a].j;
-                }
-                continue;
-            }
-            if (ns && remaining && nlo && nro &&
-                overlap_area(&lobj, &robj) > min_overlap) {
-                /* the spatial split: every straddler cut ... */
-                atrbvh_box lsp = lo, rsp = ro;
-                uint64_t nls = nl, nrs = nr;
-                for (a = 0; a < nd.count; a++) {
-                    atrbvh_box bl, br;
-                    if (!(side[a] & S_STRADDLE))
-                        continue;
-                    if (cut_ref(run, ids, boxes, &r[a], k, x, &bl, &br)) {
-                        side[a] |= S_CUT;
-                        lsp = atrbvh_box_union(lsp, bl);
-                        rsp = atrbvh_box_union(rsp, br);
-                        nls++;
-                        nrs++;
-                    } else if (side[a] & S_RIGHT) { /* rounding: whole */
-                        rsp = atrbvh_box_union(rsp, r[a].box);
-                        nrs++;
-                    } else {
-                        lsp = atrbvh_box_union(lsp, r[a].box);
-                        nls++;
-                    }
-                }
-                /* ... then each kept whole at its centroid's side where
-                 * that costs no more */
-                for (a = 0; a < nd.count; a++) {
-                    double split_c, whole_c;
-                    atrbvh_box wb;
-                    if (!(side[a] & S_CUT))
-                        continue;
-                    split_c = side_cost(&lsp, nls) + side_cost(&rsp, nrs);
-                    if (side[a] & S_RIGHT) {
-                        wb = atrbvh_box_union(rsp, r[a].box);
-                        whole_c = side_cost(&lsp, nls - 1) +
-                                  side_cost(&wb, nrs);
-                    } else {
-                        wb = atrbvh_box_union(lsp, r[a].box);
-                        whole_c = side_cost(&wb, nls) +
-                                  side_cost(&rsp, nrs - 1);
-                    }
-                    if (whole_c <= split_c) {
-                        side[a] &= (unsigned char)~S_CUT;
-                        if (side[a] & S_RIGHT)
-                            rsp = wb, nls--;
-                        else
-                            lsp = wb, nrs--;
-                    } else {
-                        cut++;
-                        cutl += !(side[a] & S_RIGHT);
-                    }
-                }
-                if (cut && cut <= remaining &&
-                    side_cost(&lsp, nls) + side_cost(&rsp, nrs) <
-                        side_cost(&lobj, nlo) + side_cost(&robj, nro)) {
-                    remaining -= cut;
-                } else {
-                    cut = cutl = 0;
-                    for (a = 0; a < nd.count; a++)
-                        side[a] &= (unsigned char)~S_CUT;
-                }
-            }
-            /* the halves, left first, each in the references' order:
-             * left at pos, right after the left's count */
-            {
-                const size_t nh[2] = {(size_t)(nlo + cut - cutl),
-                                      (size_t)(nro + cutl)};
-                size_t at[2];
-                int h;
-                at[0] = pos;
-                at[1] = pos + nh[0];
-                if (!cut && (!nh[0] || !nh[1])) { /* all on one side */
-                    memcpy(nxt + pos, r, nd.count * sizeof *r);
-                } else {
-                    for (a = 0; a < nd.count; a++) {
-                        const unsigned sd = side[a];
-                        if (sd & S_CUT) { /* the halves weighed above */
-                            (void)cut_ref(run, ids, boxes, &r[a], k, x,
-                                          &nxt[at[0]].box, &nxt[at[1]].box);
-                            nxt[at[0]++].j = r[a].j;
-                            nxt[at[1]++].j = r[a].j;
-                        } else {
-                            nxt[at[sd & S_RIGHT]++] = r[a];
-                        }
-                    }
-                }
-                for (h = 0; h < 2; h++) {
-                    const size_t first = h ? pos + nh[0] : pos;
-                    size_t e;
-                    if (!nh[h])
-                        continue;
-                    if (nh[h] > SAH_STOP && level > 0) {
-                        nn[nnext] = nd;
-                        nn[nnext].first = (uint32_t)first;
-                        nn[nnext].count = (uint32_t)nh[h];
-                        if (h)
-                            nn[nnext].qlo[k] = mid;
-                        nnext++;
-                        continue;
-                    }
-                    for (e = first; e < first + nh[h]; e++) {
-                        out[total] = nxt[e].box;
-                        out_ids[total++] = ids ? ids[nxt[e].j] : nxt[e].j;
-                    }
-                }
-                pos += nh[0] + nh[1];
-            }
+            for (c = 0; c < ncur; c++)
+                sah_write(&s, c, level);
         }
         {
-            sref *t = cur;
-            snode *tn = cn;
-            cur = nxt;
-            nxt = t;
-            cn = nn;
-            nn = tn;
+            sref *t = s.cur;
+            snode *tn = s.cn;
+            s.cur = s.nxt;
+            s.nxt = t;
+            s.cn = s.nn;
+            s.nn = tn;
         }
         ncur = nnext;
     }
+    /* the nodes left, in order */
     for (i = 0; i < ncur; i++) {
-        size_t e;
-        for (e = cn[i].first; e < (size_t)cn[i].first + cn[i].count; e++) {
-            out[total] = cur[e].box;
-            out_ids[total++] = ids ? ids[cur[e].j] : cur[e].j;
-        }
+        s.cells[i].out_at = (size_t)total;
+        total += s.cn[i].count;
     }
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 64) \
+    if (total >= SAH_PAR_REFS)
+#endif
+    for (j = 0; j < (int64_t)ncur; j++)
+        sah_emit(&s, s.cur, s.cn[j].first, s.cn[j].count, s.cells[j].out_at);
     *out_total = total;
 done:
-    atrbvh_i_free(cur);
-    atrbvh_i_free(nxt);
-    atrbvh_i_free(cn);
-    atrbvh_i_free(nn);
-    atrbvh_i_free(side);
+    atrbvh_i_free(s.cur);
+    atrbvh_i_free(s.nxt);
+    atrbvh_i_free(s.cn);
+    atrbvh_i_free(s.nn);
+    atrbvh_i_free(s.cells);
+    atrbvh_i_free(s.side);
+    atrbvh_i_free(s.halves);
     return st;
 }
 
