@@ -53,6 +53,9 @@
 
 #include <math.h>
 #include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #define NO_INDEX ((uint64_t)-1)
 /* The most references a build may have: 2n - 1 nodes fit in u32 ids. */
@@ -1154,6 +1157,53 @@ done:
     return st;
 }
 
+/* The box of the references' centroids (from atrbvh_box_empty), on the
+ * threads: each thread's contiguous part (schedule static: parts in
+ * thread order), the parts joined in thread order (ordered), so that
+ * among equal extremes (+0 and -0) the first in reference order wins,
+ * as in one loop over them: the same bits for any thread count. */
+static atrbvh_box centroid_box(const atrbvh_box *refs, size_t n,
+                               int threads)
+{
+    atrbvh_box c = atrbvh_box_empty();
+    (void)threads;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads) if (n >= SAH_PAR_REFS)
+#endif
+    {
+        atrbvh_box part = atrbvh_box_empty();
+        int64_t i;
+        int t, k, nt = 1;
+#ifdef _OPENMP
+        nt = omp_get_num_threads();
+#pragma omp for schedule(static) nowait
+#endif
+        for (i = 0; i < (int64_t)n; i++)
+            for (k = 0; k < 3; k++) {
+                const float m = atrbvh_box_centre(refs[i], k);
+                if (m < part.min[k])
+                    part.min[k] = m;
+                if (m > part.max[k])
+                    part.max[k] = m;
+            }
+#ifdef _OPENMP
+#pragma omp for ordered schedule(static, 1)
+#endif
+        for (t = 0; t < nt; t++) {
+#ifdef _OPENMP
+#pragma omp ordered
+#endif
+            for (k = 0; k < 3; k++) {
+                if (part.min[k] < c.min[k])
+                    c.min[k] = part.min[k];
+                if (part.max[k] > c.max[k])
+                    c.max[k] = part.max[k];
+            }
+        }
+    }
+    return c;
+}
+
 atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
                                    atrbvh_error *error)
 {
@@ -1207,19 +1257,16 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
             /* nothing cut: the triangles in index order, as without
              * splitting (the recursion's order would change how the
              * Morton sort breaks ties, so not the ordinary tree) */
+            int64_t j;
             memcpy(refs, boxes, (size_t)kept * sizeof *refs);
-            for (i = 0; i < kept; i++)
-                ref_ids[i] = ids ? ids[i] : (uint32_t)i;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(static) \
+    if (kept >= SAH_PAR_REFS)
+#endif
+            for (j = 0; j < (int64_t)kept; j++)
+                ref_ids[j] = ids ? ids[j] : (uint32_t)j;
         }
-        centroids = atrbvh_box_empty();
-        for (i = 0; i < total; i++)
-            for (k = 0; k < 3; k++) {
-                float m = atrbvh_box_centre(refs[i], k);
-                if (m < centroids.min[k])
-                    centroids.min[k] = m;
-                if (m > centroids.max[k])
-                    centroids.max[k] = m;
-            }
+        centroids = centroid_box(refs, (size_t)total, threads);
         goto emit;
     }
     prio = atrbvh_i_alloc_array(kept, sizeof *prio);
