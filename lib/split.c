@@ -606,7 +606,20 @@ static uint64_t total_splits(const double *p, const uint32_t *chosen,
  * alone never does (Ganestam and Doggett 2016 decide top down per
  * node in the same spirit).  The budget goes level by level, each
  * level's nodes in cell order, so the top levels get it first; once it
- * is spent the nodes left are emitted as they are. */
+ * is spent the nodes left are emitted as they are.
+ *
+ * On the threads: a node's partition and weighing (is it a candidate,
+ * how many straddlers its cut takes, does the cut pay) are a pure
+ * function of the node, whatever budget is left, so a level's nodes are
+ * weighed in parallel (the clipping, most of the work, in blocks of
+ * positions, so the one node of the top level is shared too); only the
+ * budget rule (a cut is taken where it pays and fits what the nodes
+ * before it left) and the output positions (prefix sums of the nodes'
+ * counts) are serial, in cell order, as in one loop; the references are
+ * then written in parallel, each node to its own range.  So the
+ * references are the same, in the same order, for any thread count.
+ * One thread (or a level of few references) weighs each node only while
+ * budget is left, as before. */
 
 typedef struct sref {
     atrbvh_box box;
