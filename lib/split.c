@@ -682,19 +682,43 @@ static int cut_ref(const atrbvh_i_run *run, const uint32_t *ids,
 }
 
 /* What the SAH rule knows of one node (a cell) of the current level.
- * Partition, clip and weigh fill it in on any thread, a pure function of
+ * Partition, join and weigh fill it in on any thread, a pure function of
  * the cell; place then hands out the budget and the output positions
  * serially, in cell order, and write moves the references. */
 typedef struct scell {
-    atrbvh_box lo, ro, lobj, robj; /* sides: wholly, and with straddlers */
-    uint64_t nl, nr, nlo, nro;     /* their counts */
+    atrbvh_box lo, ro; /* the references wholly left, right of the plane */
+    atrbvh_box ls, rs; /* the straddlers whole at their centroid's side */
+    uint64_t nl, nr, nls, nrs; /* their counts */
     uint64_t cut, cutl; /* straddlers cut (of them centroid-left) */
-    size_t out_at, nxt_at, nn_at; /* place's: where its output goes */
+    size_t piece0, pieces; /* a large node's pieces in sah_ctx.pieces */
+    size_t nxt_at, out_at; /* place's: where its output goes */
+    size_t half_out[2]; /* place's: a half that goes out: where, else
+                           NO_OUT */
     unsigned char stop; /* no overlap below can pass: emitted whole */
     unsigned char cand; /* weighed for a spatial split */
     unsigned char pays; /* the cut lowers the halves' SAH */
     unsigned char taken; /* place's: the budget took the cut */
 } scell;
+
+#define NO_OUT ((size_t)-1)
+
+/* A piece of a large node (over SAH_PIECE references): SAH_PIECE of its
+ * references in order (the last one the rest), the unit of the
+ * partition, the clipping and the writing, so that the few nodes of
+ * the top levels, which hold every reference, are spread over the
+ * threads too.  The pieces' boxes and counts are joined in piece order:
+ * a union keeps the later of two equal bounds (+0 and -0), so joined in
+ * order they are the bits of one loop over the node. */
+typedef struct spiece {
+    uint32_t node;         /* its node in cn */
+    uint32_t first, count; /* its positions in cur */
+    atrbvh_box lo, ro, ls, rs;
+    uint32_t nl, nr, nls, nrs;
+    uint32_t cut, cutl;    /* weigh's */
+    size_t at[2];          /* place's: where its left and right go */
+} spiece;
+
+#define SAH_PIECE 2048u
 
 /* The state of sah_refs shared by the per-cell steps. */
 typedef struct sah_ctx {
@@ -706,6 +730,7 @@ typedef struct sah_ctx {
     sref *cur, *nxt;
     snode *cn, *nn;
     scell *cells;          /* per node of cn */
+    spiece *pieces;        /* the large nodes' pieces, in node order */
     unsigned char *side;   /* per position in cur */
     atrbvh_box *halves;    /* per position in cur: a straddler's halves */
     atrbvh_box *out;
@@ -733,23 +758,23 @@ static float sah_plane(const sah_ctx *s, const snode *nd)
     return (float)(s->g->lo[s->k] + (double)mid * s->g->step[s->k]);
 }
 
-/* Node c's object partition (straddlers whole at their centroid's
- * side): side[] of its references, the sides' boxes and counts, and
- * whether it stops here or is weighed for a spatial split (given
- * budget left: place refuses the cut otherwise). */
-NO_SLP static void sah_partition(const sah_ctx *s, size_t c)
+/* The object partition (straddlers whole at their centroid's side) of
+ * positions [p, p + n) of node nd: side[] of each, and the boxes and
+ * counts of the four kinds (wholly left, wholly right, straddlers left,
+ * straddlers right) into bx and cnt. */
+NO_SLP static void sah_partition(const sah_ctx *s, const snode *nd,
+                                 size_t p, size_t n, atrbvh_box bx[4],
+                                 uint64_t cnt[4])
 {
-    const snode nd = s->cn[c];
-    const sref *r = s->cur + nd.first;
-    unsigned char *side = s->side + nd.first;
-    scell *e = &s->cells[c];
+    const sref *r = s->cur + p;
+    unsigned char *side = s->side + p;
     const int k = s->k;
-    const float x = sah_plane(s, &nd);
+    const float x = sah_plane(s, nd);
     atrbvh_box lo = atrbvh_box_empty(), ro = atrbvh_box_empty();
-    atrbvh_box lobj = lo, robj = ro;
-    uint64_t nl = 0, nr = 0, nlo = 0, nro = 0;
-    uint32_t ns = 0, a;
-    for (a = 0; a < nd.count; a++) {
+    atrbvh_box ls = lo, rs = ro;
+    uint64_t nl = 0, nr = 0, nls = 0, nrs = 0;
+    size_t a;
+    for (a = 0; a < n; a++) {
         const atrbvh_box *b = &r[a].box;
         if (b->max[k] <= x) {
             side[a] = 0;
@@ -761,41 +786,87 @@ NO_SLP static void sah_partition(const sah_ctx *s, size_t c)
             nr++;
         } else if (atrbvh_box_centre(*b, k) >= x) {
             side[a] = S_STRADDLE | S_RIGHT;
-            robj = atrbvh_box_union(robj, *b);
-            nro++;
-            ns++;
+            rs = atrbvh_box_union(rs, *b);
+            nrs++;
         } else {
             side[a] = S_STRADDLE;
-            lobj = atrbvh_box_union(lobj, *b);
-            nlo++;
-            ns++;
+            ls = atrbvh_box_union(ls, *b);
+            nls++;
         }
     }
-    lobj = atrbvh_box_union(lobj, lo);
-    robj = atrbvh_box_union(robj, ro);
-    nlo += nl;
-    nro += nr;
-    e->lo = lo;
-    e->ro = ro;
-    e->lobj = lobj;
-    e->robj = robj;
-    e->nl = nl;
-    e->nr = nr;
-    e->nlo = nlo;
-    e->nro = nro;
+    bx[0] = lo;
+    bx[1] = ro;
+    bx[2] = ls;
+    bx[3] = rs;
+    cnt[0] = nl;
+    cnt[1] = nr;
+    cnt[2] = nls;
+    cnt[3] = nrs;
+}
+
+/* Node c's object partition, or a large node's piece i of it. */
+static void sah_partition_node(const sah_ctx *s, size_t c)
+{
+    scell *e = &s->cells[c];
+    atrbvh_box bx[4];
+    uint64_t cnt[4];
+    sah_partition(s, &s->cn[c], s->cn[c].first, s->cn[c].count, bx, cnt);
+    e->lo = bx[0], e->ro = bx[1], e->ls = bx[2], e->rs = bx[3];
+    e->nl = cnt[0], e->nr = cnt[1], e->nls = cnt[2], e->nrs = cnt[3];
+}
+
+static void sah_partition_piece(const sah_ctx *s, size_t i)
+{
+    spiece *pc = &s->pieces[i];
+    atrbvh_box bx[4];
+    uint64_t cnt[4];
+    sah_partition(s, &s->cn[pc->node], pc->first, pc->count, bx, cnt);
+    pc->lo = bx[0], pc->ro = bx[1], pc->ls = bx[2], pc->rs = bx[3];
+    pc->nl = (uint32_t)cnt[0], pc->nr = (uint32_t)cnt[1];
+    pc->nls = (uint32_t)cnt[2], pc->nrs = (uint32_t)cnt[3];
+    pc->cut = pc->cutl = 0;
+}
+
+/* A large node's partition: its pieces' joined in piece order. */
+static void sah_join(const sah_ctx *s, size_t c)
+{
+    scell *e = &s->cells[c];
+    size_t i;
+    e->lo = e->ro = e->ls = e->rs = atrbvh_box_empty();
+    e->nl = e->nr = e->nls = e->nrs = 0;
+    for (i = e->piece0; i < e->piece0 + e->pieces; i++) {
+        const spiece *pc = &s->pieces[i];
+        e->lo = atrbvh_box_union(e->lo, pc->lo);
+        e->ro = atrbvh_box_union(e->ro, pc->ro);
+        e->ls = atrbvh_box_union(e->ls, pc->ls);
+        e->rs = atrbvh_box_union(e->rs, pc->rs);
+        e->nl += pc->nl;
+        e->nr += pc->nr;
+        e->nls += pc->nls;
+        e->nrs += pc->nrs;
+    }
+}
+
+/* Whether node c, partitioned, stops here or is weighed for a spatial
+ * split (given budget left: place refuses the cut otherwise). */
+static void sah_judge(const sah_ctx *s, size_t c)
+{
+    scell *e = &s->cells[c];
+    const atrbvh_box lobj = atrbvh_box_union(e->ls, e->lo),
+                     robj = atrbvh_box_union(e->rs, e->ro);
     e->cut = e->cutl = 0;
     e->pays = e->taken = 0;
     /* no overlap below can pass: every box below lies in this node's,
      * so nothing more is cut here */
     e->stop = !(atrbvh_box_area(atrbvh_box_union(lobj, robj)) >
                 s->min_overlap);
-    e->cand = !e->stop && ns && nlo && nro &&
-              overlap_area(&lobj, &robj) > s->min_overlap;
+    e->cand = !e->stop && e->nls + e->nrs && e->nl + e->nls &&
+              e->nr + e->nrs && overlap_area(&lobj, &robj) > s->min_overlap;
 }
 
-/* The straddlers of weighed node c at positions [p0, p1) of cur clipped
- * to both sides of its plane (the expensive part: any range on any
- * thread; each position is written by one call). */
+/* The straddlers at positions [p0, p1) of cur, in weighed node c,
+ * clipped to both sides of its plane (the expensive part: any range on
+ * any thread; each position is written by one call). */
 static void sah_clip(const sah_ctx *s, size_t c, size_t p0, size_t p1)
 {
     const snode nd = s->cn[c];
@@ -814,7 +885,8 @@ static void sah_clip(const sah_ctx *s, size_t c, size_t p0, size_t p1)
  * when clip is set: one pass over the node instead of two on one
  * thread): every straddler cut, then each kept whole at its centroid's
  * side where that costs no more (in reference order: each decision sees
- * the ones before), and whether the cut lowers the halves' SAH. */
+ * the ones before), and whether the cut lowers the halves' SAH; a large
+ * node's pieces count their cuts. */
 NO_SLP static void sah_weigh(const sah_ctx *s, size_t c, int clip)
 {
     const snode nd = s->cn[c];
@@ -822,6 +894,8 @@ NO_SLP static void sah_weigh(const sah_ctx *s, size_t c, int clip)
     unsigned char *side = s->side + nd.first;
     const atrbvh_box *hv = s->halves + 2 * (size_t)nd.first;
     scell *e = &s->cells[c];
+    const atrbvh_box lobj = atrbvh_box_union(e->ls, e->lo),
+                     robj = atrbvh_box_union(e->rs, e->ro);
     atrbvh_box lsp = e->lo, rsp = e->ro;
     uint64_t nls = e->nl, nrs = e->nr, cut = 0, cutl = 0;
     uint32_t a;
@@ -866,29 +940,37 @@ NO_SLP static void sah_weigh(const sah_ctx *s, size_t c, int clip)
         } else {
             cut++;
             cutl += !(side[a] & S_RIGHT);
+            if (e->pieces) {
+                spiece *pc = &s->pieces[e->piece0 + a / SAH_PIECE];
+                pc->cut++;
+                pc->cutl += !(side[a] & S_RIGHT);
+            }
         }
     }
     e->cut = cut;
     e->cutl = cutl;
     e->pays = cut && side_cost(&lsp, nls) + side_cost(&rsp, nrs) <
-                         side_cost(&e->lobj, e->nlo) +
-                             side_cost(&e->robj, e->nro);
+                         side_cost(&lobj, e->nl + e->nls) +
+                             side_cost(&robj, e->nr + e->nrs);
 }
 
 /* Where node c's output goes, serially in cell order (what makes the
  * result the same for any thread count): the budget takes its cut if it
  * pays and fits what is left; its halves go to nxt at *pos, those still
- * to cut to nn at *nnext, the rest to out at *total. */
+ * to cut becoming nodes of nn at *nnext, the rest also to out at *total;
+ * a large node's pieces each after the ones before them. */
 static void sah_place(const sah_ctx *s, size_t c, int level,
                       uint64_t *remaining, uint64_t *total, size_t *pos,
                       size_t *nnext)
 {
+    const snode nd = s->cn[c];
     scell *e = &s->cells[c];
     uint64_t nh[2];
+    size_t at[2], i;
     int h;
     if (e->stop) {
         e->out_at = (size_t)*total;
-        *total += s->cn[c].count;
+        *total += nd.count;
         return;
     }
     if (e->cand && e->pays && *remaining && e->cut <= *remaining) {
@@ -897,20 +979,38 @@ static void sah_place(const sah_ctx *s, size_t c, int level,
     } else {
         e->cut = e->cutl = 0;
     }
-    nh[0] = e->nlo + e->cut - e->cutl;
-    nh[1] = e->nro + e->cutl;
+    nh[0] = e->nl + e->nls + e->cut - e->cutl;
+    nh[1] = e->nr + e->nrs + e->cutl;
     e->nxt_at = *pos;
-    e->nn_at = *nnext;
-    e->out_at = (size_t)*total;
     for (h = 0; h < 2; h++) {
+        const size_t first = h ? *pos + (size_t)nh[0] : *pos;
+        e->half_out[h] = NO_OUT;
         if (!nh[h])
             continue;
-        if (nh[h] > SAH_STOP && level > 0)
-            ++*nnext;
-        else
+        if (nh[h] > SAH_STOP && level > 0) {
+            snode *m = &s->nn[(*nnext)++];
+            *m = nd;
+            m->first = (uint32_t)first;
+            m->count = (uint32_t)nh[h];
+            if (h)
+                m->qlo[s->k] = nd.qlo[s->k] + s->half;
+        } else {
+            e->half_out[h] = (size_t)*total;
             *total += nh[h];
+        }
     }
+    at[0] = *pos;
+    at[1] = *pos + (size_t)nh[0];
     *pos += (size_t)(nh[0] + nh[1]);
+    for (i = e->piece0; i < e->piece0 + e->pieces; i++) {
+        spiece *pc = &s->pieces[i];
+        const uint32_t cut = e->taken ? pc->cut : 0,
+                       cutl = e->taken ? pc->cutl : 0;
+        pc->at[0] = at[0];
+        pc->at[1] = at[1];
+        at[0] += pc->nl + pc->nls + cut - cutl;
+        at[1] += pc->nr + pc->nrs + cutl;
+    }
 }
 
 /* Entries [f, f + n) of refs to out from position o on: their boxes,
@@ -925,34 +1025,29 @@ static void sah_emit(const sah_ctx *s, const sref *refs, size_t f,
     }
 }
 
-/* Node c's references where place put them: the halves, left first,
- * each in the references' order (left at nxt_at, right after the left's
- * count); a half still to cut becomes a node of nn, the rest go out. */
-static void sah_write(const sah_ctx *s, size_t c, int level)
+/* Positions [p, p + n) of node c where place put them (left at at[0]
+ * on, right at at[1] on, each in the references' order); the part of a
+ * half that goes out is copied there too. */
+static void sah_write(const sah_ctx *s, size_t c, size_t p, size_t n,
+                      const size_t at_in[2])
 {
-    const snode nd = s->cn[c];
-    const sref *r = s->cur + nd.first;
-    const unsigned char *side = s->side + nd.first;
-    const atrbvh_box *hv = s->halves + 2 * (size_t)nd.first;
     const scell *e = &s->cells[c];
-    const size_t nh[2] = {(size_t)(e->nlo + e->cut - e->cutl),
-                          (size_t)(e->nro + e->cutl)};
-    size_t at[2], nn_at = e->nn_at, out_at = e->out_at;
-    uint32_t a;
+    const sref *r = s->cur + p;
+    const unsigned char *side = s->side + p;
+    const atrbvh_box *hv = s->halves + 2 * p;
+    size_t at[2], a;
     int h;
     if (e->stop) {
-        sah_emit(s, s->cur, nd.first, nd.count, out_at);
+        sah_emit(s, s->cur, p, n, e->out_at + (p - s->cn[c].first));
         return;
     }
-    at[0] = e->nxt_at;
-    at[1] = e->nxt_at + nh[0];
-    if (!e->taken && (!nh[0] || !nh[1])) { /* all on one side */
-        memcpy(s->nxt + e->nxt_at, r, nd.count * sizeof *r);
-    } else if (!e->taken) {
-        for (a = 0; a < nd.count; a++)
+    at[0] = at_in[0];
+    at[1] = at_in[1];
+    if (!e->taken) {
+        for (a = 0; a < n; a++)
             s->nxt[at[side[a] & S_RIGHT]++] = r[a];
     } else {
-        for (a = 0; a < nd.count; a++) {
+        for (a = 0; a < n; a++) {
             const unsigned sd = side[a];
             if (sd & S_CUT) { /* the halves weighed */
                 s->nxt[at[0]].box = hv[2 * a];
@@ -964,58 +1059,47 @@ static void sah_write(const sah_ctx *s, size_t c, int level)
             }
         }
     }
-    for (h = 0; h < 2; h++) {
-        const size_t first = h ? e->nxt_at + nh[0] : e->nxt_at;
-        if (!nh[h])
-            continue;
-        if (nh[h] > SAH_STOP && level > 0) {
-            snode *m = &s->nn[nn_at++];
-            *m = nd;
-            m->first = (uint32_t)first;
-            m->count = (uint32_t)nh[h];
-            if (h)
-                m->qlo[s->k] = nd.qlo[s->k] + s->half;
-            continue;
+    for (h = 0; h < 2; h++)
+        if (e->half_out[h] != NO_OUT) {
+            const size_t half_first =
+                h ? e->nxt_at + (size_t)(e->nl + e->nls + e->cut - e->cutl)
+                  : e->nxt_at;
+            sah_emit(s, s->nxt, at_in[h], at[h] - at_in[h],
+                     e->half_out[h] + (at_in[h] - half_first));
         }
-        sah_emit(s, s->nxt, first, nh[h], out_at);
-        out_at += nh[h];
-    }
+}
+
+/* Node c written whole (a small node) or piece i (of a large one). */
+static void sah_write_node(const sah_ctx *s, size_t c)
+{
+    const scell *e = &s->cells[c];
+    const size_t nh0 = (size_t)(e->nl + e->nls + e->cut - e->cutl);
+    size_t at[2];
+    at[0] = e->nxt_at;
+    at[1] = e->nxt_at + nh0;
+    sah_write(s, c, s->cn[c].first, s->cn[c].count, at);
+}
+
+static void sah_write_piece(const sah_ctx *s, size_t i)
+{
+    const spiece *pc = &s->pieces[i];
+    sah_write(s, pc->node, pc->first, pc->count, pc->at);
 }
 
 /* A level is spread over the threads only when it holds this many
- * references (below, one thread is faster than the hand-overs); blocks
- * of SAH_CLIP_BLOCK positions are the clipping step's work items. */
+ * references (below, one thread is faster than the hand-overs). */
 #define SAH_PAR_REFS 4096u
-#define SAH_CLIP_BLOCK 64u
 
-/* The node of cn holding position p, or the next one after it (cells
- * are in increasing position order; positions between them belong to
- * none). */
-static size_t sah_cell_at(const sah_ctx *s, size_t ncur, size_t p)
-{
-    size_t lo = 0, hi = ncur;
-    while (lo < hi) { /* the first node ending after p */
-        const size_t m = lo + (hi - lo) / 2;
-        if ((size_t)s->cn[m].first + s->cn[m].count <= p)
-            lo = m + 1;
-        else
-            hi = m;
-    }
-    return lo;
-}
-
-/* One level on the threads: partition, clip and weigh every node in
- * parallel (as though the budget lasted the level: a node's result does
- * not depend on it), place serially, write in parallel.  Nodes after the
- * one that spends the budget are weighed in vain: the price of not
- * waiting for the budget, one level's weighing at most, once. */
-static void sah_level_parallel(const sah_ctx *s, size_t ncur, int level,
-                               int threads, uint64_t *remaining,
+/* One level on the threads: partition (small nodes whole, large ones in
+ * pieces), clip and weigh every node in parallel (as though the budget
+ * lasted the level: a node's result does not depend on it), place
+ * serially, write in parallel.  Nodes after the one that spends the
+ * budget are weighed in vain: the price of not waiting for the budget,
+ * one level's weighing at most, once. */
+static void sah_level_parallel(const sah_ctx *s, size_t ncur, size_t npieces,
+                               int level, int threads, uint64_t *remaining,
                                uint64_t *total, size_t *nnext)
 {
-    const size_t end = (size_t)s->cn[ncur - 1].first + s->cn[ncur - 1].count;
-    const int64_t blocks = (int64_t)((end + SAH_CLIP_BLOCK - 1) /
-                                     SAH_CLIP_BLOCK);
     int64_t c;
     (void)threads;
 #ifdef _OPENMP
@@ -1023,31 +1107,48 @@ static void sah_level_parallel(const sah_ctx *s, size_t ncur, int level,
 #endif
     {
 #ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1) nowait
+#endif
+        for (c = 0; c < (int64_t)npieces; c++)
+            sah_partition_piece(s, (size_t)c);
+#ifdef _OPENMP
 #pragma omp for schedule(dynamic, 8)
 #endif
         for (c = 0; c < (int64_t)ncur; c++)
-            sah_partition(s, (size_t)c);
+            if (!s->cells[c].pieces)
+                sah_partition_node(s, (size_t)c);
+        /* the small nodes weighed whole, the large ones' straddlers
+         * clipped piece by piece */
 #ifdef _OPENMP
+#pragma omp for schedule(dynamic, 8) nowait
+#endif
+        for (c = 0; c < (int64_t)ncur; c++) {
+            if (s->cells[c].pieces)
+                sah_join(s, (size_t)c);
+            sah_judge(s, (size_t)c);
+            if (!s->cells[c].pieces && s->cells[c].cand)
+                sah_weigh(s, (size_t)c, 1);
+        }
+        if (npieces) {
+#ifdef _OPENMP
+#pragma omp barrier
 #pragma omp for schedule(dynamic, 1)
 #endif
-        for (c = 0; c < blocks; c++) {
-            const size_t p0 = (size_t)c * SAH_CLIP_BLOCK;
-            const size_t p1 = p0 + SAH_CLIP_BLOCK < end ? p0 + SAH_CLIP_BLOCK
-                                                        : end;
-            size_t n = sah_cell_at(s, ncur, p0);
-            for (; n < ncur && s->cn[n].first < p1; n++) {
-                const size_t f = s->cn[n].first, l = f + s->cn[n].count;
-                if (s->cells[n].cand)
-                    sah_clip(s, n, f > p0 ? f : p0, l < p1 ? l : p1);
+            for (c = 0; c < (int64_t)npieces; c++) {
+                const spiece *pc = &s->pieces[c];
+                if (s->cells[pc->node].cand)
+                    sah_clip(s, pc->node, pc->first,
+                             (size_t)pc->first + pc->count);
             }
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1) nowait
+#endif
+            for (c = 0; c < (int64_t)ncur; c++)
+                if (s->cells[c].pieces && s->cells[c].cand)
+                    sah_weigh(s, (size_t)c, 0);
         }
 #ifdef _OPENMP
-#pragma omp for schedule(dynamic, 8)
-#endif
-        for (c = 0; c < (int64_t)ncur; c++)
-            if (s->cells[c].cand)
-                sah_weigh(s, (size_t)c, 0);
-#ifdef _OPENMP
+#pragma omp barrier
 #pragma omp single
 #endif
         {
@@ -1056,11 +1157,41 @@ static void sah_level_parallel(const sah_ctx *s, size_t ncur, int level,
                 sah_place(s, i, level, remaining, total, &pos, nnext);
         }
 #ifdef _OPENMP
-#pragma omp for schedule(dynamic, 8)
+#pragma omp for schedule(dynamic, 1) nowait
+#endif
+        for (c = 0; c < (int64_t)npieces; c++)
+            sah_write_piece(s, (size_t)c);
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 8) nowait
 #endif
         for (c = 0; c < (int64_t)ncur; c++)
-            sah_write(s, (size_t)c, level);
+            if (!s->cells[c].pieces)
+                sah_write_node(s, (size_t)c);
     }
+}
+
+/* The large nodes' pieces (in node order), their count. */
+static size_t sah_cut_pieces(const sah_ctx *s, size_t ncur)
+{
+    size_t c, n = 0;
+    for (c = 0; c < ncur; c++) {
+        const snode *nd = &s->cn[c];
+        scell *e = &s->cells[c];
+        uint32_t f;
+        e->piece0 = n;
+        e->pieces = 0;
+        if (nd->count <= SAH_PIECE)
+            continue;
+        for (f = 0; f < nd->count; f += SAH_PIECE) {
+            spiece *pc = &s->pieces[n++];
+            pc->node = (uint32_t)c;
+            pc->first = nd->first + f;
+            pc->count = nd->count - f < SAH_PIECE ? nd->count - f : SAH_PIECE;
+            pc->cut = pc->cutl = 0;
+        }
+        e->pieces = n - e->piece0;
+    }
+    return n;
 }
 
 static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
@@ -1072,8 +1203,11 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
 {
     const int threads = run->cfg->threads;
     const size_t cap = (size_t)kept + (size_t)budget;
-    /* a node that is cut further holds more than SAH_STOP references */
+    /* a node that is cut further holds more than SAH_STOP references;
+     * a large node, more than SAH_PIECE, has at most twice its share of
+     * pieces */
     const size_t most = cap / (SAH_STOP + 1) + 1;
+    const size_t most_pieces = 2 * (cap / SAH_PIECE) + 1;
     sah_ctx s;
     uint64_t remaining = budget, total = 0;
     size_t ncur = 0, i;
@@ -1094,12 +1228,13 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
     s.cn = atrbvh_i_alloc_array(most, sizeof *s.cn);
     s.nn = atrbvh_i_alloc_array(most, sizeof *s.nn);
     s.cells = atrbvh_i_alloc_array(most, sizeof *s.cells);
+    s.pieces = atrbvh_i_alloc_array(most_pieces, sizeof *s.pieces);
     s.side = atrbvh_i_alloc_array(cap, sizeof *s.side);
     s.halves = cap <= SIZE_MAX / 2
                    ? atrbvh_i_alloc_array(2 * cap, sizeof *s.halves)
                    : NULL;
-    if (!s.cur || !s.nxt || !s.cn || !s.nn || !s.cells || !s.side ||
-        !s.halves) {
+    if (!s.cur || !s.nxt || !s.cn || !s.nn || !s.cells || !s.pieces ||
+        !s.side || !s.halves) {
         st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                            "cannot allocate the SAH split of %lu "
                            "references",
@@ -1129,26 +1264,38 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
          level--) {
         const size_t refs = (size_t)s.cn[ncur - 1].first +
                             s.cn[ncur - 1].count - s.cn[0].first;
-        size_t nnext = 0;
+        size_t nnext = 0, npieces;
         s.k = 2 - level % 3;
         s.half = 1u << (level / 3);
         if (g->scale[s.k] == 0.0)
             continue; /* the centroids are flat on this axis: no plane */
+        npieces = sah_cut_pieces(&s, ncur);
         if (threads > 1 && refs >= SAH_PAR_REFS) {
-            sah_level_parallel(&s, ncur, level, threads, &remaining, &total,
-                               &nnext);
+            sah_level_parallel(&s, ncur, npieces, level, threads, &remaining,
+                               &total, &nnext);
         } else {
             /* one node after the other, each weighed only while budget
              * is left (the same result, no weighing in vain) */
             size_t c, pos = 0;
             for (c = 0; c < ncur; c++) {
-                sah_partition(&s, c);
-                if (s.cells[c].cand && remaining)
+                const scell *e = &s.cells[c];
+                if (e->pieces) {
+                    for (i = e->piece0; i < e->piece0 + e->pieces; i++)
+                        sah_partition_piece(&s, i);
+                    sah_join(&s, c);
+                } else {
+                    sah_partition_node(&s, c);
+                }
+                sah_judge(&s, c);
+                if (e->cand && remaining)
                     sah_weigh(&s, c, 1);
                 sah_place(&s, c, level, &remaining, &total, &pos, &nnext);
             }
+            for (i = 0; i < npieces; i++)
+                sah_write_piece(&s, i);
             for (c = 0; c < ncur; c++)
-                sah_write(&s, c, level);
+                if (!s.cells[c].pieces)
+                    sah_write_node(&s, c);
         }
         {
             sref *t = s.cur;
@@ -1178,6 +1325,7 @@ done:
     atrbvh_i_free(s.cn);
     atrbvh_i_free(s.nn);
     atrbvh_i_free(s.cells);
+    atrbvh_i_free(s.pieces);
     atrbvh_i_free(s.side);
     atrbvh_i_free(s.halves);
     return st;
