@@ -22,7 +22,8 @@
  *  - The SAH rule over a scene large enough for its levels to be spread
  *    over the threads: the same references (in order) and tree for 1, 2
  *    and 3 threads, with a budget spent part way through a level and one
- *    the cuts leave unspent.
+ *    the cuts leave unspent; the references' CRC-32 that of the
+ *    single-threaded pre-process before it ran on the threads.
  *  - Closest and any hit through split trees (LBVH and ATRBVH, collapsed
  *    and not) equal brute force (every triangle tested on its own, the
  *    lowest t, the lowest index on a tie) on random rays and rays aimed
@@ -397,6 +398,25 @@ static int keep_refs(const atrbvh_stage_output *out, void *user)
     return 0;
 }
 
+/* The CRC-32 of floats f[0..n) as little-endian bytes. */
+static uint32_t floats_crc(const float *f, size_t n)
+{
+    unsigned char *b = malloc(4 * n + 1);
+    uint32_t crc;
+    size_t i;
+    ck_assert_ptr_nonnull(b);
+    for (i = 0; i < n; i++) {
+        uint32_t u;
+        int k;
+        memcpy(&u, &f[i], 4);
+        for (k = 0; k < 4; k++)
+            b[4 * i + (size_t)k] = (unsigned char)(u >> (8 * k));
+    }
+    crc = tu_crc32(b, 4 * n);
+    free(b);
+    return crc;
+}
+
 /* The SAH rule's pre-process runs a level's nodes on the threads and
  * hands out the budget serially in cell order: the references (boxes in
  * order) and the trees of 1, 2 and 3 threads are the same, over a scene
@@ -409,6 +429,9 @@ START_TEST(sah_same_for_threads)
     float *v = sliver_scene(n, s, 57);
     atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * nt, NULL, nt);
     static const double budgets[] = {0.02, 0.5};
+    /* the references' CRC as the single-threaded pre-process (before it
+     * ran on the threads, 510b12f) gave them: the order is today's */
+    static const uint32_t crcs[] = {0x202f1a3bu, 0xb34e55dbu};
     size_t k;
     for (k = 0; k < 2; k++) {
         atrbvh_build_options o = split_options(budgets[k]);
@@ -424,6 +447,11 @@ START_TEST(sah_same_for_threads)
         ref = tu_build(&g, &o);
         (void)atrbvh_bvh_primitive_indices(ref, &np);
         ck_assert_msg(one.n > nt, "budget %g: nothing split", budgets[k]);
+        ck_assert_msg(floats_crc(one.boxes, 6 * one.n) == crcs[k],
+                      "budget %g: %zu references, CRC 0x%08lx, not 0x%08lx",
+                      budgets[k], one.n,
+                      (unsigned long)floats_crc(one.boxes, 6 * one.n),
+                      (unsigned long)crcs[k]);
         for (t = 2; t <= 3; t++) {
             refs_seen many = {0, NULL};
             atrbvh_bvh *b;
