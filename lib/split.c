@@ -611,15 +611,17 @@ static uint64_t total_splits(const double *p, const uint32_t *chosen,
  * On the threads: a node's partition and weighing (is it a candidate,
  * how many straddlers its cut takes, does the cut pay) are a pure
  * function of the node, whatever budget is left, so a level's nodes are
- * weighed in parallel (the clipping, most of the work, in blocks of
- * positions, so the one node of the top level is shared too); only the
+ * weighed in parallel, a large node's partition, clipping (most of the
+ * work) and writing in pieces (spiece), so that the few nodes of the
+ * top levels, which hold every reference, are shared too; only the
  * budget rule (a cut is taken where it pays and fits what the nodes
- * before it left) and the output positions (prefix sums of the nodes'
- * counts) are serial, in cell order, as in one loop; the references are
- * then written in parallel, each node to its own range.  So the
- * references are the same, in the same order, for any thread count.
- * One thread (or a level of few references) weighs each node only while
- * budget is left, as before. */
+ * before it left), the output positions (prefix sums of the nodes' and
+ * pieces' counts) and the unsplitting within a node (each straddler's
+ * decision sees the ones before it) are serial, in order, as in one
+ * loop; the references are then written in parallel, each node or piece
+ * to its own range.  So the references are the same, in the same order,
+ * for any thread count.  One thread (or a level of few references)
+ * weighs each node only while budget is left, as before. */
 
 typedef struct sref {
     atrbvh_box box;
