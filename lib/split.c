@@ -693,6 +693,7 @@ typedef struct scell {
     uint64_t nl, nr, nls, nrs; /* their counts */
     uint64_t cut, cutl; /* straddlers cut (of them centroid-left) */
     size_t piece0, pieces; /* a large node's pieces in sah_ctx.pieces */
+    size_t slot0; /* its straddlers' first slot in sah_ctx.halves */
     size_t nxt_at, out_at; /* place's: where its output goes */
     size_t half_out[2]; /* place's: a half that goes out: where, else
                            NO_OUT */
@@ -718,6 +719,7 @@ typedef struct spiece {
     uint32_t nl, nr, nls, nrs;
     uint32_t cut, cutl;    /* weigh's */
     size_t at[2];          /* place's: where its left and right go */
+    size_t slot0;          /* its straddlers' first slot in halves */
 } spiece;
 
 #define SAH_PIECE 2048u
@@ -734,14 +736,16 @@ typedef struct sah_ctx {
     scell *cells;          /* per node of cn */
     spiece *pieces;        /* the large nodes' pieces, in node order */
     unsigned char *side;   /* per position in cur */
-    atrbvh_box *halves;    /* per position in cur: a straddler's halves */
+    atrbvh_box *halves;    /* per straddler slot: its halves (the slots
+                              of a level's straddlers in order, compact:
+                              the pages touched are the straddlers') */
     atrbvh_box *out;
     uint32_t *out_ids;
     int k;                 /* the level's axis */
     uint32_t half;         /* half the level's cell width, grid units */
 } sah_ctx;
 
-#define S_CLIPPED 8u /* cut_ref gave both halves (in halves[2p], [2p + 1]) */
+#define S_CLIPPED 8u /* cut_ref gave both halves (at its slot in halves) */
 
 /* GCC's SLP vectoriser packs a box that a loop grows and then stores
  * into vector registers, shuffling them at every step (callgrind,
@@ -867,19 +871,22 @@ static void sah_judge(const sah_ctx *s, size_t c)
 }
 
 /* The straddlers at positions [p0, p1) of cur, in weighed node c,
- * clipped to both sides of its plane (the expensive part: any range on
- * any thread; each position is written by one call). */
-static void sah_clip(const sah_ctx *s, size_t c, size_t p0, size_t p1)
+ * clipped to both sides of its plane, their halves at slots slot0 on
+ * (the expensive part: any range on any thread; each position is
+ * written by one call). */
+static void sah_clip(const sah_ctx *s, size_t c, size_t p0, size_t p1,
+                     size_t slot0)
 {
     const snode nd = s->cn[c];
     const float x = sah_plane(s, &nd);
-    size_t p;
+    size_t p, slot = slot0;
     for (p = p0; p < p1; p++) {
         if (!(s->side[p] & S_STRADDLE))
             continue;
         if (cut_ref(s->run, s->ids, s->boxes, &s->cur[p], s->k, x,
-                    &s->halves[2 * p], &s->halves[2 * p + 1]))
+                    &s->halves[2 * slot], &s->halves[2 * slot + 1]))
             s->side[p] |= S_CLIPPED;
+        slot++;
     }
 }
 
@@ -894,22 +901,24 @@ NO_SLP static void sah_weigh(const sah_ctx *s, size_t c, int clip)
     const snode nd = s->cn[c];
     const sref *r = s->cur + nd.first;
     unsigned char *side = s->side + nd.first;
-    const atrbvh_box *hv = s->halves + 2 * (size_t)nd.first;
     scell *e = &s->cells[c];
+    const atrbvh_box *hv = s->halves + 2 * e->slot0;
     const atrbvh_box lobj = atrbvh_box_union(e->ls, e->lo),
                      robj = atrbvh_box_union(e->rs, e->ro);
     atrbvh_box lsp = e->lo, rsp = e->ro;
     uint64_t nls = e->nl, nrs = e->nr, cut = 0, cutl = 0;
+    size_t slot = 0;
     uint32_t a;
     for (a = 0; a < nd.count; a++) {
         if (!(side[a] & S_STRADDLE))
             continue;
         if (clip)
-            sah_clip(s, c, (size_t)nd.first + a, (size_t)nd.first + a + 1);
+            sah_clip(s, c, (size_t)nd.first + a, (size_t)nd.first + a + 1,
+                     e->slot0 + slot);
         if (side[a] & S_CLIPPED) {
             side[a] |= S_CUT;
-            lsp = atrbvh_box_union(lsp, hv[2 * a]);
-            rsp = atrbvh_box_union(rsp, hv[2 * a + 1]);
+            lsp = atrbvh_box_union(lsp, hv[2 * slot]);
+            rsp = atrbvh_box_union(rsp, hv[2 * slot + 1]);
             nls++;
             nrs++;
         } else if (side[a] & S_RIGHT) { /* rounding: whole */
@@ -919,6 +928,7 @@ NO_SLP static void sah_weigh(const sah_ctx *s, size_t c, int clip)
             lsp = atrbvh_box_union(lsp, r[a].box);
             nls++;
         }
+        slot++;
     }
     for (a = 0; a < nd.count; a++) {
         double split_c, whole_c;
@@ -1031,13 +1041,13 @@ static void sah_emit(const sah_ctx *s, const sref *refs, size_t f,
  * on, right at at[1] on, each in the references' order); the part of a
  * half that goes out is copied there too. */
 static void sah_write(const sah_ctx *s, size_t c, size_t p, size_t n,
-                      const size_t at_in[2])
+                      const size_t at_in[2], size_t slot0)
 {
     const scell *e = &s->cells[c];
     const sref *r = s->cur + p;
     const unsigned char *side = s->side + p;
-    const atrbvh_box *hv = s->halves + 2 * p;
-    size_t at[2], a;
+    const atrbvh_box *hv = s->halves + 2 * slot0;
+    size_t at[2], a, slot = 0;
     int h;
     if (e->stop) {
         sah_emit(s, s->cur, p, n, e->out_at + (p - s->cn[c].first));
@@ -1052,13 +1062,14 @@ static void sah_write(const sah_ctx *s, size_t c, size_t p, size_t n,
         for (a = 0; a < n; a++) {
             const unsigned sd = side[a];
             if (sd & S_CUT) { /* the halves weighed */
-                s->nxt[at[0]].box = hv[2 * a];
+                s->nxt[at[0]].box = hv[2 * slot];
                 s->nxt[at[0]++].j = r[a].j;
-                s->nxt[at[1]].box = hv[2 * a + 1];
+                s->nxt[at[1]].box = hv[2 * slot + 1];
                 s->nxt[at[1]++].j = r[a].j;
             } else {
                 s->nxt[at[sd & S_RIGHT]++] = r[a];
             }
+            slot += (sd & S_STRADDLE) != 0;
         }
     }
     for (h = 0; h < 2; h++)
@@ -1079,13 +1090,30 @@ static void sah_write_node(const sah_ctx *s, size_t c)
     size_t at[2];
     at[0] = e->nxt_at;
     at[1] = e->nxt_at + nh0;
-    sah_write(s, c, s->cn[c].first, s->cn[c].count, at);
+    sah_write(s, c, s->cn[c].first, s->cn[c].count, at, e->slot0);
 }
 
 static void sah_write_piece(const sah_ctx *s, size_t i)
 {
     const spiece *pc = &s->pieces[i];
-    sah_write(s, pc->node, pc->first, pc->count, pc->at);
+    sah_write(s, pc->node, pc->first, pc->count, pc->at, pc->slot0);
+}
+
+/* Node c's straddlers' slots in halves from *slot on (a large node's
+ * piece by piece), partitioned: in node order, compact. */
+static void sah_slots(const sah_ctx *s, size_t c, size_t *slot)
+{
+    scell *e = &s->cells[c];
+    size_t i;
+    e->slot0 = *slot;
+    if (!e->pieces) {
+        *slot += (size_t)(e->nls + e->nrs);
+        return;
+    }
+    for (i = e->piece0; i < e->piece0 + e->pieces; i++) {
+        s->pieces[i].slot0 = *slot;
+        *slot += (size_t)s->pieces[i].nls + s->pieces[i].nrs;
+    }
 }
 
 /* A level is spread over the threads only when it holds this many
@@ -1119,6 +1147,14 @@ static void sah_level_parallel(const sah_ctx *s, size_t ncur, size_t npieces,
         for (c = 0; c < (int64_t)ncur; c++)
             if (!s->cells[c].pieces)
                 sah_partition_node(s, (size_t)c);
+#ifdef _OPENMP
+#pragma omp single
+#endif
+        {
+            size_t i, slot = 0;
+            for (i = 0; i < ncur; i++)
+                sah_slots(s, i, &slot);
+        }
         /* the small nodes weighed whole, the large ones' straddlers
          * clipped piece by piece */
 #ifdef _OPENMP
@@ -1140,7 +1176,7 @@ static void sah_level_parallel(const sah_ctx *s, size_t ncur, size_t npieces,
                 const spiece *pc = &s->pieces[c];
                 if (s->cells[pc->node].cand)
                     sah_clip(s, pc->node, pc->first,
-                             (size_t)pc->first + pc->count);
+                             (size_t)pc->first + pc->count, pc->slot0);
             }
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1) nowait
@@ -1278,15 +1314,17 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
         } else {
             /* one node after the other, each weighed only while budget
              * is left (the same result, no weighing in vain) */
-            size_t c, pos = 0;
+            size_t c, pos = 0, slot = 0;
             for (c = 0; c < ncur; c++) {
                 const scell *e = &s.cells[c];
                 if (e->pieces) {
                     for (i = e->piece0; i < e->piece0 + e->pieces; i++)
                         sah_partition_piece(&s, i);
+                    sah_slots(&s, c, &slot);
                     sah_join(&s, c);
                 } else {
                     sah_partition_node(&s, c);
+                    sah_slots(&s, c, &slot);
                 }
                 sah_judge(&s, c);
                 if (e->cand && remaining)
