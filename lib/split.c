@@ -29,7 +29,9 @@
  *    scale, so the result does not depend on the thread count;
  *  - ATRBVH_SPLIT_SAH (default): top down over the grid's cells, a cell's
  *    triangles judged together, cut at the cell's midplane where that
- *    lowers the SAH of its halves (sah_refs, below); single-threaded;
+ *    lowers the SAH of its halves (sah_refs, below); per level, the
+ *    nodes on the threads, the budget handed out serially in cell order
+ *    (the same references for any thread count);
  *  - each split (tree and priority rules) cuts the current piece at the most important grid plane
  *    crossing its box, the triangle clipped exactly to both halves (in
  *    double, rounded outward to float), and the remaining splits are
@@ -51,6 +53,9 @@
 
 #include <math.h>
 #include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #define NO_INDEX ((uint64_t)-1)
 /* The most references a build may have: 2n - 1 nodes fit in u32 ids. */
@@ -601,7 +606,22 @@ static uint64_t total_splits(const double *p, const uint32_t *chosen,
  * alone never does (Ganestam and Doggett 2016 decide top down per
  * node in the same spirit).  The budget goes level by level, each
  * level's nodes in cell order, so the top levels get it first; once it
- * is spent the nodes left are emitted as they are. */
+ * is spent the nodes left are emitted as they are.
+ *
+ * On the threads: a node's partition and weighing (is it a candidate,
+ * how many straddlers its cut takes, does the cut pay) are a pure
+ * function of the node, whatever budget is left, so a level's nodes are
+ * weighed in parallel, a large node's partition, clipping (most of the
+ * work) and writing in pieces (spiece), so that the few nodes of the
+ * top levels, which hold every reference, are shared too; only the
+ * budget rule (a cut is taken where it pays and fits what the nodes
+ * before it left), the output positions (prefix sums of the nodes' and
+ * pieces' counts) and the unsplitting within a node (each straddler's
+ * decision sees the ones before it) are serial, in order, as in one
+ * loop; the references are then written in parallel, each node or piece
+ * to its own range.  So the references are the same, in the same order,
+ * for any thread count.  One thread (or a level of few references)
+ * weighs each node only while budget is left, as before. */
 
 typedef struct sref {
     atrbvh_box box;
@@ -648,8 +668,8 @@ static double side_cost(const atrbvh_box *b, uint64_t n)
 
 /* Reference f's triangle clipped to both sides of the plane x on axis k,
  * within f's box: 1 with both halves' boxes, 0 when rounding leaves one
- * side empty.  The same result every time it is called (it is called
- * again to write the halves, rather than keeping them). */
+ * side empty.  The halves are kept (sah_ctx.halves) from the weighing
+ * to the writing, rather than clipped twice. */
 static int cut_ref(const atrbvh_i_run *run, const uint32_t *ids,
                    const atrbvh_box *boxes, const sref *f, int k, float x,
                    atrbvh_box *l, atrbvh_box *r)
@@ -663,6 +683,555 @@ static int cut_ref(const atrbvh_i_run *run, const uint32_t *ids,
            clip_box(v, &rr, &boxes[f->j], r);
 }
 
+/* What the SAH rule knows of one node (a cell) of the current level.
+ * Partition, join and weigh fill it in on any thread, a pure function of
+ * the cell; place then hands out the budget and the output positions
+ * serially, in cell order, and write moves the references. */
+typedef struct scell {
+    atrbvh_box lo, ro; /* the references wholly left, right of the plane */
+    atrbvh_box ls, rs; /* the straddlers whole at their centroid's side */
+    uint64_t nl, nr, nls, nrs; /* their counts */
+    uint64_t cut, cutl; /* straddlers cut (of them centroid-left) */
+    size_t piece0, pieces; /* a large node's pieces in sah_ctx.pieces */
+    size_t slot0; /* its straddlers' first slot in sah_ctx.halves */
+    size_t nxt_at, out_at; /* place's: where its output goes */
+    size_t half_out[2]; /* place's: a half that goes out: where, else
+                           NO_OUT */
+    unsigned char stop; /* no overlap below can pass: emitted whole */
+    unsigned char cand; /* weighed for a spatial split */
+    unsigned char pays; /* the cut lowers the halves' SAH */
+    unsigned char taken; /* place's: the budget took the cut */
+} scell;
+
+#define NO_OUT ((size_t)-1)
+
+/* A piece of a large node (over SAH_PIECE references): SAH_PIECE of its
+ * references in order (the last one the rest), the unit of the
+ * partition, the clipping and the writing, so that the few nodes of
+ * the top levels, which hold every reference, are spread over the
+ * threads too.  The pieces' boxes and counts are joined in piece order:
+ * a union keeps the later of two equal bounds (+0 and -0), so joined in
+ * order they are the bits of one loop over the node. */
+typedef struct spiece {
+    uint32_t node;         /* its node in cn */
+    uint32_t first, count; /* its positions in cur */
+    atrbvh_box lo, ro, ls, rs;
+    uint32_t nl, nr, nls, nrs;
+    uint32_t cut, cutl;    /* weigh's */
+    size_t at[2];          /* place's: where its left and right go */
+    size_t slot0;          /* its straddlers' first slot in halves */
+} spiece;
+
+#define SAH_PIECE 2048u
+
+/* The state of sah_refs shared by the per-cell steps. */
+typedef struct sah_ctx {
+    const atrbvh_i_run *run;
+    const grid *g;
+    const atrbvh_box *boxes; /* per kept triangle */
+    const uint32_t *ids;     /* kept triangle -> primitive id (or NULL) */
+    double min_overlap;
+    sref *cur, *nxt;
+    snode *cn, *nn;
+    scell *cells;          /* per node of cn */
+    spiece *pieces;        /* the large nodes' pieces, in node order */
+    unsigned char *side;   /* per position in cur */
+    atrbvh_box *halves;    /* per straddler slot: its halves (the slots
+                              of a level's straddlers in order, compact:
+                              the pages touched are the straddlers') */
+    atrbvh_box *out;
+    uint32_t *out_ids;
+    int k;                 /* the level's axis */
+    uint32_t half;         /* half the level's cell width, grid units */
+} sah_ctx;
+
+#define S_CLIPPED 8u /* cut_ref gave both halves (at its slot in halves) */
+
+/* GCC's SLP vectoriser packs a box that a loop grows and then stores
+ * into vector registers, shuffling them at every step (callgrind,
+ * conference --split 0.1, one thread: the partition 116M instructions
+ * with it, 78M without, as the single function before it had). */
+#if defined(__GNUC__) && !defined(__clang__)
+#define NO_SLP __attribute__((optimize("no-tree-slp-vectorize")))
+#else
+#define NO_SLP
+#endif
+
+/* The plane of node nd at the level: its cell's midplane. */
+static float sah_plane(const sah_ctx *s, const snode *nd)
+{
+    const uint32_t mid = nd->qlo[s->k] + s->half;
+    return (float)(s->g->lo[s->k] + (double)mid * s->g->step[s->k]);
+}
+
+/* The object partition (straddlers whole at their centroid's side) of
+ * positions [p, p + n) of node nd: side[] of each, and the boxes and
+ * counts of the four kinds (wholly left, wholly right, straddlers left,
+ * straddlers right) into bx and cnt. */
+NO_SLP static void sah_partition(const sah_ctx *s, const snode *nd,
+                                 size_t p, size_t n, atrbvh_box bx[4],
+                                 uint64_t cnt[4])
+{
+    const sref *r = s->cur + p;
+    unsigned char *side = s->side + p;
+    const int k = s->k;
+    const float x = sah_plane(s, nd);
+    atrbvh_box lo = atrbvh_box_empty(), ro = atrbvh_box_empty();
+    atrbvh_box ls = lo, rs = ro;
+    uint64_t nl = 0, nr = 0, nls = 0, nrs = 0;
+    size_t a;
+    for (a = 0; a < n; a++) {
+        const atrbvh_box *b = &r[a].box;
+        if (b->max[k] <= x) {
+            side[a] = 0;
+            lo = atrbvh_box_union(lo, *b);
+            nl++;
+        } else if (b->min[k] >= x) {
+            side[a] = S_RIGHT;
+            ro = atrbvh_box_union(ro, *b);
+            nr++;
+        } else if (atrbvh_box_centre(*b, k) >= x) {
+            side[a] = S_STRADDLE | S_RIGHT;
+            rs = atrbvh_box_union(rs, *b);
+            nrs++;
+        } else {
+            side[a] = S_STRADDLE;
+            ls = atrbvh_box_union(ls, *b);
+            nls++;
+        }
+    }
+    bx[0] = lo;
+    bx[1] = ro;
+    bx[2] = ls;
+    bx[3] = rs;
+    cnt[0] = nl;
+    cnt[1] = nr;
+    cnt[2] = nls;
+    cnt[3] = nrs;
+}
+
+/* Node c's object partition, or a large node's piece i of it. */
+static void sah_partition_node(const sah_ctx *s, size_t c)
+{
+    scell *e = &s->cells[c];
+    atrbvh_box bx[4];
+    uint64_t cnt[4];
+    sah_partition(s, &s->cn[c], s->cn[c].first, s->cn[c].count, bx, cnt);
+    e->lo = bx[0], e->ro = bx[1], e->ls = bx[2], e->rs = bx[3];
+    e->nl = cnt[0], e->nr = cnt[1], e->nls = cnt[2], e->nrs = cnt[3];
+}
+
+static void sah_partition_piece(const sah_ctx *s, size_t i)
+{
+    spiece *pc = &s->pieces[i];
+    atrbvh_box bx[4];
+    uint64_t cnt[4];
+    sah_partition(s, &s->cn[pc->node], pc->first, pc->count, bx, cnt);
+    pc->lo = bx[0], pc->ro = bx[1], pc->ls = bx[2], pc->rs = bx[3];
+    pc->nl = (uint32_t)cnt[0], pc->nr = (uint32_t)cnt[1];
+    pc->nls = (uint32_t)cnt[2], pc->nrs = (uint32_t)cnt[3];
+    pc->cut = pc->cutl = 0;
+}
+
+/* A large node's partition: its pieces' joined in piece order. */
+static void sah_join(const sah_ctx *s, size_t c)
+{
+    scell *e = &s->cells[c];
+    size_t i;
+    e->lo = e->ro = e->ls = e->rs = atrbvh_box_empty();
+    e->nl = e->nr = e->nls = e->nrs = 0;
+    for (i = e->piece0; i < e->piece0 + e->pieces; i++) {
+        const spiece *pc = &s->pieces[i];
+        e->lo = atrbvh_box_union(e->lo, pc->lo);
+        e->ro = atrbvh_box_union(e->ro, pc->ro);
+        e->ls = atrbvh_box_union(e->ls, pc->ls);
+        e->rs = atrbvh_box_union(e->rs, pc->rs);
+        e->nl += pc->nl;
+        e->nr += pc->nr;
+        e->nls += pc->nls;
+        e->nrs += pc->nrs;
+    }
+}
+
+/* Whether node c, partitioned, stops here or is weighed for a spatial
+ * split (given budget left: place refuses the cut otherwise). */
+static void sah_judge(const sah_ctx *s, size_t c)
+{
+    scell *e = &s->cells[c];
+    const atrbvh_box lobj = atrbvh_box_union(e->ls, e->lo),
+                     robj = atrbvh_box_union(e->rs, e->ro);
+    e->cut = e->cutl = 0;
+    e->pays = e->taken = 0;
+    /* no overlap below can pass: every box below lies in this node's,
+     * so nothing more is cut here */
+    e->stop = !(atrbvh_box_area(atrbvh_box_union(lobj, robj)) >
+                s->min_overlap);
+    e->cand = !e->stop && e->nls + e->nrs && e->nl + e->nls &&
+              e->nr + e->nrs && overlap_area(&lobj, &robj) > s->min_overlap;
+}
+
+/* The straddlers at positions [p0, p1) of cur, in weighed node c,
+ * clipped to both sides of its plane, their halves at slots slot0 on
+ * (the expensive part: any range on any thread; each position is
+ * written by one call). */
+static void sah_clip(const sah_ctx *s, size_t c, size_t p0, size_t p1,
+                     size_t slot0)
+{
+    const snode nd = s->cn[c];
+    const float x = sah_plane(s, &nd);
+    size_t p, slot = slot0;
+    for (p = p0; p < p1; p++) {
+        if (!(s->side[p] & S_STRADDLE))
+            continue;
+        if (cut_ref(s->run, s->ids, s->boxes, &s->cur[p], s->k, x,
+                    &s->halves[2 * slot], &s->halves[2 * slot + 1]))
+            s->side[p] |= S_CLIPPED;
+        slot++;
+    }
+}
+
+/* Weighed node c, its straddlers clipped (by sah_clip before, or here
+ * when clip is set: one pass over the node instead of two on one
+ * thread): every straddler cut, then each kept whole at its centroid's
+ * side where that costs no more (in reference order: each decision sees
+ * the ones before), and whether the cut lowers the halves' SAH; a large
+ * node's pieces count their cuts. */
+NO_SLP static void sah_weigh(const sah_ctx *s, size_t c, int clip)
+{
+    const snode nd = s->cn[c];
+    const sref *r = s->cur + nd.first;
+    unsigned char *side = s->side + nd.first;
+    scell *e = &s->cells[c];
+    const atrbvh_box *hv = s->halves + 2 * e->slot0;
+    const atrbvh_box lobj = atrbvh_box_union(e->ls, e->lo),
+                     robj = atrbvh_box_union(e->rs, e->ro);
+    atrbvh_box lsp = e->lo, rsp = e->ro;
+    uint64_t nls = e->nl, nrs = e->nr, cut = 0, cutl = 0;
+    size_t slot = 0;
+    uint32_t a;
+    for (a = 0; a < nd.count; a++) {
+        if (!(side[a] & S_STRADDLE))
+            continue;
+        if (clip)
+            sah_clip(s, c, (size_t)nd.first + a, (size_t)nd.first + a + 1,
+                     e->slot0 + slot);
+        if (side[a] & S_CLIPPED) {
+            side[a] |= S_CUT;
+            lsp = atrbvh_box_union(lsp, hv[2 * slot]);
+            rsp = atrbvh_box_union(rsp, hv[2 * slot + 1]);
+            nls++;
+            nrs++;
+        } else if (side[a] & S_RIGHT) { /* rounding: whole */
+            rsp = atrbvh_box_union(rsp, r[a].box);
+            nrs++;
+        } else {
+            lsp = atrbvh_box_union(lsp, r[a].box);
+            nls++;
+        }
+        slot++;
+    }
+    for (a = 0; a < nd.count; a++) {
+        double split_c, whole_c;
+        atrbvh_box wb;
+        if (!(side[a] & S_CUT))
+            continue;
+        split_c = side_cost(&lsp, nls) + side_cost(&rsp, nrs);
+        if (side[a] & S_RIGHT) {
+            wb = atrbvh_box_union(rsp, r[a].box);
+            whole_c = side_cost(&lsp, nls - 1) + side_cost(&wb, nrs);
+        } else {
+            wb = atrbvh_box_union(lsp, r[a].box);
+            whole_c = side_cost(&wb, nls) + side_cost(&rsp, nrs - 1);
+        }
+        if (whole_c <= split_c) {
+            side[a] &= (unsigned char)~S_CUT;
+            if (side[a] & S_RIGHT)
+                rsp = wb, nls--;
+            else
+                lsp = wb, nrs--;
+        } else {
+            cut++;
+            cutl += !(side[a] & S_RIGHT);
+            if (e->pieces) {
+                spiece *pc = &s->pieces[e->piece0 + a / SAH_PIECE];
+                pc->cut++;
+                pc->cutl += !(side[a] & S_RIGHT);
+            }
+        }
+    }
+    e->cut = cut;
+    e->cutl = cutl;
+    e->pays = cut && side_cost(&lsp, nls) + side_cost(&rsp, nrs) <
+                         side_cost(&lobj, e->nl + e->nls) +
+                             side_cost(&robj, e->nr + e->nrs);
+}
+
+/* Where node c's output goes, serially in cell order (what makes the
+ * result the same for any thread count): the budget takes its cut if it
+ * pays and fits what is left; its halves go to nxt at *pos, those still
+ * to cut becoming nodes of nn at *nnext, the rest also to out at *total;
+ * a large node's pieces each after the ones before them. */
+static void sah_place(const sah_ctx *s, size_t c, int level,
+                      uint64_t *remaining, uint64_t *total, size_t *pos,
+                      size_t *nnext)
+{
+    const snode nd = s->cn[c];
+    scell *e = &s->cells[c];
+    uint64_t nh[2];
+    size_t at[2], i;
+    int h;
+    if (e->stop) {
+        e->out_at = (size_t)*total;
+        *total += nd.count;
+        return;
+    }
+    if (e->cand && e->pays && *remaining && e->cut <= *remaining) {
+        *remaining -= e->cut;
+        e->taken = 1;
+    } else {
+        e->cut = e->cutl = 0;
+    }
+    nh[0] = e->nl + e->nls + e->cut - e->cutl;
+    nh[1] = e->nr + e->nrs + e->cutl;
+    e->nxt_at = *pos;
+    for (h = 0; h < 2; h++) {
+        const size_t first = h ? *pos + (size_t)nh[0] : *pos;
+        e->half_out[h] = NO_OUT;
+        if (!nh[h])
+            continue;
+        if (nh[h] > SAH_STOP && level > 0) {
+            snode *m = &s->nn[(*nnext)++];
+            *m = nd;
+            m->first = (uint32_t)first;
+            m->count = (uint32_t)nh[h];
+            if (h)
+                m->qlo[s->k] = nd.qlo[s->k] + s->half;
+        } else {
+            e->half_out[h] = (size_t)*total;
+            *total += nh[h];
+        }
+    }
+    at[0] = *pos;
+    at[1] = *pos + (size_t)nh[0];
+    *pos += (size_t)(nh[0] + nh[1]);
+    for (i = e->piece0; i < e->piece0 + e->pieces; i++) {
+        spiece *pc = &s->pieces[i];
+        const uint32_t cut = e->taken ? pc->cut : 0,
+                       cutl = e->taken ? pc->cutl : 0;
+        pc->at[0] = at[0];
+        pc->at[1] = at[1];
+        at[0] += pc->nl + pc->nls + cut - cutl;
+        at[1] += pc->nr + pc->nrs + cutl;
+    }
+}
+
+/* Entries [f, f + n) of refs to out from position o on: their boxes,
+ * and their primitive ids to out_ids. */
+static void sah_emit(const sah_ctx *s, const sref *refs, size_t f,
+                     size_t n, size_t o)
+{
+    size_t e;
+    for (e = f; e < f + n; e++, o++) {
+        s->out[o] = refs[e].box;
+        s->out_ids[o] = s->ids ? s->ids[refs[e].j] : refs[e].j;
+    }
+}
+
+/* Positions [p, p + n) of node c where place put them (left at at[0]
+ * on, right at at[1] on, each in the references' order); the part of a
+ * half that goes out is copied there too. */
+static void sah_write(const sah_ctx *s, size_t c, size_t p, size_t n,
+                      const size_t at_in[2], size_t slot0)
+{
+    const scell *e = &s->cells[c];
+    const sref *r = s->cur + p;
+    const unsigned char *side = s->side + p;
+    const atrbvh_box *hv = s->halves + 2 * slot0;
+    size_t at[2], a, slot = 0;
+    int h;
+    if (e->stop) {
+        sah_emit(s, s->cur, p, n, e->out_at + (p - s->cn[c].first));
+        return;
+    }
+    at[0] = at_in[0];
+    at[1] = at_in[1];
+    if (!e->taken) {
+        for (a = 0; a < n; a++)
+            s->nxt[at[side[a] & S_RIGHT]++] = r[a];
+    } else {
+        for (a = 0; a < n; a++) {
+            const unsigned sd = side[a];
+            if (sd & S_CUT) { /* the halves weighed */
+                s->nxt[at[0]].box = hv[2 * slot];
+                s->nxt[at[0]++].j = r[a].j;
+                s->nxt[at[1]].box = hv[2 * slot + 1];
+                s->nxt[at[1]++].j = r[a].j;
+            } else {
+                s->nxt[at[sd & S_RIGHT]++] = r[a];
+            }
+            slot += (sd & S_STRADDLE) != 0;
+        }
+    }
+    for (h = 0; h < 2; h++)
+        if (e->half_out[h] != NO_OUT) {
+            const size_t half_first =
+                h ? e->nxt_at + (size_t)(e->nl + e->nls + e->cut - e->cutl)
+                  : e->nxt_at;
+            sah_emit(s, s->nxt, at_in[h], at[h] - at_in[h],
+                     e->half_out[h] + (at_in[h] - half_first));
+        }
+}
+
+/* Node c written whole (a small node) or piece i (of a large one). */
+static void sah_write_node(const sah_ctx *s, size_t c)
+{
+    const scell *e = &s->cells[c];
+    const size_t nh0 = (size_t)(e->nl + e->nls + e->cut - e->cutl);
+    size_t at[2];
+    at[0] = e->nxt_at;
+    at[1] = e->nxt_at + nh0;
+    sah_write(s, c, s->cn[c].first, s->cn[c].count, at, e->slot0);
+}
+
+static void sah_write_piece(const sah_ctx *s, size_t i)
+{
+    const spiece *pc = &s->pieces[i];
+    sah_write(s, pc->node, pc->first, pc->count, pc->at, pc->slot0);
+}
+
+/* Node c's straddlers' slots in halves from *slot on (a large node's
+ * piece by piece), partitioned: in node order, compact. */
+static void sah_slots(const sah_ctx *s, size_t c, size_t *slot)
+{
+    scell *e = &s->cells[c];
+    size_t i;
+    e->slot0 = *slot;
+    if (!e->pieces) {
+        *slot += (size_t)(e->nls + e->nrs);
+        return;
+    }
+    for (i = e->piece0; i < e->piece0 + e->pieces; i++) {
+        s->pieces[i].slot0 = *slot;
+        *slot += (size_t)s->pieces[i].nls + s->pieces[i].nrs;
+    }
+}
+
+/* A level is spread over the threads only when it holds this many
+ * references (below, one thread is faster than the hand-overs). */
+#define SAH_PAR_REFS 4096u
+
+/* One level on the threads: partition (small nodes whole, large ones in
+ * pieces), clip and weigh every node in parallel (as though the budget
+ * lasted the level: a node's result does not depend on it), place
+ * serially, write in parallel.  Nodes after the one that spends the
+ * budget are weighed in vain: the price of not waiting for the budget,
+ * one level's weighing at most, once. */
+static void sah_level_parallel(const sah_ctx *s, size_t ncur, size_t npieces,
+                               int level, int threads, uint64_t *remaining,
+                               uint64_t *total, size_t *nnext)
+{
+    int64_t c;
+    (void)threads;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads)
+#endif
+    {
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1) nowait
+#endif
+        for (c = 0; c < (int64_t)npieces; c++)
+            sah_partition_piece(s, (size_t)c);
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 8)
+#endif
+        for (c = 0; c < (int64_t)ncur; c++)
+            if (!s->cells[c].pieces)
+                sah_partition_node(s, (size_t)c);
+#ifdef _OPENMP
+#pragma omp single
+#endif
+        {
+            size_t i, slot = 0;
+            for (i = 0; i < ncur; i++)
+                sah_slots(s, i, &slot);
+        }
+        /* the small nodes weighed whole, the large ones' straddlers
+         * clipped piece by piece */
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 8) nowait
+#endif
+        for (c = 0; c < (int64_t)ncur; c++) {
+            if (s->cells[c].pieces)
+                sah_join(s, (size_t)c);
+            sah_judge(s, (size_t)c);
+            if (!s->cells[c].pieces && s->cells[c].cand)
+                sah_weigh(s, (size_t)c, 1);
+        }
+        if (npieces) {
+#ifdef _OPENMP
+#pragma omp barrier
+#pragma omp for schedule(dynamic, 1)
+#endif
+            for (c = 0; c < (int64_t)npieces; c++) {
+                const spiece *pc = &s->pieces[c];
+                if (s->cells[pc->node].cand)
+                    sah_clip(s, pc->node, pc->first,
+                             (size_t)pc->first + pc->count, pc->slot0);
+            }
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1) nowait
+#endif
+            for (c = 0; c < (int64_t)ncur; c++)
+                if (s->cells[c].pieces && s->cells[c].cand)
+                    sah_weigh(s, (size_t)c, 0);
+        }
+#ifdef _OPENMP
+#pragma omp barrier
+#pragma omp single
+#endif
+        {
+            size_t i, pos = 0;
+            for (i = 0; i < ncur; i++)
+                sah_place(s, i, level, remaining, total, &pos, nnext);
+        }
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1) nowait
+#endif
+        for (c = 0; c < (int64_t)npieces; c++)
+            sah_write_piece(s, (size_t)c);
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 8) nowait
+#endif
+        for (c = 0; c < (int64_t)ncur; c++)
+            if (!s->cells[c].pieces)
+                sah_write_node(s, (size_t)c);
+    }
+}
+
+/* The large nodes' pieces (in node order), their count. */
+static size_t sah_cut_pieces(const sah_ctx *s, size_t ncur)
+{
+    size_t c, n = 0;
+    for (c = 0; c < ncur; c++) {
+        const snode *nd = &s->cn[c];
+        scell *e = &s->cells[c];
+        uint32_t f;
+        e->piece0 = n;
+        e->pieces = 0;
+        if (nd->count <= SAH_PIECE)
+            continue;
+        for (f = 0; f < nd->count; f += SAH_PIECE) {
+            spiece *pc = &s->pieces[n++];
+            pc->node = (uint32_t)c;
+            pc->first = nd->first + f;
+            pc->count = nd->count - f < SAH_PIECE ? nd->count - f : SAH_PIECE;
+            pc->cut = pc->cutl = 0;
+        }
+        e->pieces = n - e->piece0;
+    }
+    return n;
+}
+
 static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
                               const atrbvh_box *boxes, const uint32_t *ids,
                               uint32_t kept, const atrbvh_box *scene,
@@ -670,228 +1239,187 @@ static atrbvh_status sah_refs(const atrbvh_i_run *run, const grid *g,
                               uint32_t *out_ids, uint64_t *out_total,
                               atrbvh_error *error)
 {
+    const int threads = run->cfg->threads;
     const size_t cap = (size_t)kept + (size_t)budget;
-    sref *cur = atrbvh_i_alloc_array(cap, sizeof *cur);
-    sref *nxt = atrbvh_i_alloc_array(cap, sizeof *nxt);
-    /* a node that is cut further holds more than SAH_STOP references */
-    snode *cn = atrbvh_i_alloc_array(cap / (SAH_STOP + 1) + 1, sizeof *cn);
-    snode *nn = atrbvh_i_alloc_array(cap / (SAH_STOP + 1) + 1, sizeof *nn);
-    unsigned char *side = atrbvh_i_alloc_array(cap, sizeof *side);
-    const double min_overlap = SAH_ALPHA * atrbvh_box_area(*scene);
+    /* a node that is cut further holds more than SAH_STOP references;
+     * a large node, more than SAH_PIECE, has at most twice its share of
+     * pieces */
+    const size_t most = cap / (SAH_STOP + 1) + 1;
+    const size_t most_pieces = 2 * (cap / SAH_PIECE) + 1;
+    sah_ctx s;
     uint64_t remaining = budget, total = 0;
     size_t ncur = 0, i;
+    int64_t j;
     int level;
     atrbvh_status st = ATRBVH_OK;
 
-    if (!cur || !nxt || !cn || !nn || !side) {
+    (void)threads;
+    s.run = run;
+    s.g = g;
+    s.boxes = boxes;
+    s.ids = ids;
+    s.min_overlap = SAH_ALPHA * atrbvh_box_area(*scene);
+    s.out = out;
+    s.out_ids = out_ids;
+    s.cur = atrbvh_i_alloc_array(cap, sizeof *s.cur);
+    s.nxt = atrbvh_i_alloc_array(cap, sizeof *s.nxt);
+    s.cn = atrbvh_i_alloc_array(most, sizeof *s.cn);
+    s.nn = atrbvh_i_alloc_array(most, sizeof *s.nn);
+    s.cells = atrbvh_i_alloc_array(most, sizeof *s.cells);
+    s.pieces = atrbvh_i_alloc_array(most_pieces, sizeof *s.pieces);
+    s.side = atrbvh_i_alloc_array(cap, sizeof *s.side);
+    s.halves = cap <= SIZE_MAX / 2
+                   ? atrbvh_i_alloc_array(2 * cap, sizeof *s.halves)
+                   : NULL;
+    if (!s.cur || !s.nxt || !s.cn || !s.nn || !s.cells || !s.pieces ||
+        !s.side || !s.halves) {
         st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                            "cannot allocate the SAH split of %lu "
                            "references",
                            (unsigned long)cap);
         goto done;
     }
-    for (i = 0; i < kept; i++) {
-        cur[i].box = boxes[i];
-        cur[i].j = (uint32_t)i;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(static) \
+    if (kept >= SAH_PAR_REFS)
+#endif
+    for (j = 0; j < (int64_t)kept; j++) {
+        s.cur[j].box = boxes[j];
+        s.cur[j].j = (uint32_t)j;
     }
     if (kept > SAH_STOP) {
-        cn[0].first = 0;
-        cn[0].count = kept;
-        cn[0].qlo[0] = cn[0].qlo[1] = cn[0].qlo[2] = 0;
+        s.cn[0].first = 0;
+        s.cn[0].count = kept;
+        s.cn[0].qlo[0] = s.cn[0].qlo[1] = s.cn[0].qlo[2] = 0;
         ncur = 1;
     } else {
-        for (i = 0; i < kept; i++) {
-            out[total] = boxes[i];
-            out_ids[total++] = ids ? ids[i] : (uint32_t)i;
-        }
+        sah_emit(&s, s.cur, 0, kept, 0);
+        total = kept;
     }
     /* once the budget is spent, nothing more can be cut: the nodes left
      * are emitted as they are */
     for (level = 3 * ATRBVH_MORTON_BITS - 1; level >= 0 && ncur && remaining;
          level--) {
-        const int k = 2 - level % 3;
-        const uint32_t half = 1u << (level / 3);
-        size_t nnext = 0, pos = 0, c;
-        if (g->scale[k] == 0.0)
+        const size_t refs = (size_t)s.cn[ncur - 1].first +
+                            s.cn[ncur - 1].count - s.cn[0].first;
+        size_t nnext = 0, npieces;
+        s.k = 2 - level % 3;
+        s.half = 1u << (level / 3);
+        if (g->scale[s.k] == 0.0)
             continue; /* the centroids are flat on this axis: no plane */
-        for (c = 0; c < ncur; c++) {
-            const snode nd = cn[c];
-            const sref *r = cur + nd.first;
-            const uint32_t mid = nd.qlo[k] + half;
-            const float x = (float)(g->lo[k] + (double)mid * g->step[k]);
-            atrbvh_box lo = atrbvh_box_empty(), ro = atrbvh_box_empty();
-            atrbvh_box lobj = lo, robj = ro;
-            uint64_t nl = 0, nr = 0, nlo = 0, nro = 0, cut = 0, cutl = 0;
-            uint32_t ns = 0, a;
-            /* the object partition: straddlers whole at their centroid */
-            for (a = 0; a < nd.count; a++) {
-                const atrbvh_box *b = &r[a].box;
-                if (b->max[k] <= x) {
-                    side[a] = 0;
-                    lo = atrbvh_box_union(lo, *b);
-                    nl++;
-                } else if (b->min[k] >= x) {
-                    side[a] = S_RIGHT;
-                    ro = atrbvh_box_union(ro, *b);
-                    nr++;
-                } else if (atrbvh_box_centre(*b, k) >= x) {
-                    side[a] = S_STRADDLE | S_RIGHT;
-                    robj = atrbvh_box_union(robj, *b);
-                    nro++;
-                    ns++;
+        npieces = sah_cut_pieces(&s, ncur);
+        if (threads > 1 && refs >= SAH_PAR_REFS) {
+            sah_level_parallel(&s, ncur, npieces, level, threads, &remaining,
+                               &total, &nnext);
+        } else {
+            /* one node after the other, each weighed only while budget
+             * is left (the same result, no weighing in vain) */
+            size_t c, pos = 0, slot = 0;
+            for (c = 0; c < ncur; c++) {
+                const scell *e = &s.cells[c];
+                if (e->pieces) {
+                    for (i = e->piece0; i < e->piece0 + e->pieces; i++)
+                        sah_partition_piece(&s, i);
+                    sah_slots(&s, c, &slot);
+                    sah_join(&s, c);
                 } else {
-                    side[a] = S_STRADDLE;
-                    lobj = atrbvh_box_union(lobj, *b);
-                    nlo++;
-                    ns++;
+                    sah_partition_node(&s, c);
+                    sah_slots(&s, c, &slot);
                 }
+                sah_judge(&s, c);
+                if (e->cand && remaining)
+                    sah_weigh(&s, c, 1);
+                sah_place(&s, c, level, &remaining, &total, &pos, &nnext);
             }
-            lobj = atrbvh_box_union(lobj, lo);
-            robj = atrbvh_box_union(robj, ro);
-            nlo += nl;
-            nro += nr;
-            if (!(atrbvh_box_area(atrbvh_box_union(lobj, robj)) >
-                  min_overlap)) {
-                /* no overlap below can pass: every box below lies in
-                 * this node's, so nothing more is cut here */
-                for (a = 0; a < nd.count; a++) {
-                    out[total] = r[a].box;
-                    out_ids[total++] = ids ? ids[r[a].j] : r[a].j;
-                }
-                continue;
-            }
-            if (ns && remaining && nlo && nro &&
-                overlap_area(&lobj, &robj) > min_overlap) {
-                /* the spatial split: every straddler cut ... */
-                atrbvh_box lsp = lo, rsp = ro;
-                uint64_t nls = nl, nrs = nr;
-                for (a = 0; a < nd.count; a++) {
-                    atrbvh_box bl, br;
-                    if (!(side[a] & S_STRADDLE))
-                        continue;
-                    if (cut_ref(run, ids, boxes, &r[a], k, x, &bl, &br)) {
-                        side[a] |= S_CUT;
-                        lsp = atrbvh_box_union(lsp, bl);
-                        rsp = atrbvh_box_union(rsp, br);
-                        nls++;
-                        nrs++;
-                    } else if (side[a] & S_RIGHT) { /* rounding: whole */
-                        rsp = atrbvh_box_union(rsp, r[a].box);
-                        nrs++;
-                    } else {
-                        lsp = atrbvh_box_union(lsp, r[a].box);
-                        nls++;
-                    }
-                }
-                /* ... then each kept whole at its centroid's side where
-                 * that costs no more */
-                for (a = 0; a < nd.count; a++) {
-                    double split_c, whole_c;
-                    atrbvh_box wb;
-                    if (!(side[a] & S_CUT))
-                        continue;
-                    split_c = side_cost(&lsp, nls) + side_cost(&rsp, nrs);
-                    if (side[a] & S_RIGHT) {
-                        wb = atrbvh_box_union(rsp, r[a].box);
-                        whole_c = side_cost(&lsp, nls - 1) +
-                                  side_cost(&wb, nrs);
-                    } else {
-                        wb = atrbvh_box_union(lsp, r[a].box);
-                        whole_c = side_cost(&wb, nls) +
-                                  side_cost(&rsp, nrs - 1);
-                    }
-                    if (whole_c <= split_c) {
-                        side[a] &= (unsigned char)~S_CUT;
-                        if (side[a] & S_RIGHT)
-                            rsp = wb, nls--;
-                        else
-                            lsp = wb, nrs--;
-                    } else {
-                        cut++;
-                        cutl += !(side[a] & S_RIGHT);
-                    }
-                }
-                if (cut && cut <= remaining &&
-                    side_cost(&lsp, nls) + side_cost(&rsp, nrs) <
-                        side_cost(&lobj, nlo) + side_cost(&robj, nro)) {
-                    remaining -= cut;
-                } else {
-                    cut = cutl = 0;
-                    for (a = 0; a < nd.count; a++)
-                        side[a] &= (unsigned char)~S_CUT;
-                }
-            }
-            /* the halves, left first, each in the references' order:
-             * left at pos, right after the left's count */
-            {
-                const size_t nh[2] = {(size_t)(nlo + cut - cutl),
-                                      (size_t)(nro + cutl)};
-                size_t at[2];
-                int h;
-                at[0] = pos;
-                at[1] = pos + nh[0];
-                if (!cut && (!nh[0] || !nh[1])) { /* all on one side */
-                    memcpy(nxt + pos, r, nd.count * sizeof *r);
-                } else {
-                    for (a = 0; a < nd.count; a++) {
-                        const unsigned sd = side[a];
-                        if (sd & S_CUT) { /* the halves weighed above */
-                            (void)cut_ref(run, ids, boxes, &r[a], k, x,
-                                          &nxt[at[0]].box, &nxt[at[1]].box);
-                            nxt[at[0]++].j = r[a].j;
-                            nxt[at[1]++].j = r[a].j;
-                        } else {
-                            nxt[at[sd & S_RIGHT]++] = r[a];
-                        }
-                    }
-                }
-                for (h = 0; h < 2; h++) {
-                    const size_t first = h ? pos + nh[0] : pos;
-                    size_t e;
-                    if (!nh[h])
-                        continue;
-                    if (nh[h] > SAH_STOP && level > 0) {
-                        nn[nnext] = nd;
-                        nn[nnext].first = (uint32_t)first;
-                        nn[nnext].count = (uint32_t)nh[h];
-                        if (h)
-                            nn[nnext].qlo[k] = mid;
-                        nnext++;
-                        continue;
-                    }
-                    for (e = first; e < first + nh[h]; e++) {
-                        out[total] = nxt[e].box;
-                        out_ids[total++] = ids ? ids[nxt[e].j] : nxt[e].j;
-                    }
-                }
-                pos += nh[0] + nh[1];
-            }
+            for (i = 0; i < npieces; i++)
+                sah_write_piece(&s, i);
+            for (c = 0; c < ncur; c++)
+                if (!s.cells[c].pieces)
+                    sah_write_node(&s, c);
         }
         {
-            sref *t = cur;
-            snode *tn = cn;
-            cur = nxt;
-            nxt = t;
-            cn = nn;
-            nn = tn;
+            sref *t = s.cur;
+            snode *tn = s.cn;
+            s.cur = s.nxt;
+            s.nxt = t;
+            s.cn = s.nn;
+            s.nn = tn;
         }
         ncur = nnext;
     }
+    /* the nodes left, in order */
     for (i = 0; i < ncur; i++) {
-        size_t e;
-        for (e = cn[i].first; e < (size_t)cn[i].first + cn[i].count; e++) {
-            out[total] = cur[e].box;
-            out_ids[total++] = ids ? ids[cur[e].j] : cur[e].j;
-        }
+        s.cells[i].out_at = (size_t)total;
+        total += s.cn[i].count;
     }
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 64) \
+    if (total >= SAH_PAR_REFS)
+#endif
+    for (j = 0; j < (int64_t)ncur; j++)
+        sah_emit(&s, s.cur, s.cn[j].first, s.cn[j].count, s.cells[j].out_at);
     *out_total = total;
 done:
-    atrbvh_i_free(cur);
-    atrbvh_i_free(nxt);
-    atrbvh_i_free(cn);
-    atrbvh_i_free(nn);
-    atrbvh_i_free(side);
+    atrbvh_i_free(s.cur);
+    atrbvh_i_free(s.nxt);
+    atrbvh_i_free(s.cn);
+    atrbvh_i_free(s.nn);
+    atrbvh_i_free(s.cells);
+    atrbvh_i_free(s.pieces);
+    atrbvh_i_free(s.side);
+    atrbvh_i_free(s.halves);
     return st;
+}
+
+/* The box of the references' centroids (from atrbvh_box_empty), on the
+ * threads: each thread's contiguous part (schedule static: parts in
+ * thread order), the parts joined in thread order (ordered), so that
+ * among equal extremes (+0 and -0) the first in reference order wins,
+ * as in one loop over them: the same bits for any thread count. */
+NO_SLP static atrbvh_box centroid_box(const atrbvh_box *refs, size_t n,
+                               int threads)
+{
+    atrbvh_box c = atrbvh_box_empty();
+    (void)threads;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads) if (n >= SAH_PAR_REFS)
+#endif
+    {
+        atrbvh_box part = atrbvh_box_empty();
+        int64_t i;
+        int t, k, nt = 1;
+#ifdef _OPENMP
+        nt = omp_get_num_threads();
+#pragma omp for schedule(static) nowait
+#endif
+        for (i = 0; i < (int64_t)n; i++) {
+            /* written out per axis (GCC -O2 keeps a 3-iteration loop) */
+            const float m0 = atrbvh_box_centre(refs[i], 0),
+                        m1 = atrbvh_box_centre(refs[i], 1),
+                        m2 = atrbvh_box_centre(refs[i], 2);
+            part.min[0] = m0 < part.min[0] ? m0 : part.min[0];
+            part.min[1] = m1 < part.min[1] ? m1 : part.min[1];
+            part.min[2] = m2 < part.min[2] ? m2 : part.min[2];
+            part.max[0] = m0 > part.max[0] ? m0 : part.max[0];
+            part.max[1] = m1 > part.max[1] ? m1 : part.max[1];
+            part.max[2] = m2 > part.max[2] ? m2 : part.max[2];
+        }
+#ifdef _OPENMP
+#pragma omp for ordered schedule(static, 1)
+#endif
+        for (t = 0; t < nt; t++) {
+#ifdef _OPENMP
+#pragma omp ordered
+#endif
+            for (k = 0; k < 3; k++) {
+                if (part.min[k] < c.min[k])
+                    c.min[k] = part.min[k];
+                if (part.max[k] > c.max[k])
+                    c.max[k] = part.max[k];
+            }
+        }
+    }
+    return c;
 }
 
 atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
@@ -947,19 +1475,16 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
             /* nothing cut: the triangles in index order, as without
              * splitting (the recursion's order would change how the
              * Morton sort breaks ties, so not the ordinary tree) */
+            int64_t j;
             memcpy(refs, boxes, (size_t)kept * sizeof *refs);
-            for (i = 0; i < kept; i++)
-                ref_ids[i] = ids ? ids[i] : (uint32_t)i;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(static) \
+    if (kept >= SAH_PAR_REFS)
+#endif
+            for (j = 0; j < (int64_t)kept; j++)
+                ref_ids[j] = ids ? ids[j] : (uint32_t)j;
         }
-        centroids = atrbvh_box_empty();
-        for (i = 0; i < total; i++)
-            for (k = 0; k < 3; k++) {
-                float m = atrbvh_box_centre(refs[i], k);
-                if (m < centroids.min[k])
-                    centroids.min[k] = m;
-                if (m > centroids.max[k])
-                    centroids.max[k] = m;
-            }
+        centroids = centroid_box(refs, (size_t)total, threads);
         goto emit;
     }
     prio = atrbvh_i_alloc_array(kept, sizeof *prio);
