@@ -17,10 +17,18 @@
  * subtrees below may have become cheaper.  Nodes outside the crown are not
  * touched, so after each round the tree is as refit would leave it.
  *
- * Scheduling on the CPU: post-order OpenMP tasks for subtrees of at least
- * TASK_CUTOFF primitives, and below that (or deeper than MAX_TASK_DEPTH)
- * a stackless serial post-order walk that uses the parent pointers - the
- * treelet root keeps its id and parent, so the walk's way up stays valid.
+ * Scheduling on the CPU, per round: the "top" is the crown nodes of at
+ * least `cut` primitives (about n / (FRONTIER_PER_THREAD x threads)), a
+ * connected top part of the crown; the "frontier" is the crown nodes just
+ * below it, roots of disjoint subtrees.  One parallel loop (dynamic, one
+ * subtree at a time) walks each frontier subtree in post-order; then the
+ * calling thread walks the top in post-order.  Each walk is a stackless
+ * serial post-order walk over the parent pointers - the treelet root keeps
+ * its id and parent, so the walk's way up stays valid, and a frontier
+ * root keeps its primitives, so the top does not move under the loop.
+ * One hand-over between threads per round, where post-order tasks woke a
+ * sleeping thread at every spawn and taskwait (on a virtual machine with
+ * passive waiting, each wake-up is tens to hundreds of microseconds).
  * Scratch is per thread, allocated once per build.
  */
 #include "cpu.h"
@@ -49,11 +57,16 @@ typedef struct opt_worker {
 #error "optimise.c: the adaptive size exceeds the fixed-size path"
 #endif
 
-/* Subtrees smaller than this are walked serially inside one task. */
-#define TASK_CUTOFF 2048u
-/* Deeper task recursion falls back to the serial walk (bounds the stack
- * on degenerate trees). */
-#define MAX_TASK_DEPTH 48
+/* Trees smaller than this are optimised on one thread. */
+#define PARALLEL_MIN 2048u
+/* The top's cut: about this many frontier subtrees per thread, for the
+ * dynamic loop's balance (the top, about as many nodes as the frontier,
+ * is walked on one thread). */
+#define FRONTIER_PER_THREAD 32u
+/* The frontier list's capacity per thread (FRONTIER_PER_THREAD and room
+ * for unbalanced tops); a longer frontier (a degenerate tree) takes the
+ * serial walk, which gives the same tree. */
+#define FRONTIER_CAP_PER_THREAD 512u
 
 typedef struct walk_ctx {
     atrbvh_treelet_tree t;
@@ -188,30 +201,34 @@ static void visit(walk_ctx *c, uint32_t node)
         process_agg(c, node);
 }
 
-/* Post-order over the crown below (and including) crown node s, without a
- * stack: descend to the first crown node with no crown child, process,
- * then go to the right sibling's subtree or up to the parent. */
-static void walk_serial(walk_ctx *c, uint32_t s)
+/* Post-order over the crown nodes of at least `lo` primitives (lo >=
+ * gamma) below and including crown node s, without a stack: descend to
+ * the first such node with no such child, process, then go to the right
+ * sibling's subtree or up to the parent.  lo = gamma: the whole crown
+ * below s; lo = the cut: the top, whose frontier is already done. */
+static void walk_serial(walk_ctx *c, uint32_t s, uint32_t lo)
 {
     const atrbvh_treelet_tree *t = &c->t;
+    const uint32_t ni = t->n_internal;
     uint32_t x = s;
     for (;;) {
         for (;;) {
-            if (in_crown(c, t->left[x]))
+            if (t->left[x] < ni && t->count[t->left[x]] >= lo)
                 x = t->left[x];
-            else if (in_crown(c, t->right[x]))
+            else if (t->right[x] < ni && t->count[t->right[x]] >= lo)
                 x = t->right[x];
             else
                 break;
         }
         for (;;) {
-            uint32_t parent;
+            uint32_t parent, r;
             visit(c, x);
             if (x == s)
                 return;
             parent = t->parent[x];
-            if (t->left[parent] == x && in_crown(c, t->right[parent])) {
-                x = t->right[parent];
+            r = t->right[parent];
+            if (t->left[parent] == x && r < ni && t->count[r] >= lo) {
+                x = r;
                 break; /* descend into the right subtree */
             }
             x = parent;
@@ -219,34 +236,91 @@ static void walk_serial(walk_ctx *c, uint32_t s)
     }
 }
 
-static void walk_tasks(walk_ctx *c, uint32_t node, int depth)
+/* The frontier of the top (the internal nodes of at least `cut`
+ * primitives, the root among them): the crown nodes below `cut` whose
+ * parent is in the top, into out[0 ..], in pre-order of the top.  Returns
+ * their number, or cap + 1 when they do not fit. */
+static size_t frontier(const walk_ctx *c, uint32_t cut, uint32_t *out,
+                       size_t cap)
 {
     const atrbvh_treelet_tree *t = &c->t;
-    uint32_t l, r;
-    int spawn_l, spawn_r;
-    if (c->t.count[node] < TASK_CUTOFF || depth >= MAX_TASK_DEPTH) {
-        walk_serial(c, node);
+    const uint32_t ni = t->n_internal;
+    size_t k = 0;
+    uint32_t x = 0;
+    for (;;) {
+        const uint32_t l = t->left[x], r = t->right[x];
+        const int top_l = l < ni && t->count[l] >= cut;
+        const int top_r = r < ni && t->count[r] >= cut;
+        if (!top_l && in_crown(c, l)) {
+            if (k == cap)
+                return cap + 1;
+            out[k++] = l;
+        }
+        if (!top_r && in_crown(c, r)) {
+            if (k == cap)
+                return cap + 1;
+            out[k++] = r;
+        }
+        if (top_l) {
+            x = l;
+            continue;
+        }
+        if (top_r) {
+            x = r;
+            continue;
+        }
+        /* up to the nearest ancestor whose right child is a top node not
+         * yet entered (entered from its left) */
+        for (;;) {
+            uint32_t parent, pr;
+            if (x == 0)
+                return k;
+            parent = t->parent[x];
+            pr = t->right[parent];
+            if (t->left[parent] == x && pr < ni && t->count[pr] >= cut) {
+                x = pr;
+                break;
+            }
+            x = parent;
+        }
+    }
+}
+
+/* One round over the crown: the frontier subtrees on the threads, then
+ * the top on this thread; the whole crown on this thread when the tree is
+ * small, or its frontier does not fit. */
+static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap)
+{
+    const uint32_t root_count = c->t.count[0];
+    uint64_t cut64 = root_count / ((uint64_t)FRONTIER_PER_THREAD *
+                                   (uint64_t)(threads > 0 ? threads : 1));
+    uint32_t cut;
+    size_t k = 0;
+    /* above gamma, so that every top node is a crown node */
+    if (cut64 <= c->gamma)
+        cut64 = (uint64_t)c->gamma + 1u;
+    cut = (uint32_t)cut64;
+    if (threads > 1 && root_count >= PARALLEL_MIN && root_count >= cut)
+        k = frontier(c, cut, list, cap);
+    if (k < 2u || k > cap) {
+        walk_serial(c, 0, c->gamma);
         return;
     }
-    l = t->left[node];
-    r = t->right[node];
-    spawn_l = in_crown(c, l);
-    spawn_r = in_crown(c, r);
-    (void)spawn_l;
-    (void)spawn_r;
 #ifdef _OPENMP
-#pragma omp task default(shared) if (spawn_l && t->count[l] >= TASK_CUTOFF)
-#endif
     {
-        if (spawn_l)
-            walk_tasks(c, l, depth + 1);
+        int64_t i;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+        for (i = 0; i < (int64_t)k; i++)
+            walk_serial(c, list[i], c->gamma);
     }
-    if (spawn_r)
-        walk_tasks(c, r, depth + 1);
-#ifdef _OPENMP
-#pragma omp taskwait
+#else
+    {
+        size_t i;
+        for (i = 0; i < k; i++)
+            walk_serial(c, list[i], c->gamma);
+    }
 #endif
-    visit(c, node);
+    walk_serial(c, 0, cut);
 }
 
 /* Per-thread scratch layout, each part aligned to 64 bytes. */
@@ -261,7 +335,8 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     opt_worker *workers = NULL;
     unsigned char *block;
     size_t subsets = 0, pairs = 0, stride = 0, off_cost, off_count,
-           off_split, off_dist, total, marks = 0;
+           off_split, off_dist, off_list, total, marks = 0, cap;
+    uint32_t *list;
     unsigned round, n = cfg->treelet_size;
     /* The largest treelet of the build (ATRBVH_TREELET_AUTO: the rule's
      * largest) and the smallest subtree that can hold a treelet. */
@@ -316,11 +391,19 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     if (cfg->method == ATRBVH_METHOD_TRBVH || n <= ATRBVH_TREELET_MAX ||
         n == ATRBVH_TREELET_AUTO)
         marks = (size_t)(t->n - 1u);
+    /* Then the frontier list of a round (walk_round), 4-byte entries
+     * after the marks' bytes, aligned. */
+    cap = (size_t)FRONTIER_CAP_PER_THREAD * (size_t)threads;
     if (!atrbvh_i_mul_size((size_t)threads, stride, &total) ||
         marks > ((size_t)-1 - total) / 2u)
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
                              "optimise: scratch size overflows");
     total += 2u * marks;
+    off_list = ALIGN64(total);
+    if (off_list < total || cap > ((size_t)-1 - off_list) / sizeof(uint32_t))
+        return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
+                             "optimise: scratch size overflows");
+    total = off_list + cap * sizeof(uint32_t);
     if (!scratch) {
         memset(&own, 0, sizeof own);
         scratch = &own;
@@ -347,6 +430,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         if (cfg->method == ATRBVH_METHOD_ATRBVH)
             atrbvh_agg_layout(base + off_dist, nmax, &workers[k].agg);
     }
+    list = (uint32_t *)(void *)(block + off_list);
     c.marks.chg = c.marks.same = NULL;
     if (marks > 0u) {
         c.marks.chg = block + (size_t)threads * stride;
@@ -389,15 +473,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
                                  "cancelled in the optimise stage, round %u",
                                  round + 1);
         }
-        if (threads > 1 && t->count[0] >= TASK_CUTOFF) {
-#ifdef _OPENMP
-#pragma omp parallel num_threads(threads)
-#pragma omp single
-#endif
-            walk_tasks(&c, 0, 0);
-        } else {
-            walk_serial(&c, 0);
-        }
+        walk_round(&c, threads, list, cap);
         if (c.cancel || (run && atrbvh_i_stage_round(run, round + 1))) {
             if (scratch == &own)
                 atrbvh_i_scratch_free(&own);
