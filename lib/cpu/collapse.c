@@ -15,8 +15,15 @@
  * tree; the same rule and arithmetic as decide() below); this stage then
  * only releases memory.
  *
- * Otherwise bottom-up in post-order, OpenMP tasks above TASK_CUTOFF
- * primitives.
+ * Otherwise bottom-up in post-order: the "top" (the nodes of more than
+ * `cut` primitives, about n / (FRONTIER_PER_THREAD x threads)) is cut
+ * from the subtrees just below it, the frontier, listed left to right;
+ * one parallel loop (dynamic, a subtree at a time) decides the frontier
+ * subtrees, then the calling thread decides the top, taking the frontier
+ * costs in the same left-to-right order.  One hand-over between threads,
+ * where tasks woke a sleeping thread at every spawn (optimise.c says why
+ * that costs).  Every node's size and cost are the same whichever thread
+ * computes them.
  * The subtree costs are recomputed on the way up (the refit's rule on the
  * same boxes and counts: the same doubles the refit or a treelet
  * write-back stored), so the cost array is not read and the sizes take
@@ -31,12 +38,24 @@
 
 #include <string.h>
 
-#define TASK_CUTOFF 4096u
+/* Trees smaller than this are decided on one thread. */
+#define PARALLEL_MIN 4096u
+/* The top's cut: about this many frontier subtrees per thread. */
+#define FRONTIER_PER_THREAD 32u
+/* The frontier's capacity per thread; a longer one (a degenerate tree)
+ * is decided on one thread, with the same result. */
+#define FRONTIER_CAP_PER_THREAD 512u
 
 typedef struct collapse_ctx {
     const atrbvh_i_tree *t;
     const atrbvh_cost_params *p;
     uint32_t *size; /* output nodes of the subtree | ATRBVH_SIZE_LEAF */
+    /* the frontier (top_decide): its roots left to right, their costs,
+     * and the next one the top's walk takes */
+    uint32_t cut;
+    uint32_t *list;
+    double *cost;
+    size_t next;
 } collapse_ctx;
 
 /* Decides `node`'s subtree; returns its cost. */
@@ -52,24 +71,99 @@ static double decide(collapse_ctx *c, uint32_t node)
     }
     l = t->left[node];
     r = t->right[node];
-    if (t->count[node] > TASK_CUTOFF) {
-#ifdef _OPENMP
-#pragma omp task default(shared) firstprivate(l)
-#endif
-        cl = decide(c, l);
-        cr = decide(c, r);
-#ifdef _OPENMP
-#pragma omp taskwait
-#endif
-    } else {
-        cl = decide(c, l);
-        cr = decide(c, r);
-    }
+    cl = decide(c, l);
+    cr = decide(c, r);
     c->size[node] = atrbvh_collapse_size(c->p, t->box[node], t->count[node],
                                          cl, cr, c->size[l], c->size[r]);
     cost = atrbvh_node_cost(c->p, atrbvh_box_area(t->box[node]),
                             t->count[node], cl, cr, &collapsed);
     return cost;
+}
+
+/* The frontier below `node` (a top node: more than c->cut primitives),
+ * left to right, into c->list from *k; 0 when it does not fit in cap. */
+static int frontier(collapse_ctx *c, uint32_t node, size_t *k, size_t cap)
+{
+    const atrbvh_i_tree *t = c->t;
+    int side;
+    for (side = 0; side < 2; side++) {
+        const uint32_t x = side ? t->right[node] : t->left[node];
+        if (!atrbvh_i_is_leaf(t, x) && t->count[x] > c->cut) {
+            if (!frontier(c, x, k, cap))
+                return 0;
+        } else {
+            if (*k == cap)
+                return 0;
+            c->list[(*k)++] = x;
+        }
+    }
+    return 1;
+}
+
+/* decide() over the top, the frontier's costs taken in order. */
+static double top_decide(collapse_ctx *c, uint32_t node)
+{
+    const atrbvh_i_tree *t = c->t;
+    uint32_t l, r;
+    double cl, cr;
+    int collapsed;
+    if (atrbvh_i_is_leaf(t, node) || t->count[node] <= c->cut)
+        return c->cost[c->next++];
+    l = t->left[node];
+    r = t->right[node];
+    cl = top_decide(c, l);
+    cr = top_decide(c, r);
+    c->size[node] = atrbvh_collapse_size(c->p, t->box[node], t->count[node],
+                                         cl, cr, c->size[l], c->size[r]);
+    return atrbvh_node_cost(c->p, atrbvh_box_area(t->box[node]),
+                            t->count[node], cl, cr, &collapsed);
+}
+
+/* Every node's size: the frontier on the threads, then the top; on one
+ * thread when the tree is small or the frontier does not fit. */
+static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
+                                int threads, atrbvh_error *error)
+{
+    const uint32_t root_count = c->t->count[0];
+    const size_t cap = (size_t)FRONTIER_CAP_PER_THREAD * (size_t)threads;
+    size_t k = 0;
+    unsigned char *block;
+    c->cut = root_count / (FRONTIER_PER_THREAD * (uint32_t)threads);
+    if (threads < 2 || root_count < PARALLEL_MIN || c->cut < 1u) {
+        (void)decide(c, 0);
+        return ATRBVH_OK;
+    }
+    /* cap roots and their costs (cap <= 2^31: no overflow) */
+    block = atrbvh_i_scratch_get(scratch, CPU_OPTIMISE,
+                                 cap * (sizeof(double) + sizeof(uint32_t)), 1);
+    if (!block)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                             "cannot allocate the collapse's frontier of %lu "
+                             "subtrees",
+                             (unsigned long)cap);
+    c->cost = (double *)(void *)block;
+    c->list = (uint32_t *)(void *)(block + cap * sizeof(double));
+    if (!frontier(c, 0, &k, cap) || k < 2u) {
+        (void)decide(c, 0);
+        return ATRBVH_OK;
+    }
+#ifdef _OPENMP
+    {
+        int64_t i;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+        for (i = 0; i < (int64_t)k; i++)
+            c->cost[i] = decide(c, c->list[i]);
+    }
+#else
+    {
+        size_t i;
+        for (i = 0; i < k; i++)
+            c->cost[i] = decide(c, c->list[i]);
+    }
+#endif
+    c->next = 0;
+    (void)top_decide(c, 0);
+    return ATRBVH_OK;
 }
 
 atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
@@ -88,13 +182,10 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
         x.t = &c->tree;
         x.p = &run->cfg->cost;
         x.size = c->size;
-        /* (nowait: the region's end waits for the tasks; the single's
-         * barrier would only be one more thread hand-over) */
-#ifdef _OPENMP
-#pragma omp parallel num_threads(run->cfg->threads)
-#pragma omp single nowait
-#endif
-        (void)decide(&x, 0);
+        st = decide_all(&x, c->scratch,
+                        run->cfg->threads > 0 ? run->cfg->threads : 1, error);
+        if (st != ATRBVH_OK)
+            return st;
     }
     run->node_count = c->size[0] & ATRBVH_SIZE_MASK;
     if (!c->kept_ids && run->cfg->method != ATRBVH_METHOD_LBVH &&
