@@ -2,15 +2,21 @@
  * cpu/layout.c - stage "layout": the public depth-first node array and the
  * primitive index array, top-down from the collapse decisions: a node's
  * left child follows it, its right child comes after the left subtree, so
- * every offset is known before descending (OpenMP tasks above
- * TASK_CUTOFF primitives).
+ * every offset is known before descending.  On the threads: the "top"
+ * (the internal nodes of more than `cut` primitives, about n /
+ * (FRONTIER_PER_THREAD x threads)) is placed first, top-down on the
+ * calling thread, which lists the subtrees just below it (the frontier)
+ * with their positions; one parallel loop (dynamic, a subtree at a time)
+ * emits those, then the calling thread writes the top's nodes bottom-up.
+ * One hand-over between threads, where tasks woke a sleeping thread at
+ * every spawn (optimise.c says why that costs).
  *
  * An LBVH from the hierarchy stage (cpu.h's ranges) needs no tree walk
  * for a leaf: its primitives are the sorted positions prim_at ..
  * prim_at+count-1, in order, so they are copied from leaf_prim and their
  * boxes folded in that order (the parent links are released then,
  * collapse.c); other trees are walked (gather()).  Such a subtree of up
- * to TASK_CUTOFF primitives without kept boxes is emitted by one loop
+ * to SMALL_MAX primitives without kept boxes is emitted by one loop
  * (emit_small) and its internal boxes by one backward pass over its
  * output: measured on the dragon, one thread, callgrind, the layout went
  * from about 269 to 134 instructions per triangle with the range copy,
@@ -36,7 +42,15 @@
 
 #include "cpu.h"
 
-#define TASK_CUTOFF 4096u
+/* The largest subtree emit_small takes (its list of internal nodes). */
+#define SMALL_MAX 4096u
+/* Trees smaller than this are laid out on one thread. */
+#define PARALLEL_MIN 4096u
+/* The top's cut: about this many frontier subtrees per thread. */
+#define FRONTIER_PER_THREAD 32u
+/* The frontier's and the top's capacity per thread; a longer one (a
+ * degenerate tree) is laid out on one thread, with the same result. */
+#define FRONTIER_CAP_PER_THREAD 512u
 
 typedef struct layout_ctx {
     const atrbvh_i_tree *t;
@@ -238,6 +252,8 @@ static inline void range_leaf(layout_ctx *c, uint32_t node, uint32_t at,
 #define SMALL_STACK 128
 
 static void emit(layout_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at);
+static void emit_inner(layout_ctx *c, uint32_t node, uint32_t at,
+                       uint32_t prim_at);
 
 /* Ranges without kept boxes: the subtree of `node` at `at` in one
  * preorder loop (each internal node's right child is pushed, its left
@@ -257,8 +273,8 @@ static void emit_small(layout_ctx *c, uint32_t node, uint32_t at,
         uint32_t node, at, prim;
     } st[SMALL_STACK];
     /* Its internal nodes' output positions, in preorder (at most
-     * TASK_CUTOFF primitives below it: fewer internal nodes). */
-    uint32_t inner[TASK_CUTOFF];
+     * SMALL_MAX primitives below it: fewer internal nodes). */
+    uint32_t inner[SMALL_MAX];
     int sp = 0;
     uint32_t q = 0, pf = prim_at; /* pf: the next position to prefetch */
     for (;;) {
@@ -331,7 +347,7 @@ static void emit(layout_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at)
     const int leaf = (c->size[node] & ATRBVH_SIZE_LEAF) != 0;
     const uint32_t l = leaf ? 0 : t->left[node], r = leaf ? 0 : t->right[node];
     atrbvh_box b;
-    if (c->ranges && !c->box && t->count[node] <= TASK_CUTOFF) {
+    if (c->ranges && !c->box && t->count[node] <= SMALL_MAX) {
         emit_small(c, node, at, prim_at);
         return;
     }
@@ -347,40 +363,133 @@ static void emit(layout_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at)
                                           prim_at, 0);
         return;
     }
-    {
-        const uint32_t right_at = atrbvh_layout_right_pos(at, c->size[l]);
-        const uint32_t right_prim =
-            atrbvh_layout_right_prim(prim_at, t->count[l]);
-        if (t->count[node] > TASK_CUTOFF) {
-#ifdef _OPENMP
-#pragma omp task default(shared) firstprivate(l, at, prim_at)
-#endif
-            emit(c, l, at + 1, prim_at);
-            emit(c, r, right_at, right_prim);
-#ifdef _OPENMP
-#pragma omp taskwait
-#endif
-        } else {
-            emit(c, l, at + 1, prim_at);
-            emit(c, r, right_at, right_prim);
+    emit(c, l, at + 1, prim_at);
+    emit(c, r, atrbvh_layout_right_pos(at, c->size[l]),
+         atrbvh_layout_right_prim(prim_at, t->count[l]));
+    emit_inner(c, node, at, prim_at);
+}
+
+/* Internal node `node` at `at`, its children written: its own node, the
+ * box stored or the union of its children's (left first). */
+static void emit_inner(layout_ctx *c, uint32_t node, uint32_t at,
+                       uint32_t prim_at)
+{
+    const atrbvh_i_tree *t = c->t;
+    const uint32_t l = t->left[node];
+    const uint32_t right_at = atrbvh_layout_right_pos(at, c->size[l]);
+    atrbvh_box b;
+    (void)prim_at;
+    if (c->box) {
+        b = c->box[node];
+    } else {
+        const atrbvh_node *nl = &c->nodes[at + 1], *nr = &c->nodes[right_at];
+        atrbvh_box bl, br;
+        int k;
+        for (k = 0; k < 3; k++) {
+            bl.min[k] = nl->min[k];
+            bl.max[k] = nl->max[k];
+            br.min[k] = nr->min[k];
+            br.max[k] = nr->max[k];
         }
-        if (c->box) {
-            b = c->box[node];
-        } else {
-            const atrbvh_node *nl = &c->nodes[at + 1], *nr = &c->nodes[right_at];
-            atrbvh_box bl, br;
-            int k;
-            for (k = 0; k < 3; k++) {
-                bl.min[k] = nl->min[k];
-                bl.max[k] = nl->max[k];
-                br.min[k] = nr->min[k];
-                br.max[k] = nr->max[k];
-            }
-            b = atrbvh_box_union(bl, br);
-        }
-        c->nodes[at] = atrbvh_layout_node(b, c->size[node], t->count[node], at,
-                                          prim_at, c->size[l]);
+        b = atrbvh_box_union(bl, br);
     }
+    c->nodes[at] = atrbvh_layout_node(b, c->size[node], t->count[node], at,
+                                      prim_at, c->size[l]);
+}
+
+/* A subtree to lay out: its root, output position, first primitive. */
+typedef struct layout_item {
+    uint32_t node, at, prim;
+} layout_item;
+
+typedef struct layout_cut {
+    uint32_t cut;
+    layout_item *top, *front; /* the top in preorder; the frontier */
+    size_t ntop, nfront, cap;
+} layout_cut;
+
+/* Top node `node` (internal, not collapsed, more than cut primitives) at
+ * `at`: into the top list, its children into the frontier or, top nodes
+ * themselves, placed the same way; 0 when a list is full. */
+static int place_top(const layout_ctx *c, layout_cut *k, uint32_t node,
+                     uint32_t at, uint32_t prim_at)
+{
+    const atrbvh_i_tree *t = c->t;
+    const uint32_t l = t->left[node], r = t->right[node];
+    layout_item child[2];
+    int side;
+    if (k->ntop == k->cap)
+        return 0;
+    k->top[k->ntop].node = node;
+    k->top[k->ntop].at = at;
+    k->top[k->ntop].prim = prim_at;
+    k->ntop++;
+    child[0].node = l;
+    child[0].at = at + 1;
+    child[0].prim = prim_at;
+    child[1].node = r;
+    child[1].at = atrbvh_layout_right_pos(at, c->size[l]);
+    child[1].prim = atrbvh_layout_right_prim(prim_at, t->count[l]);
+    for (side = 0; side < 2; side++) {
+        const layout_item *x = &child[side];
+        if (!(c->size[x->node] & ATRBVH_SIZE_LEAF) &&
+            t->count[x->node] > k->cut) {
+            if (!place_top(c, k, x->node, x->at, x->prim))
+                return 0;
+        } else {
+            if (k->nfront == k->cap)
+                return 0;
+            k->front[k->nfront++] = *x;
+        }
+    }
+    return 1;
+}
+
+/* The whole tree: the frontier on the threads, then the top; on one
+ * thread when the tree is small or a list does not fit. */
+static atrbvh_status emit_all(layout_ctx *c, atrbvh_i_scratch *scratch,
+                              int threads, atrbvh_error *error)
+{
+    const atrbvh_i_tree *t = c->t;
+    const uint32_t root_count = t->count[0];
+    layout_cut k;
+    size_t i;
+    k.cut = root_count / (FRONTIER_PER_THREAD * (uint32_t)threads);
+    k.cap = (size_t)FRONTIER_CAP_PER_THREAD * (size_t)threads;
+    k.ntop = k.nfront = 0;
+    if (threads < 2 || root_count < PARALLEL_MIN || k.cut < 1u ||
+        (c->size[0] & ATRBVH_SIZE_LEAF)) {
+        emit(c, 0, 0, 0);
+        return ATRBVH_OK;
+    }
+    /* two lists of cap items (cap <= 2^31: no overflow) */
+    k.top = atrbvh_i_scratch_get(scratch, CPU_OPTIMISE, 2 * k.cap,
+                                 sizeof(layout_item));
+    if (!k.top)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                             "cannot allocate the layout's frontier of %lu "
+                             "subtrees",
+                             (unsigned long)k.cap);
+    k.front = k.top + k.cap;
+    if (!place_top(c, &k, 0, 0, 0) || k.nfront < 2u) {
+        emit(c, 0, 0, 0);
+        return ATRBVH_OK;
+    }
+#ifdef _OPENMP
+    {
+        int64_t j;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+        for (j = 0; j < (int64_t)k.nfront; j++)
+            emit(c, k.front[j].node, k.front[j].at, k.front[j].prim);
+    }
+#else
+    for (i = 0; i < k.nfront; i++)
+        emit(c, k.front[i].node, k.front[i].at, k.front[i].prim);
+#endif
+    /* the top bottom-up: a node's children come after it in preorder */
+    for (i = k.ntop; i-- > 0;)
+        emit_inner(c, k.top[i].node, k.top[i].at, k.top[i].prim);
+    return ATRBVH_OK;
 }
 
 atrbvh_status atrbvh_i_cpu_layout(atrbvh_device *dev, atrbvh_i_run *run,
@@ -388,8 +497,8 @@ atrbvh_status atrbvh_i_cpu_layout(atrbvh_device *dev, atrbvh_i_run *run,
 {
     atrbvh_i_cpu_run *c = run->state;
     layout_ctx x;
+    atrbvh_status st;
     (void)dev;
-    (void)error;
     x.t = &c->tree;
     x.size = c->size;
     x.nodes = run->nodes;
@@ -401,13 +510,10 @@ atrbvh_status atrbvh_i_cpu_layout(atrbvh_device *dev, atrbvh_i_run *run,
     x.vstride = run->in.vstride / sizeof(float);
     x.istride = run->in.istride / sizeof(uint32_t);
     x.bstride = run->in.bstride / sizeof(float);
-    /* nowait: the single's own barrier would be a second hand-over
-     * before the region's end, which waits for every task anyway. */
-#ifdef _OPENMP
-#pragma omp parallel num_threads(run->cfg->threads)
-#pragma omp single nowait
-#endif
-    emit(&x, 0, 0, 0);
+    st = emit_all(&x, c->scratch,
+                  run->cfg->threads > 0 ? run->cfg->threads : 1, error);
+    if (st != ATRBVH_OK)
+        return st;
     /* A handle keeps the node boxes of an optimised tree (read here
      * beside the output anyway); an LBVH's collapse releases them. */
     c->tree.box = NULL;
