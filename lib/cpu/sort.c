@@ -129,6 +129,122 @@ static void bucket_leaves(const uint64_t *keys, const uint32_t *order,
     }
 }
 
+/* A bucket is split on the threads (sort_big) when it holds more than
+ * this many keys and more than a 1 / (BIG_SHARE x blocks) share of them:
+ * sorted by one thread, it would leave the others idle (conference: one
+ * bucket of the first pass holds 206,564 of 331,179 keys). */
+#define BIG_MIN 16384u
+#define BIG_SHARE 4u
+
+/* Bucket [s, s+len) of the first pass, in (tmp_keys, tmp_values), sorted
+ * into (keys, values) on `blocks` threads: the first pass's shape again
+ * over the bucket (its varying bits, an MSD digit for sub-buckets of
+ * about ATRBVH_SORT_BUCKET_TARGET keys, digit counts per block, each block
+ * scanning them, a stable scatter into keys), then each sub-bucket sorted
+ * in cache (atrbvh_sort_bucket, back into keys) and its leaves (lv), and
+ * the deltas of the splits between sub-buckets.  A stable sort has one
+ * result, so the keys and values are those of atrbvh_sort_bucket on the
+ * whole bucket, for any blocks. */
+static atrbvh_status sort_big(uint64_t *keys, uint32_t *values,
+                              uint64_t *tmp_keys, uint32_t *tmp_values,
+                              uint32_t n, uint32_t s, uint32_t len,
+                              int blocks, sort_leaves *lv)
+{
+    const uint64_t *bk = tmp_keys + s;
+    uint64_t varying = 0;
+    uint32_t shift, bits, buckets, *counts, *start, d;
+    int64_t i;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(blocks) schedule(static) \
+    reduction(| : varying)
+#endif
+    for (i = 1; i < (int64_t)len; i++)
+        varying |= bk[i] ^ bk[0];
+    if (!varying) { /* one key: the input order is the sorted one */
+        memcpy(keys + s, bk, (size_t)len * sizeof *keys);
+        memcpy(values + s, tmp_values + s, (size_t)len * sizeof *values);
+        if (lv)
+            bucket_leaves(keys, values, n, s, s + len, lv);
+        return ATRBVH_OK;
+    }
+    atrbvh_sort_msd(len, varying, &shift, &bits);
+    buckets = 1u << bits;
+    counts = atrbvh_i_alloc_array((size_t)blocks * buckets, sizeof *counts);
+    start = atrbvh_i_alloc_array((size_t)buckets + 1, sizeof *start);
+    if (!counts || !start) {
+        atrbvh_i_free(counts);
+        atrbvh_i_free(start);
+        return ATRBVH_ERR_NOMEM;
+    }
+#ifdef _OPENMP
+#pragma omp parallel num_threads(blocks)
+#endif
+    {
+        int b;
+        int64_t k;
+#ifdef _OPENMP
+#pragma omp for schedule(static, 1)
+#endif
+        for (b = 0; b < blocks; b++) {
+            uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
+            atrbvh_block_range(len, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo,
+                               &hi);
+            memset(c, 0, buckets * sizeof *c);
+            for (j = lo; j < hi; j++)
+                c[atrbvh_sort_digit_bits(bk[j], shift, bits)]++;
+        }
+        /* each block's offsets from the counts, as msd_sort's pass */
+#ifdef _OPENMP
+#pragma omp for schedule(static, 1)
+#endif
+        for (b = 0; b < blocks; b++) {
+            uint32_t next[ATRBVH_SORT_MSD_RADIX];
+            uint32_t lo, hi, dd, total = 0;
+            int bb;
+            for (dd = 0; dd < buckets; dd++) {
+                uint32_t before = 0, all;
+                for (bb = 0; bb < b; bb++)
+                    before += counts[(size_t)bb * buckets + dd];
+                all = before;
+                for (; bb < blocks; bb++)
+                    all += counts[(size_t)bb * buckets + dd];
+                next[dd] = total + before;
+                total += all;
+            }
+            if (b == 0) {
+                memcpy(start, next, buckets * sizeof *start);
+                start[buckets] = total;
+            }
+            atrbvh_block_range(len, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo,
+                               &hi);
+            scatter(bk, tmp_values + s, keys + s, values + s, lo, hi, shift,
+                    bits, next);
+        }
+        /* the sub-buckets, in cache, back into keys */
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 16)
+#endif
+        for (k = 0; k < (int64_t)buckets; k++) {
+            const uint32_t s2 = s + start[k], len2 = start[k + 1] - start[k];
+            if (len2)
+                atrbvh_sort_bucket(keys + s2, values + s2, tmp_keys + s2,
+                                   tmp_values + s2, len2, 0, (int)shift);
+            if (len2 && lv)
+                bucket_leaves(keys, values, n, s2, s2 + len2, lv);
+        }
+    }
+    if (lv) /* the splits between sub-buckets (the bucket's last: msd_sort) */
+        for (d = 0; d < buckets; d++) {
+            const uint32_t e = s + start[d + 1];
+            if (start[d + 1] > start[d] && e < s + len)
+                lv->delta[e - 1] =
+                    (uint32_t)atrbvh_karras_delta(keys, n, e - 1, e);
+        }
+    atrbvh_i_free(counts);
+    atrbvh_i_free(start);
+    return ATRBVH_OK;
+}
+
 /* The MSD pass and the buckets' sort over `blocks` blocks, on the digit
  * of `bits` bits at `shift`.  `counted`: each block's digit counts
  * (blocks x 2^bits, block-major) when the morton stage counted them in
@@ -141,6 +257,12 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
 {
     const uint32_t buckets = 1u << bits;
     const int count_here = counted == NULL;
+    /* buckets of more than `big` keys: sort_big, after the others */
+    const uint32_t big = blocks > 1 && n / (BIG_SHARE * (uint32_t)blocks) >
+                                           BIG_MIN
+                             ? n / (BIG_SHARE * (uint32_t)blocks)
+                             : blocks > 1 ? BIG_MIN : ATRBVH_U32_MAX;
+    atrbvh_status st = ATRBVH_OK;
     uint32_t *counts, *start;
 
     counts = count_here ? atrbvh_i_alloc_array((size_t)blocks * buckets,
@@ -212,12 +334,28 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
 #endif
         for (bk = 0; bk < (int64_t)buckets; bk++) {
             const uint32_t s = start[bk], len = start[bk + 1] - s;
+            if (len > big)
+                continue; /* sort_big, below */
             if (len)
                 atrbvh_sort_bucket(tmp_keys + s, tmp_values + s, keys + s,
                                    values + s, len, 1, (int)shift);
             if (len && lv)
                 bucket_leaves(keys, values, n, s, s + len, lv);
         }
+    }
+    {
+        uint32_t bk2;
+        for (bk2 = 0; bk2 < buckets && st == ATRBVH_OK; bk2++)
+            if (start[bk2 + 1] - start[bk2] > big)
+                st = sort_big(keys, values, tmp_keys, tmp_values, n,
+                              start[bk2], start[bk2 + 1] - start[bk2],
+                              blocks, lv);
+    }
+    if (st != ATRBVH_OK) {
+        if (count_here)
+            atrbvh_i_free(counts);
+        atrbvh_i_free(start);
+        return st;
     }
     if (lv) { /* the splits between buckets, all keys now in place */
         uint32_t bk2;
