@@ -50,6 +50,13 @@ for r in recs:
     for c in ("nodes", "leaves", "peak_bytes", "threads"):
         assert int(r[c]) > 0, (c, r[c])
     assert int(r["nodes"]) == 2 * int(r["leaves"]) - 1, "nodes != 2 leaves - 1"
+    # cpu_use: the share of the build's threads' time kept busy; a
+    # library row has one (above 0; not far above 1 unless more threads
+    # ran than the threads column says), Embree's none
+    if r["method"].startswith("embree"):
+        assert r["cpu_use"] == "", ("cpu_use", r["cpu_use"])
+    else:
+        assert 0 < float(r["cpu_use"]) <= 1.5, ("cpu_use", r["cpu_use"])
 for s in scenes:
     ref = [r for r in lib if r["scene"] == s and r["method"] == "trbvh"
            and r["treelet_size"] == "7" and r["rounds"] == "3"]

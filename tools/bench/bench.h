@@ -47,6 +47,11 @@ typedef struct row {
     double sah, sah_binary;
     size_t nodes, leaves, peak, bvh_bytes;
     size_t references; /* primitive references in the leaves */
+    /* median over the timed builds of the process's CPU time over threads
+     * x wall time: the share of the threads' time the build kept busy
+     * (passive waiting: a sleeping thread takes none); NaN for Embree,
+     * whose idle workers may spin */
+    double cpu_use;
     double mrays[3], total_mrays;
     double emb_mrays[3], emb_commit_ms;
     double rel_pct, time_pct, sah_pct;

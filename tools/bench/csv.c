@@ -62,7 +62,7 @@ void csv_header(FILE *f)
           "ao_box_tests_per_ray,diffuse_box_tests_per_ray,box_tests_per_ray,"
           "primary_tri_tests_per_ray,ao_tri_tests_per_ray,"
           "diffuse_tri_tests_per_ray,tri_tests_per_ray,ray_cost,"
-          "ray_cost_pct,split_budget,references,split_rule\n",
+          "ray_cost_pct,split_budget,references,split_rule,cpu_use\n",
           f);
 }
 
@@ -135,7 +135,9 @@ void csv_row(FILE *f, const bench_args *a, const row *r)
     put_double(f, r->c.embree ? (r->c.eq == EMBREE_SPLIT ? EMBREE_SPLIT_BUDGET
                                                          : 0.0)
                               : r->c.split);
-    fprintf(f, ",%zu,%s\n", r->references, row_split_rule(a, r));
+    fprintf(f, ",%zu,%s,", r->references, row_split_rule(a, r));
+    put_double(f, r->cpu_use);
+    fputc('\n', f);
 }
 
 void csv_scaling_header(FILE *f)

@@ -12,6 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -151,6 +152,15 @@ static double total_mrays(const scene_data *sd, const double mrays[3])
     return ms > 0.0 ? count / (ms * 1e3) : NAN;
 }
 
+/* Milliseconds on `clock` (CLOCK_MONOTONIC or the process's CPU time). */
+static double clock_ms(clockid_t clock)
+{
+    struct timespec t;
+    if (clock_gettime(clock, &t) != 0)
+        return NAN;
+    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
+}
+
 /* The tree's size and the build times (minimum, median of `repeat`). */
 static void set_tree_and_times(row *r, const atrbvh_stats *st, double *tot,
                                unsigned repeat)
@@ -172,6 +182,7 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
 {
     double *tot = malloc((repeat + 1) * sizeof *tot);
     double *stg = malloc((repeat + 1) * ATRBVH_STAGE_COUNT * sizeof *stg);
+    double *use = malloc((repeat + 1) * sizeof *use);
     atrbvh_bvh *bvh = NULL;
     atrbvh_device *dev = NULL;
     unsigned k;
@@ -187,8 +198,9 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
     for (s = 0; s < 3; s++)
         r->mrays[s] = r->emb_mrays[s] = NAN;
     r->emb_commit_ms = NAN;
+    r->cpu_use = NAN;
     r->total_mrays = NAN;
-    if (!tot || !stg) {
+    if (!tot || !stg || !use) {
         cli_error("out of memory");
         goto done;
     }
@@ -230,14 +242,19 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
         }
         for (k = 0; k < repeat + (warmup ? 1 : 0); k++) {
             size_t peak;
+            double cpu, wall;
             atrbvh_bvh_free(bvh);
             bvh = NULL;
             memtrack_reset_peak();
             {
                 size_t before = memtrack_current();
+                const double w0 = clock_ms(CLOCK_MONOTONIC),
+                             c0 = clock_ms(CLOCK_PROCESS_CPUTIME_ID);
                 if (bench_lib_build(sd, &o, &bvh, spec) != 0)
                     goto done;
                 peak = memtrack_peak() - before;
+                cpu = clock_ms(CLOCK_PROCESS_CPUTIME_ID) - c0;
+                wall = clock_ms(CLOCK_MONOTONIC) - w0;
             }
             if (peak > r->peak)
                 r->peak = peak;
@@ -245,6 +262,10 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
             if (warmup && k == 0)
                 continue;
             tot[k - (warmup ? 1 : 0)] = st.build_ms;
+            use[k - (warmup ? 1 : 0)] =
+                wall > 0.0 && st.threads > 0
+                    ? cpu / ((double)st.threads * wall)
+                    : NAN;
             for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
                 stg[s * repeat + k - (warmup ? 1 : 0)] =
                     atrbvh_bvh_stage_ms(bvh, (atrbvh_stage)s);
@@ -255,6 +276,7 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
         r->rounds = st.rounds;
         r->sah = st.sah;
         set_tree_and_times(r, &st, tot, repeat);
+        r->cpu_use = bench_median(use, repeat);
         for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
             r->stage_ms[s] = bench_median(stg + s * repeat, repeat);
         /* the binary tree */
@@ -337,6 +359,7 @@ done:
     atrbvh_device_close(dev);
     free(tot);
     free(stg);
+    free(use);
     return rc;
 }
 
