@@ -136,8 +136,13 @@ def main():
         L.append("")
     L.append("### Nanoseconds per triangle, per stage (2 threads, median)")
     L.append("")
-    L.append("| scene | config | total | " + " | ".join(STAGES) + " |")
-    L.append("|---|---|---:|" + "---:|" * len(STAGES))
+    L.append("CPU use: the build's CPU time over 2 x its wall time (median; "
+             "the CSV's cpu_use), the share of the two threads' time kept "
+             "busy; it does not move with the host's speed.")
+    L.append("")
+    L.append("| scene | config | total | " + " | ".join(STAGES) +
+             " | CPU use |")
+    L.append("|---|---|---:|" + "---:|" * len(STAGES) + "---:|")
     for s in scenes:
         for lab in ("LBVH", "ATRBVH(9,2)", "ATRBVH(16,3)", "TRBVH(7,3)"):
             r = by.get((s, lab))
@@ -145,8 +150,10 @@ def main():
                 continue
             n = fnum(r, "triangles")
             cells = ["%.0f" % (fnum(r, st + "_ms") * 1e6 / n) for st in STAGES]
-            L.append("| %s | %s | %.0f | %s |" % (
-                s, lab, fnum(r, "build_ms") * 1e6 / n, " | ".join(cells)))
+            use = r.get("cpu_use", "")
+            L.append("| %s | %s | %.0f | %s | %s |" % (
+                s, lab, fnum(r, "build_ms") * 1e6 / n, " | ".join(cells),
+                "%.2f" % float(use) if use else "-"))
     L.append("")
     L.append("### Build time and SAH, and who dominates Embree medium")
     L.append("")
