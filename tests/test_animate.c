@@ -313,6 +313,130 @@ START_TEST(reoptimise_thread_count)
 }
 END_TEST
 
+/* A chain BVH of `leaves` triangles, as atrbvh(5) bytes loaded: internal
+ * node j < k = leaves - 1 has node j + 1 on its left and leaf j on its
+ * right (slot 2k - j), node k is leaf k; internal boxes the whole scene's
+ * (loose but valid), leaf boxes the triangles'.  Depth k. */
+static void wr64le(unsigned char *p, uint64_t x)
+{
+    tu_wr32(p, (uint32_t)x);
+    tu_wr32(p + 4, (uint32_t)(x >> 32));
+}
+
+static atrbvh_bvh *chain_bvh(const float *v, size_t leaves)
+{
+    const size_t k = leaves - 1, nn = 2 * leaves - 1;
+    const size_t n = 96 + 32 * nn + 4 * leaves + 4;
+    unsigned char *d = calloc(1, n);
+    float lo[3] = {INFINITY, INFINITY, INFINITY},
+          hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double ci = 1.2, ct = 1.0;
+    uint64_t bits;
+    atrbvh_bvh *b = NULL;
+    atrbvh_error e;
+    size_t i;
+    int a;
+    ck_assert(d);
+    for (i = 0; i < 9 * leaves; i++) {
+        lo[i % 3] = fminf(lo[i % 3], v[i]);
+        hi[i % 3] = fmaxf(hi[i % 3], v[i]);
+    }
+    memcpy(d, "ATRBVH\0\n", 8);
+    tu_wr32(d + 8, 1);
+    tu_wr32(d + 12, 96);
+    wr64le(d + 32, nn);
+    wr64le(d + 40, leaves);
+    wr64le(d + 48, leaves);
+    memcpy(&bits, &ci, 8);
+    wr64le(d + 56, bits);
+    memcpy(&bits, &ct, 8);
+    wr64le(d + 64, bits);
+    for (i = 0; i < nn; i++) {
+        unsigned char *q = d + 96 + 32 * i;
+        float mn[3], mx[3];
+        uint32_t idx, cnt, w;
+        if (i < k) {
+            memcpy(mn, lo, sizeof mn);
+            memcpy(mx, hi, sizeof mx);
+            idx = (uint32_t)(2 * k - i); /* the right child */
+            cnt = 0;
+        } else {
+            const size_t leaf = i == k ? k : 2 * k - i;
+            tri_box(v, (uint32_t)leaf, mn, mx);
+            idx = (uint32_t)leaf; /* its slot, which lists triangle leaf */
+            cnt = 1;
+        }
+        for (a = 0; a < 3; a++) {
+            memcpy(&w, &mn[a], 4);
+            tu_wr32(q + 4 * a, w);
+            memcpy(&w, &mx[a], 4);
+            tu_wr32(q + 12 + 4 * a, w);
+        }
+        tu_wr32(q + 24, idx);
+        tu_wr32(q + 28, cnt);
+    }
+    for (i = 0; i < leaves; i++)
+        tu_wr32(d + 96 + 32 * nn + 4 * i, (uint32_t)i);
+    tu_fix_crc(d, n);
+    ck_assert_msg(atrbvh_load_memory(d, n, &b, &e) == ATRBVH_OK, "%s", e.text);
+    free(d);
+    return b;
+}
+
+/* Re-optimising a chain 6000 levels deep: the same bits for 1 to 4
+ * threads.  The collapse and layout stages cut the tree at a top of about
+ * n / (32 x threads) primitives and run the subtrees below it on the
+ * threads; on the chain (LBVH: no treelet rounds, the chain stays) those
+ * subtrees, one leaf per top node, are more than their lists hold (512
+ * per thread), so each stage takes its one-thread walk, with several
+ * threads; ATRBVH and TRBVH restructure the chain first (the optimise
+ * stage's frontier then has one subtree: its one-thread walk too). */
+START_TEST(reoptimise_chain)
+{
+    const size_t leaves = 6001;
+    float *v = tu_random_triangles((uint32_t)leaves, 31, 1.0f, 0.0f);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * leaves, NULL,
+                                                  leaves);
+    atrbvh_bvh *ref = NULL;
+    atrbvh_error e;
+    char msg[256];
+    int m, threads;
+    for (m = 0; m < 3; m++) {
+        for (threads = 1; threads <= 4; threads++) {
+            atrbvh_build_options o;
+            atrbvh_bvh *b = chain_bvh(v, leaves);
+            atrbvh_stats st;
+            atrbvh_bvh_stats(b, &st);
+            ck_assert_uint_eq(st.max_depth, leaves - 1);
+            options(&o, threads);
+            o.method = m == 0   ? ATRBVH_METHOD_LBVH
+                       : m == 1 ? ATRBVH_METHOD_ATRBVH
+                                : ATRBVH_METHOD_TRBVH;
+            ck_assert_msg(atrbvh_reoptimise(b, &g, &o, &e) == ATRBVH_OK, "%s",
+                          e.text);
+            atrbvh_bvh_stats(b, &st);
+            ck_assert_uint_eq(st.primitives, leaves);
+            /* LBVH: still a chain (the collapse only ends it in leaves of
+             * up to 8), so the lists overflowed */
+            if (m == 0)
+                ck_assert_uint_gt(st.max_depth, leaves - 10);
+            if (threads == 1) {
+                ref = b;
+                continue;
+            }
+            ck_assert_msg(tu_same_bvh(ref, b, msg, sizeof msg),
+                          "%s, %d threads: %s",
+                          m == 0 ? "LBVH" : m == 1 ? "ATRBVH" : "TRBVH",
+                          threads, msg);
+            atrbvh_bvh_free(b);
+        }
+        atrbvh_bvh_free(ref);
+        ref = NULL;
+    }
+    free(v);
+}
+END_TEST
+
 /* Count, index and coordinate faults: a clear error, the tree as it was. */
 START_TEST(faults_leave_tree)
 {
@@ -542,6 +666,7 @@ static Suite *suite(void)
     tcase_add_test(t, refit_parallel_pass);
     tcase_add_loop_test(t, reoptimise_never_raises_sah, 0, 3);
     tcase_add_test(t, reoptimise_thread_count);
+    tcase_add_test(t, reoptimise_chain);
     tcase_add_test(t, faults_leave_tree);
     tcase_add_loop_test(t, allocation_failure_keeps_tree, 0, 4);
     tcase_add_test(t, frames_allocate_no_scratch);
