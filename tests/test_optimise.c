@@ -749,8 +749,22 @@ static int cmp_float(const void *a, const void *b)
  * much to restructure).  Internal ids in creation order (parents before
  * children), boxes, counts and costs filled bottom-up as refit would.
  * box_mode 0: random boxes; 1: unit boxes on a small grid (ties). */
+static void tree_shaped(test_tree *tt, uint32_t n, uint64_t seed,
+                        int box_mode, uint32_t teeth,
+                        const atrbvh_cost_params *p);
+
 static void tree_random(test_tree *tt, uint32_t n, uint64_t seed,
                         int box_mode, const atrbvh_cost_params *p)
+{
+    tree_shaped(tt, n, seed, box_mode, 0, p);
+}
+
+/* tree_random's tree, or with teeth > 0 a comb: a range of more than
+ * `teeth` leaves splits off its first `teeth` (the left child, a tooth),
+ * a smaller one in halves. */
+static void tree_shaped(test_tree *tt, uint32_t n, uint64_t seed,
+                        int box_mode, uint32_t teeth,
+                        const atrbvh_cost_params *p)
 {
     rng r;
     uint32_t i, next = 1, sp = 0;
@@ -797,7 +811,10 @@ static void tree_random(test_tree *tt, uint32_t n, uint64_t seed,
             node = stack[3 * sp];
             lo = stack[3 * sp + 1];
             hi = stack[3 * sp + 2];
-            mid = lo + 1 + rng_below(&r, hi - lo - 1);
+            if (teeth == 0)
+                mid = lo + 1 + rng_below(&r, hi - lo - 1);
+            else
+                mid = hi - lo > teeth ? lo + teeth : lo + (hi - lo) / 2;
             for (side = 0; side < 2; side++) {
                 uint32_t a = side ? mid : lo, b = side ? hi : mid, child;
                 if (b - a == 1) {
@@ -985,6 +1002,41 @@ END_TEST
 START_TEST(threads_atrbvh)
 {
     threads_case(ATRBVH_METHOD_ATRBVH, _i ? 16 : 9, 2, _i ? 0 : 1, _i);
+}
+END_TEST
+
+/* A comb of 1200 teeth of 16 leaves: the optimise stage's frontier (the
+ * crown's subtrees below a top of n / (32 x threads) primitives) is about
+ * 1180 teeth, more than its list holds at 2 threads (1024: the one-thread
+ * walk) and fewer than at 3 and 4 (the parallel loop); the same bits for
+ * 1 to 4 threads either way, and a cheaper tree. */
+START_TEST(threads_comb)
+{
+    atrbvh_cost_params p = cost_model(1);
+    test_tree orig, ref, t;
+    atrbvh_error err;
+    atrbvh_i_config c;
+    int threads;
+    const atrbvh_method method =
+        _i ? ATRBVH_METHOD_TRBVH : ATRBVH_METHOD_ATRBVH;
+    tree_shaped(&orig, 1200 * 16, 91, 0, 16, &p);
+    tree_check(&orig, &orig, &p);
+    for (threads = 1; threads <= 4; threads++) {
+        test_tree *dst = threads == 1 ? &ref : &t;
+        tree_copy(dst, &orig);
+        c = config(method, _i ? 7 : 9, 2, _i ? 7 : 9, &p, threads);
+        ck_assert_int_eq(atrbvh_i_optimise(&dst->t, &c, NULL, NULL, &err),
+                         ATRBVH_OK);
+        if (threads == 1) {
+            tree_check(&ref, &orig, &p);
+            ck_assert(ref.t.cost[0] < orig.t.cost[0]);
+        } else {
+            ck_assert_msg(tree_same(&ref, &t), "%d threads differ", threads);
+            tree_free(&t);
+        }
+    }
+    tree_free(&ref);
+    tree_free(&orig);
 }
 END_TEST
 
@@ -1265,6 +1317,7 @@ static Suite *optimise_suite(void)
     tcase_set_timeout(tc, 120);
     tcase_add_loop_test(tc, threads_trbvh, 0, 2);
     tcase_add_loop_test(tc, threads_atrbvh, 0, 2);
+    tcase_add_loop_test(tc, threads_comb, 0, 2);
     suite_add_tcase(s, tc);
 
     tc = tcase_create("build");
