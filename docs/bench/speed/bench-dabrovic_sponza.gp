@@ -11,20 +11,20 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.49165644:37.7686634]
-set xtics (5, 10, 20)
-set yrange [63.7338614:116.665327]
+set xrange [3.89522519:54.1289635]
+set xtics (5, 10, 20, 50)
+set yrange [63.7338549:116.665389]
 unset label
-set label 'LBVH' at 4.21762619,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 9.32091097,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 13.0468762,71.1263555 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 23.491226,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 14.4513148,67.3811989 left font ',8' noenhanced front
-set label 'embree_low' at 4.39203881,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 16.8606337,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 12.603279,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.02631076,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 12.4639131,73.0450257 left font ',8' noenhanced front
+set label 'LBVH' at 4.27437732,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 12.4497075,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 20.0879021,71.495647 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 32.0263081,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 20.4777844,67.3811972 left font ',8' noenhanced front
+set label 'embree_low' at 6.05597432,110.413633 left font ',8' noenhanced front
+set label 'embree_medium' at 14.2580336,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 10.3693679,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 5.22062298,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 19.3363687,73.0450275 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,20 +11,20 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [34.7497149:610.7794]
-set xtics (50, 100, 200, 500)
-set yrange [55.0033108:80.2279369]
+set xrange [52.1892018:553.547067]
+set xtics (100, 200, 500)
+set yrange [55.0033068:80.2279756]
 unset label
-set label 'LBVH' at 38.4497082,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 134.409192,61.4574418 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 185.350145,59.8198299 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 344.836293,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 232.685995,61.3999923 left font ',8' noenhanced front
-set label 'embree_low' at 67.2634069,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 291.774497,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 200.523202,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 52.6243998,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 155.560798,62.2787087 left font ',8' noenhanced front
+set label 'LBVH' at 65.5230079,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 167.865594,61.4574418 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 230.963338,59.8198288 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 345.643955,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 172.110314,59.4641467 left font ',8' noenhanced front
+set label 'embree_low' at 69.2770999,77.248684 left font ',8' noenhanced front
+set label 'embree_medium' at 143.788047,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 203.265674,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 81.224713,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 274.094997,61.4574418 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
