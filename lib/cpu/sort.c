@@ -129,6 +129,54 @@ static void bucket_leaves(const uint64_t *keys, const uint32_t *order,
     }
 }
 
+/* Block b of `blocks` over keys[0 .. n): its counts of the digit of
+ * `bits` bits at `shift`, into c[0 .. 2^bits). */
+static void count_block(const uint64_t *keys, uint32_t n, int b, int blocks,
+                        uint32_t shift, uint32_t bits, uint32_t *c)
+{
+    uint32_t lo, hi, j;
+    atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo, &hi);
+    memset(c, 0, ((size_t)1 << bits) * sizeof *c);
+    for (j = lo; j < hi; j++)
+        c[atrbvh_sort_digit_bits(keys[j], shift, bits)]++;
+}
+
+/* Block b's part of a pass over (k, v)[0 .. n) into (dk, dv), from every
+ * block's counts (blocks x 2^bits, block-major).  No serial scan between
+ * counting and scattering (it cost a barrier, a thread hand-over): each
+ * block scans the counts itself, read only by then, for its own output
+ * offsets - digit d of block b starts after every smaller digit of all
+ * blocks and digit d of the blocks before b (atrbvh_sort_slot's
+ * digit-major order) - and block 0's offsets are the buckets' starts,
+ * into start[0 .. 2^bits] with the total.  The scan is blocks x buckets
+ * additions per block, integers: the same offsets as one scan. */
+static void scatter_block(const uint32_t *counts, int b, int blocks,
+                          const uint64_t *k, const uint32_t *v, uint64_t *dk,
+                          uint32_t *dv, uint32_t n, uint32_t shift,
+                          uint32_t bits, uint32_t *start)
+{
+    const uint32_t buckets = 1u << bits;
+    uint32_t next[ATRBVH_SORT_MSD_RADIX];
+    uint32_t lo, hi, d, total = 0;
+    int bb;
+    for (d = 0; d < buckets; d++) {
+        uint32_t before = 0, all;
+        for (bb = 0; bb < b; bb++)
+            before += counts[(size_t)bb * buckets + d];
+        all = before;
+        for (; bb < blocks; bb++)
+            all += counts[(size_t)bb * buckets + d];
+        next[d] = total + before;
+        total += all;
+    }
+    if (b == 0) {
+        memcpy(start, next, buckets * sizeof *start);
+        start[buckets] = total;
+    }
+    atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo, &hi);
+    scatter(k, v, dk, dv, lo, hi, shift, bits, next);
+}
+
 /* A bucket is split on the threads (sort_big) when it holds more than
  * this many keys and more than a 1 / (BIG_SHARE x blocks) share of them:
  * sorted by one thread, it would leave the others idle (conference: one
@@ -185,41 +233,15 @@ static atrbvh_status sort_big(uint64_t *keys, uint32_t *values,
 #ifdef _OPENMP
 #pragma omp for schedule(static, 1)
 #endif
-        for (b = 0; b < blocks; b++) {
-            uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
-            atrbvh_block_range(len, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo,
-                               &hi);
-            memset(c, 0, buckets * sizeof *c);
-            for (j = lo; j < hi; j++)
-                c[atrbvh_sort_digit_bits(bk[j], shift, bits)]++;
-        }
-        /* each block's offsets from the counts, as msd_sort's pass */
+        for (b = 0; b < blocks; b++)
+            count_block(bk, len, b, blocks, shift, bits,
+                        counts + (size_t)b * buckets);
 #ifdef _OPENMP
 #pragma omp for schedule(static, 1)
 #endif
-        for (b = 0; b < blocks; b++) {
-            uint32_t next[ATRBVH_SORT_MSD_RADIX];
-            uint32_t lo, hi, dd, total = 0;
-            int bb;
-            for (dd = 0; dd < buckets; dd++) {
-                uint32_t before = 0, all;
-                for (bb = 0; bb < b; bb++)
-                    before += counts[(size_t)bb * buckets + dd];
-                all = before;
-                for (; bb < blocks; bb++)
-                    all += counts[(size_t)bb * buckets + dd];
-                next[dd] = total + before;
-                total += all;
-            }
-            if (b == 0) {
-                memcpy(start, next, buckets * sizeof *start);
-                start[buckets] = total;
-            }
-            atrbvh_block_range(len, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo,
-                               &hi);
-            scatter(bk, tmp_values + s, keys + s, values + s, lo, hi, shift,
-                    bits, next);
-        }
+        for (b = 0; b < blocks; b++)
+            scatter_block(counts, b, blocks, bk, tmp_values + s, keys + s,
+                          values + s, len, shift, bits, start);
         /* the sub-buckets, in cache, back into keys */
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 16)
@@ -286,48 +308,17 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
 #ifdef _OPENMP
 #pragma omp for schedule(static, 1)
 #endif
-            for (b = 0; b < blocks; b++) {
-                uint32_t lo, hi, j, *c = counts + (size_t)b * buckets;
-                atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo,
-                                   &hi);
-                memset(c, 0, buckets * sizeof *c);
-                for (j = lo; j < hi; j++)
-                    c[atrbvh_sort_digit_bits(keys[j], shift, bits)]++;
-            }
+            for (b = 0; b < blocks; b++)
+                count_block(keys, n, b, blocks, shift, bits,
+                            counts + (size_t)b * buckets);
         }
-        /* No serial scan between the passes (it cost a barrier, a
-         * thread hand-over): each block scans the counts itself, read
-         * only now, for its own output offsets - digit d of block b
-         * starts after every smaller digit of all blocks and digit d of
-         * the blocks before b (atrbvh_sort_slot's digit-major order) -
-         * and block 0's offsets are the buckets' starts.  The scan is
-         * blocks x buckets additions per block, integers: the same
-         * offsets as one scan. */
+        /* each block's offsets and scatter (scatter_block) */
 #ifdef _OPENMP
 #pragma omp for schedule(static, 1)
 #endif
-        for (b = 0; b < blocks; b++) {
-            uint32_t next[ATRBVH_SORT_MSD_RADIX];
-            uint32_t lo, hi, d, total = 0;
-            int bb;
-            for (d = 0; d < buckets; d++) {
-                uint32_t before = 0, all;
-                for (bb = 0; bb < b; bb++)
-                    before += counts[(size_t)bb * buckets + d];
-                all = before;
-                for (; bb < blocks; bb++)
-                    all += counts[(size_t)bb * buckets + d];
-                next[d] = total + before;
-                total += all;
-            }
-            if (b == 0) {
-                memcpy(start, next, buckets * sizeof *start);
-                start[buckets] = total;
-            }
-            atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo, &hi);
-            scatter(keys, values, tmp_keys, tmp_values, lo, hi, shift, bits,
-                    next);
-        }
+        for (b = 0; b < blocks; b++)
+            scatter_block(counts, b, blocks, keys, values, tmp_keys,
+                          tmp_values, n, shift, bits, start);
         /* Buckets are independent; the result lands back in keys/values. */
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 16)
