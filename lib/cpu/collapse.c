@@ -16,7 +16,7 @@
  * only releases memory.
  *
  * Otherwise bottom-up in post-order: the "top" (the nodes of more than
- * `cut` primitives, about n / (FRONTIER_PER_THREAD x threads)) is cut
+ * `cut` primitives, cpu.h's atrbvh_i_frontier_cut) is cut
  * from the subtrees just below it, the frontier, listed left to right;
  * one parallel loop (dynamic, a subtree at a time) decides the frontier
  * subtrees, then the calling thread decides the top, taking the frontier
@@ -40,11 +40,6 @@
 
 /* Trees smaller than this are decided on one thread. */
 #define PARALLEL_MIN 4096u
-/* The top's cut: about this many frontier subtrees per thread. */
-#define FRONTIER_PER_THREAD 32u
-/* The frontier's capacity per thread; a longer one (a degenerate tree)
- * is decided on one thread, with the same result. */
-#define FRONTIER_CAP_PER_THREAD 512u
 
 typedef struct collapse_ctx {
     const atrbvh_i_tree *t;
@@ -58,26 +53,30 @@ typedef struct collapse_ctx {
     size_t next;
 } collapse_ctx;
 
+/* Internal node `node`, its children's costs cl and cr (their sizes
+ * set): its size; returns its cost. */
+static double decided(collapse_ctx *c, uint32_t node, double cl, double cr)
+{
+    const atrbvh_i_tree *t = c->t;
+    const uint32_t l = t->left[node], r = t->right[node];
+    int collapsed;
+    c->size[node] = atrbvh_collapse_size(c->p, t->box[node], t->count[node],
+                                         cl, cr, c->size[l], c->size[r]);
+    return atrbvh_node_cost(c->p, atrbvh_box_area(t->box[node]),
+                            t->count[node], cl, cr, &collapsed);
+}
+
 /* Decides `node`'s subtree; returns its cost. */
 static double decide(collapse_ctx *c, uint32_t node)
 {
     const atrbvh_i_tree *t = c->t;
-    uint32_t l, r;
-    double cl, cr, cost;
-    int collapsed;
+    double cl;
     if (atrbvh_i_is_leaf(t, node)) {
         c->size[node] = 1u | ATRBVH_SIZE_LEAF;
         return atrbvh_refit_leaf_cost(c->p, t->box[node]);
     }
-    l = t->left[node];
-    r = t->right[node];
-    cl = decide(c, l);
-    cr = decide(c, r);
-    c->size[node] = atrbvh_collapse_size(c->p, t->box[node], t->count[node],
-                                         cl, cr, c->size[l], c->size[r]);
-    cost = atrbvh_node_cost(c->p, atrbvh_box_area(t->box[node]),
-                            t->count[node], cl, cr, &collapsed);
-    return cost;
+    cl = decide(c, t->left[node]);
+    return decided(c, node, cl, decide(c, t->right[node]));
 }
 
 /* The frontier below `node` (a top node: more than c->cut primitives),
@@ -104,19 +103,11 @@ static int frontier(collapse_ctx *c, uint32_t node, size_t *k, size_t cap)
 static double top_decide(collapse_ctx *c, uint32_t node)
 {
     const atrbvh_i_tree *t = c->t;
-    uint32_t l, r;
-    double cl, cr;
-    int collapsed;
+    double cl;
     if (atrbvh_i_is_leaf(t, node) || t->count[node] <= c->cut)
         return c->cost[c->next++];
-    l = t->left[node];
-    r = t->right[node];
-    cl = top_decide(c, l);
-    cr = top_decide(c, r);
-    c->size[node] = atrbvh_collapse_size(c->p, t->box[node], t->count[node],
-                                         cl, cr, c->size[l], c->size[r]);
-    return atrbvh_node_cost(c->p, atrbvh_box_area(t->box[node]),
-                            t->count[node], cl, cr, &collapsed);
+    cl = top_decide(c, t->left[node]);
+    return decided(c, node, cl, top_decide(c, t->right[node]));
 }
 
 /* Every node's size: the frontier on the threads, then the top; on one
@@ -125,10 +116,11 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
                                 int threads, atrbvh_error *error)
 {
     const uint32_t root_count = c->t->count[0];
-    const size_t cap = (size_t)FRONTIER_CAP_PER_THREAD * (size_t)threads;
+    const size_t cap = atrbvh_i_frontier_cap(threads);
     size_t k = 0;
+    int64_t i;
     unsigned char *block;
-    c->cut = root_count / (FRONTIER_PER_THREAD * (uint32_t)threads);
+    c->cut = atrbvh_i_frontier_cut(root_count, threads);
     if (threads < 2 || root_count < PARALLEL_MIN || c->cut < 1u) {
         (void)decide(c, 0);
         return ATRBVH_OK;
@@ -148,19 +140,10 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
         return ATRBVH_OK;
     }
 #ifdef _OPENMP
-    {
-        int64_t i;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-        for (i = 0; i < (int64_t)k; i++)
-            c->cost[i] = decide(c, c->list[i]);
-    }
-#else
-    {
-        size_t i;
-        for (i = 0; i < k; i++)
-            c->cost[i] = decide(c, c->list[i]);
-    }
 #endif
+    for (i = 0; i < (int64_t)k; i++)
+        c->cost[i] = decide(c, c->list[i]);
     c->next = 0;
     (void)top_decide(c, 0);
     return ATRBVH_OK;
@@ -182,8 +165,7 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
         x.t = &c->tree;
         x.p = &run->cfg->cost;
         x.size = c->size;
-        st = decide_all(&x, c->scratch,
-                        run->cfg->threads > 0 ? run->cfg->threads : 1, error);
+        st = decide_all(&x, c->scratch, run->cfg->threads, error);
         if (st != ATRBVH_OK)
             return st;
     }

@@ -19,6 +19,28 @@ static inline int atrbvh_i_is_leaf(const atrbvh_i_tree *t, uint32_t node)
     return node >= t->n - 1;
 }
 
+/* The optimise, collapse and layout stages on the threads: a "top" of the
+ * tree's nodes of more than a cut of primitives, the subtrees just below
+ * it (the frontier) in one dynamic parallel loop, then the top on the
+ * calling thread.  The cut leaves about ATRBVH_I_FRONTIER_PER_THREAD
+ * subtrees per thread for the loop's balance; a frontier longer than
+ * ATRBVH_I_FRONTIER_CAP_PER_THREAD per thread (a degenerate tree) runs on
+ * one thread, with the same result. */
+#define ATRBVH_I_FRONTIER_PER_THREAD 32u
+#define ATRBVH_I_FRONTIER_CAP_PER_THREAD 512u
+
+static inline uint32_t atrbvh_i_frontier_cut(uint32_t count, int threads)
+{
+    return (uint32_t)((uint64_t)count /
+                      ((uint64_t)ATRBVH_I_FRONTIER_PER_THREAD *
+                       (uint64_t)threads));
+}
+
+static inline size_t atrbvh_i_frontier_cap(int threads)
+{
+    return (size_t)ATRBVH_I_FRONTIER_CAP_PER_THREAD * (size_t)threads;
+}
+
 /* Leaf i of the in-place gather: the primitive boxes are entries 0 .. n-1
  * of box, leaf n-1+i takes box[order[i]]; entry n-1 is both a primitive
  * and leaf 0, so the caller reads it (`last`) before any leaf is

@@ -3,8 +3,8 @@
  * primitive index array, top-down from the collapse decisions: a node's
  * left child follows it, its right child comes after the left subtree, so
  * every offset is known before descending.  On the threads: the "top"
- * (the internal nodes of more than `cut` primitives, about n /
- * (FRONTIER_PER_THREAD x threads)) is placed first, top-down on the
+ * (the internal nodes of more than `cut` primitives, cpu.h's
+ * atrbvh_i_frontier_cut) is placed first, top-down on the
  * calling thread, which lists the subtrees just below it (the frontier)
  * with their positions; one parallel loop (dynamic, a subtree at a time)
  * emits those, then the calling thread writes the top's nodes bottom-up.
@@ -46,11 +46,6 @@
 #define SMALL_MAX 4096u
 /* Trees smaller than this are laid out on one thread. */
 #define PARALLEL_MIN 4096u
-/* The top's cut: about this many frontier subtrees per thread. */
-#define FRONTIER_PER_THREAD 32u
-/* The frontier's and the top's capacity per thread; a longer one (a
- * degenerate tree) is laid out on one thread, with the same result. */
-#define FRONTIER_CAP_PER_THREAD 512u
 
 typedef struct layout_ctx {
     const atrbvh_i_tree *t;
@@ -378,7 +373,6 @@ static void emit_inner(layout_ctx *c, uint32_t node, uint32_t at,
     const uint32_t l = t->left[node];
     const uint32_t right_at = atrbvh_layout_right_pos(at, c->size[l]);
     atrbvh_box b;
-    (void)prim_at;
     if (c->box) {
         b = c->box[node];
     } else {
@@ -453,9 +447,9 @@ static atrbvh_status emit_all(layout_ctx *c, atrbvh_i_scratch *scratch,
     const atrbvh_i_tree *t = c->t;
     const uint32_t root_count = t->count[0];
     layout_cut k;
-    size_t i;
-    k.cut = root_count / (FRONTIER_PER_THREAD * (uint32_t)threads);
-    k.cap = (size_t)FRONTIER_CAP_PER_THREAD * (size_t)threads;
+    int64_t i;
+    k.cut = atrbvh_i_frontier_cut(root_count, threads);
+    k.cap = atrbvh_i_frontier_cap(threads);
     k.ntop = k.nfront = 0;
     if (threads < 2 || root_count < PARALLEL_MIN || k.cut < 1u ||
         (c->size[0] & ATRBVH_SIZE_LEAF)) {
@@ -476,18 +470,12 @@ static atrbvh_status emit_all(layout_ctx *c, atrbvh_i_scratch *scratch,
         return ATRBVH_OK;
     }
 #ifdef _OPENMP
-    {
-        int64_t j;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-        for (j = 0; j < (int64_t)k.nfront; j++)
-            emit(c, k.front[j].node, k.front[j].at, k.front[j].prim);
-    }
-#else
-    for (i = 0; i < k.nfront; i++)
-        emit(c, k.front[i].node, k.front[i].at, k.front[i].prim);
 #endif
+    for (i = 0; i < (int64_t)k.nfront; i++)
+        emit(c, k.front[i].node, k.front[i].at, k.front[i].prim);
     /* the top bottom-up: a node's children come after it in preorder */
-    for (i = k.ntop; i-- > 0;)
+    for (i = (int64_t)k.ntop - 1; i >= 0; i--)
         emit_inner(c, k.top[i].node, k.top[i].at, k.top[i].prim);
     return ATRBVH_OK;
 }
@@ -510,8 +498,7 @@ atrbvh_status atrbvh_i_cpu_layout(atrbvh_device *dev, atrbvh_i_run *run,
     x.vstride = run->in.vstride / sizeof(float);
     x.istride = run->in.istride / sizeof(uint32_t);
     x.bstride = run->in.bstride / sizeof(float);
-    st = emit_all(&x, c->scratch,
-                  run->cfg->threads > 0 ? run->cfg->threads : 1, error);
+    st = emit_all(&x, c->scratch, run->cfg->threads, error);
     if (st != ATRBVH_OK)
         return st;
     /* A handle keeps the node boxes of an optimised tree (read here

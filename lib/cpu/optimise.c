@@ -18,7 +18,7 @@
  * touched, so after each round the tree is as refit would leave it.
  *
  * Scheduling on the CPU, per round: the "top" is the crown nodes of at
- * least `cut` primitives (about n / (FRONTIER_PER_THREAD x threads)), a
+ * least `cut` primitives (cpu.h's atrbvh_i_frontier_cut), a
  * connected top part of the crown; the "frontier" is the crown nodes just
  * below it, roots of disjoint subtrees.  One parallel loop (dynamic, one
  * subtree at a time) walks each frontier subtree in post-order; then the
@@ -59,14 +59,6 @@ typedef struct opt_worker {
 
 /* Trees smaller than this are optimised on one thread. */
 #define PARALLEL_MIN 2048u
-/* The top's cut: about this many frontier subtrees per thread, for the
- * dynamic loop's balance (the top, about as many nodes as the frontier,
- * is walked on one thread). */
-#define FRONTIER_PER_THREAD 32u
-/* The frontier list's capacity per thread (FRONTIER_PER_THREAD and room
- * for unbalanced tops); a longer frontier (a degenerate tree) takes the
- * serial walk, which gives the same tree. */
-#define FRONTIER_CAP_PER_THREAD 512u
 
 typedef struct walk_ctx {
     atrbvh_treelet_tree t;
@@ -122,9 +114,15 @@ static inline void progress(walk_ctx *c)
     }
 }
 
+/* An internal node of at least lo primitives. */
+static int at_least(const atrbvh_treelet_tree *t, uint32_t node, uint32_t lo)
+{
+    return node < t->n_internal && t->count[node] >= lo;
+}
+
 static int in_crown(const walk_ctx *c, uint32_t node)
 {
-    return node < c->t.n_internal && c->t.count[node] >= c->gamma;
+    return at_least(&c->t, node, c->gamma);
 }
 
 /* This thread's worker, or NULL when the build is being cancelled. */
@@ -209,26 +207,24 @@ static void visit(walk_ctx *c, uint32_t node)
 static void walk_serial(walk_ctx *c, uint32_t s, uint32_t lo)
 {
     const atrbvh_treelet_tree *t = &c->t;
-    const uint32_t ni = t->n_internal;
     uint32_t x = s;
     for (;;) {
         for (;;) {
-            if (t->left[x] < ni && t->count[t->left[x]] >= lo)
+            if (at_least(t, t->left[x], lo))
                 x = t->left[x];
-            else if (t->right[x] < ni && t->count[t->right[x]] >= lo)
+            else if (at_least(t, t->right[x], lo))
                 x = t->right[x];
             else
                 break;
         }
         for (;;) {
-            uint32_t parent, r;
+            uint32_t parent;
             visit(c, x);
             if (x == s)
                 return;
             parent = t->parent[x];
-            r = t->right[parent];
-            if (t->left[parent] == x && r < ni && t->count[r] >= lo) {
-                x = r;
+            if (t->left[parent] == x && at_least(t, t->right[parent], lo)) {
+                x = t->right[parent];
                 break; /* descend into the right subtree */
             }
             x = parent;
@@ -244,13 +240,11 @@ static size_t frontier(const walk_ctx *c, uint32_t cut, uint32_t *out,
                        size_t cap)
 {
     const atrbvh_treelet_tree *t = &c->t;
-    const uint32_t ni = t->n_internal;
     size_t k = 0;
     uint32_t x = 0;
     for (;;) {
         const uint32_t l = t->left[x], r = t->right[x];
-        const int top_l = l < ni && t->count[l] >= cut;
-        const int top_r = r < ni && t->count[r] >= cut;
+        const int top_l = at_least(t, l, cut), top_r = at_least(t, r, cut);
         if (!top_l && in_crown(c, l)) {
             if (k == cap)
                 return cap + 1;
@@ -272,13 +266,12 @@ static size_t frontier(const walk_ctx *c, uint32_t cut, uint32_t *out,
         /* up to the nearest ancestor whose right child is a top node not
          * yet entered (entered from its left) */
         for (;;) {
-            uint32_t parent, pr;
+            uint32_t parent;
             if (x == 0)
                 return k;
             parent = t->parent[x];
-            pr = t->right[parent];
-            if (t->left[parent] == x && pr < ni && t->count[pr] >= cut) {
-                x = pr;
+            if (t->left[parent] == x && at_least(t, t->right[parent], cut)) {
+                x = t->right[parent];
                 break;
             }
             x = parent;
@@ -292,14 +285,13 @@ static size_t frontier(const walk_ctx *c, uint32_t cut, uint32_t *out,
 static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap)
 {
     const uint32_t root_count = c->t.count[0];
-    uint64_t cut64 = root_count / ((uint64_t)FRONTIER_PER_THREAD *
-                                   (uint64_t)(threads > 0 ? threads : 1));
-    uint32_t cut;
+    uint32_t cut = atrbvh_i_frontier_cut(root_count, threads);
     size_t k = 0;
-    /* above gamma, so that every top node is a crown node */
-    if (cut64 <= c->gamma)
-        cut64 = (uint64_t)c->gamma + 1u;
-    cut = (uint32_t)cut64;
+    int64_t i;
+    /* above gamma, so that every top node is a crown node (gamma is at
+     * most the root's count: no overflow) */
+    if (cut <= c->gamma)
+        cut = c->gamma + 1u;
     if (threads > 1 && root_count >= PARALLEL_MIN && root_count >= cut)
         k = frontier(c, cut, list, cap);
     if (k < 2u || k > cap) {
@@ -307,19 +299,10 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap)
         return;
     }
 #ifdef _OPENMP
-    {
-        int64_t i;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-        for (i = 0; i < (int64_t)k; i++)
-            walk_serial(c, list[i], c->gamma);
-    }
-#else
-    {
-        size_t i;
-        for (i = 0; i < k; i++)
-            walk_serial(c, list[i], c->gamma);
-    }
 #endif
+    for (i = 0; i < (int64_t)k; i++)
+        walk_serial(c, list[i], c->gamma);
     walk_serial(c, 0, cut);
 }
 
@@ -393,7 +376,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         marks = (size_t)(t->n - 1u);
     /* Then the frontier list of a round (walk_round), 4-byte entries
      * after the marks' bytes, aligned. */
-    cap = (size_t)FRONTIER_CAP_PER_THREAD * (size_t)threads;
+    cap = atrbvh_i_frontier_cap(threads);
     if (!atrbvh_i_mul_size((size_t)threads, stride, &total) ||
         marks > ((size_t)-1 - total) / 2u)
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
