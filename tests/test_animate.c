@@ -313,71 +313,14 @@ START_TEST(reoptimise_thread_count)
 }
 END_TEST
 
-/* A chain BVH of `leaves` triangles, as atrbvh(5) bytes loaded: internal
- * node j < k = leaves - 1 has node j + 1 on its left and leaf j on its
- * right (slot 2k - j), node k is leaf k; internal boxes the whole scene's
- * (loose but valid), leaf boxes the triangles'.  Depth k. */
-static void wr64le(unsigned char *p, uint64_t x)
-{
-    tu_wr32(p, (uint32_t)x);
-    tu_wr32(p + 4, (uint32_t)(x >> 32));
-}
-
+/* tu_chain_bvh_bytes's chain, loaded. */
 static atrbvh_bvh *chain_bvh(const float *v, size_t leaves)
 {
-    const size_t k = leaves - 1, nn = 2 * leaves - 1;
-    const size_t n = 96 + 32 * nn + 4 * leaves + 4;
-    unsigned char *d = calloc(1, n);
-    float lo[3] = {INFINITY, INFINITY, INFINITY},
-          hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    double ci = 1.2, ct = 1.0;
-    uint64_t bits;
+    size_t n;
+    unsigned char *d = tu_chain_bvh_bytes(v, leaves, &n);
     atrbvh_bvh *b = NULL;
     atrbvh_error e;
-    size_t i;
-    int a;
     ck_assert(d);
-    for (i = 0; i < 9 * leaves; i++) {
-        lo[i % 3] = fminf(lo[i % 3], v[i]);
-        hi[i % 3] = fmaxf(hi[i % 3], v[i]);
-    }
-    memcpy(d, "ATRBVH\0\n", 8);
-    tu_wr32(d + 8, 1);
-    tu_wr32(d + 12, 96);
-    wr64le(d + 32, nn);
-    wr64le(d + 40, leaves);
-    wr64le(d + 48, leaves);
-    memcpy(&bits, &ci, 8);
-    wr64le(d + 56, bits);
-    memcpy(&bits, &ct, 8);
-    wr64le(d + 64, bits);
-    for (i = 0; i < nn; i++) {
-        unsigned char *q = d + 96 + 32 * i;
-        float mn[3], mx[3];
-        uint32_t idx, cnt, w;
-        if (i < k) {
-            memcpy(mn, lo, sizeof mn);
-            memcpy(mx, hi, sizeof mx);
-            idx = (uint32_t)(2 * k - i); /* the right child */
-            cnt = 0;
-        } else {
-            const size_t leaf = i == k ? k : 2 * k - i;
-            tri_box(v, (uint32_t)leaf, mn, mx);
-            idx = (uint32_t)leaf; /* its slot, which lists triangle leaf */
-            cnt = 1;
-        }
-        for (a = 0; a < 3; a++) {
-            memcpy(&w, &mn[a], 4);
-            tu_wr32(q + 4 * a, w);
-            memcpy(&w, &mx[a], 4);
-            tu_wr32(q + 12 + 4 * a, w);
-        }
-        tu_wr32(q + 24, idx);
-        tu_wr32(q + 28, cnt);
-    }
-    for (i = 0; i < leaves; i++)
-        tu_wr32(d + 96 + 32 * nn + 4 * i, (uint32_t)i);
-    tu_fix_crc(d, n);
     ck_assert_msg(atrbvh_load_memory(d, n, &b, &e) == ATRBVH_OK, "%s", e.text);
     free(d);
     return b;

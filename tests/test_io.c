@@ -639,21 +639,18 @@ END_TEST
  * deepest leaf (triangle k), then the right leaves of nodes k-1 .. 0. */
 START_TEST(deep_tree_traversal)
 {
-    const size_t k = 1000, leaves = k + 1, nn = 2 * leaves - 1;
+    const size_t k = 1000, leaves = k + 1;
     float *v = malloc(leaves * 9 * sizeof(float));
     atrbvh_geometry g;
-    size_t n = 96 + 32 * nn + 4 * leaves + 4, i;
-    unsigned char *d = calloc(1, n);
-    float (*box)[6] = malloc(leaves * sizeof *box);
-    float lo[3] = {INFINITY, INFINITY, INFINITY},
-          hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    size_t n, i;
+    unsigned char *d;
     atrbvh_bvh *deep = NULL, *ref;
     atrbvh_build_options o;
     atrbvh_error e;
     atrbvh_stats st;
     tu_rng r;
     size_t hits = 0;
-    ck_assert(d && box && v);
+    ck_assert(v);
     /* large random triangles in the unit cube: a ray through the middle
      * crosses about half the leaf boxes, more than the traversal stack
      * holds (its pushes happen on the way down the chain) */
@@ -661,66 +658,8 @@ START_TEST(deep_tree_traversal)
     for (i = 0; i < 9 * leaves; i++)
         v[i] = tu_rng_float(&r);
     g = atrbvh_geometry_triangles(v, 3 * leaves, NULL, leaves);
-    for (i = 0; i < leaves; i++) {
-        int c, a;
-        for (a = 0; a < 3; a++) {
-            box[i][a] = INFINITY;
-            box[i][3 + a] = -INFINITY;
-        }
-        for (c = 0; c < 3; c++)
-            for (a = 0; a < 3; a++) {
-                float x = v[9 * i + 3 * c + a];
-                box[i][a] = fminf(box[i][a], x);
-                box[i][3 + a] = fmaxf(box[i][3 + a], x);
-                lo[a] = fminf(lo[a], x);
-                hi[a] = fmaxf(hi[a], x);
-            }
-    }
-    memcpy(d, "ATRBVH\0\n", 8);
-    tu_wr32(d + 8, 1);
-    tu_wr32(d + 12, 96);
-    wr64(d + 32, nn);
-    wr64(d + 40, leaves);
-    wr64(d + 48, leaves);
-    {
-        double ci = 1.2, ct = 1.0;
-        uint64_t bits;
-        memcpy(&bits, &ci, 8);
-        wr64(d + 56, bits);
-        memcpy(&bits, &ct, 8);
-        wr64(d + 64, bits);
-    }
-    /* node j < k: internal, box = everything (a loose but valid bound),
-     * right child at 2k - j; node k: leaf k; node 2k - j: leaf j */
-    for (i = 0; i < nn; i++) {
-        unsigned char *q = d + 96 + 32 * i;
-        int a;
-        float b[6];
-        uint32_t idx, cnt;
-        if (i < k) {
-            for (a = 0; a < 3; a++) {
-                b[a] = lo[a];
-                b[3 + a] = hi[a];
-            }
-            idx = (uint32_t)(2 * k - i);
-            cnt = 0;
-        } else {
-            size_t leaf = i == k ? k : 2 * k - i;
-            memcpy(b, box[leaf], sizeof b);
-            idx = (uint32_t)leaf; /* slot = triangle = leaf number */
-            cnt = 1;
-        }
-        for (a = 0; a < 6; a++) {
-            uint32_t bits;
-            memcpy(&bits, &b[a], 4);
-            tu_wr32(q + 4 * a, bits);
-        }
-        tu_wr32(q + 24, idx);
-        tu_wr32(q + 28, cnt);
-    }
-    for (i = 0; i < leaves; i++)
-        tu_wr32(d + 96 + 32 * nn + 4 * i, (uint32_t)i);
-    tu_fix_crc(d, n);
+    d = tu_chain_bvh_bytes(v, leaves, &n);
+    ck_assert(d);
     ck_assert_msg(atrbvh_load_memory(d, n, &deep, &e) == ATRBVH_OK, "%s",
                   e.text);
     atrbvh_bvh_stats(deep, &st);
@@ -757,7 +696,6 @@ START_TEST(deep_tree_traversal)
     ck_assert(hits > 100);
     atrbvh_bvh_free(deep);
     atrbvh_bvh_free(ref);
-    free(box);
     free(d);
     free(v);
 }

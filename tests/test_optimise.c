@@ -966,31 +966,40 @@ START_TEST(atrbvh_rounds)
 }
 END_TEST
 
-/* 1..4 threads, the same bits (large enough for the task walk). */
-static void threads_case(atrbvh_method method, unsigned n, unsigned rounds,
-                         int model, int box_mode)
+/* `orig` optimised with 1..4 threads (treelet size and gamma n): a valid,
+ * cheaper tree, the same bits for every thread count.  Frees orig. */
+static void threads_same(test_tree *orig, atrbvh_method method, unsigned n,
+                         unsigned rounds, const atrbvh_cost_params *p)
 {
-    atrbvh_cost_params p = cost_model(model);
-    test_tree orig, ref, t;
+    test_tree ref, t;
     atrbvh_error err;
     atrbvh_i_config c;
     int threads;
-    tree_random(&orig, 70000, 77u + (uint64_t)box_mode, box_mode, &p);
     for (threads = 1; threads <= 4; threads++) {
         test_tree *dst = threads == 1 ? &ref : &t;
-        tree_copy(dst, &orig);
-        c = config(method, n, rounds, n, &p, threads);
+        tree_copy(dst, orig);
+        c = config(method, n, rounds, n, p, threads);
         ck_assert_int_eq(atrbvh_i_optimise(&dst->t, &c, NULL, NULL, &err), ATRBVH_OK);
         if (threads == 1) {
-            tree_check(&ref, &orig, &p);
-            ck_assert(ref.t.cost[0] < orig.t.cost[0]);
+            tree_check(&ref, orig, p);
+            ck_assert(ref.t.cost[0] < orig->t.cost[0]);
         } else {
             ck_assert_msg(tree_same(&ref, &t), "%d threads differ", threads);
             tree_free(&t);
         }
     }
     tree_free(&ref);
-    tree_free(&orig);
+    tree_free(orig);
+}
+
+/* 1..4 threads, the same bits (large enough for the parallel walk). */
+static void threads_case(atrbvh_method method, unsigned n, unsigned rounds,
+                         int model, int box_mode)
+{
+    atrbvh_cost_params p = cost_model(model);
+    test_tree orig;
+    tree_random(&orig, 70000, 77u + (uint64_t)box_mode, box_mode, &p);
+    threads_same(&orig, method, n, rounds, &p);
 }
 
 START_TEST(threads_trbvh)
@@ -1013,30 +1022,11 @@ END_TEST
 START_TEST(threads_comb)
 {
     atrbvh_cost_params p = cost_model(1);
-    test_tree orig, ref, t;
-    atrbvh_error err;
-    atrbvh_i_config c;
-    int threads;
-    const atrbvh_method method =
-        _i ? ATRBVH_METHOD_TRBVH : ATRBVH_METHOD_ATRBVH;
+    test_tree orig;
     tree_shaped(&orig, 1200 * 16, 91, 0, 16, &p);
     tree_check(&orig, &orig, &p);
-    for (threads = 1; threads <= 4; threads++) {
-        test_tree *dst = threads == 1 ? &ref : &t;
-        tree_copy(dst, &orig);
-        c = config(method, _i ? 7 : 9, 2, _i ? 7 : 9, &p, threads);
-        ck_assert_int_eq(atrbvh_i_optimise(&dst->t, &c, NULL, NULL, &err),
-                         ATRBVH_OK);
-        if (threads == 1) {
-            tree_check(&ref, &orig, &p);
-            ck_assert(ref.t.cost[0] < orig.t.cost[0]);
-        } else {
-            ck_assert_msg(tree_same(&ref, &t), "%d threads differ", threads);
-            tree_free(&t);
-        }
-    }
-    tree_free(&ref);
-    tree_free(&orig);
+    threads_same(&orig, _i ? ATRBVH_METHOD_TRBVH : ATRBVH_METHOD_ATRBVH,
+                 _i ? 7 : 9, 2, &p);
 }
 END_TEST
 

@@ -602,6 +602,80 @@ void tu_fix_crc(unsigned char *d, size_t n)
     tu_wr32(d + n - 4, tu_crc32(d, n - 4));
 }
 
+static void wr64(unsigned char *p, uint64_t v)
+{
+    tu_wr32(p, (uint32_t)v);
+    tu_wr32(p + 4, (uint32_t)(v >> 32));
+}
+
+static void wr_float(unsigned char *p, float f)
+{
+    uint32_t bits;
+    memcpy(&bits, &f, 4);
+    tu_wr32(p, bits);
+}
+
+unsigned char *tu_chain_bvh_bytes(const float *v, size_t leaves,
+                                  size_t *size)
+{
+    const size_t k = leaves - 1, nn = 2 * leaves - 1;
+    const size_t n = 96 + 32 * nn + 4 * leaves + 4;
+    unsigned char *d = calloc(1, n);
+    float lo[3] = {INFINITY, INFINITY, INFINITY},
+          hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double ci = 1.2, ct = 1.0;
+    uint64_t bits;
+    size_t i;
+    int a, c;
+    if (!d)
+        return NULL;
+    for (i = 0; i < 9 * leaves; i++) {
+        lo[i % 3] = fminf(lo[i % 3], v[i]);
+        hi[i % 3] = fmaxf(hi[i % 3], v[i]);
+    }
+    memcpy(d, "ATRBVH\0\n", 8);
+    tu_wr32(d + 8, 1);
+    tu_wr32(d + 12, 96);
+    wr64(d + 32, nn);
+    wr64(d + 40, leaves);
+    wr64(d + 48, leaves);
+    memcpy(&bits, &ci, 8);
+    wr64(d + 56, bits);
+    memcpy(&bits, &ct, 8);
+    wr64(d + 64, bits);
+    for (i = 0; i < nn; i++) {
+        unsigned char *q = d + 96 + 32 * i;
+        float mn[3], mx[3];
+        if (i < k) {
+            memcpy(mn, lo, sizeof mn);
+            memcpy(mx, hi, sizeof mx);
+            tu_wr32(q + 24, (uint32_t)(2 * k - i)); /* the right child */
+            tu_wr32(q + 28, 0);
+        } else {
+            const size_t leaf = i == k ? k : 2 * k - i;
+            for (a = 0; a < 3; a++) {
+                mn[a] = INFINITY;
+                mx[a] = -INFINITY;
+                for (c = 0; c < 3; c++) {
+                    mn[a] = fminf(mn[a], v[9 * leaf + 3 * c + a]);
+                    mx[a] = fmaxf(mx[a], v[9 * leaf + 3 * c + a]);
+                }
+            }
+            tu_wr32(q + 24, (uint32_t)leaf); /* its slot: triangle leaf */
+            tu_wr32(q + 28, 1);
+        }
+        for (a = 0; a < 3; a++) {
+            wr_float(q + 4 * a, mn[a]);
+            wr_float(q + 12 + 4 * a, mx[a]);
+        }
+    }
+    for (i = 0; i < leaves; i++)
+        tu_wr32(d + 96 + 32 * nn + 4 * i, (uint32_t)i);
+    tu_fix_crc(d, n);
+    *size = n;
+    return d;
+}
+
 int tu_run(Suite *s)
 {
     SRunner *sr = srunner_create(s);

@@ -101,6 +101,14 @@ void tu_wr32(unsigned char *p, uint32_t v);
 uint32_t tu_crc32(const unsigned char *p, size_t n);
 /* Rewrites the last 4 bytes of d[0..n) as the CRC-32 of those before. */
 void tu_fix_crc(unsigned char *d, size_t n);
+/* The atrbvh(5) bytes (version 1) of a chain BVH over the `leaves`
+ * triangles of v (9 floats each, no indices): internal node j < k =
+ * leaves - 1 has node j + 1 on its left and leaf j (node 2k - j) on its
+ * right, node k is leaf k, slot i lists triangle i; internal boxes the box
+ * of every vertex (loose but valid), leaf boxes the triangles'.  Depth k.
+ * malloc'd, *size bytes; NULL when out of memory. */
+unsigned char *tu_chain_bvh_bytes(const float *v, size_t leaves,
+                                  size_t *size);
 
 /* Runs every test of s (verbosity CK_VERBOSITY, default normal);
  * EXIT_SUCCESS when all passed, else EXIT_FAILURE. */
