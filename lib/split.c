@@ -1433,6 +1433,8 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
     first_tree ft;
     uint32_t *chosen = NULL;
     const int tree = cfg->split_rule == ATRBVH_SPLIT_TREE;
+    const size_t stack_len = (size_t)(tree ? GAIN_SPLITS : MAX_SPLITS) + 2;
+    piece *stacks = NULL;
     uint64_t *offset = NULL, budget, total = 0, want;
     size_t invalid = 0, i;
     atrbvh_status st;
@@ -1600,27 +1602,31 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
                            (unsigned long long)total);
         goto done;
     }
+    /* Each thread's stack of pieces, all allocated here: the caller's
+     * allocator (atrbvh_set_allocator) is never called from several
+     * threads at once. */
+    stacks = atrbvh_i_alloc_array((size_t)threads * stack_len,
+                                  sizeof *stacks);
+    if (!stacks) {
+        failed = 1;
+        goto stacks_done;
+    }
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads)
 #endif
     {
-        piece *stack = atrbvh_i_alloc_array(
-            (tree ? GAIN_SPLITS : MAX_SPLITS) + 2, sizeof *stack);
-        int64_t j;
-        if (!stack) {
 #ifdef _OPENMP
-#pragma omp atomic write
+        piece *stack = stacks + (size_t)omp_get_thread_num() * stack_len;
+#else
+        piece *stack = stacks;
 #endif
-            failed = 1;
-        }
+        int64_t j;
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 256)
 #endif
         for (j = 0; j < (int64_t)kept; j++) {
             const uint32_t splits =
                 (uint32_t)(offset[j + 1] - offset[j] - 1);
-            if (!stack)
-                continue;
             if (splits == 0) {
                 refs[offset[j]] = boxes[j];
                 count[j] = 1;
@@ -1631,8 +1637,9 @@ atrbvh_status atrbvh_i_split_prims(atrbvh_device *dev, atrbvh_i_run *run,
                                      &refs[offset[j]]);
             }
         }
-        atrbvh_i_free(stack);
     }
+    atrbvh_i_free(stacks);
+stacks_done:
     if (failed) {
         st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                            "cannot allocate the splitting stacks");
