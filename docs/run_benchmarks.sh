@@ -2,7 +2,7 @@
 # docs/run_benchmarks.sh [PART...] - regenerates the measurements, plots and
 # tables of docs/benchmarks.md.  PART: machine, main, sweep, scaling,
 # render, tables (default: all, in that order), and speed (not in the
-# default: the build-speed section beside Embree, about 10 minutes; run it
+# default: the build-speed section beside Embree, 1-2 minutes on 2 cores; run it
 # alone on a quiet machine).  Run from anywhere after the build
 # in _build/ (BUILDDIR=... to use another); scenes from ../shared/scenes,
 # or ../../shared/scenes from a worktree (ATRBVH_SCENES=... to use others).  Needs gnuplot and python3.
@@ -76,7 +76,7 @@ for part in "$@"; do
         mkdir -p "$OUT/speed"
         # shellcheck disable=SC2086
         "$TOOL" bench $SCENES --no-rays --repeat 5 --threads 2 \
-            --configs lbvh,atrbvh:9:2,atrbvh:16:3,trbvh:7:3,fast,balanced,high,embree,lbvh@opencl,atrbvh:9:2@opencl \
+            --configs lbvh,atrbvh:7:1,atrbvh:9:1,atrbvh:6:2,atrbvh:9:2,atrbvh:16:3,trbvh:7:3,fast,balanced,high,embree,lbvh@opencl,atrbvh:9:2@opencl \
             --csv "$OUT/speed.csv" --plot "$OUT/speed" >"$OUT/speed.txt"
         ALONE=$(dirname "$TOOL")/embree-alone
         if [ -x "$ALONE" ]; then
