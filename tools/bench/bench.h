@@ -112,6 +112,33 @@ int bench_lib_build(const scene_data *sd, const atrbvh_build_options *o,
 int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
                      const config *c, embree_ctx *emb, int do_rays,
                      unsigned repeat, int warmup, int binary, row *r);
+/* The same in steps, so that the timed builds of several configurations
+ * can take turns (sweep.c): open (the device, the warm-up build), time
+ * build k (0 .. repeat-1), finish (the row: medians, the binary SAH,
+ * rays), close (always, also after an error).  Each step: 0, or -1 after
+ * an error line. */
+typedef struct bench_cfg {
+    const bench_args *a;
+    scene_data *sd;
+    const char *spec;
+    const config *c;
+    embree_ctx *emb;
+    int do_rays, binary;
+    unsigned repeat;
+    row *r;
+    double *tot, *stg, *use; /* per timed build                        */
+    atrbvh_device *dev;      /* the library's configurations           */
+    atrbvh_build_options o;
+    atrbvh_stats st;         /* the last build's                       */
+    atrbvh_bvh *bvh;         /* the last build                         */
+} bench_cfg;
+int bench_cfg_open(bench_cfg *b, const bench_args *a, scene_data *sd,
+                   const char *spec, const config *c, embree_ctx *emb,
+                   int do_rays, unsigned repeat, int warmup, int binary,
+                   row *r);
+int bench_cfg_time(bench_cfg *b, unsigned k);
+int bench_cfg_finish(bench_cfg *b);
+void bench_cfg_close(bench_cfg *b);
 /* Threads the builds use: --threads, else OpenMP's maximum. */
 int bench_threads(const bench_args *a);
 

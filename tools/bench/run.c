@@ -176,17 +176,11 @@ static void set_tree_and_times(row *r, const atrbvh_stats *st, double *tot,
     r->build_ms = bench_median(tot, repeat);
 }
 
-int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
-                     const config *c, embree_ctx *emb, int do_rays,
-                     unsigned repeat, int warmup, int binary, row *r)
+/* The row's fields before any build: NaN where nothing is measured. */
+static void row_init(row *r, const config *c, const char *spec,
+                     const scene_data *sd)
 {
-    double *tot = malloc((repeat + 1) * sizeof *tot);
-    double *stg = malloc((repeat + 1) * ATRBVH_STAGE_COUNT * sizeof *stg);
-    double *use = malloc((repeat + 1) * sizeof *use);
-    atrbvh_bvh *bvh = NULL;
-    atrbvh_device *dev = NULL;
-    unsigned k;
-    int s, rc = -1;
+    int s;
     memset(r, 0, sizeof *r);
     r->c = *c;
     r->scene = spec;
@@ -200,145 +194,189 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
     r->emb_commit_ms = NAN;
     r->cpu_use = NAN;
     r->total_mrays = NAN;
-    if (!tot || !stg || !use) {
-        cli_error("out of memory");
-        goto done;
+    r->sah_binary = NAN;
+}
+
+/* One build of the configuration into b->bvh (the previous one freed),
+ * with its peak bytes; for the library also its CPU use.  Timed builds
+ * record their times at index k; k < 0: untimed (the warm-up). */
+static int cfg_build(bench_cfg *b, int k)
+{
+    row *r = b->r;
+    int s;
+    atrbvh_bvh_free(b->bvh);
+    b->bvh = NULL;
+    if (b->c->embree) {
+        embree_build_result res;
+        /* The warm-up with Embree's memory monitor (a callback on every
+         * allocation), the timed builds without it. */
+        if (embree_build(b->emb, &b->sd->sc, b->c->eq,
+                         b->a->base.max_leaf_size, b->a->base.ci,
+                         b->a->base.ct, k < 0, &res) != 0)
+            return -1;
+        b->bvh = res.bvh;
+        if (k < 0) {
+            r->peak = res.peak_bytes;
+            r->references = res.references;
+        } else {
+            b->tot[k] = res.build_ms;
+        }
+        return 0;
     }
-    if (!c->embree) {
-        atrbvh_build_options o = a->base;
-        atrbvh_stats st;
-        o.method = c->method;
-        o.treelet_size = c->treelet;
-        o.rounds = c->rounds;
-        o.backend = c->backend;
-        o.split_budget = c->split;
-        if (c->split_rule >= 0)
-            o.split_rule = c->split_rule;
-        {
-            /* One device per configuration, opened before the timed builds
-             * (as users open it once): its first build also makes the
-             * scratch, so the peak memory of the first build counts it.
-             * OpenCL asked for (--backend, @opencl) and not to be had fails
-             * the run rather than report the CPU rows alone. */
-            atrbvh_error e;
-            atrbvh_status x;
-            char dspec[512];
-            const char *name = a->base.opencl_device;
-            if (c->backend == ATRBVH_BACKEND_OPENCL)
-                snprintf(dspec, sizeof dspec, "opencl%s%s",
-                         name && *name ? ":" : "", name && *name ? name : "");
-            else
-                snprintf(dspec, sizeof dspec, "cpu");
-            memset(&e, 0, sizeof e);
-            x = atrbvh_device_open(dspec, &dev, &e);
-            if (x != ATRBVH_OK) {
-                char label[64];
-                config_label(c, c->treelet, c->rounds, label, sizeof label);
-                cli_error("bench: %s: %s", label,
-                          e.text[0] ? e.text : atrbvh_strerror(x));
-                goto done;
-            }
-            o.device = dev;
-        }
-        for (k = 0; k < repeat + (warmup ? 1 : 0); k++) {
-            size_t peak;
-            double cpu, wall;
-            atrbvh_bvh_free(bvh);
-            bvh = NULL;
-            memtrack_reset_peak();
-            {
-                size_t before = memtrack_current();
-                const double w0 = clock_ms(CLOCK_MONOTONIC),
-                             c0 = clock_ms(CLOCK_PROCESS_CPUTIME_ID);
-                if (bench_lib_build(sd, &o, &bvh, spec) != 0)
-                    goto done;
-                peak = memtrack_peak() - before;
-                cpu = clock_ms(CLOCK_PROCESS_CPUTIME_ID) - c0;
-                wall = clock_ms(CLOCK_MONOTONIC) - w0;
-            }
-            if (peak > r->peak)
-                r->peak = peak;
-            atrbvh_bvh_stats(bvh, &st);
-            if (warmup && k == 0)
-                continue;
-            tot[k - (warmup ? 1 : 0)] = st.build_ms;
-            use[k - (warmup ? 1 : 0)] =
-                wall > 0.0 && st.threads > 0
-                    ? cpu / ((double)st.threads * wall)
-                    : NAN;
-            for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
-                stg[s * repeat + k - (warmup ? 1 : 0)] =
-                    atrbvh_bvh_stage_ms(bvh, (atrbvh_stage)s);
-        }
-        atrbvh_bvh_primitive_indices(bvh, &r->references);
-        r->threads = st.threads;
-        r->treelet = st.treelet_size;
-        r->rounds = st.rounds;
-        r->sah = st.sah;
-        set_tree_and_times(r, &st, tot, repeat);
-        r->cpu_use = bench_median(use, repeat);
+    {
+        size_t peak, before = memtrack_current();
+        double cpu, wall, w0, c0;
+        memtrack_reset_peak();
+        w0 = clock_ms(CLOCK_MONOTONIC);
+        c0 = clock_ms(CLOCK_PROCESS_CPUTIME_ID);
+        if (bench_lib_build(b->sd, &b->o, &b->bvh, b->spec) != 0)
+            return -1;
+        peak = memtrack_peak() - before;
+        cpu = clock_ms(CLOCK_PROCESS_CPUTIME_ID) - c0;
+        wall = clock_ms(CLOCK_MONOTONIC) - w0;
+        if (peak > r->peak)
+            r->peak = peak;
+        atrbvh_bvh_stats(b->bvh, &b->st);
+        if (k < 0)
+            return 0;
+        b->tot[k] = b->st.build_ms;
+        b->use[k] = wall > 0.0 && b->st.threads > 0
+                        ? cpu / ((double)b->st.threads * wall)
+                        : NAN;
         for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
-            r->stage_ms[s] = bench_median(stg + s * repeat, repeat);
+            b->stg[s * b->repeat + (unsigned)k] =
+                atrbvh_bvh_stage_ms(b->bvh, (atrbvh_stage)s);
+    }
+    return 0;
+}
+
+int bench_cfg_open(bench_cfg *b, const bench_args *a, scene_data *sd,
+                   const char *spec, const config *c, embree_ctx *emb,
+                   int do_rays, unsigned repeat, int warmup, int binary,
+                   row *r)
+{
+    memset(b, 0, sizeof *b);
+    b->a = a;
+    b->sd = sd;
+    b->spec = spec;
+    b->c = c;
+    b->emb = emb;
+    b->do_rays = do_rays;
+    b->repeat = repeat;
+    b->binary = binary;
+    b->r = r;
+    row_init(r, c, spec, sd);
+    b->tot = malloc((repeat + 1) * sizeof *b->tot);
+    b->stg = malloc((repeat + 1) * ATRBVH_STAGE_COUNT * sizeof *b->stg);
+    b->use = malloc((repeat + 1) * sizeof *b->use);
+    if (!b->tot || !b->stg || !b->use) {
+        cli_error("out of memory");
+        return -1;
+    }
+    if (c->embree)
+        return cfg_build(b, -1); /* Embree always warms up: its monitor */
+    b->o = a->base;
+    b->o.method = c->method;
+    b->o.treelet_size = c->treelet;
+    b->o.rounds = c->rounds;
+    b->o.backend = c->backend;
+    b->o.split_budget = c->split;
+    if (c->split_rule >= 0)
+        b->o.split_rule = c->split_rule;
+    {
+        /* One device per configuration, opened before the timed builds
+         * (as users open it once): its first build also makes the
+         * scratch, so the peak memory of the first build counts it.
+         * OpenCL asked for (--backend, @opencl) and not to be had fails
+         * the run rather than report the CPU rows alone. */
+        atrbvh_error e;
+        atrbvh_status x;
+        char dspec[512];
+        const char *name = a->base.opencl_device;
+        if (c->backend == ATRBVH_BACKEND_OPENCL)
+            snprintf(dspec, sizeof dspec, "opencl%s%s",
+                     name && *name ? ":" : "", name && *name ? name : "");
+        else
+            snprintf(dspec, sizeof dspec, "cpu");
+        memset(&e, 0, sizeof e);
+        x = atrbvh_device_open(dspec, &b->dev, &e);
+        if (x != ATRBVH_OK) {
+            char label[64];
+            config_label(c, c->treelet, c->rounds, label, sizeof label);
+            cli_error("bench: %s: %s", label,
+                      e.text[0] ? e.text : atrbvh_strerror(x));
+            return -1;
+        }
+        b->o.device = b->dev;
+    }
+    return warmup ? cfg_build(b, -1) : 0;
+}
+
+int bench_cfg_time(bench_cfg *b, unsigned k)
+{
+    return cfg_build(b, (int)k);
+}
+
+int bench_cfg_finish(bench_cfg *b)
+{
+    row *r = b->r;
+    const bench_args *a = b->a;
+    const unsigned repeat = b->repeat;
+    int s;
+    if (!b->bvh)
+        return -1;
+    if (!b->c->embree) {
+        atrbvh_bvh_primitive_indices(b->bvh, &r->references);
+        r->threads = b->st.threads;
+        r->treelet = b->st.treelet_size;
+        r->rounds = b->st.rounds;
+        r->sah = b->st.sah;
+        set_tree_and_times(r, &b->st, b->tot, repeat);
+        r->cpu_use = bench_median(b->use, repeat);
+        for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
+            r->stage_ms[s] = bench_median(b->stg + s * repeat, repeat);
         /* the binary tree */
-        r->sah_binary = NAN;
-        if (binary) {
+        if (b->binary) {
             atrbvh_bvh *bin = NULL;
             atrbvh_stats bs;
+            atrbvh_build_options o = b->o;
             o.collapse = 0;
             o.max_leaf_size = 0;
-            if (bench_lib_build(sd, &o, &bin, spec) != 0)
-                goto done;
+            if (bench_lib_build(b->sd, &o, &bin, b->spec) != 0)
+                return -1;
             atrbvh_bvh_stats(bin, &bs);
             r->sah_binary = bs.sah;
             atrbvh_bvh_free(bin);
         }
     } else {
-        embree_build_result res;
         atrbvh_stats st;
         size_t nn;
         const atrbvh_node *nodes;
-        /* One untimed build with Embree's memory monitor (it is a
-         * callback on every allocation), which also warms up; then the
-         * timed builds without it. */
-        if (embree_build(emb, &sd->sc, c->eq, a->base.max_leaf_size,
-                         a->base.ci, a->base.ct, 1, &res) != 0)
-            goto done;
-        r->peak = res.peak_bytes;
-        r->references = res.references;
-        bvh = res.bvh;
-        (void)warmup;
-        for (k = 0; k < repeat; k++) {
-            atrbvh_bvh_free(bvh);
-            bvh = NULL;
-            if (embree_build(emb, &sd->sc, c->eq, a->base.max_leaf_size,
-                             a->base.ci, a->base.ct, 0, &res) != 0)
-                goto done;
-            bvh = res.bvh;
-            tot[k] = res.build_ms;
-        }
-        atrbvh_bvh_stats(bvh, &st);
-        nodes = atrbvh_bvh_nodes(bvh, &nn);
+        atrbvh_bvh_stats(b->bvh, &st);
+        nodes = atrbvh_bvh_nodes(b->bvh, &nn);
         r->threads = bench_threads(a);
         r->sah = atrbvh_sah(nodes, nn, a->base.ci, a->base.ct);
-        set_tree_and_times(r, &st, tot, repeat);
+        set_tree_and_times(r, &st, b->tot, repeat);
         for (s = 0; s < ATRBVH_STAGE_COUNT; s++)
             r->stage_ms[s] = NAN;
         {
             embree_build_result bin;
             size_t bn;
             const atrbvh_node *bnodes;
-            if (embree_build(emb, &sd->sc, c->eq, 1, a->base.ci, a->base.ct,
-                             0, &bin) != 0)
-                goto done;
+            if (embree_build(b->emb, &b->sd->sc, b->c->eq, 1, a->base.ci,
+                             a->base.ct, 0, &bin) != 0)
+                return -1;
             bnodes = atrbvh_bvh_nodes(bin.bvh, &bn);
             r->sah_binary = atrbvh_sah(bnodes, bn, a->base.ci, a->base.ct);
             atrbvh_bvh_free(bin.bvh);
         }
-        if (do_rays && sd->have_rays &&
-            embree_trace(emb, &sd->sc, c->eq, &sd->rays, a->base.threads,
-                         r->emb_mrays, &r->emb_commit_ms) != 0)
-            goto done;
-        if (do_rays && sd->have_rays) {
+        if (b->do_rays && b->sd->have_rays &&
+            embree_trace(b->emb, &b->sd->sc, b->c->eq, &b->sd->rays,
+                         a->base.threads, r->emb_mrays,
+                         &r->emb_commit_ms) != 0)
+            return -1;
+        if (b->do_rays && b->sd->have_rays) {
+            const scene_data *sd = b->sd;
             const size_t n[3] = {sd->rays.n_primary, sd->rays.n_ao,
                                  sd->rays.n_diffuse};
             for (s = 0; s < 3; s++)
@@ -347,19 +385,40 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
                                       : NAN;
         }
     }
-    if (do_rays && sd->have_rays) {
-        if (lib_trace(sd, bvh, a->base.threads, repeat, a->base.ci,
+    if (b->do_rays && b->sd->have_rays) {
+        if (lib_trace(b->sd, b->bvh, a->base.threads, repeat, a->base.ci,
                       a->base.ct, r) != 0)
-            goto done;
-        r->total_mrays = total_mrays(sd, r->mrays);
+            return -1;
+        r->total_mrays = total_mrays(b->sd, r->mrays);
     }
-    rc = 0;
-done:
-    atrbvh_bvh_free(bvh);
-    atrbvh_device_close(dev);
-    free(tot);
-    free(stg);
-    free(use);
+    return 0;
+}
+
+void bench_cfg_close(bench_cfg *b)
+{
+    atrbvh_bvh_free(b->bvh);
+    b->bvh = NULL;
+    atrbvh_device_close(b->dev);
+    b->dev = NULL;
+    free(b->tot);
+    free(b->stg);
+    free(b->use);
+    b->tot = b->stg = b->use = NULL;
+}
+
+int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
+                     const config *c, embree_ctx *emb, int do_rays,
+                     unsigned repeat, int warmup, int binary, row *r)
+{
+    bench_cfg b;
+    unsigned k;
+    int rc = bench_cfg_open(&b, a, sd, spec, c, emb, do_rays, repeat, warmup,
+                            binary, r);
+    for (k = 0; rc == 0 && k < repeat; k++)
+        rc = bench_cfg_time(&b, k);
+    if (rc == 0)
+        rc = bench_cfg_finish(&b);
+    bench_cfg_close(&b);
     return rc;
 }
 

@@ -27,8 +27,11 @@ int bench_sweep(bench_args *a, FILE *csv)
     int si, rc = CLI_OK;
     embree_ctx *emb = NULL;
     row *rows = malloc((size_t)a->nconfigs * sizeof *rows);
-    if (!rows) {
+    bench_cfg *cfgs = malloc((size_t)a->nconfigs * sizeof *cfgs);
+    if (!rows || !cfgs) {
         cli_error("out of memory");
+        free(rows);
+        free(cfgs);
         return CLI_FAIL;
     }
     table_header(stdout, a);
@@ -36,6 +39,7 @@ int bench_sweep(bench_args *a, FILE *csv)
         emb = embree_open(a->base.threads);
         if (!emb) {
             free(rows);
+            free(cfgs);
             return CLI_FAIL;
         }
     }
@@ -83,15 +87,31 @@ int bench_sweep(bench_args *a, FILE *csv)
         }
         printf("\n");
         fflush(stdout);
-        for (i = 0; i < a->nconfigs; i++) {
-            int r = bench_run_config(a, &sd, a->scenes[si], &a->configs[i], emb,
-                               a->rays, a->repeat, 1, 1, &rows[n]);
-            if (r < 0) {
-                rc = CLI_FAIL;
-                break;
-            }
-            if (r == 0)
-                n++;
+        {
+            /* Every configuration opened and warmed up, then the timed
+             * builds in turns - round k builds each configuration once,
+             * in the list's order - so that a drift of the machine's
+             * speed during the scene's minute falls on every
+             * configuration alike and the ratios between them (to
+             * Embree's rows above all) hold; then each row. */
+            unsigned k;
+            int opened = 0;
+            for (i = 0; i < a->nconfigs && rc == CLI_OK; i++, opened++)
+                if (bench_cfg_open(&cfgs[i], a, &sd, a->scenes[si],
+                                   &a->configs[i], emb, a->rays, a->repeat,
+                                   1, 1, &rows[i]) != 0)
+                    rc = CLI_FAIL;
+            for (k = 0; k < a->repeat && rc == CLI_OK; k++)
+                for (i = 0; i < a->nconfigs && rc == CLI_OK; i++)
+                    if (bench_cfg_time(&cfgs[i], k) != 0)
+                        rc = CLI_FAIL;
+            for (i = 0; i < a->nconfigs && rc == CLI_OK; i++)
+                if (bench_cfg_finish(&cfgs[i]) != 0)
+                    rc = CLI_FAIL;
+            for (i = 0; i < opened; i++)
+                bench_cfg_close(&cfgs[i]);
+            if (rc == CLI_OK)
+                n = a->nconfigs;
         }
         if (rc != CLI_OK) {
             bench_free_scene(&sd);
@@ -122,5 +142,6 @@ int bench_sweep(bench_args *a, FILE *csv)
     }
     embree_close(emb);
     free(rows);
+    free(cfgs);
     return rc;
 }
