@@ -114,9 +114,10 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
                      unsigned repeat, int warmup, int binary, row *r);
 /* The same in steps, so that the timed builds of several configurations
  * can take turns (sweep.c): open (the device, the warm-up build), time
- * build k (0 .. repeat-1), finish (the row: medians, the binary SAH,
- * rays), close (always, also after an error).  Each step: 0, or -1 after
- * an error line. */
+ * build k (0 .. repeat-1; warm: right after one more untimed build, so
+ * that it finds the caches as a build repeated back to back does),
+ * finish (the row: medians, the binary SAH, rays), close (always, also
+ * after an error).  Each step: 0, or -1 after an error line. */
 typedef struct bench_cfg {
     const bench_args *a;
     scene_data *sd;
@@ -136,7 +137,7 @@ int bench_cfg_open(bench_cfg *b, const bench_args *a, scene_data *sd,
                    const char *spec, const config *c, embree_ctx *emb,
                    int do_rays, unsigned repeat, int warmup, int binary,
                    row *r);
-int bench_cfg_time(bench_cfg *b, unsigned k);
+int bench_cfg_time(bench_cfg *b, unsigned k, int warm);
 int bench_cfg_finish(bench_cfg *b);
 void bench_cfg_close(bench_cfg *b);
 /* Threads the builds use: --threads, else OpenMP's maximum. */

@@ -199,7 +199,8 @@ static void row_init(row *r, const config *c, const char *spec,
 
 /* One build of the configuration into b->bvh (the previous one freed),
  * with its peak bytes; for the library also its CPU use.  Timed builds
- * record their times at index k; k < 0: untimed (the warm-up). */
+ * record their times at index k; k < 0: untimed, the first warm-up
+ * (Embree's with its memory monitor) at k = -1, a later one at k = -2. */
 static int cfg_build(bench_cfg *b, int k)
 {
     row *r = b->r;
@@ -212,13 +213,13 @@ static int cfg_build(bench_cfg *b, int k)
          * allocation), the timed builds without it. */
         if (embree_build(b->emb, &b->sd->sc, b->c->eq,
                          b->a->base.max_leaf_size, b->a->base.ci,
-                         b->a->base.ct, k < 0, &res) != 0)
+                         b->a->base.ct, k == -1, &res) != 0)
             return -1;
         b->bvh = res.bvh;
-        if (k < 0) {
+        if (k == -1) {
             r->peak = res.peak_bytes;
             r->references = res.references;
-        } else {
+        } else if (k >= 0) {
             b->tot[k] = res.build_ms;
         }
         return 0;
@@ -312,8 +313,10 @@ int bench_cfg_open(bench_cfg *b, const bench_args *a, scene_data *sd,
     return warmup ? cfg_build(b, -1) : 0;
 }
 
-int bench_cfg_time(bench_cfg *b, unsigned k)
+int bench_cfg_time(bench_cfg *b, unsigned k, int warm)
 {
+    if (warm && cfg_build(b, -2) != 0)
+        return -1;
     return cfg_build(b, (int)k);
 }
 
@@ -415,7 +418,7 @@ int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
     int rc = bench_cfg_open(&b, a, sd, spec, c, emb, do_rays, repeat, warmup,
                             binary, r);
     for (k = 0; rc == 0 && k < repeat; k++)
-        rc = bench_cfg_time(&b, k);
+        rc = bench_cfg_time(&b, k, 0);
     if (rc == 0)
         rc = bench_cfg_finish(&b);
     bench_cfg_close(&b);

@@ -93,7 +93,13 @@ int bench_sweep(bench_args *a, FILE *csv)
              * in the list's order - so that a drift of the machine's
              * speed during the scene's minute falls on every
              * configuration alike and the ratios between them (to
-             * Embree's rows above all) hold; then each row. */
+             * Embree's rows above all) hold; then each row.  Each timed
+             * build comes right after an untimed one of the same
+             * configuration: a build repeated back to back finds its
+             * working set in the caches, one after other configurations'
+             * builds does not, and that costs ours more than Embree's
+             * (bunny LBVH 15-25%), so without it the turns would measure
+             * the caches as much as the builders. */
             unsigned k;
             int opened = 0;
             for (i = 0; i < a->nconfigs && rc == CLI_OK; i++, opened++)
@@ -103,7 +109,7 @@ int bench_sweep(bench_args *a, FILE *csv)
                     rc = CLI_FAIL;
             for (k = 0; k < a->repeat && rc == CLI_OK; k++)
                 for (i = 0; i < a->nconfigs && rc == CLI_OK; i++)
-                    if (bench_cfg_time(&cfgs[i], k) != 0)
+                    if (bench_cfg_time(&cfgs[i], k, 1) != 0)
                         rc = CLI_FAIL;
             for (i = 0; i < a->nconfigs && rc == CLI_OK; i++)
                 if (bench_cfg_finish(&cfgs[i]) != 0)

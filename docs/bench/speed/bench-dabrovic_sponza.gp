@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.92269658:74.0710527]
+set xrange [4.2748819:71.4038939]
 set xtics (5, 10, 20, 50)
 set yrange [63.7338549:116.665389]
 unset label
-set label 'LBVH' at 4.35136309,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 10.399671,75.98974 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 12.0323753,73.4949364 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 19.9288277,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 20.4988174,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 30.639046,72.4804197 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 41.2257775,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 26.3310527,67.3811972 left font ',8' noenhanced front
-set label 'embree_low' at 7.08303593,110.413633 left font ',8' noenhanced front
-set label 'embree_medium' at 19.342201,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 13.0694343,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.55461613,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 12.7781838,71.690965 left font ',8' noenhanced front
+set label 'LBVH' at 5.78404841,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 10.8912628,75.98974 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 12.6887387,73.4949364 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 19.9673916,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 21.7203728,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 26.4203244,68.0489424 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 40.7253512,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 16.4453326,68.7352597 left font ',8' noenhanced front
+set label 'embree_low' at 6.93224815,110.413633 left font ',8' noenhanced front
+set label 'embree_medium' at 18.245198,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 12.7557363,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.387605,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 13.5760017,71.690965 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

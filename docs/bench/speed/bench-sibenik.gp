@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [4.57248132:78.9666971]
-set xtics (5, 10, 20, 50)
+set xrange [5.01899499:81.8254363]
+set xtics (10, 20, 50)
 set yrange [48.0282344:83.2612717]
 unset label
-set label 'LBVH' at 6.01677779,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 16.420377,56.2198439 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 18.4967224,54.7380871 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 14.7358232,52.3546775 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 24.0003183,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 35.2842415,50.7535261 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 44.7400423,52.3325777 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 22.9931205,51.3573403 left font ',8' noenhanced front
-set label 'embree_low' at 6.42490337,79.0998893 left font ',8' noenhanced front
-set label 'embree_medium' at 9.64020452,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 12.0108474,53.5332947 left font ',8' noenhanced front
-set label 'LBVH/cl' at 8.0885199,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 11.0732425,51.1767761 left font ',8' noenhanced front
+set label 'LBVH' at 5.538673,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 17.2574089,56.2198439 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 13.6530672,53.8367768 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 14.151092,52.3546775 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 19.6063133,51.8322745 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 35.298837,50.7535261 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 46.8954239,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 19.6615843,50.4560301 left font ',8' noenhanced front
+set label 'embree_low' at 7.56164745,79.0998893 left font ',8' noenhanced front
+set label 'embree_medium' at 21.9386422,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 22.5048434,56.4830374 left font ',8' noenhanced front
+set label 'LBVH/cl' at 7.02429947,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 25.1503764,52.9793966 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
