@@ -389,14 +389,12 @@ typedef struct hier_tree {
     uint sizes; /* an LBVH: the collapse sizes too */
 } hier_tree;
 
-/* Leaf position i as a finished subtree: its box gathered from the
- * primitive boxes, its count, cost and (an LBVH) size, written. */
-static HIER_INLINE void hier_leaf(const hier_tree *t, long i,
-                                  __global const atrbvh_box *prim_boxes,
-                                  __global const uint *order, hier_sub *out)
+/* Leaf position i as a finished subtree: its box b (its primitive's),
+ * count, cost and (an LBVH) size, written. */
+static HIER_INLINE void hier_leaf(const hier_tree *t, long i, atrbvh_box b,
+                                  hier_sub *out)
 {
     const uint id = (uint)(t->n - 1 + i);
-    const atrbvh_box b = prim_boxes[order[i]];
     const double co = atrbvh_refit_leaf_cost(&t->p, b);
     const uint size = 1u | ATRBVH_SIZE_LEAF;
     /* (results in registers first, then the stores: PoCL's CPU code has
@@ -493,7 +491,7 @@ static HIER_INLINE void hier_merge(const hier_tree *t,
             }
         }
     }
-    hier_leaf(t, n - 1, prim_boxes, order, &carry);
+    hier_leaf(t, n - 1, prim_boxes[order[n - 1]], &carry);
     while (sp > 0u) {
         sp--;
         if (sp > 0u)
@@ -538,10 +536,16 @@ static HIER_INLINE void hier_pass(
     out = over + (size_t)b * ATRBVH_CL_HIER_OVER;
     lo = (long)((ulong)(t.n - 1) * (ulong)b / (ulong)blocks);
     hi = (long)((ulong)(t.n - 1) * (ulong)(b + 1u) / (ulong)blocks);
+    /* The block's leaf boxes gathered first, in a loop of their own: its
+     * random reads are in flight together (PoCL's prefetch() is a no-op,
+     * and the leaf loop below, with them, stalled on each: half of this
+     * kernel's time on conference); the loop then reads them in order. */
+    for (s = lo; s < hi; s++)
+        box[t.n - 1 + s] = prim_boxes[order[s]];
     for (s = lo; s < hi; s++) {
         int d = atrbvh_karras_delta(keys, t.n, s, s + 1);
         leaf_prim[s] = a.has_ids ? ids[order[s]] : order[s];
-        hier_leaf(&t, s, prim_boxes, order, &carry);
+        hier_leaf(&t, s, box[t.n - 1 + s], &carry);
         while (sp > 0u && st[sp - 1u].d > d) {
             sp--;
             /* (the bottom entry is a prefix minimum, already out) */
