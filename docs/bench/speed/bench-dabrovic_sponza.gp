@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [4.2748819:71.4038939]
+set xrange [3.04718267:50.735563]
 set xtics (5, 10, 20, 50)
-set yrange [63.7338549:116.665389]
+set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 5.78404841,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 10.8912628,75.98974 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 12.6887387,73.4949364 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 19.9673916,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 21.7203728,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 26.4203244,68.0489424 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 40.7253512,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 16.4453326,68.7352597 left font ',8' noenhanced front
-set label 'embree_low' at 6.93224815,110.413633 left font ',8' noenhanced front
-set label 'embree_medium' at 18.245198,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 12.7557363,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 4.387605,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 13.5760017,71.690965 left font ',8' noenhanced front
+set label 'LBVH' at 3.99558788,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 13.1802716,75.98974 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 11.6470648,73.4949382 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 16.2947774,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 19.2660639,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 21.7044547,68.0489447 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 28.9555212,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 14.422114,68.7352597 left font ',8' noenhanced front
+set label 'embree_low' at 5.58856706,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 21.4297825,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 15.132275,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.84851775,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 11.707954,71.690965 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
