@@ -389,8 +389,8 @@ typedef struct hier_tree {
     uint sizes; /* an LBVH: the collapse sizes too */
 } hier_tree;
 
-/* Leaf position i as a finished subtree: its box b (its primitive's),
- * count, cost and (an LBVH) size, written. */
+/* Leaf position i as a finished subtree, its box b (its primitive's)
+ * already in t->box: its count, cost and (an LBVH) size, written. */
 static HIER_INLINE void hier_leaf(const hier_tree *t, long i, atrbvh_box b,
                                   hier_sub *out)
 {
@@ -401,7 +401,6 @@ static HIER_INLINE void hier_leaf(const hier_tree *t, long i, atrbvh_box b,
      * one address space, so a value read back after a global store would
      * be loaded again) */
     t->count[id] = 1u;
-    t->box[id] = b;
     t->cost[id] = co;
     if (t->sizes)
         t->size[id] = size;
@@ -491,7 +490,8 @@ static HIER_INLINE void hier_merge(const hier_tree *t,
             }
         }
     }
-    hier_leaf(t, n - 1, prim_boxes[order[n - 1]], &carry);
+    t->box[2 * n - 2] = prim_boxes[order[n - 1]];
+    hier_leaf(t, n - 1, t->box[2 * n - 2], &carry);
     while (sp > 0u) {
         sp--;
         if (sp > 0u)
