@@ -77,7 +77,8 @@ for part in "$@"; do
         # shellcheck disable=SC2086
         "$TOOL" bench $SCENES --no-rays --repeat 5 --threads 2 \
             --configs lbvh,atrbvh:7:1,atrbvh:9:1,atrbvh:6:2,atrbvh:9:2,atrbvh:16:3,trbvh:7:3,fast,balanced,high,embree,lbvh@opencl,atrbvh:9:2@opencl \
-            --csv "$OUT/speed.csv" --plot "$OUT/speed" >"$OUT/speed.txt"
+            --csv "$OUT/speed.csv" --builds "$OUT/speed-builds.csv" \
+            --plot "$OUT/speed" >"$OUT/speed.txt"
         ALONE=$(dirname "$TOOL")/embree-alone
         if [ -x "$ALONE" ]; then
             for s in $SCENES; do "$ALONE" "$s" 2 5; done >"$OUT/embree-alone.txt"

@@ -2,7 +2,8 @@
 """speed_tables.py OUT DOC - the build-speed section of docs/benchmarks.md.
 
 Reads what `sh docs/run_benchmarks.sh speed` wrote into OUT (speed.csv,
-speed-scaling.csv, embree-alone.txt, speed-machine.txt) and rewrites the
+speed-scaling.csv, embree-alone.txt, speed-machine.txt, and
+speed-builds.csv when there) and rewrites the
 part of DOC between <!-- BEGIN SPEED --> and <!-- END SPEED -->: the
 ratios of build times to Embree's per scene against the goals of issue 11,
 the standalone Embree cross-check, the per-stage nanoseconds per triangle,
@@ -103,6 +104,43 @@ def main():
             ratio_cell(g("TRBVH(7,3)"), me, 1.5),
             ratio_cell(g("ATRBVH(16,3)"), me, 99), lo, me))
     L.append("")
+    bpath = os.path.join(out, "speed-builds.csv")
+    if os.path.exists(bpath):
+        # Turn k's timed build of ours over turn k's of Embree's: the two
+        # ran seconds apart, so the range over the turns is the ratio's
+        # spread within this run (the table above takes medians).
+        turn = {}
+        for b in load(bpath):
+            if b["kind"] != "timed":
+                continue
+            lab = b["configuration"]
+            if lab.endswith("/cl"):
+                lab = lab[:-3] + "@opencl"
+            turn.setdefault((sname(b["scene"]), lab), {})[b["turn"]] = \
+                float(b["build_ms"])
+
+        def spread(s, num, den):
+            a, d = turn.get((s, num), {}), turn.get((s, den), {})
+            v = sorted(a[k] / d[k] for k in a if k in d and d[k] > 0)
+            if not v:
+                return "-"
+            return "%.2f-%.2f" % (v[0], v[-1])
+        L.append("Each goal ratio turn by turn (timed build k over the other "
+                 "side's timed build k, seconds apart), lowest to highest "
+                 "over the turns of this run (`speed-builds.csv`, "
+                 "`atrbvh bench --builds`):")
+        L.append("")
+        L.append("| scene | LBVH / low | ATRBVH(9,2) / medium | TRBVH(7,3) / "
+                 "medium | LBVH OpenCL / CPU | ATRBVH(9,2) OpenCL / CPU |")
+        L.append("|---|---:|---:|---:|---:|---:|")
+        for s in scenes:
+            L.append("| %s | %s | %s | %s | %s | %s |" % (
+                s, spread(s, "LBVH", "embree_low"),
+                spread(s, "ATRBVH(9,2)", "embree_medium"),
+                spread(s, "TRBVH(7,3)", "embree_medium"),
+                spread(s, "LBVH@opencl", "LBVH"),
+                spread(s, "ATRBVH(9,2)@opencl", "ATRBVH(9,2)")))
+        L.append("")
     if any(lab.endswith("@opencl") for (_, lab) in by):
         L.append("### OpenCL on PoCL against the CPU backend (same tree, same "
                  "run; device opened once, outside the timing; goal <= 1.5)")

@@ -106,6 +106,62 @@ assert abs(float(lb["ray_cost_pct"]) -
            100 * float(lb["ray_cost"]) / float(ref["ray_cost"])) < 1e-9
 PY
 
+# The timed builds take turns (atrbvh(1) BENCH), seen in --builds: per
+# scene every configuration's warm-up in the list's order, then round k
+# builds each once, in that order, each timed build right after an
+# untimed one of the same configuration, then the binary trees; seq counts
+# 1, 2, ...; each configuration's build_ms in --csv is the median of its
+# timed rows (repeat 3: the middle one).
+checks=$((checks + 1))
+run 0 bench "$SCENE" builtin:city:2000 --repeat 3 --no-rays \
+    --configs lbvh,atrbvh:9:2,embree_low,atrbvh:5:1 --csv "$T/t.csv" \
+    --builds "$T/builds.csv" &&
+    python3 - "$T/t.csv" "$T/builds.csv" <<'PY' || fail "bench --builds: turn order"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1], newline="")))
+log = list(csv.DictReader(open(sys.argv[2], newline="")))
+assert [int(b["seq"]) for b in log] == list(range(1, len(log) + 1)), "seq"
+def label(r):
+    m = r["method"]
+    if m.startswith("embree"):
+        return m
+    cl = "/cl" if r["backend"] == "opencl" else ""
+    if m == "lbvh":
+        return "LBVH" + cl
+    return "%s(%s,%s)%s" % (m.upper(), r["treelet_size"], r["rounds"], cl)
+scenes = []
+for r in rows:
+    if r["scene"] not in scenes:
+        scenes.append(r["scene"])
+at = 0
+for s in scenes:
+    cfgs = [label(r) for r in rows if r["scene"] == s]
+    assert len(cfgs) >= 4 and cfgs[:2] == ["LBVH", "ATRBVH(9,2)"], cfgs
+    want = [(c, "warmup", "") for c in cfgs]
+    for k in range(3):
+        for c in cfgs:
+            want += [(c, "untimed", ""), (c, "timed", str(k))]
+    want += [(c, "binary", "") for c in cfgs]
+    got = [(b["configuration"], b["kind"], b["turn"])
+           for b in log[at:at + len(want)]]
+    assert got == want, (s, got, want)
+    assert all(b["scene"] == s for b in log[at:at + len(want)]), s
+    for r in rows:
+        if r["scene"] != s:
+            continue
+        t = sorted(float(b["build_ms"]) for b in log[at:at + len(want)]
+                   if b["configuration"] == label(r) and b["kind"] == "timed")
+        assert len(t) == 3 and repr(t[1]) == repr(float(r["build_ms"])), \
+            (s, label(r), t, r["build_ms"])
+        assert repr(t[0]) == repr(float(r["build_min_ms"])), (t, r["build_min_ms"])
+    at += len(want)
+assert at == len(log), "%d rows past the scenes" % (len(log) - at)
+PY
+# --builds and --csv on the same file: a usage error, nothing written
+run 2 bench "$SCENE" --repeat 1 --no-rays --configs lbvh --csv "$T/same.csv" \
+    --builds "$T/same.csv" && { [ ! -e "$T/same.csv" ] || fail "--builds = --csv wrote $T/same.csv"; }
+checks=$((checks + 1))
+
 # --methods x --treelet x --rounds, no rays
 run 0 bench "$SCENE" --repeat 1 --no-rays --methods atrbvh,lbvh --treelet 5,7 \
     --rounds 1,2 --csv "$T/m.csv" &&

@@ -2,9 +2,10 @@
 # speed.sh - the build-speed section of docs/benchmarks.md end to end on a
 # tiny scene: tools/embree-alone (the standalone rtcBuildBVH timing) prints
 # one positive median per Embree quality, and docs/speed_tables.py turns a
-# bench CSV, the scaling CSV and that output into the section, leaving the
-# rest of the document as it was, with every ratio and ns/triangle cell
-# recomputed here from the CSV.  Skipped without Embree or python3.
+# bench CSV, its --builds log, the scaling CSV and that output into the
+# section, leaving the rest of the document as it was, with every ratio,
+# per-turn range and ns/triangle cell recomputed here from the CSVs.
+# Skipped without Embree or python3.
 # Run by `make check` with ATRBVH_BUILDDIR and ATRBVH_SRCDIR set.
 
 # shellcheck source-path=SCRIPTDIR source=common.sh
@@ -39,9 +40,9 @@ checks=$((checks + 1))
     fail "embree-alone accepted an unknown scene"
 
 # ------------------------------------------------- the CSVs and the doc
-run 0 bench "$SCENE" --no-rays --repeat 1 --threads 2 \
+run 0 bench "$SCENE" --no-rays --repeat 2 --threads 2 \
     --configs lbvh,atrbvh:9:2,atrbvh:16:3,trbvh:7:3,embree \
-    --csv "$OUT/speed.csv"
+    --csv "$OUT/speed.csv" --builds "$OUT/speed-builds.csv"
 run 0 bench --scaling builtin:sphere --configs lbvh --threads 2 \
     --repeat 1 --sizes 60000,120000 --csv "$OUT/speed-scaling.csv"
 printf 'date: test\nload before: 0 0 0\n' >"$OUT/speed-machine.txt"
@@ -86,6 +87,20 @@ n = float(r["triangles"])
 stages = ["bounds", "morton", "sort", "hierarchy", "refit", "optimise", "collapse", "layout"]
 want = "| %s | LBVH | %.0f | %s |" % (S, lb * 1e6 / n, " | ".join("%.0f" % (float(r[s + "_ms"]) * 1e6 / n) for s in stages))
 assert want in text, want
+# the per-turn ratios: turn k's timed builds, lowest to highest
+turns = {}
+for b in csv.DictReader(open(os.path.join(out, "speed-builds.csv"))):
+    if b["kind"] == "timed":
+        turns.setdefault(b["configuration"], {})[b["turn"]] = float(b["build_ms"])
+def span(a, d):
+    v = sorted(turns[a][k] / turns[d][k] for k in turns[a])
+    assert len(v) == 2, v
+    return "%.2f-%.2f" % (v[0], v[-1])
+rows_t = [l for l in text.splitlines() if l.startswith("| %s | " % S) and "-" in l.split("|")[2]]
+assert rows_t, "no per-turn row"
+cells = [c.strip() for c in rows_t[0].strip("|").split("|")]
+assert cells[1:4] == [span("LBVH", "embree_low"), span("ATRBVH(9,2)", "embree_medium"),
+                      span("TRBVH(7,3)", "embree_medium")], (cells, turns)
 # the growth exponent from the two scaling points
 sc = [x for x in csv.DictReader(open(os.path.join(out, "speed-scaling.csv"))) if x["method"] == "lbvh"]
 assert len(sc) == 2, sc

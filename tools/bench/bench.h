@@ -62,6 +62,13 @@ typedef struct row {
     double box_per_ray[4], tri_per_ray[4], ray_cost, cost_pct;
 } row;
 
+/* --builds: every build the bench runs, a CSV row each, in the order
+ * they ran (run.c's bench_log_build). */
+typedef struct bench_log {
+    FILE *f;           /* NULL: no log */
+    unsigned long seq; /* builds logged so far */
+} bench_log;
+
 typedef struct bench_args {
     const char *scenes[MAX_SCENES];
     int nscenes;
@@ -70,7 +77,8 @@ typedef struct bench_args {
     atrbvh_build_options base;
     unsigned repeat, width, height, viewpoints, spp;
     int rays;
-    const char *csv, *plot;
+    const char *csv, *plot, *builds;
+    bench_log *log; /* the --builds file (main.c) */
     int scaling;
     size_t sizes[MAX_SIZES];
     int nsizes;
@@ -152,6 +160,9 @@ void csv_header(FILE *f);
 void csv_row(FILE *f, const bench_args *a, const row *r);
 void csv_scaling_header(FILE *f);
 void csv_scaling_row(FILE *f, const char *base, const row *w, size_t copies);
+void csv_build_header(FILE *f);
+void csv_build_row(bench_log *log, const row *r, const char *label,
+                   const char *kind, int turn, double ms);
 
 /* tables.c */
 void table_header(FILE *f, const bench_args *a);

@@ -170,3 +170,30 @@ void csv_scaling_row(FILE *f, const char *base, const row *w, size_t copies)
     put_double(f, (double)w->peak / (double)w->bvh_bytes);
     fputc('\n', f);
 }
+
+/* --builds: one row per build, in the order the bench ran them (atrbvh(1),
+ * BENCH): seq from 1; kind warmup (a configuration's first build), untimed
+ * (the build right before each timed one), timed (turn 0 .. repeat-1) or
+ * binary (the binary tree's SAH: collapse off, Embree leaf size 1);
+ * build_ms the build's wall time, as the tables' (the library's
+ * build_ms, Embree's the primitive boxes and rtcBuildBVH). */
+void csv_build_header(FILE *f)
+{
+    fputs("seq,scene,triangles,configuration,kind,turn,build_ms\n", f);
+}
+
+void csv_build_row(bench_log *log, const row *r, const char *label,
+                   const char *kind, int turn, double ms)
+{
+    FILE *f = log->f;
+    fprintf(f, "%lu,", ++log->seq);
+    put_csv_string(f, r->scene);
+    fprintf(f, ",%zu,", r->triangles);
+    put_csv_string(f, label);
+    fprintf(f, ",%s,", kind);
+    if (turn >= 0)
+        fprintf(f, "%d", turn);
+    fputc(',', f);
+    put_double(f, ms);
+    fputc('\n', f);
+}

@@ -247,7 +247,7 @@ static int on_quality(const char *cmd, const cli_opt *o, const char *v,
     return 0;
 }
 
-#define BENCH_OPTS (24 + RAYS_CAMERA_OPTS)
+#define BENCH_OPTS (25 + RAYS_CAMERA_OPTS)
 static void bench_opts(bench_cl *b, cli_opt *table)
 {
     bench_args *a = &b->a;
@@ -313,6 +313,11 @@ static void bench_opts(bench_cl *b, cli_opt *table)
         {.name = "--csv", .kind = CLI_OPT_STRING, .arg = "FILE",
          .dest = &a->csv,
          .help = "one row per configuration (columns: atrbvh(1))"},
+        {.name = "--builds", .kind = CLI_OPT_STRING, .arg = "FILE",
+         .dest = &a->builds,
+         .help = "one row per build, in the order they ran\n"
+                 "(warm-up, untimed, timed in turns, binary;\n"
+                 "columns: atrbvh(1))"},
         {.name = "--plot", .kind = CLI_OPT_STRING, .arg = "DIR",
          .dest = &a->plot, .help = "gnuplot data, scripts, PNG and SVG plots "
                                    "into DIR"},
@@ -364,7 +369,8 @@ int cli_bench(int argc, char **argv)
     const cli_opt *tables[2];
     int rc, k, npos;
     FILE *csv = NULL;
-    cli_out csv_out;
+    cli_out csv_out, log_out;
+    static bench_log builds_log;
     atrbvh_backend be = ATRBVH_BACKEND_CPU;
     if ((rc = cli_help_or_version(argc, argv, bench_help)) >= 0)
         return rc;
@@ -529,10 +535,30 @@ int cli_bench(int argc, char **argv)
         if (!ap->scaling)
             csv_header(csv);
     }
+    memset(&builds_log, 0, sizeof builds_log);
+    ap->log = &builds_log;
+    if (ap->builds) {
+        if (ap->csv && (strcmp(ap->csv, ap->builds) == 0 ||
+                        cli_out_same_file(ap->csv, ap->builds))) {
+            if (csv)
+                cli_out_abort(&csv_out);
+            return cli_usage("bench", "--builds and --csv name the same "
+                             "file: %s", ap->builds);
+        }
+        builds_log.f = cli_out_open(ap->builds, &log_out);
+        if (!builds_log.f) {
+            if (csv)
+                cli_out_abort(&csv_out);
+            return CLI_FAIL;
+        }
+        csv_build_header(builds_log.f);
+    }
     if (ap->plot && mkdir(ap->plot, 0777) != 0 && errno != EEXIST) {
         cli_error("%s: %s", ap->plot, strerror(errno));
         if (csv)
             cli_out_abort(&csv_out);
+        if (builds_log.f)
+            cli_out_abort(&log_out);
         return CLI_FAIL;
     }
     memtrack_install();
@@ -543,6 +569,13 @@ int cli_bench(int argc, char **argv)
             cli_out_abort(&csv_out); /* nothing half written */
         else if (cli_out_commit(&csv_out) != 0)
             rc = CLI_FAIL;
+    }
+    if (builds_log.f) {
+        if (rc != CLI_OK)
+            cli_out_abort(&log_out);
+        else if (cli_out_commit(&log_out) != 0)
+            rc = CLI_FAIL;
+        builds_log.f = NULL;
     }
     return rc;
 }

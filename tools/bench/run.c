@@ -197,6 +197,29 @@ static void row_init(row *r, const config *c, const char *spec,
     r->sah_binary = NAN;
 }
 
+/* A build into the --builds log, if there is one: kind from k as
+ * cfg_build's (-1 warmup, -2 untimed, k >= 0 timed in turn k), or
+ * "binary" for k < -2.  The label is the tables' (the library's sizes
+ * and rounds as built). */
+static void log_build(const bench_cfg *b, int k, const atrbvh_stats *st,
+                      double ms)
+{
+    char label[64];
+    if (!b->a->log || !b->a->log->f)
+        return;
+    if (st)
+        config_label(b->c, st->treelet_size, st->rounds, label,
+                     sizeof label);
+    else
+        config_label(b->c, 0, 0, label, sizeof label);
+    csv_build_row(b->a->log, b->r, label,
+                  k >= 0     ? "timed"
+                  : k == -1  ? "warmup"
+                  : k == -2  ? "untimed"
+                             : "binary",
+                  k, ms);
+}
+
 /* One build of the configuration into b->bvh (the previous one freed),
  * with its peak bytes; for the library also its CPU use.  Timed builds
  * record their times at index k; k < 0: untimed, the first warm-up
@@ -216,6 +239,7 @@ static int cfg_build(bench_cfg *b, int k)
                          b->a->base.ct, k == -1, &res) != 0)
             return -1;
         b->bvh = res.bvh;
+        log_build(b, k, NULL, res.build_ms);
         if (k == -1) {
             r->peak = res.peak_bytes;
             r->references = res.references;
@@ -238,6 +262,7 @@ static int cfg_build(bench_cfg *b, int k)
         if (peak > r->peak)
             r->peak = peak;
         atrbvh_bvh_stats(b->bvh, &b->st);
+        log_build(b, k, &b->st, b->st.build_ms);
         if (k < 0)
             return 0;
         b->tot[k] = b->st.build_ms;
@@ -348,6 +373,7 @@ int bench_cfg_finish(bench_cfg *b)
             if (bench_lib_build(b->sd, &o, &bin, b->spec) != 0)
                 return -1;
             atrbvh_bvh_stats(bin, &bs);
+            log_build(b, -3, &bs, bs.build_ms);
             r->sah_binary = bs.sah;
             atrbvh_bvh_free(bin);
         }
@@ -369,6 +395,7 @@ int bench_cfg_finish(bench_cfg *b)
             if (embree_build(b->emb, &b->sd->sc, b->c->eq, 1, a->base.ci,
                              a->base.ct, 0, &bin) != 0)
                 return -1;
+            log_build(b, -3, NULL, bin.build_ms);
             bnodes = atrbvh_bvh_nodes(bin.bvh, &bn);
             r->sah_binary = atrbvh_sah(bnodes, bn, a->base.ci, a->base.ct);
             atrbvh_bvh_free(bin.bvh);
