@@ -229,18 +229,27 @@ if command -v gnuplot >/dev/null 2>&1; then
     checks=$((checks + 1))
 fi
 
-# scaling study
+# scaling study: each size's median of --repeat timed builds (builds of
+# milliseconds: never the one-build rule of the slow sizes), which the
+# --builds log lists after the size's warm-up
 run 0 bench --scaling builtin:sphere --sizes 1000,3000,9000 --configs lbvh \
-    --repeat 1 --csv "$T/s.csv" && grep -q 'N^' "$T/out" ||
+    --repeat 2 --csv "$T/s.csv" --builds "$T/sb.csv" && grep -q 'N^' "$T/out" ||
     fail "scaling: no fitted exponent: $(cat "$T/out")"
 checks=$((checks + 1))
-python3 - "$T/s.csv" <<'PY' || fail "scaling CSV check failed"
+python3 - "$T/s.csv" "$T/sb.csv" <<'PY' || fail "scaling CSV check failed"
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1], newline="")))
+log = list(csv.DictReader(open(sys.argv[2], newline="")))
 assert len(rows) == 3, len(rows)
 for r in rows:
     assert int(r["peak_bytes"]) > 0 and float(r["build_ms"]) > 0
     assert float(r["peak_bytes_per_triangle"]) > 0
+    assert r["repeat"] == "2", r["repeat"]
+    mine = [(b["kind"], b["turn"]) for b in log if b["triangles"] == r["triangles"]]
+    assert mine == [("warmup", ""), ("timed", "0"), ("timed", "1")], mine
+    t = sorted(float(b["build_ms"]) for b in log
+               if b["triangles"] == r["triangles"] and b["kind"] == "timed")
+    assert abs((t[0] + t[1]) / 2 - float(r["build_ms"])) <= 1e-9 * t[1], (t, r["build_ms"])
 PY
 
 # the scaling table has a header naming its columns

@@ -22,9 +22,10 @@
 #define MAX_CONFIGS 256
 #define MAX_SCENES 64
 #define MAX_SIZES 32
-/* Above this many triangles the scaling study times one build (after its
- * warm-up build, as at every size). */
-#define SCALING_SINGLE_RUN 2000000
+/* The scaling study times one build instead of --repeat when the warm-up
+ * build (every size has one) took longer than this: a size's builds then
+ * take seconds each, and one is a fair sample. */
+#define SCALING_SINGLE_MS 2000.0
 
 typedef struct config {
     int embree; /* 1: an Embree row (eq) */
@@ -52,6 +53,7 @@ typedef struct row {
      * (passive waiting: a sleeping thread takes none); NaN for Embree,
      * whose idle workers may spin */
     double cpu_use;
+    unsigned timed; /* timed builds the medians are of */
     double mrays[3], total_mrays;
     double emb_mrays[3], emb_commit_ms;
     double rel_pct, time_pct, sah_pct;
@@ -115,11 +117,14 @@ int bench_load_scene(const char *spec, scene_data *sd);
 void bench_free_scene(scene_data *sd);
 int bench_lib_build(const scene_data *sd, const atrbvh_build_options *o,
                     atrbvh_bvh **out, const char *spec);
-/* One configuration on one scene.  0, or -1 after an error line (an
- * OpenCL configuration without an OpenCL device is an error). */
+/* One configuration on one scene: `repeat` timed builds, or one when
+ * once_above_ms > 0 and the warm-up build took longer.  0, or -1 after
+ * an error line (an OpenCL configuration without an OpenCL device is an
+ * error). */
 int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
                      const config *c, embree_ctx *emb, int do_rays,
-                     unsigned repeat, int warmup, int binary, row *r);
+                     unsigned repeat, int warmup, int binary,
+                     double once_above_ms, row *r);
 /* The same in steps, so that the timed builds of several configurations
  * can take turns (sweep.c): open (the device, the warm-up build), time
  * build k (0 .. repeat-1; warm: right after one more untimed build, so

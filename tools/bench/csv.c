@@ -146,7 +146,7 @@ void csv_scaling_header(FILE *f)
           f);
     put_stage_names(f);
     fputs(",sah,nodes,peak_bytes,bvh_bytes,peak_bytes_per_triangle,"
-          "peak_over_bvh\n",
+          "peak_over_bvh,repeat\n",
           f);
 }
 
@@ -168,7 +168,7 @@ void csv_scaling_row(FILE *f, const char *base, const row *w, size_t copies)
     put_double(f, (double)w->peak / (double)w->triangles);
     fputc(',', f);
     put_double(f, (double)w->peak / (double)w->bvh_bytes);
-    fputc('\n', f);
+    fprintf(f, ",%u\n", w->timed);
 }
 
 /* --builds: one row per build, in the order the bench ran them (atrbvh(1),

@@ -189,8 +189,8 @@ int bench_scaling(bench_args *a, FILE *csv)
     }
     table_header(stdout, a);
     printf("# scaling: median of %u run%s after one warm-up build (one run "
-           "above %d triangles)\n",
-           a->repeat, a->repeat == 1 ? "" : "s", SCALING_SINGLE_RUN);
+           "when the warm-up took over %.0f ms)\n",
+           a->repeat, a->repeat == 1 ? "" : "s", SCALING_SINGLE_MS);
     table_scaling_header(stdout);
     if (csv)
         csv_scaling_header(csv);
@@ -220,7 +220,6 @@ int bench_scaling(bench_args *a, FILE *csv)
             }
             for (si = 0; si < a->nsizes; si++) {
                 scene_data sd;
-                int big = a->sizes[si] > SCALING_SINGLE_RUN;
                 row *w = &sr->rows[sr->n];
                 memset(&sd, 0, sizeof sd);
                 if (scaled_scene(bases[b], &base, a->sizes[si], &sd.sc,
@@ -236,7 +235,8 @@ int bench_scaling(bench_args *a, FILE *csv)
                  * per byte here: docs/stages.md), which would grow the
                  * time of the largest sizes only. */
                 if (bench_run_config(a, &sd, bases[b], c, NULL, 0,
-                                     big ? 1 : a->repeat, 1, 0, w) != 0) {
+                                     a->repeat, 1, 0, SCALING_SINGLE_MS,
+                                     w) != 0) {
                     bench_free_scene(&sd);
                     rc = CLI_FAIL;
                     break;
