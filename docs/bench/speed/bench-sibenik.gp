@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.33700379:56.3916333]
-set xtics (5, 10, 20, 50)
+set xrange [5.30929741:79.5628304]
+set xtics (10, 20, 50)
 set yrange [48.0282379:83.2612389]
 unset label
-set label 'LBVH' at 4.38187282,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 11.6099969,56.219843 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 9.56442173,53.8367777 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 16.4467857,55.9599167 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 13.231962,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 29.9611609,50.753527 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 32.088431,52.3325777 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 16.54567,51.3573403 left font ',8' noenhanced front
-set label 'embree_low' at 6.49303144,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 23.1339926,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 19.165318,53.5332959 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.30016373,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 12.8020866,52.0780873 left font ',8' noenhanced front
+set label 'LBVH' at 6.89147463,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 18.490633,55.3185336 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 13.0281416,55.6393964 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 12.5165126,54.157298 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 19.8347416,52.9793966 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 38.5272457,50.753527 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 46.3714861,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 23.345624,51.3573403 left font ',8' noenhanced front
+set label 'embree_low' at 12.0926496,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 31.2102469,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 27.7179847,56.4830355 left font ',8' noenhanced front
+set label 'LBVH/cl' at 9.89555088,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 30.1707175,52.9793966 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
