@@ -24,7 +24,8 @@ static pthread_mutex_t cl_global_lock = PTHREAD_MUTEX_INITIALIZER;
 
 const char *const atrbvh_i_cl_kernel_names[K_COUNT] = {
     "bounds_triangles", "bounds_boxes", "morton",
-    "sort_count",       "sort_scatter", "sort_buckets", "hierarchy",
+    "sort_count",       "sort_scatter", "sort_buckets", "sort_vary",
+    "hierarchy",
     "refit",            "opt_prepare",  "opt_round",     "collapse",
     "layout_top",       "layout",
     "intersect_closest", "intersect_any"};

@@ -266,8 +266,37 @@ __kernel void morton(__global const atrbvh_box *boxes, __global ulong *keys,
     }
 }
 
-/* The MSD pass's counts: block b's digits (atrbvh_sort_msd's) in
- * hist[atrbvh_sort_slot(d, b, blocks)]; the last block scans them. */
+/* A big bucket's varying bits (the host's big_buckets, cl/stages.c; the
+ * morton kernel finds the first pass's): item b of a.blocks, the OR and
+ * AND of block b of the keys from a.off, then the last block unites them
+ * (vary[2 * blocks] = OR ^ AND), as lib/cpu/sort.c's sort_big. */
+__kernel void sort_vary(__global const ulong *keys, __global ulong *vary,
+                        __global uint *sync, atrbvh_kargs_sort a)
+{
+    uint b = (uint)get_global_id(0), lo, hi, i;
+    ulong any = 0ul, all = ~0ul;
+    if (b >= a.blocks)
+        return;
+    keys += a.off;
+    atrbvh_block_range(a.n, b, a.blocks, &lo, &hi);
+    for (i = lo; i < hi; i++) {
+        any |= keys[i];
+        all &= keys[i];
+    }
+    vary[2u * b] = any;
+    vary[2u * b + 1u] = all;
+    if (last_arrival(sync, a.blocks)) {
+        for (b = 0; b < a.blocks; b++) {
+            any |= load_ulong_v(vary, 2u * b);
+            all &= load_ulong_v(vary, 2u * b + 1u);
+        }
+        vary[2u * a.blocks] = any ^ all;
+    }
+}
+
+/* The MSD pass's counts: block b's digits (atrbvh_sort_msd's) of the keys
+ * from a.off in hist[atrbvh_sort_slot(d, b, blocks)]; the last block
+ * scans them. */
 __kernel void sort_count(__global const ulong *keys, __global uint *hist,
                          __global const ulong *vary, __global uint *sync,
                          atrbvh_kargs_sort a)
@@ -276,6 +305,7 @@ __kernel void sort_count(__global const ulong *keys, __global uint *hist,
     uint c[ATRBVH_SORT_MSD_RADIX];
     if (b >= a.blocks)
         return;
+    keys += a.off;
     atrbvh_sort_msd(a.n, sort_varying(vary, a.blocks), &shift, &bits);
     for (d = 0; d < (1u << bits); d++)
         c[d] = 0u;
@@ -289,7 +319,7 @@ __kernel void sort_count(__global const ulong *keys, __global uint *hist,
 }
 
 /* The MSD pass: block b places its pairs from (src_k, src_v) into the
- * buckets in (dst_k, dst_v). */
+ * buckets in (dst_k, dst_v), both from a.off. */
 __kernel void sort_scatter(__global const ulong *src_k,
                            __global const uint *src_v, __global ulong *dst_k,
                            __global uint *dst_v, __global const uint *hist,
@@ -299,6 +329,10 @@ __kernel void sort_scatter(__global const ulong *src_k,
     uint next[ATRBVH_SORT_MSD_RADIX];
     if (b >= a.blocks)
         return;
+    src_k += a.off;
+    src_v += a.off;
+    dst_k += a.off;
+    dst_v += a.off;
     atrbvh_sort_msd(a.n, sort_varying(vary, a.blocks), &shift, &bits);
     for (d = 0; d < (1u << bits); d++)
         next[d] = hist[atrbvh_sort_slot(d, b, a.blocks)];
@@ -312,9 +346,11 @@ __kernel void sort_scatter(__global const ulong *src_k,
     }
 }
 
-/* Item d of a.buckets (the most any n-key sort has): bucket d, from
- * (tmp_k, tmp_v) into (keys, order) at the same positions (the scanned
- * counts of block 0 are where the buckets start). */
+/* Item d of a.buckets (the most any n-key sort has): bucket d of the keys
+ * from a.off, from (tmp_k, tmp_v) into (keys, order) at the same
+ * positions when a.into, else sorted in place with (keys, order) as its
+ * scratch (the scanned counts of block 0 are where the buckets start);
+ * a bucket of more than a.big keys is left to the host's big_buckets. */
 __kernel void sort_buckets(__global ulong *tmp_k, __global uint *tmp_v,
                            __global ulong *keys, __global uint *order,
                            __global const uint *hist,
@@ -329,9 +365,12 @@ __kernel void sort_buckets(__global ulong *tmp_k, __global uint *tmp_v,
     start = hist[atrbvh_sort_slot(d, 0u, a.blocks)];
     end = d + 1u < (1u << bits) ? hist[atrbvh_sort_slot(d + 1u, 0u, a.blocks)]
                                 : a.n;
-    if (end > start)
+    start += a.off;
+    end += a.off;
+    if (end > start && end - start <= a.big)
         atrbvh_sort_bucket(tmp_k + start, tmp_v + start, keys + start,
-                           order + start, end - start, 1, (int)shift);
+                           order + start, end - start, (int)a.into,
+                           (int)shift);
 }
 
 /* --------------------------------------------------------------- hierarchy */

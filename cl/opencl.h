@@ -39,6 +39,7 @@ enum {
     K_SORT_COUNT,
     K_SORT_SCATTER,
     K_SORT_BUCKETS,
+    K_SORT_VARY,
     K_HIERARCHY,
     K_REFIT,
     K_OPT_PREPARE,

@@ -252,6 +252,9 @@ static atrbvh_status cl_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
 /* The sort's blocks (the morton kernel finds the varying bits by them)
  * and the most buckets its MSD pass can make for n keys (the digit
  * itself depends on the keys: the kernels find it, atrbvh_sort_msd). */
+/* The fewest primitives whose sort looks for big buckets (big_buckets). */
+#define ATRBVH_CL_SPLIT_MIN 131072u
+
 static atrbvh_kargs_sort sort_args(const atrbvh_cl_device *c,
                                    const atrbvh_i_run *run)
 {
@@ -267,6 +270,13 @@ static atrbvh_kargs_sort sort_args(const atrbvh_cl_device *c,
     atrbvh_sort_msd(a.n, ~(atrbvh_u64)0, &shift, &bits);
     a.buckets = 1u << bits;
     a.entries = a.buckets * a.blocks; /* at most 2048 x 256 */
+    /* (a device of one compute unit splits them too: the split's passes
+     * cost about what the bucket's own first level does) */
+    a.big = a.n >= ATRBVH_CL_SPLIT_MIN
+                ? atrbvh_sort_big(a.n, c->compute_units > 2u ? c->compute_units
+                                                             : 2u)
+                : ATRBVH_U32_MAX;
+    a.into = 1;
     return a;
 }
 
@@ -305,12 +315,99 @@ static atrbvh_status st_morton(atrbvh_device *dev, atrbvh_i_run *run,
 }
 
 /* ----------------------------------------------------------------- sort */
+/* The buckets of the first pass that sort_buckets left alone, those of
+ * more than a.big keys (shared/sort.h's atrbvh_sort_big), each split by
+ * a pass of its own on all blocks, as lib/cpu/sort.c's sort_big: its
+ * varying bits (sort_vary), its digit's counts and scan (sort_count),
+ * its scatter from the scratch pair back into (B_KEYS, B_ORDER)
+ * (sort_scatter), and its sub-buckets sorted in place (sort_buckets,
+ * a.into = 0).  The host reads the first pass's digit (the morton
+ * kernel's varying bits) and its bucket starts (the scanned counts of
+ * block 0) to find them: two blocking reads, so only for builds of at
+ * least ATRBVH_CL_SPLIT_MIN primitives (conference's 331,179 keys: one
+ * bucket of 206,564 on one work-item took 6.6-8.6 ms on PoCL at 2 cores),
+ * where a wait of tens of microseconds is small beside the sort; smaller
+ * builds keep the pipeline's two waits, and their big buckets (at most
+ * a few tens of thousands of keys) stay on one work-item each. */
+static atrbvh_status split_bucket(atrbvh_cl_device *c,
+                                  const atrbvh_kargs_sort *bp,
+                                  atrbvh_error *error)
+{
+    const atrbvh_kargs_sort b = *bp;
+    CL_RUN(c, K_SORT_VARY, b.blocks, error, CL_BUF(B_KEYS_TMP), CL_BUF(B_VARY),
+           CL_BUF(B_SYNC), CL_VAL(b));
+    CL_RUN(c, K_SORT_COUNT, b.blocks, error, CL_BUF(B_KEYS_TMP),
+           CL_BUF(B_HIST), CL_BUF(B_VARY), CL_BUF(B_SYNC), CL_VAL(b));
+    CL_RUN(c, K_SORT_SCATTER, b.blocks, error, CL_BUF(B_KEYS_TMP),
+           CL_BUF(B_ORDER_TMP), CL_BUF(B_KEYS), CL_BUF(B_ORDER),
+           CL_BUF(B_HIST), CL_BUF(B_VARY), CL_VAL(b));
+    CL_RUN(c, K_SORT_BUCKETS, b.buckets, error, CL_BUF(B_KEYS),
+           CL_BUF(B_ORDER), CL_BUF(B_KEYS_TMP), CL_BUF(B_ORDER_TMP),
+           CL_BUF(B_HIST), CL_BUF(B_VARY), CL_VAL(b));
+    return ATRBVH_OK;
+}
+
+static atrbvh_status big_buckets(atrbvh_cl_device *c, const atrbvh_kargs_sort *a,
+                                 atrbvh_error *error)
+{
+    atrbvh_u64 *vary;
+    atrbvh_u32 *hist, shift, bits, d;
+    atrbvh_status st = ATRBVH_OK;
+    vary = atrbvh_i_alloc_array(2u * (size_t)a->blocks + 1u, sizeof *vary);
+    if (!vary)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, ATRBVH_CL_NO_INDEX,
+                             "OpenCL sort: cannot allocate %lu varying words",
+                             (unsigned long)(2u * a->blocks + 1u));
+    st = atrbvh_i_cl_download(c, B_VARY, vary,
+                              (2u * (size_t)a->blocks + 1u) * sizeof *vary,
+                              "varying key bits", error);
+    if (st != ATRBVH_OK) {
+        atrbvh_i_free(vary);
+        return st;
+    }
+    atrbvh_sort_msd(a->n, vary[2u * a->blocks], &shift, &bits);
+    atrbvh_i_free(vary);
+    hist = atrbvh_i_alloc_array(((size_t)1 << bits) * a->blocks, sizeof *hist);
+    if (!hist)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, ATRBVH_CL_NO_INDEX,
+                             "OpenCL sort: cannot allocate %lu bucket starts",
+                             (unsigned long)(((size_t)1 << bits) * a->blocks));
+    st = atrbvh_i_cl_download(c, B_HIST, hist,
+                              ((size_t)1 << bits) * a->blocks * sizeof *hist,
+                              "bucket starts", error);
+    for (d = 0; st == ATRBVH_OK && d < (1u << bits); d++) {
+        const atrbvh_u32 s = hist[atrbvh_sort_slot(d, 0u, a->blocks)];
+        const atrbvh_u32 e = d + 1u < (1u << bits)
+                                 ? hist[atrbvh_sort_slot(d + 1u, 0u, a->blocks)]
+                                 : a->n;
+        atrbvh_kargs_sort b = *a;
+        atrbvh_u32 sh, bi;
+        if (e - s <= a->big)
+            continue;
+        b.off = s;
+        b.n = e - s;
+        if (b.blocks > b.n)
+            b.blocks = b.n;
+        atrbvh_sort_msd(b.n, ~(atrbvh_u64)0, &sh, &bi);
+        b.buckets = 1u << bi;
+        b.entries = b.buckets * b.blocks; /* within B_HIST: fewer keys */
+        b.big = ATRBVH_U32_MAX;
+        b.into = 0;
+        /* (its pass reuses B_VARY and B_HIST: the next big bucket's
+         * start is in the host's copy, read before) */
+        st = split_bucket(c, &b, error);
+    }
+    atrbvh_i_free(hist);
+    return st;
+}
+
 /* The CPU's sort, kernel for kernel (kernels.cl): the MSD pass from
  * (keys, order) into the scratch pair (sort_count, whose last block
  * scans, and sort_scatter), then sort_buckets sorts each bucket back
- * into B_KEYS and B_ORDER.  Three launches, whatever the keys; the
- * digit is found on the device from the morton kernel's varying bits
- * (the host does not wait for them). */
+ * into B_KEYS and B_ORDER, but for big ones (big_buckets).  Three
+ * launches when no bucket can be big; the digit is found on the device
+ * from the morton kernel's varying bits (the host does not wait for
+ * them unless a bucket can be big). */
 static atrbvh_status st_sort(atrbvh_device *dev, atrbvh_i_run *run,
                              atrbvh_error *error)
 {
@@ -337,6 +434,8 @@ static atrbvh_status st_sort(atrbvh_device *dev, atrbvh_i_run *run,
     CL_RUN(c, K_SORT_BUCKETS, a.buckets, error, CL_BUF(B_KEYS_TMP),
            CL_BUF(B_ORDER_TMP), CL_BUF(B_KEYS), CL_BUF(B_ORDER),
            CL_BUF(B_HIST), CL_BUF(B_VARY), CL_VAL(a));
+    if (a.big != ATRBVH_U32_MAX)
+        return big_buckets(c, &a, error);
     return ATRBVH_OK;
 }
 

@@ -162,7 +162,9 @@ END_TEST
  * profiling times are read after the last wait).  Before: 4 blocking
  * reads (the bounds' partial boxes first) and a clFinish; before the
  * launches were fused and the waits between stages dropped, 32 launches,
- * 2 fills, 6 reads and 7 clFinish calls.  ATRBVH(9, 2) of indexed
+ * 2 fills, 6 reads and 7 clFinish calls.  (From 131072 primitives the
+ * sort reads back its bucket starts, two more waits, to split a big
+ * bucket: cl/stages.c's big_buckets; 20000 here.)  ATRBVH(9, 2) of indexed
  * triangles adds 2 launches and a fill per round, one queued read (the
  * treelet counts, which arrive with the root size) and the indices'
  * write, and no wait.  Every tree is the CPU's. */

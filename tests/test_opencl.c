@@ -625,6 +625,56 @@ START_TEST(device_sort_adversarial_keys)
 }
 END_TEST
 
+/* A bucket of the first sort pass holding most keys (atrbvh_sort_big:
+ * more than 17500 of 140000 on any device; cl/stages.c looks from 131072
+ * primitives) is split by a pass of its own on every block (big_buckets,
+ * sort_vary first), as the CPU's sort_big does, and the sort stays the
+ * CPU's bit for bit: a dense cluster of distinct keys, and the same many
+ * keys all equal (its own varying bits none); spread keys launch no
+ * split. */
+START_TEST(device_sort_splits_big_buckets)
+{
+    enum { N = 140000, DENSE = 126000 };
+    float *b = malloc(sizeof(float) * 6 * N);
+    atrbvh_build_options o;
+    tu_rng r;
+    size_t i;
+    int pass;
+    REQUIRE_DEVICE();
+    ck_assert_ptr_nonnull(b);
+    tu_rng_seed(&r, 99);
+    for (pass = 0; pass < 3; pass++) {
+        static const char *const what[3] = {"a dense cluster",
+                                            "equal keys in one bucket",
+                                            "spread keys"};
+        atrbvh_geometry g;
+        atrbvh_bvh *bvh;
+        for (i = 0; i < N; i++) {
+            const float d = pass == 0 ? 1e-3f * tu_rng_float(&r) : 0.0f;
+            /* (away from the cell planes of the first pass's digit) */
+            if (i < DENSE && pass < 2)
+                box_at(b + 6 * i, 0.3f + d, 0.6f + 1e-3f * tu_rng_float(&r) *
+                                                      (pass == 0),
+                       0.7f + d * 0.5f);
+            else
+                box_at(b + 6 * i, tu_rng_float(&r), tu_rng_float(&r),
+                       tu_rng_float(&r));
+        }
+        sorted_like_the_cpu(b, N, &r, what[pass]);
+        g = atrbvh_geometry_boxes(b, N);
+        atrbvh_build_options_init(&o);
+        o.method = ATRBVH_METHOD_LBVH;
+        o.backend = ATRBVH_BACKEND_OPENCL;
+        bvh = tu_build(&g, &o);
+        ck_assert_msg(launched(bvh, "sort_vary") == (pass < 2),
+                      "%s: sort_vary %slaunched", what[pass],
+                      pass < 2 ? "not " : "");
+        atrbvh_bvh_free(bvh);
+    }
+    free(b);
+}
+END_TEST
+
 /* The refit in the hierarchy kernel's pass (cl/kernels.cl, as
  * lib/cpu/hierarchy.c): boxes, counts, costs and an LBVH's collapse sizes
  * of every node equal to the CPU's at every stage, where the blocks'
@@ -815,6 +865,7 @@ static Suite *opencl_suite(void)
     tcase_add_test(tc, device_handle);
     tcase_add_test(tc, kernel_times_and_device);
     tcase_add_test(tc, lbvh_refit_takes_the_collapse);
+    tcase_add_test(tc, device_sort_splits_big_buckets);
     tcase_add_test(tc, hierarchy_refits_in_its_pass);
     tcase_add_test(tc, invalid_found_late);
     tcase_set_timeout(tc, 120);

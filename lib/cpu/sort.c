@@ -177,15 +177,9 @@ static void scatter_block(const uint32_t *counts, int b, int blocks,
     scatter(k, v, dk, dv, lo, hi, shift, bits, next);
 }
 
-/* A bucket is split on the threads (sort_big) when it holds more than
- * this many keys and more than a 1 / (BIG_SHARE x blocks) share of them:
- * sorted by one thread, it would leave the others idle (conference: one
- * bucket of the first pass holds 206,564 of 331,179 keys). */
-#define BIG_MIN 16384u
-#define BIG_SHARE 4u
-
 /* Bucket [s, s+len) of the first pass, in (tmp_keys, tmp_values), sorted
- * into (keys, values) on `blocks` threads: the first pass's shape again
+ * into (keys, values) on `blocks` threads (the OpenCL host's big_buckets
+ * launches the same steps: cl/stages.c): the first pass's shape again
  * over the bucket (its varying bits, an MSD digit for sub-buckets of
  * about ATRBVH_SORT_BUCKET_TARGET keys, digit counts per block, each block
  * scanning them, a stable scatter into keys), then each sub-bucket sorted
@@ -279,11 +273,9 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
 {
     const uint32_t buckets = 1u << bits;
     const int count_here = counted == NULL;
-    /* buckets of more than `big` keys: sort_big, after the others */
-    const uint32_t big = blocks > 1 && n / (BIG_SHARE * (uint32_t)blocks) >
-                                           BIG_MIN
-                             ? n / (BIG_SHARE * (uint32_t)blocks)
-                             : blocks > 1 ? BIG_MIN : ATRBVH_U32_MAX;
+    /* buckets of more than `big` keys (shared/sort.h's atrbvh_sort_big):
+     * sort_big, after the others */
+    const uint32_t big = atrbvh_sort_big(n, (uint32_t)blocks);
     atrbvh_status st = ATRBVH_OK;
     uint32_t *counts, *start;
 

@@ -54,13 +54,21 @@ typedef struct atrbvh_kargs_morton {
     atrbvh_u32 pad1;
 } atrbvh_kargs_morton;
 
-/* sort_count, sort_scatter, sort_buckets: the MSD pass and the buckets
- * (shared/sort.h; the digit is atrbvh_sort_msd's, found on the device) */
+/* sort_vary, sort_count, sort_scatter, sort_buckets: the MSD pass and the
+ * buckets (shared/sort.h; the digit is atrbvh_sort_msd's, found on the
+ * device), over the n keys from `off` of their arrays: the whole array,
+ * or one big bucket of the first pass split by a pass of its own
+ * (atrbvh_sort_big) */
 typedef struct atrbvh_kargs_sort {
     atrbvh_u32 n;
     atrbvh_u32 blocks;  /* contiguous blocks (shared/sort.h) */
     atrbvh_u32 buckets; /* the most any n keys make: sort_buckets' items */
     atrbvh_u32 entries; /* buckets * blocks: the counts' size */
+    atrbvh_u32 off;     /* the keys' first position in the arrays */
+    atrbvh_u32 big;     /* sort_buckets leaves buckets of more keys alone */
+    atrbvh_u32 into;    /* sort_buckets: 1 sorts from the first pair into
+                           the second, 0 in place (the second scratch) */
+    atrbvh_u32 pad;
 } atrbvh_kargs_sort;
 
 /* The hierarchy kernel's leftovers (cl/kernels.cl): a block's prefix
@@ -148,7 +156,7 @@ ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_bounds_record, invalid) == 96,
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_morton) == 64, kargs_morton);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_morton, n) == 48,
                      kargs_morton_n);
-ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_sort) == 16, kargs_sort);
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_sort) == 32, kargs_sort);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_tree) == 40, kargs_tree);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_tree, n) == 16,
                      kargs_tree_n);

@@ -124,6 +124,25 @@ ATRBVH_FN void atrbvh_sort_msd(atrbvh_u32 n, atrbvh_u64 varying,
     *bits = (atrbvh_u32)b;
 }
 
+/* A bucket of the first pass is split on every thread (work-item) by a
+ * pass of its own before it is sorted (lib/cpu/sort.c's sort_big, the
+ * OpenCL host's big_buckets) when it holds more than this many keys
+ * (ATRBVH_U32_MAX: never): more than ATRBVH_SORT_BIG_MIN and than a
+ * 1 / (ATRBVH_SORT_BIG_SHARE x threads) share of them.  Sorted by one
+ * thread it would leave the others idle (conference: one bucket of the
+ * first pass holds 206,564 of 331,179 keys).  The sorted order is unique,
+ * so the split changes no key's place, only who sorts it. */
+#define ATRBVH_SORT_BIG_MIN 16384u
+#define ATRBVH_SORT_BIG_SHARE 4u
+ATRBVH_FN atrbvh_u32 atrbvh_sort_big(atrbvh_u32 n, atrbvh_u32 threads)
+{
+    if (threads < 2u)
+        return ATRBVH_U32_MAX;
+    return n / (ATRBVH_SORT_BIG_SHARE * threads) > ATRBVH_SORT_BIG_MIN
+               ? n / (ATRBVH_SORT_BIG_SHARE * threads)
+               : ATRBVH_SORT_BIG_MIN;
+}
+
 /* A bucket's passes: at most ATRBVH_SORT_BUCKET_BITS-bit digits (11-bit
  * digits measured only 3% fewer instructions on the dragon, for 8 times
  * the counters). */
