@@ -217,6 +217,24 @@ static ulong sort_varying(__global const ulong *vary, uint blocks)
     return load_ulong_v(vary, 2u * blocks);
 }
 
+/* Block b of `blocks` leaves the OR and AND of its keys in vary[2b] and
+ * vary[2b + 1]; the last block to finish unites them: vary[2 * blocks] =
+ * OR ^ AND, the bits that differ (morton: the first pass's; sort_vary: a
+ * big bucket's). */
+static void vary_block(__global ulong *vary, __global uint *sync, uint b,
+                       uint blocks, ulong any, ulong all)
+{
+    vary[2u * b] = any;
+    vary[2u * b + 1u] = all;
+    if (last_arrival(sync, blocks)) {
+        for (b = 0; b < blocks; b++) {
+            any |= load_ulong_v(vary, 2u * b);
+            all &= load_ulong_v(vary, 2u * b + 1u);
+        }
+        vary[2u * blocks] = any ^ all;
+    }
+}
+
 /* ------------------------------------------------------------------ morton */
 /* Item b of the sort's a.blocks: the key of each primitive of block b
  * (atrbvh_morton_quantise, atrbvh_morton_key in the bounds record's
@@ -255,15 +273,7 @@ __kernel void morton(__global const atrbvh_box *boxes, __global ulong *keys,
         any |= k;
         all &= k;
     }
-    vary[2u * b] = any;
-    vary[2u * b + 1u] = all;
-    if (last_arrival(sync, a.blocks)) {
-        for (b = 0; b < a.blocks; b++) {
-            any |= load_ulong_v(vary, 2u * b);
-            all &= load_ulong_v(vary, 2u * b + 1u);
-        }
-        vary[2u * a.blocks] = any ^ all;
-    }
+    vary_block(vary, sync, b, a.blocks, any, all);
 }
 
 /* A big bucket's varying bits (the host's big_buckets, cl/stages.c; the
@@ -283,15 +293,7 @@ __kernel void sort_vary(__global const ulong *keys, __global ulong *vary,
         any |= keys[i];
         all &= keys[i];
     }
-    vary[2u * b] = any;
-    vary[2u * b + 1u] = all;
-    if (last_arrival(sync, a.blocks)) {
-        for (b = 0; b < a.blocks; b++) {
-            any |= load_ulong_v(vary, 2u * b);
-            all &= load_ulong_v(vary, 2u * b + 1u);
-        }
-        vary[2u * a.blocks] = any ^ all;
-    }
+    vary_block(vary, sync, b, a.blocks, any, all);
 }
 
 /* The MSD pass's counts: block b's digits (atrbvh_sort_msd's) of the keys
