@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [18.0425491:257.379435]
+set xrange [17.3035297:243.886305]
 set xtics (20, 50, 100, 200)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 19.817087,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 59.8300238,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 68.5397332,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 73.8207324,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 61.60705,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 130.496116,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 151.489239,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 70.5916122,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 34.0209433,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 115.779387,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 79.3342265,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 26.3000119,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 87.2363986,36.836494 left font ',8' noenhanced front
+set label 'LBVH' at 18.9973166,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 59.3921843,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 59.2979281,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 72.5059983,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 55.7469674,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 114.515646,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 143.892117,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 66.8369395,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 29.227429,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 109.143053,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 74.8609248,44.5451095 left font ',8' noenhanced front
+set label 'LBVH/cl' at 24.4961025,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 81.9078961,38.1056054 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

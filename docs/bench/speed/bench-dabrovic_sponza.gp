@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [6.41782139:76.2024036]
-set xtics (10, 20, 50)
+set xrange [3.05944665:58.7031493]
+set xtics (5, 10, 20, 50)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 8.14559088,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 17.537536,77.3438007 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 16.3159425,73.4949382 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 22.9984342,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 13.4050399,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 25.2373795,71.1263555 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 46.5232245,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 30.2093525,67.3811989 left font ',8' noenhanced front
-set label 'embree_low' at 8.22448709,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 17.1951195,79.1043654 left font ',8' noenhanced front
-set label 'embree_high' at 26.2598858,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 10.6233815,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 15.9619817,68.9828435 left font ',8' noenhanced front
+set label 'LBVH' at 4.06687313,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 11.7911333,77.3438007 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 8.69620771,73.4949382 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 14.4608123,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 11.3769385,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 16.7323861,71.1263555 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 32.5682776,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 20.9352271,67.3811989 left font ',8' noenhanced front
+set label 'embree_low' at 6.12742646,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 20.3831436,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 17.1453048,79.4736547 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.84868566,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 10.6854456,68.9828435 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
