@@ -315,20 +315,8 @@ static atrbvh_status st_morton(atrbvh_device *dev, atrbvh_i_run *run,
 }
 
 /* ----------------------------------------------------------------- sort */
-/* The buckets of the first pass that sort_buckets left alone, those of
- * more than a.big keys (shared/sort.h's atrbvh_sort_big), each split by
- * a pass of its own on all blocks, as lib/cpu/sort.c's sort_big: its
- * varying bits (sort_vary), its digit's counts and scan (sort_count),
- * its scatter from the scratch pair back into (B_KEYS, B_ORDER)
- * (sort_scatter), and its sub-buckets sorted in place (sort_buckets,
- * a.into = 0).  The host reads the first pass's digit (the morton
- * kernel's varying bits) and its bucket starts (the scanned counts of
- * block 0) to find them: two blocking reads, so only for builds of at
- * least ATRBVH_CL_SPLIT_MIN primitives (conference's 331,179 keys: one
- * bucket of 206,564 on one work-item took 6.6-8.6 ms on PoCL at 2 cores),
- * where a wait of tens of microseconds is small beside the sort; smaller
- * builds keep the pipeline's two waits, and their big buckets (at most
- * a few tens of thousands of keys) stay on one work-item each. */
+/* One big bucket's pass (big_buckets), its positions in b: the first
+ * pass's four steps again over them, back into (B_KEYS, B_ORDER). */
 static atrbvh_status split_bucket(atrbvh_cl_device *c,
                                   const atrbvh_kargs_sort *bp,
                                   atrbvh_error *error)
@@ -347,6 +335,20 @@ static atrbvh_status split_bucket(atrbvh_cl_device *c,
     return ATRBVH_OK;
 }
 
+/* The buckets of the first pass that sort_buckets left alone, those of
+ * more than a.big keys (shared/sort.h's atrbvh_sort_big), each split by
+ * a pass of its own on all blocks, as lib/cpu/sort.c's sort_big: its
+ * varying bits (sort_vary), its digit's counts and scan (sort_count),
+ * its scatter from the scratch pair back into (B_KEYS, B_ORDER)
+ * (sort_scatter), and its sub-buckets sorted in place (sort_buckets,
+ * a.into = 0).  The host reads the first pass's digit (the morton
+ * kernel's varying bits) and its bucket starts (the scanned counts of
+ * block 0) to find them: two blocking reads, so only for builds of at
+ * least ATRBVH_CL_SPLIT_MIN primitives (conference's 331,179 keys: one
+ * bucket of 206,564 on one work-item took 6.6-8.6 ms on PoCL at 2 cores),
+ * where a wait of tens of microseconds is small beside the sort; smaller
+ * builds keep the pipeline's two waits, and their big buckets (at most
+ * a few tens of thousands of keys) stay on one work-item each. */
 static atrbvh_status big_buckets(atrbvh_cl_device *c, const atrbvh_kargs_sort *a,
                                  atrbvh_error *error)
 {
