@@ -315,8 +315,30 @@ static atrbvh_status st_morton(atrbvh_device *dev, atrbvh_i_run *run,
 }
 
 /* ----------------------------------------------------------------- sort */
-/* One big bucket's pass (big_buckets), its positions in b: the first
- * pass's four steps again over them, back into (B_KEYS, B_ORDER). */
+/* One MSD pass over a's keys (the whole array, or one big bucket's
+ * positions): its digit's counts and scan (sort_count) in the pair
+ * (src_k, src_v), its stable scatter into (dst_k, dst_v) (sort_scatter),
+ * and each bucket's sort from there (sort_buckets: into src when a.into,
+ * else in place with src as the scratch). */
+static atrbvh_status sort_pass(atrbvh_cl_device *c, const atrbvh_kargs_sort *ap,
+                               int src_k, int src_v, int dst_k, int dst_v,
+                               atrbvh_error *error)
+{
+    const atrbvh_kargs_sort a = *ap;
+    CL_RUN(c, K_SORT_COUNT, a.blocks, error, CL_BUF(src_k), CL_BUF(B_HIST),
+           CL_BUF(B_VARY), CL_BUF(B_SYNC), CL_VAL(a));
+    CL_RUN(c, K_SORT_SCATTER, a.blocks, error, CL_BUF(src_k), CL_BUF(src_v),
+           CL_BUF(dst_k), CL_BUF(dst_v), CL_BUF(B_HIST), CL_BUF(B_VARY),
+           CL_VAL(a));
+    CL_RUN(c, K_SORT_BUCKETS, a.buckets, error, CL_BUF(dst_k), CL_BUF(dst_v),
+           CL_BUF(src_k), CL_BUF(src_v), CL_BUF(B_HIST), CL_BUF(B_VARY),
+           CL_VAL(a));
+    return ATRBVH_OK;
+}
+
+/* One big bucket (big_buckets), its positions in b: its own varying bits
+ * (sort_vary), then a pass from the scratch pair back into (B_KEYS,
+ * B_ORDER), its sub-buckets sorted there in place. */
 static atrbvh_status split_bucket(atrbvh_cl_device *c,
                                   const atrbvh_kargs_sort *bp,
                                   atrbvh_error *error)
@@ -324,15 +346,7 @@ static atrbvh_status split_bucket(atrbvh_cl_device *c,
     const atrbvh_kargs_sort b = *bp;
     CL_RUN(c, K_SORT_VARY, b.blocks, error, CL_BUF(B_KEYS_TMP), CL_BUF(B_VARY),
            CL_BUF(B_SYNC), CL_VAL(b));
-    CL_RUN(c, K_SORT_COUNT, b.blocks, error, CL_BUF(B_KEYS_TMP),
-           CL_BUF(B_HIST), CL_BUF(B_VARY), CL_BUF(B_SYNC), CL_VAL(b));
-    CL_RUN(c, K_SORT_SCATTER, b.blocks, error, CL_BUF(B_KEYS_TMP),
-           CL_BUF(B_ORDER_TMP), CL_BUF(B_KEYS), CL_BUF(B_ORDER),
-           CL_BUF(B_HIST), CL_BUF(B_VARY), CL_VAL(b));
-    CL_RUN(c, K_SORT_BUCKETS, b.buckets, error, CL_BUF(B_KEYS),
-           CL_BUF(B_ORDER), CL_BUF(B_KEYS_TMP), CL_BUF(B_ORDER_TMP),
-           CL_BUF(B_HIST), CL_BUF(B_VARY), CL_VAL(b));
-    return ATRBVH_OK;
+    return sort_pass(c, &b, B_KEYS_TMP, B_ORDER_TMP, B_KEYS, B_ORDER, error);
 }
 
 /* The buckets of the first pass that sort_buckets left alone, those of
@@ -428,14 +442,8 @@ static atrbvh_status st_sort(atrbvh_device *dev, atrbvh_i_run *run,
     CL_CHECK(atrbvh_i_cl_buffer(c, B_HIST, a.entries, sizeof(cl_uint),
                                 "digit counts", error));
     CL_CHECK(atrbvh_i_cl_sync(c, error));
-    CL_RUN(c, K_SORT_COUNT, a.blocks, error, CL_BUF(B_KEYS), CL_BUF(B_HIST),
-           CL_BUF(B_VARY), CL_BUF(B_SYNC), CL_VAL(a));
-    CL_RUN(c, K_SORT_SCATTER, a.blocks, error, CL_BUF(B_KEYS),
-           CL_BUF(B_ORDER), CL_BUF(B_KEYS_TMP), CL_BUF(B_ORDER_TMP),
-           CL_BUF(B_HIST), CL_BUF(B_VARY), CL_VAL(a));
-    CL_RUN(c, K_SORT_BUCKETS, a.buckets, error, CL_BUF(B_KEYS_TMP),
-           CL_BUF(B_ORDER_TMP), CL_BUF(B_KEYS), CL_BUF(B_ORDER),
-           CL_BUF(B_HIST), CL_BUF(B_VARY), CL_VAL(a));
+    CL_CHECK(sort_pass(c, &a, B_KEYS, B_ORDER, B_KEYS_TMP, B_ORDER_TMP,
+                       error));
     if (a.big != ATRBVH_U32_MAX)
         return big_buckets(c, &a, error);
     return ATRBVH_OK;
