@@ -486,8 +486,59 @@ static HIER_INLINE void hier_emit(const hier_tree *t, long s, long ps,
     r->node = id;
 }
 
+/* Keys out of order (a sort that failed: the hierarchy is Karras's only
+ * over sorted keys, and from unsorted ones the blocks write a graph that
+ * is no tree, which the kernels queued behind this one would follow out
+ * of bounds): every block's nodes replaced by a valid stand-in, internal
+ * node i with leaf i on its left and node i + 1 on its right (the last
+ * one leaf n - 1), refitted by the pass's rules, so that everything
+ * queued behind stays in bounds until the host reads the status and
+ * fails the build (cl/stages.c, st_collapse).  Serial, in the last
+ * item: the failure path only. */
+static void hier_chain(const hier_tree *t,
+                       __global const atrbvh_box *prim_boxes,
+                       __global const uint *order)
+{
+    long n = t->n, i;
+    hier_sub r;
+    t->box[2 * n - 2] = prim_boxes[order[n - 1]];
+    hier_leaf(t, n - 1, t->box[2 * n - 2], &r);
+    for (i = n - 2; i >= 0; i--) {
+        const uint l = (uint)(n - 1 + i), id = (uint)i;
+        atrbvh_box b;
+        uint c, size = 0u;
+        double co;
+        if (t->sizes)
+            size = atrbvh_refit_node_size(
+                &t->p, load_box_v(t->box, l), 1u, load_f64_v(t->cost, l),
+                1u | ATRBVH_SIZE_LEAF, r.box, (uint)(n - 1 - i), r.cost,
+                r.size, &b, &c, &co);
+        else
+            atrbvh_refit_node(&t->p, load_box_v(t->box, l), 1u,
+                              load_f64_v(t->cost, l), r.box,
+                              (uint)(n - 1 - i), r.cost, &b, &c, &co);
+        t->left[id] = l;
+        t->right[id] = r.node;
+        t->count[id] = c;
+        t->parent[l] = id;
+        t->parent[r.node] = id;
+        t->box[id] = b;
+        t->cost[id] = co;
+        if (t->sizes)
+            t->size[id] = size;
+        r.box = b;
+        r.cost = co;
+        r.size = size;
+        r.node = id;
+    }
+    t->parent[0] = ATRBVH_U32_MAX;
+}
+
 /* The merge over every block's leftovers (other items' writes: volatile),
- * then the last leaf and the root; `st` is the caller's stack, free. */
+ * then the last leaf and the root; `st` is the caller's stack, free.
+ * Keys out of order in any block (its word after the counts): the
+ * stand-in tree instead (hier_chain), its position + 1 in *status (0:
+ * in order). */
 static HIER_INLINE void hier_merge(const hier_tree *t,
                                    __global const ulong *keys,
                                    __global uint *leaf_prim,
@@ -495,13 +546,21 @@ static HIER_INLINE void hier_merge(const hier_tree *t,
                                    __global const uint *order,
                                    __global const uint *ids,
                                    volatile __global const uint *over,
-                                   uint blocks, uint has_ids, hier_entry *st)
+                                   uint blocks, uint has_ids, hier_entry *st,
+                                   __global uint *status)
 {
     long n = t->n;
-    uint sp = 0u, b, k;
+    uint sp = 0u, b, k, bad = 0u;
     hier_sub carry;
     t->parent[0] = ATRBVH_U32_MAX;
     leaf_prim[n - 1] = has_ids ? ids[order[n - 1]] : order[n - 1];
+    for (b = 0u; b < blocks && bad == 0u; b++)
+        bad = over[(size_t)blocks * (ATRBVH_CL_HIER_OVER + 1u) + b];
+    *status = bad;
+    if (bad != 0u) {
+        hier_chain(t, prim_boxes, order);
+        return;
+    }
     if (n > 1) {
         for (b = 0u; b < blocks; b++) {
             volatile __global const uint *in =
@@ -546,17 +605,18 @@ static HIER_INLINE void hier_merge(const hier_tree *t,
 
 /* `over`: ATRBVH_CL_HIER_OVER words per block (2 * ATRBVH_CL_HIER_SIDE
  * leftovers: split position, subtree root), then the blocks' leftover
- * counts.  `blocks` >= 1 (one block of no split when n == 1).  `size`
+ * counts, then each block's first pair of keys out of order + 1 (0: in
+ * order; a failed sort, hier_chain).  `blocks` >= 1 (one block of no split when n == 1).  `size`
  * is read only for an LBVH (a.sizes). */
 static HIER_INLINE void hier_pass(
     __global const ulong *keys, __global uint *left, __global uint *right,
     __global uint *parent, __global uint *count, __global uint *leaf_prim,
     __global const uint *order, __global const uint *ids, __global uint *over,
     __global atrbvh_box *box, __global double *cost, __global uint *size,
-    __global const atrbvh_box *prim_boxes, __global uint *sync, uint blocks,
-    atrbvh_kargs_tree a, uint sizes)
+    __global const atrbvh_box *prim_boxes, __global uint *sync,
+    __global uint *status, uint blocks, atrbvh_kargs_tree a, uint sizes)
 {
-    uint b = (uint)get_global_id(0), sp = 0u, nout = 0u, k;
+    uint b = (uint)get_global_id(0), sp = 0u, nout = 0u, k, bad = 0u;
     long lo, hi, s;
     hier_entry st[ATRBVH_CL_HIER_SIDE];
     hier_sub carry;
@@ -585,6 +645,8 @@ static HIER_INLINE void hier_pass(
         box[t.n - 1 + s] = prim_boxes[order[s]];
     for (s = lo; s < hi; s++) {
         int d = atrbvh_karras_delta(keys, t.n, s, s + 1);
+        if (bad == 0u && keys[s] > keys[s + 1])
+            bad = (uint)s + 1u; /* the first pair out of order */
         leaf_prim[s] = a.has_ids ? ids[order[s]] : order[s];
         hier_leaf(&t, s, box[t.n - 1 + s], &carry);
         while (sp > 0u && st[sp - 1u].d > d) {
@@ -612,9 +674,10 @@ static HIER_INLINE void hier_pass(
         nout++;
     }
     over[(size_t)blocks * ATRBVH_CL_HIER_OVER + b] = nout;
+    over[(size_t)blocks * (ATRBVH_CL_HIER_OVER + 1u) + b] = bad;
     if (last_arrival(sync, blocks))
         hier_merge(&t, keys, leaf_prim, prim_boxes, order, ids, over, blocks,
-                   a.has_ids, st);
+                   a.has_ids, st, status);
 }
 
 /* One copy of the pass for each mode (the constant `sizes` folds its
@@ -626,14 +689,18 @@ __kernel void hierarchy(__global const ulong *keys, __global uint *left,
                         __global uint *over, __global atrbvh_box *box,
                         __global double *cost, __global uint *size,
                         __global const atrbvh_box *prim_boxes,
-                        __global uint *sync, uint blocks, atrbvh_kargs_tree a)
+                        __global uint *sync, __global uint *flag,
+                        uint blocks, atrbvh_kargs_tree a)
 {
+    /* flag[1]: the keys' order (hier_merge); flag[0] is the layout's */
     if (a.sizes)
         hier_pass(keys, left, right, parent, count, leaf_prim, order, ids,
-                  over, box, cost, size, prim_boxes, sync, blocks, a, 1u);
+                  over, box, cost, size, prim_boxes, sync, flag + 1, blocks,
+                  a, 1u);
     else
         hier_pass(keys, left, right, parent, count, leaf_prim, order, ids,
-                  over, box, cost, size, prim_boxes, sync, blocks, a, 0u);
+                  over, box, cost, size, prim_boxes, sync, flag + 1, blocks,
+                  a, 0u);
 }
 
 /* ------------------------------------------------------------------- refit */

@@ -88,7 +88,8 @@ enum {
     B_TALLY,      /* optimise: treelet counts             */
     B_SIZE,       /* collapse: output nodes per subtree   */
     B_JUMP,       /* hierarchy leftovers; layout subtrees */
-    B_FLAG,       /* layout: their count                  */
+    B_FLAG,       /* layout: their count; then the
+                     hierarchy's status (keys out of order) */
     B_OUT_NODES,
     B_OUT_PRIMS,
     B_SYNC,       /* last_arrival's word (kernels.cl): zeroed
@@ -161,6 +162,10 @@ typedef struct atrbvh_cl_device {
                                queued (by the collapse stage)     */
     cl_uint tally[3];       /* the optimise stage's counts, read
                                without a wait                     */
+    cl_uint hier_flag[2];   /* B_FLAG read in the collapse stage's
+                               wait: [1] the hierarchy's status,
+                               the first key out of order + 1 (0:
+                               in order)                          */
     atrbvh_bounds_record bounds_rec; /* read from B_PARTIAL        */
     /* The last build's optimise stage (tests, measurements): treelets
      * processed, of which written back, and treelets skipped by the skip

@@ -6,8 +6,9 @@
  *
  * The host waits twice per build: the collapse stage's root size (the
  * output's node count, which the pipeline allocates; the bounds record,
- * with the count of invalid primitives, and the optimise stage's counts
- * are read in the same wait, queued before it) and the layout's output
+ * with the count of invalid primitives, the hierarchy's status (keys out
+ * of order: a failed sort) and the optimise stage's counts are read in
+ * the same wait, queued before it) and the layout's output
  * (the nodes' read queued, the primitives' read blocking).  The Morton
  * frame is the bounds kernel's, computed on the device from the united
  * centroid box by the host's function.  The bounds stage reads its
@@ -483,8 +484,12 @@ static atrbvh_status st_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
     if (blocks > run->n - 1u)
         blocks = run->n > 1 ? run->n - 1u : 1u;
     CL_CHECK(atrbvh_i_cl_buffer(c, B_JUMP,
-                                (size_t)blocks * (ATRBVH_CL_HIER_OVER + 1u),
+                                (size_t)blocks * (ATRBVH_CL_HIER_OVER + 2u),
                                 4, "hierarchy leftovers", error));
+    /* B_FLAG's second word: the keys' order, read in the collapse stage's
+     * wait (st_collapse). */
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_FLAG, 2, 4, "hierarchy status",
+                                error));
     a.sizes = run->cfg->method == ATRBVH_METHOD_LBVH;
     /* ids: read only when has_ids; B_ORDER stands in otherwise. */
     CL_RUN(c, K_HIERARCHY, blocks, error, CL_BUF(B_KEYS), CL_BUF(B_LEFT),
@@ -492,7 +497,7 @@ static atrbvh_status st_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
            CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_BUF(B_JUMP),
            CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_SIZE), CL_BUF(B_BOXES),
-           CL_BUF(B_SYNC), CL_VAL(blocks), CL_VAL(a));
+           CL_BUF(B_SYNC), CL_BUF(B_FLAG), CL_VAL(blocks), CL_VAL(a));
     c->ranges = 1;
     c->refitted = 1;
     return ATRBVH_OK;
@@ -687,8 +692,22 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
         CL_CHECK(atrbvh_i_cl_download_queued(c, B_PARTIAL, &c->bounds_rec,
                                              sizeof c->bounds_rec,
                                              "bounds record", error));
+    if (c->ranges)
+        CL_CHECK(atrbvh_i_cl_download_queued(c, B_FLAG, c->hier_flag,
+                                             sizeof c->hier_flag,
+                                             "hierarchy status", error));
     CL_CHECK(atrbvh_i_cl_download(c, B_SIZE, &root_size, 4, "subtree sizes",
                                   error));
+    /* Keys out of order (a sort kernel failed): the hierarchy kernel built
+     * a stand-in tree so that the kernels behind it stayed in bounds;
+     * there is no tree of the scene to lay out. */
+    if (c->ranges && c->hier_flag[1] != 0u)
+        return atrbvh_i_fail(
+            error, ATRBVH_ERR_BACKEND, (uint64_t)(c->hier_flag[1] - 1u),
+            "OpenCL device %s: the sorted Morton keys are out of order at "
+            "position %lu of %lu (a sort kernel failed); no tree was built",
+            dev->name, (unsigned long)(c->hier_flag[1] - 1u),
+            (unsigned long)run->n);
     if (run->bounds_deferred)
         bounds_results(c, run);
     if (c->tally_late) {
@@ -720,7 +739,8 @@ static atrbvh_status queue_layout(atrbvh_cl_device *c, const atrbvh_i_run *run,
     /* At most one listed subtree per leaf: 3 words each. */
     CL_CHECK(atrbvh_i_cl_buffer(c, B_JUMP, 3 * (size_t)run->n, 4,
                                 "layout subtree list", error));
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_FLAG, 1, 4, "layout subtree count",
+    /* (two words: the second is the hierarchy's, st_hierarchy) */
+    CL_CHECK(atrbvh_i_cl_buffer(c, B_FLAG, 2, 4, "layout subtree count",
                                 error));
     CL_RUN(c, K_LAYOUT_TOP, 1, error, CL_BUF(B_COUNT), CL_BUF(B_LEFT),
            CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_SIZE), CL_BUF(B_BOX),

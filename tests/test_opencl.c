@@ -675,6 +675,98 @@ START_TEST(device_sort_splits_big_buckets)
 }
 END_TEST
 
+/* A sort kernel that fails (sort_buckets returning at once, read from a
+ * kernel folder as broken_kernel_source does): the hierarchy kernel finds
+ * the keys out of order, and the build fails with ATRBVH_ERR_BACKEND and
+ * the position, every method, build after build on the handle, instead of
+ * the kernels behind it following a graph that is no tree out of bounds
+ * (a SIGSEGV inside the build before).  Needs
+ * --enable-kernel-source-override (the configs stage) and the source tree
+ * ($ATRBVH_SRCDIR, from make check). */
+START_TEST(sort_failure_is_an_error)
+{
+#ifdef ATRBVH_KERNEL_SOURCE_OVERRIDE
+    static const atrbvh_method methods[] = {
+        ATRBVH_METHOD_LBVH, ATRBVH_METHOD_ATRBVH, ATRBVH_METHOD_TRBVH};
+    const char *srcdir = getenv("ATRBVH_SRCDIR");
+    char dir[] = "/tmp/atrbvh-cl-XXXXXX", path[1024];
+    atrbvh_device *dev = NULL;
+    atrbvh_error e;
+    atrbvh_status st;
+    char *text, *at, *brace;
+    long size;
+    size_t i, k;
+    float *b = malloc(sizeof(float) * 6 * 20000);
+    tu_rng r;
+    FILE *f;
+    REQUIRE_DEVICE();
+    ck_assert_ptr_nonnull(b);
+    if (!srcdir) {
+        fprintf(stderr, "SKIP sort_failure_is_an_error: ATRBVH_SRCDIR "
+                        "unset (run it through make check)\n");
+        free(b);
+        return;
+    }
+    snprintf(path, sizeof path, "%s/cl/kernels.cl", srcdir);
+    f = fopen(path, "rb");
+    ck_assert_msg(f != NULL, "%s", path);
+    ck_assert_int_eq(fseek(f, 0, SEEK_END), 0);
+    size = ftell(f);
+    ck_assert_int_gt(size, 0);
+    rewind(f);
+    text = malloc((size_t)size + 1);
+    ck_assert_ptr_nonnull(text);
+    ck_assert_uint_eq(fread(text, 1, (size_t)size, f), (size_t)size);
+    text[size] = '\0';
+    fclose(f);
+    at = strstr(text, "__kernel void sort_buckets(");
+    ck_assert_ptr_nonnull(at);
+    brace = strstr(at, "\n{\n");
+    ck_assert_ptr_nonnull(brace);
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/kernels.cl", dir);
+    f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fwrite(text, 1, (size_t)(brace - text) + 3, f);
+    fputs("    if (get_global_id(0) < 0xffffffffu)\n        return;\n", f);
+    fputs(brace + 3, f);
+    fclose(f);
+    free(text);
+    setenv("ATRBVH_CL_SOURCE_DIR", dir, 1);
+    st = atrbvh_device_open("opencl", &dev, &e);
+    unsetenv("ATRBVH_CL_SOURCE_DIR");
+    remove(path);
+    rmdir(dir);
+    ck_assert_msg(st == ATRBVH_OK, "%s", e.text);
+    tu_rng_seed(&r, 5);
+    for (i = 0; i < 20000; i++)
+        box_at(b + 6 * i, tu_rng_float(&r), tu_rng_float(&r),
+               tu_rng_float(&r));
+    for (k = 0; k < 2 * sizeof methods / sizeof methods[0]; k++) {
+        atrbvh_geometry g = atrbvh_geometry_boxes(b, 20000);
+        atrbvh_build_options o;
+        atrbvh_bvh *bvh = (atrbvh_bvh *)&o;
+        atrbvh_build_options_init(&o);
+        o.method = methods[k % 3];
+        o.device = dev;
+        memset(&e, 0, sizeof e);
+        st = atrbvh_build(&g, &o, &bvh, &e);
+        ck_assert_msg(st == ATRBVH_ERR_BACKEND, "method %d: status %d: %s",
+                      (int)o.method, (int)st, e.text);
+        ck_assert_ptr_null(bvh);
+        ck_assert_msg(strstr(e.text, "out of order at position"), "%s",
+                      e.text);
+        ck_assert_uint_lt(e.index, 20000);
+    }
+    atrbvh_device_close(dev);
+    free(b);
+#else
+    fprintf(stderr, "SKIP sort_failure_is_an_error: configured without "
+                    "--enable-kernel-source-override\n");
+#endif
+}
+END_TEST
+
 /* The refit in the hierarchy kernel's pass (cl/kernels.cl, as
  * lib/cpu/hierarchy.c): boxes, counts, costs and an LBVH's collapse sizes
  * of every node equal to the CPU's at every stage, where the blocks'
@@ -862,6 +954,7 @@ static Suite *opencl_suite(void)
     tcase_add_test(tc, bad_device_string);
     tcase_add_test(tc, broken_kernel_source);
     tcase_add_test(tc, no_environment);
+    tcase_add_test(tc, sort_failure_is_an_error);
     tcase_add_test(tc, device_handle);
     tcase_add_test(tc, kernel_times_and_device);
     tcase_add_test(tc, lbvh_refit_takes_the_collapse);

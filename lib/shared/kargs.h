@@ -76,7 +76,8 @@ typedef struct atrbvh_kargs_sort {
  * at most ATRBVH_CL_HIER_SIDE each, as lib/cpu/hierarchy.c's; each is
  * recorded as two words (split position, subtree root), so a block's
  * share of the host's leftover buffer is ATRBVH_CL_HIER_OVER words, and
- * one count per block follows all shares. */
+ * one count per block follows all shares, then one word per block: its
+ * first pair of keys out of order + 1 (0: in order). */
 #define ATRBVH_CL_HIER_SIDE 96u
 #define ATRBVH_CL_HIER_OVER (4u * ATRBVH_CL_HIER_SIDE)
 
