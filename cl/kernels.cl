@@ -606,8 +606,8 @@ static HIER_INLINE void hier_merge(const hier_tree *t,
 /* `over`: ATRBVH_CL_HIER_OVER words per block (2 * ATRBVH_CL_HIER_SIDE
  * leftovers: split position, subtree root), then the blocks' leftover
  * counts, then each block's first pair of keys out of order + 1 (0: in
- * order; a failed sort, hier_chain).  `blocks` >= 1 (one block of no split when n == 1).  `size`
- * is read only for an LBVH (a.sizes). */
+ * order; a failed sort, hier_chain).  `blocks` >= 1 (one block of no
+ * split when n == 1).  `size` is read only for an LBVH (a.sizes). */
 static HIER_INLINE void hier_pass(
     __global const ulong *keys, __global uint *left, __global uint *right,
     __global uint *parent, __global uint *count, __global uint *leaf_prim,
