@@ -451,6 +451,28 @@ static HIER_INLINE void hier_leaf(const hier_tree *t, long i, atrbvh_box b,
     out->size = size;
 }
 
+/* Internal node id with children lc, rc and its values (count c, box b,
+ * cost co, an LBVH's size): the tree's stores, then *r becomes the node
+ * (hier_emit's and hier_chain's). */
+static HIER_INLINE void hier_store(const hier_tree *t, uint id, uint lc,
+                                   uint rc, uint c, atrbvh_box b, double co,
+                                   uint size, hier_sub *r)
+{
+    t->left[id] = lc;
+    t->right[id] = rc;
+    t->count[id] = c;
+    t->parent[lc] = id;
+    t->parent[rc] = id;
+    t->box[id] = b;
+    t->cost[id] = co;
+    if (t->sizes)
+        t->size[id] = size;
+    r->box = b;
+    r->cost = co;
+    r->size = size;
+    r->node = id;
+}
+
 /* Internal node of split s from its neighbours ps (-1: none) and ns (n-1:
  * none) with their deltas (shared/arith.h's atrbvh_hier_node), its left
  * subtree *l and its right subtree *r; *r becomes the node. */
@@ -471,19 +493,7 @@ static HIER_INLINE void hier_emit(const hier_tree *t, long s, long ps,
         atrbvh_refit_node(&t->p, l->box, (uint)(s - ps), l->cost, r->box,
                           (uint)(ns - s), r->cost, &b, &cnt, &co);
     /* (every result computed, then the stores: see hier_leaf) */
-    t->left[id] = lc;
-    t->right[id] = rc;
-    t->count[id] = c;
-    t->parent[lc] = id;
-    t->parent[rc] = id;
-    t->box[id] = b;
-    t->cost[id] = co;
-    if (t->sizes)
-        t->size[id] = size;
-    r->box = b;
-    r->cost = co;
-    r->size = size;
-    r->node = id;
+    hier_store(t, id, lc, rc, c, b, co, size, r);
 }
 
 /* Keys out of order (a sort that failed: the hierarchy is Karras's only
@@ -517,19 +527,7 @@ static void hier_chain(const hier_tree *t,
             atrbvh_refit_node(&t->p, load_box_v(t->box, l), 1u,
                               load_f64_v(t->cost, l), r.box,
                               (uint)(n - 1 - i), r.cost, &b, &c, &co);
-        t->left[id] = l;
-        t->right[id] = r.node;
-        t->count[id] = c;
-        t->parent[l] = id;
-        t->parent[r.node] = id;
-        t->box[id] = b;
-        t->cost[id] = co;
-        if (t->sizes)
-            t->size[id] = size;
-        r.box = b;
-        r.cost = co;
-        r.size = size;
-        r.node = id;
+        hier_store(t, id, l, r.node, c, b, co, size, &r);
     }
     t->parent[0] = ATRBVH_U32_MAX;
 }

@@ -327,6 +327,41 @@ START_TEST(bad_device_string)
 }
 END_TEST
 
+/* atrbvh_device_open("opencl") with a kernel folder of its own in
+ * $ATRBVH_CL_SOURCE_DIR, its kernels.cl the concatenation of `head`
+ * (head_len bytes), `insert` and `tail` (NULL: nothing), and with
+ * $ATRBVH_OPENCL_DEVICE set to `device_env` (NULL: left alone); the
+ * folder and the variables are gone when it returns. */
+static atrbvh_status open_with_kernels(const char *head, size_t head_len,
+                                       const char *insert, const char *tail,
+                                       const char *device_env,
+                                       atrbvh_device **dev, atrbvh_error *e)
+{
+    char dir[] = "/tmp/atrbvh-cl-XXXXXX", path[64];
+    atrbvh_status st;
+    FILE *f;
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/kernels.cl", dir);
+    f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    ck_assert_uint_eq(fwrite(head, 1, head_len, f), head_len);
+    if (insert)
+        fputs(insert, f);
+    if (tail)
+        fputs(tail, f);
+    ck_assert_int_eq(fclose(f), 0);
+    setenv("ATRBVH_CL_SOURCE_DIR", dir, 1);
+    if (device_env)
+        setenv("ATRBVH_OPENCL_DEVICE", device_env, 1);
+    st = atrbvh_device_open("opencl", dev, e);
+    unsetenv("ATRBVH_CL_SOURCE_DIR");
+    if (device_env)
+        unsetenv("ATRBVH_OPENCL_DEVICE");
+    remove(path);
+    rmdir(dir);
+    return st;
+}
+
 /* A kernel that does not compile: the compiler log reaches the error text
  * of atrbvh_device_open (the program is built there, once).  Needs a
  * library configured with --enable-kernel-source-override (the configs
@@ -334,25 +369,13 @@ END_TEST
 START_TEST(broken_kernel_source)
 {
 #ifdef ATRBVH_KERNEL_SOURCE_OVERRIDE
+    static const char src[] = "__kernel void bounds_boxes(__global float *x)\n"
+                              "{\n    x[0] = this_is_not_defined;\n}\n";
     atrbvh_device *dev = (atrbvh_device *)&dev;
     atrbvh_error e;
     atrbvh_status st;
-    char dir[] = "/tmp/atrbvh-cl-XXXXXX", path[64];
-    FILE *f;
     REQUIRE_DEVICE();
-    ck_assert_ptr_nonnull(mkdtemp(dir));
-    snprintf(path, sizeof path, "%s/kernels.cl", dir);
-    f = fopen(path, "w");
-    ck_assert_ptr_nonnull(f);
-    fputs("__kernel void bounds_boxes(__global float *x)\n"
-          "{\n    x[0] = this_is_not_defined;\n}\n",
-          f);
-    fclose(f);
-    setenv("ATRBVH_CL_SOURCE_DIR", dir, 1);
-    st = atrbvh_device_open("opencl", &dev, &e);
-    unsetenv("ATRBVH_CL_SOURCE_DIR");
-    remove(path);
-    rmdir(dir);
+    st = open_with_kernels(src, sizeof src - 1, NULL, NULL, NULL, &dev, &e);
     ck_assert_int_eq(st, ATRBVH_ERR_BACKEND);
     ck_assert_ptr_null(dev);
     ck_assert_msg(strstr(e.text, "kernel build failed"), "%s", e.text);
@@ -372,25 +395,13 @@ END_TEST
 START_TEST(no_environment)
 {
 #ifndef ATRBVH_KERNEL_SOURCE_OVERRIDE
+    static const char src[] = "this is not OpenCL\n";
     atrbvh_device *dev = NULL;
     atrbvh_error e;
     atrbvh_status st;
-    char dir[] = "/tmp/atrbvh-cl-XXXXXX", path[64];
-    FILE *f;
     REQUIRE_DEVICE();
-    ck_assert_ptr_nonnull(mkdtemp(dir));
-    snprintf(path, sizeof path, "%s/kernels.cl", dir);
-    f = fopen(path, "w");
-    ck_assert_ptr_nonnull(f);
-    fputs("this is not OpenCL\n", f);
-    fclose(f);
-    setenv("ATRBVH_CL_SOURCE_DIR", dir, 1);
-    setenv("ATRBVH_OPENCL_DEVICE", "no such device, surely", 1);
-    st = atrbvh_device_open("opencl", &dev, &e);
-    unsetenv("ATRBVH_CL_SOURCE_DIR");
-    unsetenv("ATRBVH_OPENCL_DEVICE");
-    remove(path);
-    rmdir(dir);
+    st = open_with_kernels(src, sizeof src - 1, NULL, NULL,
+                           "no such device, surely", &dev, &e);
     ck_assert_msg(st == ATRBVH_OK, "%s", e.text);
     atrbvh_device_close(dev);
 #else
@@ -689,7 +700,7 @@ START_TEST(sort_failure_is_an_error)
     static const atrbvh_method methods[] = {
         ATRBVH_METHOD_LBVH, ATRBVH_METHOD_ATRBVH, ATRBVH_METHOD_TRBVH};
     const char *srcdir = getenv("ATRBVH_SRCDIR");
-    char dir[] = "/tmp/atrbvh-cl-XXXXXX", path[1024];
+    char path[1024];
     atrbvh_device *dev = NULL;
     atrbvh_error e;
     atrbvh_status st;
@@ -723,20 +734,11 @@ START_TEST(sort_failure_is_an_error)
     ck_assert_ptr_nonnull(at);
     brace = strstr(at, "\n{\n");
     ck_assert_ptr_nonnull(brace);
-    ck_assert_ptr_nonnull(mkdtemp(dir));
-    snprintf(path, sizeof path, "%s/kernels.cl", dir);
-    f = fopen(path, "w");
-    ck_assert_ptr_nonnull(f);
-    fwrite(text, 1, (size_t)(brace - text) + 3, f);
-    fputs("    if (get_global_id(0) < 0xffffffffu)\n        return;\n", f);
-    fputs(brace + 3, f);
-    fclose(f);
+    st = open_with_kernels(
+        text, (size_t)(brace - text) + 3,
+        "    if (get_global_id(0) < 0xffffffffu)\n        return;\n",
+        brace + 3, NULL, &dev, &e);
     free(text);
-    setenv("ATRBVH_CL_SOURCE_DIR", dir, 1);
-    st = atrbvh_device_open("opencl", &dev, &e);
-    unsetenv("ATRBVH_CL_SOURCE_DIR");
-    remove(path);
-    rmdir(dir);
     ck_assert_msg(st == ATRBVH_OK, "%s", e.text);
     tu_rng_seed(&r, 5);
     for (i = 0; i < 20000; i++)
