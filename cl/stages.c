@@ -659,6 +659,23 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     return ATRBVH_OK;
 }
 
+/* Keys out of order (a sort kernel failed; c->hier_flag[1], the
+ * hierarchy kernel's status, holds the first such position + 1): the
+ * hierarchy kernel built a stand-in tree so that the kernels behind it
+ * stayed in bounds; there is no tree of the scene to capture or lay
+ * out. */
+static atrbvh_status sort_failed(const atrbvh_device *dev,
+                                 const atrbvh_cl_device *c,
+                                 const atrbvh_i_run *run, atrbvh_error *error)
+{
+    return atrbvh_i_fail(
+        error, ATRBVH_ERR_BACKEND, (uint64_t)(c->hier_flag[1] - 1u),
+        "OpenCL device %s: the sorted Morton keys are out of order at "
+        "position %lu of %lu (a sort kernel failed); no tree was built",
+        dev->name, (unsigned long)(c->hier_flag[1] - 1u),
+        (unsigned long)run->n);
+}
+
 /* ------------------------------------------------------------- collapse */
 static atrbvh_status queue_layout(atrbvh_cl_device *c, const atrbvh_i_run *run,
                                   atrbvh_error *error);
@@ -698,16 +715,8 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
                                              "hierarchy status", error));
     CL_CHECK(atrbvh_i_cl_download(c, B_SIZE, &root_size, 4, "subtree sizes",
                                   error));
-    /* Keys out of order (a sort kernel failed): the hierarchy kernel built
-     * a stand-in tree so that the kernels behind it stayed in bounds;
-     * there is no tree of the scene to lay out. */
     if (c->ranges && c->hier_flag[1] != 0u)
-        return atrbvh_i_fail(
-            error, ATRBVH_ERR_BACKEND, (uint64_t)(c->hier_flag[1] - 1u),
-            "OpenCL device %s: the sorted Morton keys are out of order at "
-            "position %lu of %lu (a sort kernel failed); no tree was built",
-            dev->name, (unsigned long)(c->hier_flag[1] - 1u),
-            (unsigned long)run->n);
+        return sort_failed(dev, c, run, error);
     if (run->bounds_deferred)
         bounds_results(c, run);
     if (c->tally_late) {
@@ -843,6 +852,15 @@ static atrbvh_status cl_capture(atrbvh_device *dev, atrbvh_i_run *run,
         return copy_out(c, B_ORDER, n, sizeof(uint32_t), &cap->order, "order",
                         error);
     case ATRBVH_STAGE_HIERARCHY:
+        /* The status first: a stand-in tree (a failed sort) is not the
+         * hierarchy of the scene, and no capture may show it as one. */
+        if (c->ranges) {
+            CL_CHECK(atrbvh_i_cl_download(c, B_FLAG, c->hier_flag,
+                                          sizeof c->hier_flag,
+                                          "hierarchy status", error));
+            if (c->hier_flag[1] != 0u)
+                return sort_failed(dev, c, run, error);
+        }
         return read_tree(c, run, 0, &cap->hierarchy, error);
     case ATRBVH_STAGE_REFIT:
         return read_tree(c, run, 1, &cap->refit, error);

@@ -686,6 +686,15 @@ START_TEST(device_sort_splits_big_buckets)
 }
 END_TEST
 
+#ifdef ATRBVH_KERNEL_SOURCE_OVERRIDE
+/* A capture callback: the stages it was handed, as bits of *user. */
+static int stages_seen(const atrbvh_stage_output *output, void *user)
+{
+    *(unsigned *)user |= 1u << output->stage;
+    return 0;
+}
+#endif
+
 /* A sort kernel that fails (sort_buckets returning at once, read from a
  * kernel folder as broken_kernel_source does): the hierarchy kernel finds
  * the keys out of order, and the build fails with ATRBVH_ERR_BACKEND and
@@ -759,6 +768,28 @@ START_TEST(sort_failure_is_an_error)
         ck_assert_msg(strstr(e.text, "out of order at position"), "%s",
                       e.text);
         ck_assert_uint_lt(e.index, 20000);
+    }
+    {
+        /* With a capture: the same error, and no stage from the
+         * hierarchy on reaches the callback (the stand-in tree is not
+         * the scene's hierarchy). */
+        atrbvh_geometry g = atrbvh_geometry_boxes(b, 20000);
+        atrbvh_build_options o;
+        atrbvh_bvh *bvh = (atrbvh_bvh *)&o;
+        unsigned seen = 0;
+        atrbvh_build_options_init(&o);
+        o.device = dev;
+        o.capture = stages_seen;
+        o.capture_user = &seen;
+        st = atrbvh_build(&g, &o, &bvh, &e);
+        ck_assert_msg(st == ATRBVH_ERR_BACKEND, "status %d: %s", (int)st,
+                      e.text);
+        ck_assert_ptr_null(bvh);
+        ck_assert_msg(strstr(e.text, "out of order at position"), "%s",
+                      e.text);
+        ck_assert_uint_eq(seen, (1u << ATRBVH_STAGE_BOUNDS) |
+                                    (1u << ATRBVH_STAGE_MORTON) |
+                                    (1u << ATRBVH_STAGE_SORT));
     }
     atrbvh_device_close(dev);
     free(b);
