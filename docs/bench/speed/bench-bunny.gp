@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.62785531:52.8000859]
+set xrange [3.46256259:50.1775368]
 set xtics (5, 10, 20, 50)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 4.69572375,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 12.2891034,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 9.89654271,39.0414315 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 15.5731924,39.3432138 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 14.032639,38.343659 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 20.3498018,38.8402084 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 30.9532196,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 19.7319881,37.9447354 left font ',8' noenhanced front
-set label 'embree_low' at 6.19022835,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 25.435306,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 17.7147637,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 6.00110195,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 10.009923,38.1169475 left font ',8' noenhanced front
+set label 'LBVH' at 4.47991481,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 12.2460263,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 9.47753108,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 13.3539568,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 13.4011739,38.343659 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 18.8316179,38.8402084 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 29.4411015,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 18.5552244,37.9447354 left font ',8' noenhanced front
+set label 'embree_low' at 6.04019329,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 23.8716054,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 17.0794346,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 5.3372008,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 10.2910202,38.1169475 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
