@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.46256259:50.1775368]
-set xtics (5, 10, 20, 50)
+set xrange [2.8767914:33.8557648]
+set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 4.47991481,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 12.2460263,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 9.47753108,39.0414315 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 13.3539568,39.3432138 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 13.4011739,38.343659 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 18.8316179,38.8402084 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 29.4411015,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 18.5552244,37.9447354 left font ',8' noenhanced front
-set label 'embree_low' at 6.04019329,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 23.8716054,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 17.0794346,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.3372008,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 10.2910202,38.1169475 left font ',8' noenhanced front
+set label 'LBVH' at 3.69447319,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 9.20744304,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 7.36371151,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 10.6104791,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 8.96195516,38.1169475 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 13.31429,38.8402084 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 20.7063194,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 8.35932334,38.5681918 left font ',8' noenhanced front
+set label 'embree_low' at 3.95098501,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 20.5055113,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 14.9855237,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 2.94310681,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 13.3292209,38.1169475 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

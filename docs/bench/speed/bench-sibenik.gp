@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.68350692:58.5788077]
-set xtics (5, 10, 20, 50)
+set xrange [2.39910433:43.1530983]
+set xtics (5, 10, 20)
 set yrange [48.0282379:83.2612389]
 unset label
-set label 'LBVH' at 4.06134155,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 12.6502939,56.219843 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 10.2611004,53.8367777 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 16.7232745,55.9599167 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 12.8330186,52.0780873 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 27.6591275,50.753527 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.7392147,52.3325777 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 16.6432389,50.456031 left font ',8' noenhanced front
-set label 'embree_low' at 6.44615231,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 22.2983237,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 22.0326159,56.4830355 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.32315667,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 18.833657,52.9793966 left font ',8' noenhanced front
+set label 'LBVH' at 2.65671489,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 8.47399377,56.219843 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 6.6373048,53.8367777 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 11.0283078,54.157298 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 8.96583566,52.9793966 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 20.6977871,50.753527 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 24.2515995,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.4851269,51.3573403 left font ',8' noenhanced front
+set label 'embree_low' at 5.46884518,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 22.1493068,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 14.7634197,54.6804169 left font ',8' noenhanced front
+set label 'LBVH/cl' at 3.52137477,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 13.3572916,52.9793966 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
