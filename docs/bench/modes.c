@@ -1,0 +1,119 @@
+/*
+ * modes.c - repeated LBVH builds of one scene on one device handle, with
+ * each stage's mean time and, at the end, every thread's CPU time: the
+ * program behind "what the slow mode is" in docs/benchmarks.md (3 December).
+ * Not built by the project; from the source tree, after sh setup.sh:
+ *
+ *   cc -O2 -std=c99 -I lib -I _build -I _build/lib -I tools \
+ *      -o /tmp/modes docs/bench/modes.c _build/tools/.libs/libscene.a \
+ *      -L_build/lib/.libs -latrbvh -lm
+ *   LD_LIBRARY_PATH=_build/lib/.libs /tmp/modes SCENE [BUILDS [THREADS [DEVICE]]]
+ *
+ * DEVICE: cpu (default) or opencl.  Run it several times: a process tends
+ * to stay in one mode.  Thread CPU times are clock ticks from
+ * /proc/self/task/ID/stat (Linux).
+ */
+#define _POSIX_C_SOURCE 199309L
+#include "atrbvh.h"
+#include "scene.h"
+
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static double now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
+}
+
+/* Each thread of this process: its user + system clock ticks. */
+static void print_threads(void)
+{
+    DIR *d = opendir("/proc/self/task");
+    struct dirent *e;
+    if (!d)
+        return;
+    while ((e = readdir(d)) != NULL) {
+        char path[300], buf[1024], *p;
+        unsigned long ut = 0, st = 0;
+        size_t n;
+        FILE *f;
+        if (e->d_name[0] == '.')
+            continue;
+        snprintf(path, sizeof path, "/proc/self/task/%s/stat", e->d_name);
+        f = fopen(path, "r");
+        if (!f)
+            continue;
+        n = fread(buf, 1, sizeof buf - 1, f);
+        fclose(f);
+        buf[n] = '\0';
+        p = strrchr(buf, ')'); /* fields after the command name */
+        if (p && sscanf(p + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u "
+                               "%lu %lu", &ut, &st) == 2)
+            printf("thread %s: %lu ticks\n", e->d_name, ut + st);
+    }
+    closedir(d);
+}
+
+int main(int argc, char **argv)
+{
+    const char *device = argc > 4 ? argv[4] : "cpu";
+    const int builds = argc > 2 ? atoi(argv[2]) : 20;
+    const int threads = argc > 3 ? atoi(argv[3]) : 2;
+    double stage[ATRBVH_STAGE_COUNT] = {0}, sum = 0.0, best = 1e300;
+    atrbvh_build_options o;
+    atrbvh_geometry g;
+    atrbvh_device *dev;
+    atrbvh_error err;
+    char why[256];
+    scene s;
+    int r, k;
+    if (argc < 2 || builds < 1) {
+        fprintf(stderr, "usage: modes SCENE [BUILDS [THREADS [DEVICE]]]\n");
+        return 2;
+    }
+    if (scene_load(argv[1], &s, why, sizeof why) != 0) {
+        fprintf(stderr, "modes: %s\n", why);
+        return 1;
+    }
+    if (atrbvh_device_open(device, &dev, &err) != ATRBVH_OK) {
+        fprintf(stderr, "modes: %s\n", err.text);
+        return 1;
+    }
+    g = scene_geometry(&s);
+    atrbvh_build_options_init(&o);
+    o.method = ATRBVH_METHOD_LBVH;
+    o.device = dev;
+    o.threads = threads;
+    o.collapse = 1;
+    o.max_leaf_size = 8;
+    for (r = 0; r <= builds; r++) { /* build 0: the warm-up */
+        atrbvh_bvh *b;
+        double t = now_ms();
+        if (atrbvh_build(&g, &o, &b, &err) != ATRBVH_OK) {
+            fprintf(stderr, "modes: %s\n", err.text);
+            return 1;
+        }
+        t = now_ms() - t;
+        if (r > 0) {
+            sum += t;
+            best = t < best ? t : best;
+            for (k = 0; k < ATRBVH_STAGE_COUNT; k++)
+                stage[k] += atrbvh_bvh_stage_ms(b, (atrbvh_stage)k);
+        }
+        atrbvh_bvh_free(b);
+    }
+    printf("%s, %d builds, %d threads, %s: min %.3f ms, mean %.3f ms\n",
+           argv[1], builds, threads, device, best, sum / builds);
+    for (k = 0; k < ATRBVH_STAGE_COUNT; k++)
+        printf("  %-10s %.3f ms\n", atrbvh_stage_name((atrbvh_stage)k),
+               stage[k] / builds);
+    print_threads();
+    atrbvh_device_close(dev);
+    scene_free(&s);
+    return 0;
+}
