@@ -65,12 +65,25 @@ for part in "$@"; do
         ;;
     speed)
         # Builds only, 2 threads, median of 5, beside Embree in one run;
-        # then the standalone Embree timing and the 10^7 scaling.
+        # then the standalone Embree timing and the 10^7 scaling.  The
+        # cache probe (docs/bench/cacheprobe.c) records what the load
+        # average cannot: how much of the host's shared cache its
+        # neighbours leave us, before and after.
+        PROBE_DIR=$(mktemp -d)
+        PROBE=
+        if ${CC:-cc} -O2 -std=c99 -o "$PROBE_DIR/cacheprobe" \
+            docs/bench/cacheprobe.c 2>/dev/null; then
+            PROBE=$PROBE_DIR/cacheprobe
+        fi
+        probe() {
+            if [ -n "$PROBE" ]; then "$PROBE"; else echo "not built"; fi
+        }
         {
             echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
             echo "cpu: $(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -n 1), $(nproc) cores"
             echo "OMP_WAIT_POLICY: $OMP_WAIT_POLICY"
             echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+            echo "cache probe before: $(probe)"
             echo "command: sh docs/run_benchmarks.sh speed"
         } >"$OUT/speed-machine.txt"
         mkdir -p "$OUT/speed"
@@ -86,7 +99,11 @@ for part in "$@"; do
         "$TOOL" bench --scaling builtin:sphere --configs lbvh --threads 2 \
             --repeat 3 --sizes 100000,1000000,3000000,10000000 \
             --csv "$OUT/speed-scaling.csv" >"$OUT/speed-scaling.txt"
-        echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)" >>"$OUT/speed-machine.txt"
+        {
+            echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
+            echo "cache probe after: $(probe)"
+        } >>"$OUT/speed-machine.txt"
+        rm -rf "$PROBE_DIR"
         python3 docs/speed_tables.py "$OUT" docs/benchmarks.md
         ;;
     tables)
