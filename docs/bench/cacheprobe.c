@@ -5,13 +5,15 @@
  *
  * On a virtual machine the load average shows only this guest's threads;
  * the neighbours that share the host's last-level cache do not appear in
- * it, yet they make every stage of a build 1.5-2x slower for seconds at a
- * time (docs/benchmarks.md, "what the slow mode is").  This program walks
- * a random cycle through a 4 MiB array (one dependent load after another,
- * so each load waits for the one before: its latency, not bandwidth),
- * SAMPLES times with a pause between, and prints the time per load: about
- * 10-20 ns when the cache holds the array, 50-150 ns when the neighbours
- * have pushed it out to memory.  It measures, it decides nothing.
+ * it.  This program walks a random cycle through a 4 MiB array (one
+ * dependent load after another, so each load waits for the one before:
+ * its latency, not bandwidth), SAMPLES times with a pause between, and
+ * prints the time per load: about 13-20 ns when the cache holds the
+ * array, 40-160 ns when the neighbours have pushed it out to memory.  It
+ * measures, it decides nothing, and it does not tell a build's mode
+ * (docs/benchmarks.md, "what the slow mode is"): 25 pairs of a 3-sample
+ * probe and 10 sibenik LBVH builds (docs/bench/modes.c), 3 December 2026,
+ * correlated at -0.11 (probe 33-124 ns, builds 3.8-8.1 ms mean).
  *
  *   cc -O2 -std=c99 -o cacheprobe docs/bench/cacheprobe.c
  *   ./cacheprobe [SAMPLES [PAUSE_MS]]          (default 10 samples, 200 ms)
