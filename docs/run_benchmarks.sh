@@ -66,24 +66,17 @@ for part in "$@"; do
     speed)
         # Builds only, 2 threads, median of 5, beside Embree in one run;
         # then the standalone Embree timing and the 10^7 scaling.  The
-        # cache probe (docs/bench/cacheprobe.c) records what the load
-        # average cannot: how much of the host's shared cache its
-        # neighbours leave us, before and after.
-        PROBE_DIR=$(mktemp -d)
-        PROBE=
-        if ${CC:-cc} -O2 -std=c99 -o "$PROBE_DIR/cacheprobe" \
-            docs/bench/cacheprobe.c 2>/dev/null; then
-            PROBE=$PROBE_DIR/cacheprobe
-        fi
-        probe() {
-            if [ -n "$PROBE" ]; then "$PROBE"; else echo "not built"; fi
-        }
+        # host's steal time over the run is recorded beside the load: on a
+        # virtual machine the load average shows only this guest's
+        # threads, steal the time its vCPUs were ready and the host ran
+        # something else (/proc/stat, all CPUs, clock ticks).
+        steal() { awk '/^cpu / { print $2 + $3 + $4 + $7 + $8, $9 }' /proc/stat; }
+        STEAL0=$(steal)
         {
             echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
             echo "cpu: $(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -n 1), $(nproc) cores"
             echo "OMP_WAIT_POLICY: $OMP_WAIT_POLICY"
             echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
-            echo "cache probe before: $(probe)"
             echo "command: sh docs/run_benchmarks.sh speed"
         } >"$OUT/speed-machine.txt"
         mkdir -p "$OUT/speed"
@@ -101,9 +94,10 @@ for part in "$@"; do
             --csv "$OUT/speed-scaling.csv" >"$OUT/speed-scaling.txt"
         {
             echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
-            echo "cache probe after: $(probe)"
+            echo "$STEAL0 $(steal)" | awk '{ b = $3 - $1; s = $4 - $2;
+                printf "steal during the run: %.1f%% of the CPU time (%d of %d ticks)\n",
+                       b + s > 0 ? 100 * s / (b + s) : 0, s, b + s }'
         } >>"$OUT/speed-machine.txt"
-        rm -rf "$PROBE_DIR"
         python3 docs/speed_tables.py "$OUT" docs/benchmarks.md
         ;;
     tables)
