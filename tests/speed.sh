@@ -112,4 +112,46 @@ PY
 else
     fail "speed_tables.py failed: $(cat "$T/py.err")"
 fi
+
+# ---------------------------------- every recorded run (speed_runs.py)
+# Two copies of this run under run names, dated out of name order, and a
+# CSV without its machine file (not a run: left out).
+RUNS=$T/runs
+mkdir -p "$RUNS" || exit 99
+for r in b a; do cp "$OUT/speed.csv" "$RUNS/$r-speed.csv" || exit 99; done
+cp "$OUT/speed.csv" "$RUNS/lone-speed.csv" || exit 99
+printf 'date: 2026-01-02 00:00 UTC\ncpu: Test CPU, 2 cores\nload before: 1 2 3\n' >"$RUNS/a-machine.txt"
+printf 'date: 2026-01-01 00:00 UTC\ncpu: Test CPU, 2 cores\nload before: 0 0 0\n' >"$RUNS/b-machine.txt"
+printf '# before\n<!-- BEGIN RUNS -->\nold text\n<!-- END RUNS -->\n# after\n' >"$T/runs.md"
+checks=$((checks + 1))
+if python3 "$SRCDIR/docs/speed_runs.py" "$RUNS" "$T/runs.md" 2>"$T/py.err"; then
+    python3 - "$OUT" "$T/runs.md" <<'PY' || fail "speed_runs.py: the table does not match its runs"
+import csv, os, sys
+out, doc = sys.argv[1], sys.argv[2]
+text = open(doc).read()
+assert text.startswith("# before\n<!-- BEGIN RUNS -->\n"), "text before the table changed"
+assert text.endswith("<!-- END RUNS -->\n# after\n"), "text after the table changed"
+assert "old text" not in text, "the old table is still there"
+rows = list(csv.DictReader(open(os.path.join(out, "speed.csv"))))
+def ms(method, ts=None):
+    return [float(r["build_ms"]) for r in rows
+            if r["method"] == method and (ts is None or r["treelet_size"] == ts)][0]
+want = [(ms("lbvh"), ms("embree_low"), 0.8), (ms("atrbvh", "9"), ms("embree_medium"), 0.8),
+        (ms("trbvh", "7"), ms("embree_medium"), 1.5)]
+cells = ["%d/1 (%.2f)" % (a / b <= g, a / b) for a, b, g in want] + ["-", "-"]
+every = "yes" if all(a / b <= g for a, b, g in want) else "no"
+lines = [l for l in text.splitlines() if l.startswith("| a |") or l.startswith("| b |")]
+assert [l.split("|")[1].strip() for l in lines] == ["b", "a"], lines  # by date
+assert "lone" not in text, "a CSV without its machine file was counted"
+for l, load in zip(lines, ["0 0 0", "1 2 3"]):
+    got = [c.strip() for c in l.strip("|").split("|")]
+    assert got[2:] == ["Test CPU", load] + cells + [every], (got, cells)
+host = [l for l in text.splitlines() if l.startswith("* **Test CPU**")]
+assert host and ("2 runs, %d with every cell met" % (2 if every == "yes" else 0)) in host[0], host
+assert "LBVH / low %d of 2" % (2 * (want[0][0] / want[0][1] <= 0.8)) in host[0], host
+assert "OpenCL LBVH / CPU 0 of 0" in host[0], host
+PY
+else
+    fail "speed_runs.py failed: $(cat "$T/py.err")"
+fi
 finish
