@@ -96,7 +96,7 @@ for part in "$@"; do
             echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
             echo "$STEAL0 $(steal)" | awk '{ b = $3 - $1; s = $4 - $2;
                 printf "steal during the run: %.1f%% of the CPU time (%d of %d ticks)\n",
-                       b + s > 0 ? 100 * s / (b + s) : 0, s, b + s }'
+                       (b + s > 0 ? 100 * s / (b + s) : 0), s, b + s }'
         } >>"$OUT/speed-machine.txt"
         python3 docs/speed_tables.py "$OUT" docs/benchmarks.md
         ;;
