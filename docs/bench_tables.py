@@ -60,7 +60,7 @@ try:
 except OSError:
     pass
 P("### Machine and run\n")
-for k in ("date", "cpu", "nproc", "memory", "compiler", "embree", "OMP_WAIT_POLICY",
+for k in ("date", "cpu", "nproc", "memory", "compiler", "embree", "OMP_WAIT_POLICY", "POCL_AFFINITY",
           "load before", "load after", "command"):
     if k in info:
         P("* **%s**: %s" % (k, info[k] if k != "command" else "`%s`" % info[k]))

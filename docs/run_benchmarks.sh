@@ -20,6 +20,15 @@ SCENES="$S/bunny.ply $S/sibenik.ply $S/dabrovic_sponza.ply $S/conference.ply $S/
 # needs (docs/benchmarks.md shows both).
 OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 export OMP_WAIT_POLICY
+# PoCL's CPU device pins its worker threads to cores (its own knob): on the
+# virtual machines these ran on, unpinned workers that had been idle for a
+# while were often stacked on one vCPU by the guest's scheduler, and an
+# OpenCL LBVH of bunny took 6.6-7.8 ms instead of 3.5-4.3 (docs/opencl.md,
+# "PoCL's workers after an idle spell").  The OpenMP threads stay unbound:
+# OMP_PROC_BIND binds the main thread to one core, and Embree's threads,
+# which inherit its mask, then build on that core alone.
+POCL_AFFINITY=${POCL_AFFINITY:-1}
+export POCL_AFFINITY
 [ $# -gt 0 ] || set -- machine main sweep scaling render tables
 mkdir -p "$OUT"
 for part in "$@"; do
@@ -33,6 +42,7 @@ for part in "$@"; do
             echo "compiler: $(${CC:-cc} --version | head -n 1)"
             echo "embree: $("$TOOL" bench --repeat 1 --no-rays --configs lbvh builtin:sphere:100 | sed -n 's/^# Embree\([^:]*\):.*/Embree\1/p')"
             echo "OMP_WAIT_POLICY: $OMP_WAIT_POLICY"
+            echo "POCL_AFFINITY: $POCL_AFFINITY"
             echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
             echo "command: sh docs/run_benchmarks.sh"
         } >"$OUT/machine.txt"
@@ -76,6 +86,7 @@ for part in "$@"; do
             echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
             echo "cpu: $(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -n 1), $(nproc) cores"
             echo "OMP_WAIT_POLICY: $OMP_WAIT_POLICY"
+            echo "POCL_AFFINITY: $POCL_AFFINITY"
             echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
             echo "command: sh docs/run_benchmarks.sh speed"
         } >"$OUT/speed-machine.txt"

@@ -7,11 +7,16 @@
  *   cc -O2 -std=c99 -I lib -I _build -I _build/lib -I tools \
  *      -o /tmp/modes docs/bench/modes.c _build/tools/.libs/libscene.a \
  *      -L_build/lib/.libs -latrbvh -lm
- *   LD_LIBRARY_PATH=_build/lib/.libs /tmp/modes SCENE [BUILDS [THREADS [DEVICE]]]
+ *   LD_LIBRARY_PATH=_build/lib/.libs /tmp/modes SCENE [BUILDS [THREADS
+ *       [DEVICE [PAUSE_MS [WARM]]]]]
  *
- * DEVICE: cpu (default) or opencl.  Run it several times: a process tends
- * to stay in one mode.  Thread CPU times are clock ticks from
- * /proc/self/task/ID/stat (Linux).
+ * DEVICE: cpu (default) or opencl.  PAUSE_MS (default 0): a sleep before
+ * each timed build, then WARM (default 0) untimed builds: how a build
+ * fares after the threads were idle ("PoCL's workers after an idle spell"
+ * in docs/opencl.md).  Run it several times: a process tends to stay in
+ * one mode.  Printed: the stages' and (OpenCL) the kernels' mean times,
+ * and each thread's CPU time in clock ticks from /proc/self/task/ID/stat
+ * (Linux).
  */
 #define _POSIX_C_SOURCE 199309L
 #include "atrbvh.h"
@@ -22,6 +27,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+
+#define MAX_KERNELS 64
 
 static double now_ms(void)
 {
@@ -64,7 +71,13 @@ int main(int argc, char **argv)
     const char *device = argc > 4 ? argv[4] : "cpu";
     const int builds = argc > 2 ? atoi(argv[2]) : 20;
     const int threads = argc > 3 ? atoi(argv[3]) : 2;
+    const long pause = argc > 5 ? atol(argv[5]) : 0;
+    const int warm = argc > 6 ? atoi(argv[6]) : 0;
     double stage[ATRBVH_STAGE_COUNT] = {0}, sum = 0.0, best = 1e300;
+    /* kernels by name, in the order first seen */
+    double kernel_ms[MAX_KERNELS] = {0};
+    char kernel_name[MAX_KERNELS][64];
+    size_t kernels = 0, q;
     atrbvh_build_options o;
     atrbvh_geometry g;
     atrbvh_device *dev;
@@ -72,8 +85,9 @@ int main(int argc, char **argv)
     char why[256];
     scene s;
     int r, k;
-    if (argc < 2 || builds < 1) {
-        fprintf(stderr, "usage: modes SCENE [BUILDS [THREADS [DEVICE]]]\n");
+    if (argc < 2 || builds < 1 || pause < 0 || pause > 10000 || warm < 0) {
+        fprintf(stderr, "usage: modes SCENE [BUILDS [THREADS [DEVICE "
+                        "[PAUSE_MS [WARM]]]]]\n");
         return 2;
     }
     if (scene_load(argv[1], &s, why, sizeof why) != 0) {
@@ -93,7 +107,21 @@ int main(int argc, char **argv)
     o.max_leaf_size = 8;
     for (r = 0; r <= builds; r++) { /* build 0: the warm-up */
         atrbvh_bvh *b;
-        double t = now_ms();
+        double t;
+        int w;
+        if (pause > 0) {
+            const struct timespec ts = {pause / 1000,
+                                        (pause % 1000) * 1000000L};
+            nanosleep(&ts, NULL);
+        }
+        for (w = 0; w < warm; w++) {
+            if (atrbvh_build(&g, &o, &b, &err) != ATRBVH_OK) {
+                fprintf(stderr, "modes: %s\n", err.text);
+                return 1;
+            }
+            atrbvh_bvh_free(b);
+        }
+        t = now_ms();
         if (atrbvh_build(&g, &o, &b, &err) != ATRBVH_OK) {
             fprintf(stderr, "modes: %s\n", err.text);
             return 1;
@@ -102,16 +130,34 @@ int main(int argc, char **argv)
         if (r > 0) {
             sum += t;
             best = t < best ? t : best;
+            const char *name;
+            double ms;
+            size_t i;
             for (k = 0; k < ATRBVH_STAGE_COUNT; k++)
                 stage[k] += atrbvh_bvh_stage_ms(b, (atrbvh_stage)k);
+            for (i = 0; atrbvh_bvh_kernel_time(b, i, &name, &ms); i++) {
+                for (q = 0; q < kernels && strcmp(kernel_name[q], name); q++)
+                    ;
+                if (q == kernels && kernels < MAX_KERNELS) {
+                    snprintf(kernel_name[q], sizeof kernel_name[q], "%s",
+                             name);
+                    kernels++;
+                }
+                if (q < kernels)
+                    kernel_ms[q] += ms;
+            }
         }
         atrbvh_bvh_free(b);
     }
-    printf("%s, %d builds, %d threads, %s: min %.3f ms, mean %.3f ms\n",
-           argv[1], builds, threads, device, best, sum / builds);
+    printf("%s, %d builds, %d threads, %s, each after %ld ms idle and %d "
+           "untimed: min %.3f ms, mean %.3f ms\n",
+           argv[1], builds, threads, device, pause, warm, best, sum / builds);
     for (k = 0; k < ATRBVH_STAGE_COUNT; k++)
         printf("  %-10s %.3f ms\n", atrbvh_stage_name((atrbvh_stage)k),
                stage[k] / builds);
+    for (q = 0; q < kernels; q++)
+        printf("  kernel %-16s %.3f ms\n", kernel_name[q],
+               kernel_ms[q] / builds);
     print_threads();
     atrbvh_device_close(dev);
     scene_free(&s);

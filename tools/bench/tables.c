@@ -100,6 +100,24 @@ void table_header(FILE *f, const bench_args *a)
                           "loaded machine set it to passive)");
     }
     {
+        /* Binding pins the main thread to one core at OpenMP's start, and
+         * Embree's TBB sizes its pool by that thread's mask: its rows ran
+         * on one core (bunny 1.8x slower, 3 December). */
+        const char *pb = getenv("OMP_PROC_BIND");
+        if (pb && *pb && strcmp(pb, "false") != 0 && embree_available())
+            fprintf(f, "# OMP_PROC_BIND=%s: the main thread is bound to one "
+                       "core and Embree's threads inherit its mask, so the "
+                       "Embree rows are not comparable\n",
+                    pb);
+    }
+    {
+        /* PoCL's own knob for its CPU device's worker threads (each pinned
+         * to the core of its index): docs/opencl.md. */
+        const char *pa = getenv("POCL_AFFINITY");
+        if (pa)
+            fprintf(f, "# POCL_AFFINITY=%s\n", pa);
+    }
+    {
         double l[3];
         FILE *la = fopen("/proc/loadavg", "r");
         if (la) {
