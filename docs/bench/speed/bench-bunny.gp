@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.8767914:33.8557648]
-set xtics (5, 10, 20)
+set xrange [3.35844184:51.9861533]
+set xtics (5, 10, 20, 50)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 3.69447319,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 9.20744304,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 7.36371151,39.0414315 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 10.6104791,39.3432138 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 8.96195516,38.1169475 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 13.31429,38.8402084 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 20.7063194,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 8.35932334,38.5681918 left font ',8' noenhanced front
-set label 'embree_low' at 3.95098501,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 20.5055113,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 14.9855237,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 2.94310681,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 13.3292209,38.1169475 left font ',8' noenhanced front
+set label 'LBVH' at 3.6994048,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 11.9279516,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 8.75427666,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 13.9608597,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 10.8484875,38.4286758 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 18.8081778,38.4434634 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 30.1037933,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 18.1941118,38.8799201 left font ',8' noenhanced front
+set label 'embree_low' at 6.25896461,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 23.6313968,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 16.634033,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.66132041,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 16.2316215,38.1169475 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [39.445955:492.34248]
-set xtics (50, 100, 200)
+set xrange [51.1259934:648.408371]
+set xtics (100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 55.9274192,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 130.723074,63.4134696 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 102.779822,61.8432232 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 158.106455,62.4957022 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 126.799908,60.8121607 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 170.923777,59.8198299 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 297.607688,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 199.334389,61.3999923 left font ',8' noenhanced front
-set label 'embree_low' at 65.110166,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 279.240768,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 194.618265,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 40.377202,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 119.08653,60.1668795 left font ',8' noenhanced front
+set label 'LBVH' at 72.2612631,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 192.52074,62.7681885 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 125.304112,62.4885043 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 149.266392,61.2051399 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 194.511708,60.6361749 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 214.676022,59.8198299 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 390.697862,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 265.362065,61.3999923 left font ',8' noenhanced front
+set label 'embree_low' at 89.0585714,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 313.267756,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 219.18104,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 52.340718,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 230.646967,62.1027229 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
