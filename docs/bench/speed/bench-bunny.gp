@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.35844184:51.9861533]
-set xtics (5, 10, 20, 50)
+set xrange [2.12657512:36.5071159]
+set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 3.6994048,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 11.9279516,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 8.75427666,39.0414315 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 13.9608597,39.3432138 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 10.8484875,38.4286758 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 18.8081778,38.4434634 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 30.1037933,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 18.1941118,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 6.25896461,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 23.6313968,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 16.634033,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 4.66132041,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 16.2316215,38.1169475 left font ',8' noenhanced front
+set label 'LBVH' at 2.35104653,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 7.81678424,39.4272587 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 5.5532894,39.3531597 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 6.3802161,38.7197574 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 8.37208743,38.343659 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 11.9820224,38.8402084 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 17.9148107,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.7594247,37.9447354 left font ',8' noenhanced front
+set label 'embree_low' at 3.74766448,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 20.7084455,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 14.3543673,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 2.93913066,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 10.4415338,39.3638605 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [16.442051:197.765113]
+set xrange [11.3600475:182.907283]
 set xtics (20, 50, 100)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 17.9507692,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 61.0931095,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 61.5306655,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 73.3986464,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 61.8122791,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 119.91355,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 120.429121,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 72.91496,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 30.4838965,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 76.9212885,44.5451095 left font ',8' noenhanced front
-set label 'embree_high' at 109.251734,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 22.540784,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 87.41601,38.1056054 left font ',8' noenhanced front
+set label 'LBVH' at 14.8477005,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 48.17127,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 54.7676361,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 58.0020282,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 44.8107899,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 92.9681964,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 105.088251,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 51.8526192,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 22.7976135,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 59.9237714,44.5451095 left font ',8' noenhanced front
+set label 'embree_high' at 97.0019767,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 18.3079937,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 68.3449595,36.836494 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

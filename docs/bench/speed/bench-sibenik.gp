@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [4.48843731:56.2845978]
-set xtics (5, 10, 20, 50)
+set xrange [2.36336082:40.5415666]
+set xtics (5, 10, 20)
 set yrange [48.0282379:83.2612389]
 unset label
-set label 'LBVH' at 4.90750928,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 17.1504179,55.3185336 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 11.7666051,55.6393964 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 15.1595344,54.157298 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 12.1981688,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 25.504277,50.753527 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 33.9908211,52.3325777 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 14.866847,51.3573403 left font ',8' noenhanced front
-set label 'embree_low' at 7.92167991,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 24.5157742,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 24.0273467,56.4830355 left font ',8' noenhanced front
-set label 'LBVH/cl' at 6.07396239,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 20.9766973,52.9793966 left font ',8' noenhanced front
+set label 'LBVH' at 2.61275694,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 8.71418876,56.219843 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 6.60557851,53.8367777 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 11.2687461,54.157298 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 9.27240582,52.9793966 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 19.4488698,50.753527 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 23.0004098,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 10.5190009,51.3573403 left font ',8' noenhanced front
+set label 'embree_low' at 4.7404422,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 13.3462326,55.5817262 left font ',8' noenhanced front
+set label 'embree_high' at 20.1600557,54.6804169 left font ',8' noenhanced front
+set label 'LBVH/cl' at 3.23711816,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 13.677015,52.9793966 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
