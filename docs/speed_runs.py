@@ -14,7 +14,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from speed_tables import fnum, label, load, sname  # noqa: E402
+from speed_tables import fnum, label, load, replace_section, sname  # noqa: E402
 
 # (header, numerator configuration, denominator configuration, goal)
 GOALS = [
@@ -101,13 +101,7 @@ def main():
                  "goal: %s." % (host, n, every, ", ".join(
                      "%s %d of %d" % (GOALS[k][0].split(" (")[0], met, tot)
                      for k, (met, tot) in enumerate(per))))
-    text = open(doc).read()
-    a, b = "<!-- BEGIN RUNS -->", "<!-- END RUNS -->"
-    i, j = text.index(a) + len(a), text.index(b)
-    tmp = doc + ".tmp"
-    with open(tmp, "w") as fh:
-        fh.write(text[:i] + "\n" + "\n".join(L) + "\n" + text[j:])
-    os.replace(tmp, doc)
+    replace_section(doc, "RUNS", L)
 
 
 if __name__ == "__main__":

@@ -49,6 +49,19 @@ def sname(path):
     return os.path.splitext(os.path.basename(path))[0]
 
 
+def replace_section(doc, name, lines):
+    """DOC's text between <!-- BEGIN name --> and <!-- END name --> becomes
+    `lines`, written to a file beside DOC and renamed over it."""
+    text = open(doc).read()
+    a, b = "<!-- BEGIN %s -->" % name, "<!-- END %s -->" % name
+    i, j = text.index(a), text.index(b)
+    text = text[:i + len(a)] + "\n" + "\n".join(lines) + "\n" + text[j:]
+    tmp = doc + ".tmp"
+    with open(tmp, "w") as fh:
+        fh.write(text)
+    os.replace(tmp, doc)
+
+
 def ratio_cell(num, den, goal):
     if not (num > 0 and den > 0):
         return "-"
@@ -260,14 +273,7 @@ def main():
     L.append("")
     L.append(" ".join("![%s](bench/speed/pareto-%s.png)" % (s, s)
                       for s in scenes))
-    text = open(doc).read()
-    a, b = "<!-- BEGIN SPEED -->", "<!-- END SPEED -->"
-    i, j = text.index(a), text.index(b)
-    text = text[:i + len(a)] + "\n" + "\n".join(L) + "\n" + text[j:]
-    tmp = doc + ".tmp"
-    with open(tmp, "w") as fh:
-        fh.write(text)
-    os.replace(tmp, doc)
+    replace_section(doc, "SPEED", L)
 
 
 if __name__ == "__main__":
