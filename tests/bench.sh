@@ -162,6 +162,28 @@ run 2 bench "$SCENE" --repeat 1 --no-rays --configs lbvh --csv "$T/same.csv" \
     --builds "$T/same.csv" && { [ ! -e "$T/same.csv" ] || fail "--builds = --csv wrote $T/same.csv"; }
 checks=$((checks + 1))
 
+# The header records POCL_AFFINITY, and warns of OMP_PROC_BIND when the
+# bench has Embree rows (the bound main thread's mask is Embree's too);
+# neither line without its variable.
+hdr() { grep -c "^# $1" "$T/out"; }
+if env -u POCL_AFFINITY -u OMP_PROC_BIND "$TOOL" bench builtin:sphere:500 --repeat 1 --no-rays \
+    --configs lbvh >"$T/out" 2>"$T/err"; then
+    [ "$(hdr POCL_AFFINITY=)" -eq 0 ] || fail "bench header names POCL_AFFINITY, which is unset"
+    [ "$(hdr OMP_PROC_BIND=)" -eq 0 ] || fail "bench header warns of OMP_PROC_BIND, which is unset"
+else
+    fail "bench without POCL_AFFINITY failed: $(cat "$T/err")"
+fi
+if POCL_AFFINITY=1 OMP_PROC_BIND=spread "$TOOL" bench builtin:sphere:500 --repeat 1 \
+    --no-rays --threads 1 --configs lbvh >"$T/out" 2>"$T/err"; then
+    [ "$(hdr 'POCL_AFFINITY=1$')" -eq 1 ] || fail "bench header does not record POCL_AFFINITY=1"
+    if grep -q '^# Embree [0-9]' "$T/out"; then
+        [ "$(hdr 'OMP_PROC_BIND=spread: ')" -eq 1 ] || fail "bench header does not warn of OMP_PROC_BIND"
+    fi
+else
+    fail "bench with POCL_AFFINITY=1 failed: $(cat "$T/err")"
+fi
+checks=$((checks + 1))
+
 # --methods x --treelet x --rounds, no rays
 run 0 bench "$SCENE" --repeat 1 --no-rays --methods atrbvh,lbvh --treelet 5,7 \
     --rounds 1,2 --csv "$T/m.csv" &&
