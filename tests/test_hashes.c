@@ -19,10 +19,18 @@
  * folder the real scenes are skipped with a message; the built-in scenes
  * always run.
  *
+ * The optimised trees are built twice more, with ATRBVH_CPU_LANES=1 (the
+ * CPU's post-order walk, one treelet at a time) and =2 (two treelets side
+ * by side; TRBVH's DP in SSE2's two lanes), and must hash as the default
+ * build (four; TRBVH's DP in AVX's four lanes where the CPU has AVX): the
+ * optimiser's ways of taking treelets give the same bits.
+ *
  * ATRBVH_WRITE_HASHES=FILE: write the table to FILE (a temporary file
  * beside it, then renamed) instead of comparing; the comment lines of the
  * current table are kept, so its header and change notes survive.
  */
+#define _POSIX_C_SOURCE 200809L
+
 #include <check.h>
 #include <errno.h>
 #include <stdarg.h>
@@ -313,6 +321,27 @@ START_TEST(tree_hashes)
         tree_hash(bvh, hex, &nodes);
         atrbvh_bvh_stats(bvh, &st);
         atrbvh_bvh_free(bvh);
+        if (o.method != ATRBVH_METHOD_LBVH) {
+            static const char *const lanes[] = {"1", "2"};
+            size_t k;
+            for (k = 0; k < sizeof lanes / sizeof *lanes; k++) {
+                char other[65];
+                size_t other_nodes;
+                ck_assert_int_eq(setenv("ATRBVH_CPU_LANES", lanes[k], 1), 0);
+                bvh = tu_build(&g, &o);
+                ck_assert_int_eq(unsetenv("ATRBVH_CPU_LANES"), 0);
+                tree_hash(bvh, other, &other_nodes);
+                atrbvh_bvh_free(bvh);
+                if (strcmp(other, hex) != 0) {
+                    fprintf(stderr, "test_hashes: %s %s: ATRBVH_CPU_LANES=%s "
+                            "builds another tree (sha256 %s, %zu nodes) "
+                            "than the default (%s, %zu nodes)\n",
+                            se->name, configs[c].name, lanes[k], other,
+                            other_nodes, hex, nodes);
+                    bad++;
+                }
+            }
+        }
         snprintf(sah, sizeof sah, "%.17g", st.sah);
         if (write_path) {
             line *w;

@@ -119,15 +119,33 @@ typedef struct atrbvh_treelet_topo {
  * is appended.  Returns the number of leaves formed: n whenever the root's
  * subtree holds at least n primitives (it then has at least n-1 internal
  * nodes), fewer only otherwise. */
-ATRBVH_FN atrbvh_u32 atrbvh_treelet_form(const atrbvh_treelet_tree *t,
-                                         atrbvh_u32 root, atrbvh_u32 n,
-                                         atrbvh_treelet *tl)
+/* Formation in steps, so that a driver can advance several treelets side
+ * by side (optimise.c: the loads of one overlap those of the others):
+ * atrbvh_treelet_form_first takes the root's two children (tl->n = 2),
+ * each atrbvh_treelet_form_next one expansion (tl->n + 1), returning 0
+ * when no slot is an internal BVH node.  `area` holds the slots' areas
+ * in between (-1 for a slot that is not an internal node).  On the CPU a
+ * slot's box, cost and count are prefetched as it is filled, for the
+ * gather that follows (no effect on any value). */
+#if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__))
+#define ATRBVH_TREELET_PREFETCH(t, x)                                          \
+    do {                                                                       \
+        __builtin_prefetch(&(t)->box[x]);                                      \
+        __builtin_prefetch(&(t)->cost[x]);                                     \
+        __builtin_prefetch(&(t)->count[x]);                                    \
+    } while (0)
+#else
+#define ATRBVH_TREELET_PREFETCH(t, x) ((void)0)
+#endif
+ATRBVH_FN void atrbvh_treelet_form_first(const atrbvh_treelet_tree *t,
+                                         atrbvh_u32 root, atrbvh_treelet *tl,
+                                         double *area)
 {
-    double area[ATRBVH_TREELET_MAX];
-    atrbvh_u32 m = 2, k;
     tl->internal[0] = root;
     tl->leaf[0] = t->left[root];
     tl->leaf[1] = t->right[root];
+    ATRBVH_TREELET_PREFETCH(t, tl->leaf[0]);
+    ATRBVH_TREELET_PREFETCH(t, tl->leaf[1]);
     area[0] = atrbvh_box_area(t->box[tl->leaf[0]]);
     area[1] = atrbvh_box_area(t->box[tl->leaf[1]]);
     /* A slot that is not an internal BVH node gets area -1: areas are
@@ -137,32 +155,49 @@ ATRBVH_FN atrbvh_u32 atrbvh_treelet_form(const atrbvh_treelet_tree *t,
         area[0] = -1.0;
     if (tl->leaf[1] >= t->n_internal)
         area[1] = -1.0;
-    while (m < n) {
-        atrbvh_u32 best = ATRBVH_U32_MAX, node, child;
-        double best_area = -0.5;
-        /* best moves on strict >; the maximum in place (MAXSD; equal
-         * areas have equal bits: never -0 nor NaN). */
-        for (k = 0; k < m; k++) {
-            const double a = area[k];
-            best = a > best_area ? k : best;
-            best_area = best_area > a ? best_area : a;
-        }
-        if (best == ATRBVH_U32_MAX)
-            break;
-        node = tl->leaf[best];
-        tl->internal[m - 1] = node;
-        child = t->left[node];
-        tl->leaf[best] = child;
-        area[best] = child < t->n_internal ? atrbvh_box_area(t->box[child])
-                                           : -1.0;
-        child = t->right[node];
-        tl->leaf[m] = child;
-        area[m] = child < t->n_internal ? atrbvh_box_area(t->box[child])
-                                        : -1.0;
-        m++;
+    tl->n = 2;
+}
+
+ATRBVH_FN int atrbvh_treelet_form_next(const atrbvh_treelet_tree *t,
+                                       atrbvh_treelet *tl, double *area)
+{
+    const atrbvh_u32 m = tl->n;
+    atrbvh_u32 best = ATRBVH_U32_MAX, node, child, k;
+    double best_area = -0.5;
+    /* best moves on strict >; the maximum in place (MAXSD; equal areas
+     * have equal bits: never -0 nor NaN). */
+    for (k = 0; k < m; k++) {
+        const double a = area[k];
+        best = a > best_area ? k : best;
+        best_area = best_area > a ? best_area : a;
     }
-    tl->n = m;
-    return m;
+    if (best == ATRBVH_U32_MAX)
+        return 0;
+    node = tl->leaf[best];
+    tl->internal[m - 1] = node;
+    child = t->left[node];
+    tl->leaf[best] = child;
+    ATRBVH_TREELET_PREFETCH(t, child);
+    area[best] =
+        child < t->n_internal ? atrbvh_box_area(t->box[child]) : -1.0;
+    child = t->right[node];
+    tl->leaf[m] = child;
+    ATRBVH_TREELET_PREFETCH(t, child);
+    area[m] = child < t->n_internal ? atrbvh_box_area(t->box[child]) : -1.0;
+    tl->n = m + 1u;
+    return 1;
+}
+
+/* The whole formation (the section's rule): up to n leaves. */
+ATRBVH_FN atrbvh_u32 atrbvh_treelet_form(const atrbvh_treelet_tree *t,
+                                         atrbvh_u32 root, atrbvh_u32 n,
+                                         atrbvh_treelet *tl)
+{
+    double area[ATRBVH_TREELET_MAX];
+    atrbvh_treelet_form_first(t, root, tl, area);
+    while (tl->n < n && atrbvh_treelet_form_next(t, tl, area))
+        ;
+    return tl->n;
 }
 
 ATRBVH_FN void atrbvh_treelet_gather(const atrbvh_treelet_tree *t,
@@ -649,6 +684,304 @@ ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
     return found;
 }
 
+/* ------------------------------------------------- TRBVH, two at once */
+/* Two treelets' DP side by side, one per lane of SSE2's two doubles (x86
+ * CPUs; the CPU driver pairs treelets of disjoint subtrees, optimise.c).
+ * Lane by lane it is atrbvh_trbvh_costs: the same subsets, the same
+ * partitions, the same IEEE sums in the same order, and each minimum
+ * written as the scalar one's select (MINPD's a < b ? a : b is the
+ * scalar lo < c ? lo : c and flat < best ? flat : best), so each lane's
+ * C(S) has the scalar bits.  The partition loop's instructions (about
+ * half of a TRBVH(7) treelet's) then serve two treelets; its loads are
+ * one 16-byte pair per cost.
+ *
+ * The two cost tables are interleaved in `pair` (4 * 2^n doubles,
+ * 16-byte aligned): C(S) of both lanes at pair[2S], pair[2S + 1], then
+ * the mirror rev[full ^ X] = C(X) of both lanes, as in
+ * atrbvh_trbvh_costs.  Each lane's own scratch (s0, s1) gets the subset
+ * boxes, areas and counts (atrbvh_trbvh_subsets); atrbvh_trbvh_lane then
+ * leaves, for a lane whose treelet is kept, its scratch exactly as
+ * atrbvh_trbvh_costs would have (for atrbvh_trbvh_extract).  found[l] is
+ * C(all leaves) of lane l. */
+#if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
+#define ATRBVH_TRBVH_PAIRS 1
+/* atrbvh_trbvh_min on both lanes (its enumeration, two running minima per
+ * lane).  cost and rest as doubles, the pair of subset P at 2P: the
+ * masks are kept doubled (2E - 2d2 = 2(E - d2), the same bits moved up
+ * one), so each pair is addressed with x86's scale of 8. */
+ATRBVH_FN __m128d atrbvh_trbvh_min2(const double *cost, const double *rest,
+                                    atrbvh_trbvh_mask S, __m128d base)
+{
+    const atrbvh_trbvh_mask delta = (S - 1u) & S;
+    const atrbvh_trbvh_mask lb = delta & (0u - delta);
+    const atrbvh_trbvh_mask l2 = lb + lb, d2 = (delta ^ lb) << 1;
+    const double *cost_lb = cost + l2, *rest_lb = rest + l2;
+    atrbvh_trbvh_mask E;
+    __m128d lo0 = _mm_add_pd(base, _mm_load_pd(cost + l2)), lo1;
+    lo0 = _mm_add_pd(lo0, _mm_load_pd(rest + l2));
+    lo1 = lo0;
+    for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
+        __m128d c = _mm_add_pd(base, _mm_load_pd(cost + E));
+        c = _mm_add_pd(c, _mm_load_pd(rest + E));
+        lo0 = _mm_min_pd(lo0, c);
+        c = _mm_add_pd(base, _mm_load_pd(cost_lb + E));
+        c = _mm_add_pd(c, _mm_load_pd(rest_lb + E));
+        lo1 = _mm_min_pd(lo1, c);
+    }
+    return _mm_min_pd(lo0, lo1);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline, unused)) static void
+#else
+ATRBVH_FN void
+#endif
+atrbvh_trbvh_costs2(const atrbvh_cost_params *p, atrbvh_u32 n,
+                    const atrbvh_treelet_leaves *lv0,
+                    const atrbvh_treelet_leaves *lv1, atrbvh_trbvh_scratch s0,
+                    atrbvh_trbvh_scratch s1, double *pair, double found[2])
+{
+    const atrbvh_u32 full = (1u << n) - 1u;
+    const atrbvh_u32 lim = !p->collapse          ? 0u
+                           : p->max_leaf == 0u ? ATRBVH_U32_MAX
+                                               : p->max_leaf;
+    const __m128d ci = _mm_set1_pd(p->ci), ct = _mm_set1_pd(p->ct);
+    __m128d *cost = (__m128d *)(void *)pair;
+    __m128d *rev_top = cost + ((atrbvh_trbvh_mask)1 << n) + full;
+    atrbvh_u32 k;
+
+    for (k = 0; k < n; k++) {
+        atrbvh_trbvh_subsets(n, k, lv0, s0);
+        atrbvh_trbvh_subsets(n, k, lv1, s1);
+    }
+    for (k = 0; k < n; k++) {
+        const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k;
+        const __m128d leaf = _mm_set_pd(lv1->cost[k], lv0->cost[k]);
+        atrbvh_trbvh_mask S;
+        cost[bit] = leaf;
+        *(rev_top - bit) = leaf;
+        for (S = bit + 1u; S < bit + bit; S++) {
+            const __m128d area = _mm_set_pd(s1.cost[S], s0.cost[S]);
+            const __m128d base = _mm_mul_pd(ci, area);
+            __m128d *rest = rev_top - S;
+            __m128d best = atrbvh_trbvh_min2(
+                pair, (const double *)(const void *)rest, S, base);
+            const atrbvh_u32 n0 = s0.count[S], n1 = s1.count[S];
+            if (n0 <= lim || n1 <= lim) {
+                /* flat < best ? flat : best in the lanes that may
+                 * collapse, best in the others */
+                const __m128d take = _mm_castsi128_pd(_mm_set_epi32(
+                    -(int)(n1 <= lim), -(int)(n1 <= lim), -(int)(n0 <= lim),
+                    -(int)(n0 <= lim)));
+                __m128d flat = _mm_mul_pd(ct, area);
+                flat = _mm_mul_pd(flat, _mm_set_pd((double)n1, (double)n0));
+                flat = _mm_min_pd(flat, best);
+                best = _mm_or_pd(_mm_and_pd(take, flat),
+                                 _mm_andnot_pd(take, best));
+            }
+            cost[S] = best;
+            rest[0] = best; /* rev[full ^ S] */
+        }
+    }
+    _mm_storel_pd(&found[0], cost[full]);
+    _mm_storeh_pd(&found[1], cost[full]);
+}
+
+/* Lane `lane` of atrbvh_trbvh_costs2 (lanes 2) or atrbvh_trbvh_costs4
+ * (lanes 4) into that lane's scratch, as atrbvh_trbvh_costs leaves it:
+ * C(S) in cost[S], the mirror and the areas in the box planes (their
+ * floats dead by then). */
+ATRBVH_FN void atrbvh_trbvh_lane(atrbvh_u32 n, const double *pair,
+                                 atrbvh_u32 lanes, atrbvh_u32 lane,
+                                 atrbvh_trbvh_scratch s)
+{
+    const atrbvh_u32 full = (1u << n) - 1u;
+    double *rev_top = (double *)(void *)s.box + full;
+    double *areas = rev_top + 1u;
+    atrbvh_trbvh_mask S;
+    ATRBVH_TRBVH_RETYPE();
+    for (S = 1; S <= full; S++) {
+        const double c = pair[lanes * S + lane];
+        areas[S] = s.cost[S];
+        s.cost[S] = c;
+        *(rev_top - S) = c;
+    }
+    ATRBVH_TRBVH_RETYPE();
+}
+
+/* Four treelets at once where the CPU has AVX (chosen at run time by the
+ * driver, __builtin_cpu_supports): atrbvh_trbvh_costs2 with four lanes
+ * of 256 bits, the same operations lane by lane (VMINPD, VADDPD, VMULPD
+ * are MINPD, ADDPD, MULPD on twice the lanes; the compiler contracts
+ * nothing, -ffp-contract=off, and AVX has no FMA), so every lane keeps
+ * the scalar bits.  `quad` holds 8 * 2^n doubles (32-byte aligned): C(S)
+ * of lane l at quad[4S + l], then the mirror likewise. */
+#if (defined(__GNUC__) || defined(__clang__)) &&                             \
+    (defined(__x86_64__) || defined(__i386__))
+#include <immintrin.h>
+#define ATRBVH_TRBVH_QUADS 1
+__attribute__((target("avx"))) static inline __m256d
+atrbvh_trbvh_min4(const double *cost, const double *rest, atrbvh_trbvh_mask S,
+                  __m256d base)
+{
+    const atrbvh_trbvh_mask delta = (S - 1u) & S;
+    const atrbvh_trbvh_mask lb = delta & (0u - delta);
+    const atrbvh_trbvh_mask l4 = lb << 2, d2 = (delta ^ lb) << 2;
+    const double *cost_lb = cost + l4, *rest_lb = rest + l4;
+    atrbvh_trbvh_mask E;
+    __m256d lo0 = _mm256_add_pd(base, _mm256_load_pd(cost + l4)), lo1;
+    lo0 = _mm256_add_pd(lo0, _mm256_load_pd(rest + l4));
+    lo1 = lo0;
+    for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
+        __m256d c = _mm256_add_pd(base, _mm256_load_pd(cost + E));
+        c = _mm256_add_pd(c, _mm256_load_pd(rest + E));
+        lo0 = _mm256_min_pd(lo0, c);
+        c = _mm256_add_pd(base, _mm256_load_pd(cost_lb + E));
+        c = _mm256_add_pd(c, _mm256_load_pd(rest_lb + E));
+        lo1 = _mm256_min_pd(lo1, c);
+    }
+    return _mm256_min_pd(lo0, lo1);
+}
+
+/* atrbvh_trbvh_subsets with AVX, eight subsets a step (bit >= 8): the
+ * same comparisons (VMINPS/VMAXPS lane for lane) and the same double
+ * operations in the same order, so the same bits; below 8 the SSE2 one. */
+__attribute__((target("avx"))) static inline void
+atrbvh_trbvh_subsets_avx(atrbvh_u32 n, atrbvh_u32 k,
+                         const atrbvh_treelet_leaves *lv,
+                         atrbvh_trbvh_scratch s)
+{
+    const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k,
+                            plane = (atrbvh_trbvh_mask)1 << n;
+    float *c0 = s.box, *c1 = c0 + plane, *c2 = c1 + plane, *c3 = c2 + plane,
+          *c4 = c3 + plane, *c5 = c4 + plane;
+    const atrbvh_box b = lv->box[k];
+    atrbvh_trbvh_mask r;
+    if (bit < 8u) {
+        atrbvh_trbvh_subsets(n, k, lv, s);
+        return;
+    }
+    /* entry 0: leaf k itself (atrbvh_trbvh_subsets) */
+    c0[0] = b.min[0];
+    c1[0] = b.min[1];
+    c2[0] = b.min[2];
+    c3[0] = b.max[0];
+    c4[0] = b.max[1];
+    c5[0] = b.max[2];
+    s.count[0] = 0;
+    {
+        const __m256 q0 = _mm256_set1_ps(b.min[0]),
+                     q1 = _mm256_set1_ps(b.min[1]),
+                     q2 = _mm256_set1_ps(b.min[2]),
+                     q3 = _mm256_set1_ps(b.max[0]),
+                     q4 = _mm256_set1_ps(b.max[1]),
+                     q5 = _mm256_set1_ps(b.max[2]);
+        const __m128i qn = _mm_set1_epi32((int)lv->count[k]);
+        const __m256d two = _mm256_set1_pd(2.0);
+        for (r = 0; r < bit; r += 8u) {
+            const __m256 x0 = _mm256_min_ps(_mm256_loadu_ps(c0 + r), q0);
+            const __m256 y0 = _mm256_min_ps(_mm256_loadu_ps(c1 + r), q1);
+            const __m256 z0 = _mm256_min_ps(_mm256_loadu_ps(c2 + r), q2);
+            const __m256 x1 = _mm256_max_ps(_mm256_loadu_ps(c3 + r), q3);
+            const __m256 y1 = _mm256_max_ps(_mm256_loadu_ps(c4 + r), q4);
+            const __m256 z1 = _mm256_max_ps(_mm256_loadu_ps(c5 + r), q5);
+            unsigned half;
+            _mm256_storeu_ps(c0 + bit + r, x0);
+            _mm256_storeu_ps(c1 + bit + r, y0);
+            _mm256_storeu_ps(c2 + bit + r, z0);
+            _mm256_storeu_ps(c3 + bit + r, x1);
+            _mm256_storeu_ps(c4 + bit + r, y1);
+            _mm256_storeu_ps(c5 + bit + r, z1);
+            for (half = 0; half < 2u; half++) {
+                const __m128i cr = _mm_loadu_si128(
+                    (const __m128i *)(const void *)(s.count + r + 4u * half));
+                const __m128 lx0 = half ? _mm256_extractf128_ps(x0, 1)
+                                        : _mm256_castps256_ps128(x0);
+                const __m128 ly0 = half ? _mm256_extractf128_ps(y0, 1)
+                                        : _mm256_castps256_ps128(y0);
+                const __m128 lz0 = half ? _mm256_extractf128_ps(z0, 1)
+                                        : _mm256_castps256_ps128(z0);
+                const __m128 lx1 = half ? _mm256_extractf128_ps(x1, 1)
+                                        : _mm256_castps256_ps128(x1);
+                const __m128 ly1 = half ? _mm256_extractf128_ps(y1, 1)
+                                        : _mm256_castps256_ps128(y1);
+                const __m128 lz1 = half ? _mm256_extractf128_ps(z1, 1)
+                                        : _mm256_castps256_ps128(z1);
+                const __m256d dx =
+                    _mm256_sub_pd(_mm256_cvtps_pd(lx1), _mm256_cvtps_pd(lx0));
+                const __m256d dy =
+                    _mm256_sub_pd(_mm256_cvtps_pd(ly1), _mm256_cvtps_pd(ly0));
+                const __m256d dz =
+                    _mm256_sub_pd(_mm256_cvtps_pd(lz1), _mm256_cvtps_pd(lz0));
+                __m256d t = _mm256_mul_pd(dx, dy);
+                t = _mm256_add_pd(t, _mm256_mul_pd(dy, dz));
+                t = _mm256_add_pd(t, _mm256_mul_pd(dz, dx));
+                _mm256_storeu_pd(s.cost + bit + r + 4u * half,
+                                 _mm256_mul_pd(two, t));
+                _mm_storeu_si128(
+                    (__m128i *)(void *)(s.count + bit + r + 4u * half),
+                    _mm_add_epi32(cr, qn));
+            }
+        }
+    }
+}
+
+__attribute__((noinline, unused, target("avx"))) static void
+atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
+                    const atrbvh_treelet_leaves *const lv[4],
+                    const atrbvh_trbvh_scratch s[4], double *quad,
+                    double found[4])
+{
+    const atrbvh_u32 full = (1u << n) - 1u;
+    const atrbvh_u32 lim = !p->collapse          ? 0u
+                           : p->max_leaf == 0u ? ATRBVH_U32_MAX
+                                               : p->max_leaf;
+    const __m256d ci = _mm256_set1_pd(p->ci), ct = _mm256_set1_pd(p->ct);
+    double *rev_top = quad + 4u * (((atrbvh_trbvh_mask)1 << n) + full);
+    atrbvh_u32 k, l;
+
+    for (k = 0; k < n; k++)
+        for (l = 0; l < 4u; l++)
+            atrbvh_trbvh_subsets_avx(n, k, lv[l], s[l]);
+    for (k = 0; k < n; k++) {
+        const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k;
+        const __m256d leaf = _mm256_set_pd(lv[3]->cost[k], lv[2]->cost[k],
+                                           lv[1]->cost[k], lv[0]->cost[k]);
+        atrbvh_trbvh_mask S;
+        _mm256_store_pd(quad + 4u * bit, leaf);
+        _mm256_store_pd(rev_top - 4u * bit, leaf);
+        for (S = bit + 1u; S < bit + bit; S++) {
+            const __m256d area =
+                _mm256_set_pd(s[3].cost[S], s[2].cost[S], s[1].cost[S],
+                              s[0].cost[S]);
+            const __m256d base = _mm256_mul_pd(ci, area);
+            double *rest = rev_top - 4u * S;
+            __m256d best = atrbvh_trbvh_min4(quad, rest, S, base);
+            const atrbvh_u32 n0 = s[0].count[S], n1 = s[1].count[S],
+                             n2 = s[2].count[S], n3 = s[3].count[S];
+            if (n0 <= lim || n1 <= lim || n2 <= lim || n3 <= lim) {
+                /* flat < best ? flat : best in the lanes that may
+                 * collapse, best in the others */
+                const __m256d take = _mm256_castsi256_pd(_mm256_set_epi64x(
+                    -(long long)(n3 <= lim), -(long long)(n2 <= lim),
+                    -(long long)(n1 <= lim), -(long long)(n0 <= lim)));
+                __m256d flat = _mm256_mul_pd(ct, area);
+                flat = _mm256_mul_pd(flat,
+                                     _mm256_set_pd((double)n3, (double)n2,
+                                                   (double)n1, (double)n0));
+                flat = _mm256_min_pd(flat, best);
+                best = _mm256_blendv_pd(best, flat, take);
+            }
+            _mm256_store_pd(quad + 4u * S, best);
+            _mm256_store_pd(rest, best); /* rev[full ^ S] */
+        }
+    }
+    for (l = 0; l < 4u; l++)
+        found[l] = quad[4u * full + l];
+}
+#endif
+#endif
+
 /* -------------------------------------------------------------- ATRBVH */
 /* Index of the distance between clusters in slots a != b in the strictly
  * lower-triangular, row-major matrix: row r > column c at r(r-1)/2 + c.
@@ -1107,6 +1440,65 @@ ATRBVH_FN void atrbvh_treelet_refresh(const atrbvh_treelet_tree *t,
 }
 
 /* ------------------------------------------------------------ one treelet */
+/* The start of every treelet: refreshes the root's cost from its
+ * children and forms the treelet into *tl; returns its leaves (below 3:
+ * nothing to restructure). */
+ATRBVH_FN atrbvh_u32 atrbvh_treelet_begin(const atrbvh_treelet_tree *t,
+                                          const atrbvh_cost_params *p,
+                                          atrbvh_u32 root, atrbvh_u32 n,
+                                          atrbvh_treelet *tl)
+{
+    atrbvh_treelet_refresh(t, p, root);
+    tl->n = 0;
+    return atrbvh_treelet_form(t, root, n, tl);
+}
+
+/* The end of a TRBVH treelet once atrbvh_trbvh_costs has filled the
+ * tables of `s` for the gathered leaves *lv and found C(all leaves):
+ * the optimal topology is extracted, evaluated and written back when it
+ * is strictly cheaper than the root's cost.  Returns 1 when written back.
+ * A quick reject first: the DP's optimum is what evaluate recomputes (the
+ * same sums in the same order), so nothing strictly cheaper exists when
+ * `found` is not. */
+ATRBVH_FN int atrbvh_trbvh_keep(const atrbvh_treelet_tree *t,
+                                const atrbvh_cost_params *p, atrbvh_u32 root,
+                                const atrbvh_treelet *tl,
+                                const atrbvh_treelet_leaves *lv,
+                                atrbvh_trbvh_scratch s, double found)
+{
+    atrbvh_treelet_topo topo;
+    double cost;
+    if (!(found < t->cost[root]))
+        return 0;
+    atrbvh_trbvh_extract(p, tl->n, s, &topo);
+    cost = atrbvh_treelet_evaluate(p, tl->n, lv, &topo);
+    if (!(cost < t->cost[root]))
+        return 0;
+    atrbvh_treelet_write(t, tl, &topo);
+    return 1;
+}
+
+/* The end of an ATRBVH treelet of up to ATRBVH_TREELET_MAX leaves, formed
+ * into *tl (at least 3 leaves): the agglomerative clustering of its
+ * leaves, read from the tree in place (no gather), written back when the
+ * root merge is strictly cheaper than the root's cost (a quick reject as
+ * in atrbvh_trbvh_keep: the merges hold evaluate's boxes, counts and
+ * costs, the root's is the returned cost).  Returns 1 when written back. */
+ATRBVH_FN int atrbvh_atrbvh_keep(const atrbvh_treelet_tree *t,
+                                 const atrbvh_cost_params *p, atrbvh_u32 root,
+                                 const atrbvh_treelet *tl,
+                                 ATRBVH_GLOBAL double *dist)
+{
+    atrbvh_treelet_topo topo;
+    const double found = atrbvh_agglomerate_at(p, tl->n, t, tl, 0, dist, &topo);
+    if (!(found < t->cost[root]))
+        return 0;
+    /* only the pre-order is missing */
+    atrbvh_treelet_preorder(tl->n, &topo);
+    atrbvh_treelet_write(t, tl, &topo);
+    return 1;
+}
+
 /* Restructures the treelet rooted at internal node `root` (whose subtree
  * must be final): refreshes the root's cost from its children, forms the
  * treelet, builds a topology (TRBVH subset DP, or ATRBVH agglomerative
@@ -1125,36 +1517,15 @@ ATRBVH_FN int atrbvh_treelet_process_tl(const atrbvh_treelet_tree *t,
                                         atrbvh_treelet *tl)
 {
     atrbvh_treelet_leaves lv;
-    atrbvh_treelet_topo topo;
-    double found, cost;
-    atrbvh_treelet_refresh(t, p, root);
-    tl->n = 0;
-    if (atrbvh_treelet_form(t, root, n, tl) < 3u)
+    double found;
+    if (atrbvh_treelet_begin(t, p, root, n, tl) < 3u)
         return 0;
-    /* A quick reject: the DP's optimum (and the agglomerative root merge)
-     * is what evaluate recomputes (the same sums in the same order), so
-     * nothing strictly cheaper exists when it finds none. */
-    if (agglomerative) {
-        /* The leaves read from the tree in place (no gather). */
-        found = atrbvh_agglomerate_at(p, tl->n, t, tl, 0, dist, &topo);
-        if (!(found < t->cost[root]))
-            return 0;
-        /* The merges already hold evaluate's boxes, counts and costs (the
-         * root's is `found`); only the pre-order is missing. */
-        atrbvh_treelet_preorder(tl->n, &topo);
-        cost = found;
-    } else {
+    if (!agglomerative) {
         atrbvh_treelet_gather(t, tl, &lv);
         found = atrbvh_trbvh_costs(p, tl->n, &lv, s);
-        if (!(found < t->cost[root]))
-            return 0;
-        atrbvh_trbvh_extract(p, tl->n, s, &topo);
-        cost = atrbvh_treelet_evaluate(p, tl->n, &lv, &topo);
+        return atrbvh_trbvh_keep(t, p, root, tl, &lv, s, found);
     }
-    if (!(cost < t->cost[root]))
-        return 0;
-    atrbvh_treelet_write(t, tl, &topo);
-    return 1;
+    return atrbvh_atrbvh_keep(t, p, root, tl, dist);
 }
 
 ATRBVH_FN int atrbvh_treelet_process(const atrbvh_treelet_tree *t,
@@ -1198,6 +1569,44 @@ typedef struct atrbvh_treelet_marks {
 /* The value atrbvh_treelet_process_marked returns for a skipped treelet. */
 #define ATRBVH_TREELET_SKIPPED (-1)
 
+/* The marks before treelet `root` is processed: its subtree's last
+ * change carried up from its children (final before it); returns 1 when
+ * the treelet is known to change nothing (then nothing is computed). */
+ATRBVH_FN int atrbvh_treelet_marks_skip(const atrbvh_treelet_tree *t,
+                                        atrbvh_treelet_marks m,
+                                        atrbvh_u32 root)
+{
+    atrbvh_u32 l = t->left[root], r = t->right[root];
+    unsigned char ch = m.chg[root];
+    if (l < t->n_internal && m.chg[l] > ch)
+        ch = m.chg[l];
+    if (r < t->n_internal && m.chg[r] > ch)
+        ch = m.chg[r];
+    m.chg[root] = ch;
+    return m.same[root] != 0 && ch <= m.same[root];
+}
+
+/* The marks after treelet `root`, formed into *tl, was processed in
+ * round `round` and written back (applied) or not. */
+ATRBVH_FN void atrbvh_treelet_marks_done(atrbvh_treelet_marks m,
+                                         const atrbvh_treelet *tl,
+                                         atrbvh_u32 root, int applied,
+                                         atrbvh_u32 round)
+{
+    unsigned char r1 = (unsigned char)(round + 1u);
+    atrbvh_u32 k;
+    if (applied) {
+        /* A write-back reused the treelet's internal ids (the root's
+         * too) for new nodes: changed, and not known unchanged. */
+        for (k = 0; k + 1u < tl->n; k++) {
+            m.chg[tl->internal[k]] = r1;
+            m.same[tl->internal[k]] = 0;
+        }
+    } else {
+        m.same[root] = r1;
+    }
+}
+
 /* atrbvh_treelet_process_tl behind the skip marks, in round `round`
  * (from 0; rounds fit a byte, ATRBVH_ROUNDS_MAX): ATRBVH_TREELET_SKIPPED
  * when the treelet is known to change nothing (nothing computed), else
@@ -1213,28 +1622,12 @@ ATRBVH_FN int atrbvh_treelet_process_marked(const atrbvh_treelet_tree *t,
                                             atrbvh_u32 round)
 {
     atrbvh_treelet tl;
-    atrbvh_u32 l = t->left[root], r = t->right[root], k;
-    unsigned char ch = m.chg[root], r1 = (unsigned char)(round + 1u);
     int applied;
-    if (l < t->n_internal && m.chg[l] > ch)
-        ch = m.chg[l];
-    if (r < t->n_internal && m.chg[r] > ch)
-        ch = m.chg[r];
-    m.chg[root] = ch;
-    if (m.same[root] != 0 && ch <= m.same[root])
+    if (atrbvh_treelet_marks_skip(t, m, root))
         return ATRBVH_TREELET_SKIPPED;
     applied = atrbvh_treelet_process_tl(t, p, root, n, agglomerative, s, dist,
                                         &tl);
-    if (applied) {
-        /* A write-back reused the treelet's internal ids (the root's
-         * too) for new nodes: changed, and not known unchanged. */
-        for (k = 0; k + 1u < tl.n; k++) {
-            m.chg[tl.internal[k]] = r1;
-            m.same[tl.internal[k]] = 0;
-        }
-    } else {
-        m.same[root] = r1;
-    }
+    atrbvh_treelet_marks_done(m, &tl, root, applied, round);
     return applied;
 }
 
