@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.12657512:36.5071159]
+set xrange [3.09938797:36.3500104]
 set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 2.35104653,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 7.81678424,39.4272587 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 5.5532894,39.3531597 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 6.3802161,38.7197574 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 8.37208743,38.343659 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 11.9820224,38.8402084 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 17.9148107,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 11.7594247,37.9447354 left font ',8' noenhanced front
-set label 'embree_low' at 3.74766448,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 20.7084455,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 14.3543673,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 2.93913066,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 10.4415338,39.3638605 left font ',8' noenhanced front
+set label 'LBVH' at 3.97107478,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 8.8974471,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 7.69916605,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 11.1640865,39.0314856 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 15.3919097,39.3638605 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 12.8728829,38.1317351 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 18.8930513,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 9.47444564,38.5681918 left font ',8' noenhanced front
+set label 'embree_low' at 4.69699555,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 15.5120695,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 22.2470839,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 3.1707337,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 11.2589197,39.3638605 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

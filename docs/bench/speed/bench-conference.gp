@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [11.3600475:182.907283]
+set xrange [15.6730187:180.566944]
 set xtics (20, 50, 100)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 14.8477005,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 48.17127,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 54.7676361,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 58.0020282,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 44.8107899,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 92.9681964,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 105.088251,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 51.8526192,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 22.7976135,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 59.9237714,44.5451095 left font ',8' noenhanced front
-set label 'embree_high' at 97.0019767,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 18.3079937,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 68.3449595,36.836494 left font ',8' noenhanced front
+set label 'LBVH' at 17.0851736,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 49.9539266,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 56.415208,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 65.0148923,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 56.29682,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 103.498427,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 104.670972,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 62.5442951,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 28.2452776,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 75.1390563,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 110.904956,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 22.1326166,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 81.9499613,39.3747167 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.05778632:37.7868293]
+set xrange [2.39294335:32.6824146]
 set xtics (5, 10, 20)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 2.28041012,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 8.56676026,77.3438007 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 6.69041759,73.4949382 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 10.2751017,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 7.67062404,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 18.1942976,72.4804162 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 21.1484504,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.5220488,67.3811989 left font ',8' noenhanced front
-set label 'embree_low' at 4.08498216,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 16.8188191,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 11.4337467,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 2.87154623,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 8.8397345,68.9828435 left font ',8' noenhanced front
+set label 'LBVH' at 2.62426348,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 9.06531133,77.3438007 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 7.09007232,73.4949382 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 10.4455045,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 8.56373175,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 15.4378115,68.0489447 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 19.4039465,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 10.3005883,68.7352597 left font ',8' noenhanced front
+set label 'embree_low' at 4.51726628,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 11.7795786,79.1043654 left font ',8' noenhanced front
+set label 'embree_high' at 17.5416748,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 3.44872724,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 14.5578046,71.690965 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
