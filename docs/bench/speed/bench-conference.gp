@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [15.6730187:180.566944]
+set xrange [10.7178518:167.786353]
 set xtics (20, 50, 100)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 17.0851736,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 49.9539266,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 56.415208,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 65.0148923,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 56.29682,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 103.498427,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 104.670972,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 62.5442951,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 28.2452776,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 75.1390563,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 110.904956,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 22.1326166,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 81.9499613,39.3747167 left font ',8' noenhanced front
+set label 'LBVH' at 13.9704743,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 37.7604173,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 42.3484173,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 48.206527,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 37.4091146,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 79.2398497,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 81.9829971,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 45.2759129,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 22.3968708,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 64.7256725,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 96.9422695,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 16.7041025,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 60.2214546,39.3747167 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

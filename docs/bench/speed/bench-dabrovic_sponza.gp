@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.39294335:32.6824146]
-set xtics (5, 10, 20)
+set xrange [1.94607091:27.5050583]
+set xtics (2, 5, 10, 20)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 2.62426348,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 9.06531133,77.3438007 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 7.09007232,73.4949382 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 10.4455045,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 8.56373175,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 15.4378115,68.0489447 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 19.4039465,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.3005883,68.7352597 left font ',8' noenhanced front
-set label 'embree_low' at 4.51726628,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 11.7795786,79.1043654 left font ',8' noenhanced front
-set label 'embree_high' at 17.5416748,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 3.44872724,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 14.5578046,71.690965 left font ',8' noenhanced front
+set label 'LBVH' at 2.13677412,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 6.90717831,77.3438007 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 5.59906983,73.4949382 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 8.59677905,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 6.87789096,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 12.0056309,68.0489447 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 15.4598078,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 8.12597625,68.7352597 left font ',8' noenhanced front
+set label 'embree_low' at 3.75391541,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 16.2189453,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 11.5988359,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 2.63703569,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 10.7764514,71.690965 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

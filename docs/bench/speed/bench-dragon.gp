@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [35.5240476:446.175391]
-set xtics (50, 100, 200)
+set xrange [49.8187971:506.331533]
+set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 51.8835784,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 124.036233,62.7681885 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 89.2298639,62.4885043 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 101.951579,61.2051399 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 167.667907,62.7480041 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 180.263473,59.8198299 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 265.025385,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 180.394017,61.3999923 left font ',8' noenhanced front
-set label 'embree_low' at 81.656211,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 269.043429,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 197.896412,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 36.3648094,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 122.277739,60.1668795 left font ',8' noenhanced front
+set label 'LBVH' at 63.4460204,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 151.885256,63.4134696 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 123.075177,61.8432232 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 169.583154,62.4957022 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 143.333432,60.8121607 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 278.356451,60.465111 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 200.05034,59.8746541 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 216.064319,61.3999923 left font ',8' noenhanced front
+set label 'embree_low' at 63.6370403,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 218.283236,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 318.863767,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 50.8981755,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 214.296904,62.7480041 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

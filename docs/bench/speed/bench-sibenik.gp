@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.57020487:41.4053021]
+set xrange [2.26544972:33.5991274]
 set xtics (5, 10, 20)
 set yrange [48.0282379:83.2612389]
 unset label
-set label 'LBVH' at 4.58485131,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 11.1246572,56.219843 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 9.49170778,53.8367777 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 12.8510478,54.157298 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 11.7727398,52.0780873 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 23.253862,50.753527 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 25.3977281,52.3325777 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 14.8121269,50.456031 left font ',8' noenhanced front
-set label 'embree_low' at 5.56150175,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 16.2701468,55.5817262 left font ',8' noenhanced front
-set label 'embree_high' at 23.5594824,54.6804169 left font ',8' noenhanced front
-set label 'LBVH/cl' at 3.65201022,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 17.8166919,52.9793966 left font ',8' noenhanced front
+set label 'LBVH' at 2.49168292,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 7.78809522,56.219843 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 6.00606844,53.8367777 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 9.50503081,54.157298 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 7.87292331,52.0780873 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 15.9439884,50.753527 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 17.3574008,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 9.25710907,50.456031 left font ',8' noenhanced front
+set label 'embree_low' at 4.23089776,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 12.7845854,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 19.6230325,54.6804169 left font ',8' noenhanced front
+set label 'LBVH/cl' at 2.96049345,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 11.9993699,52.9793966 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
