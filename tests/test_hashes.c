@@ -21,8 +21,9 @@
  *
  * The optimised trees are built twice more, with ATRBVH_CPU_LANES=1 (the
  * CPU's post-order walk, one treelet at a time) and =2 (two treelets side
- * by side; TRBVH's DP in SSE2's two lanes), and must hash as the default
- * build (four; TRBVH's DP in AVX's four lanes where the CPU has AVX): the
+ * by side; TRBVH's DP in two of AVX's four lanes, the others repeating
+ * the first), and must hash as the default build (four; TRBVH's DP in
+ * AVX's four lanes where the CPU has AVX): the
  * optimiser's ways of taking treelets give the same bits.
  *
  * ATRBVH_WRITE_HASHES=FILE: write the table to FILE (a temporary file

@@ -36,9 +36,8 @@
  * node after the crown nodes below it gives the same tree - so that
  * treelets of disjoint subtrees run side by side: their formations
  * interleaved (each a chain of dependent loads), and TRBVH's DP in the
- * lanes of one vector register (shared/treelet.h's atrbvh_trbvh_costs2,
- * two with SSE2, and atrbvh_trbvh_costs4, four with AVX, chosen at run
- * time; opt_lanes).  Measured on sibenik at one thread, callgrind: the
+ * lanes of one vector register (shared/treelet.h's atrbvh_trbvh_costs4,
+ * four with AVX, chosen at run time; opt_lanes).  Measured on sibenik at one thread, callgrind: the
  * TRBVH(7,3) optimise stage went from 439M to 279M instructions per build
  * with four lanes; ATRBVH(9,2)'s from 117M to 125M (the listing), but
  * faster (interleaved formations, their prefetches).  The top (few
@@ -51,7 +50,7 @@
 typedef struct opt_worker {
     atrbvh_trbvh_scratch trbvh; /* 2^n entries each (TRBVH)             */
     /* TRBVH in lanes (walk_lanes): lane[0] = trbvh, lanes 1..3 their
-     * own; lanes * 2 * 2^n doubles of interleaved costs; a frontier
+     * own; 8 * 2^n doubles of interleaved costs; a frontier
      * subtree's crown nodes in post-order (list), then by height */
     atrbvh_trbvh_scratch lane[4];
     double *pack;
@@ -228,33 +227,42 @@ static void visit(walk_ctx *c, uint32_t node)
  * gamma) below and including crown node s, without a stack: descend to
  * the first such node with no such child, process, then go to the right
  * sibling's subtree or up to the parent.  lo = gamma: the whole crown
- * below s; lo = the cut: the top, whose frontier is already done. */
+ * below s; lo = the cut: the top, whose frontier is already done.
+ * post_first: the first node of that post-order below x. */
+static uint32_t post_first(const atrbvh_treelet_tree *t, uint32_t x,
+                           uint32_t lo)
+{
+    for (;;) {
+        if (at_least(t, t->left[x], lo))
+            x = t->left[x];
+        else if (at_least(t, t->right[x], lo))
+            x = t->right[x];
+        else
+            return x;
+    }
+}
+
+/* The node after x in that post-order below s, or ATRBVH_U32_MAX after s
+ * itself; read after x is processed (a treelet root keeps its id and
+ * parent, so the way up stays valid). */
+static uint32_t post_next(const atrbvh_treelet_tree *t, uint32_t s,
+                          uint32_t x, uint32_t lo)
+{
+    uint32_t parent;
+    if (x == s)
+        return ATRBVH_U32_MAX;
+    parent = t->parent[x];
+    if (t->left[parent] == x && at_least(t, t->right[parent], lo))
+        return post_first(t, t->right[parent], lo); /* the right subtree */
+    return parent;
+}
+
 static void walk_serial(walk_ctx *c, uint32_t s, uint32_t lo)
 {
-    const atrbvh_treelet_tree *t = &c->t;
-    uint32_t x = s;
-    for (;;) {
-        for (;;) {
-            if (at_least(t, t->left[x], lo))
-                x = t->left[x];
-            else if (at_least(t, t->right[x], lo))
-                x = t->right[x];
-            else
-                break;
-        }
-        for (;;) {
-            uint32_t parent;
-            visit(c, x);
-            if (x == s)
-                return;
-            parent = t->parent[x];
-            if (t->left[parent] == x && at_least(t, t->right[parent], lo)) {
-                x = t->right[parent];
-                break; /* descend into the right subtree */
-            }
-            x = parent;
-        }
-    }
+    uint32_t x;
+    for (x = post_first(&c->t, s, lo); x != ATRBVH_U32_MAX;
+         x = post_next(&c->t, s, x, lo))
+        visit(c, x);
 }
 
 /* One treelet of walk_lanes done, written back (applied) or not: its
@@ -269,48 +277,39 @@ static void lane_done(walk_ctx *c, opt_worker *w, uint32_t node,
     progress(c);
 }
 
-#ifdef ATRBVH_TRBVH_PAIRS
+#ifdef ATRBVH_TRBVH_QUADS
 /* The end of one TRBVH treelet of walk_lanes, its DP done (C(all leaves)
- * = found; the tables in s, or in lane `lane` of w->pack when lanes > 1):
+ * = found; the tables in s, or in lane `lane` of w->pack when `packed`):
  * the write-back when cheaper. */
 static void lane_end(walk_ctx *c, opt_worker *w, uint32_t node,
                      const atrbvh_treelet *tl, const atrbvh_treelet_leaves *lv,
-                     atrbvh_trbvh_scratch s, double found, unsigned lanes,
+                     atrbvh_trbvh_scratch s, double found, int packed,
                      unsigned lane)
 {
     int applied = 0;
     if (found < c->t.cost[node]) {
-        if (lanes > 1u)
-            atrbvh_trbvh_lane(c->n, w->pack, lanes, lane, s);
+        if (packed)
+            atrbvh_trbvh_lane(c->n, w->pack, lane, s);
         applied = atrbvh_trbvh_keep(&c->t, c->cost, node, tl, lv, s, found);
     }
     lane_done(c, w, node, tl, applied);
 }
 
-/* The TRBVH DP of `ready` (2 to 4) gathered treelets side by side, then
- * each one's end: two by atrbvh_trbvh_costs2, three or four by
- * atrbvh_trbvh_costs4 (the first treelet's lane repeated in the fourth,
- * its result unused). */
+/* The TRBVH DP of `ready` (2 to 4) gathered treelets side by side
+ * (atrbvh_trbvh_costs4, the first treelet repeated in the lanes left
+ * over, their results unused), then each one's end. */
 static void lane_run(walk_ctx *c, opt_worker *w, unsigned ready,
                      const uint32_t *node, const atrbvh_treelet *tl,
                      const atrbvh_treelet_leaves *lv)
 {
+    const atrbvh_treelet_leaves *in[4];
     double found[4];
-    unsigned l, lanes = 2u;
-#ifdef ATRBVH_TRBVH_QUADS
-    if (ready > 2u) {
-        const atrbvh_treelet_leaves *in[4];
-        for (l = 0; l < 4u; l++)
-            in[l] = &lv[l < ready ? l : 0u];
-        atrbvh_trbvh_costs4(c->cost, c->n, in, w->lane, w->pack, found);
-        lanes = 4u;
-    } else
-#endif
-        atrbvh_trbvh_costs2(c->cost, c->n, &lv[0], &lv[1], w->lane[0],
-                            w->lane[1], w->pack, found);
+    unsigned l;
+    for (l = 0; l < 4u; l++)
+        in[l] = &lv[l < ready ? l : 0u];
+    atrbvh_trbvh_costs4(c->cost, c->n, in, w->lane, w->pack, found);
     for (l = 0; l < ready; l++)
-        lane_end(c, w, node[l], &tl[l], &lv[l], w->lane[l], found[l], lanes,
-                 l);
+        lane_end(c, w, node[l], &tl[l], &lv[l], w->lane[l], found[l], 1, l);
 }
 #endif
 
@@ -356,7 +355,7 @@ static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
     for (l = 0; l < ready; l++) {
         if (tl[l].n >= 3u)
             atrbvh_treelet_gather(&c->t, &tl[l], &lv[l]);
-#ifdef ATRBVH_TRBVH_PAIRS
+#ifdef ATRBVH_TRBVH_QUADS
         if (tl[l].n == c->n && ready > 1u) {
             if (full != l) {
                 tl[full] = tl[l];
@@ -375,11 +374,11 @@ static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
                                                              w->lane[0]))
                       : 0);
     }
-#ifdef ATRBVH_TRBVH_PAIRS
+#ifdef ATRBVH_TRBVH_QUADS
     if (full == 1u) {
         const double found =
             atrbvh_trbvh_costs(c->cost, c->n, &lv[0], w->lane[0]);
-        lane_end(c, w, node[0], &tl[0], &lv[0], w->lane[0], found, 1u, 0u);
+        lane_end(c, w, node[0], &tl[0], &lv[0], w->lane[0], found, 0, 0u);
     } else if (full > 1u) {
         lane_run(c, w, full, node, tl, lv);
     }
@@ -409,45 +408,27 @@ static int walk_lanes(walk_ctx *c, uint32_t s, size_t cap)
     opt_worker *w = worker(c);
     unsigned char *hgt = c->hgt;
     size_t start[257], k = 0, i, h;
-    uint32_t x = s;
+    uint32_t x;
     if (!w)
         return 1; /* the build is being cancelled: its tree is dropped */
     memset(start, 0, sizeof start);
     /* walk_serial's post-order (lo = gamma), listing instead of visiting */
-    for (;;) {
-        for (;;) {
-            if (in_crown(c, t->left[x]))
-                x = t->left[x];
-            else if (in_crown(c, t->right[x]))
-                x = t->right[x];
-            else
-                break;
-        }
-        for (;;) {
-            uint32_t parent, l = t->left[x], r = t->right[x];
-            unsigned hx = 0;
-            if (in_crown(c, l))
-                hx = hgt[l] + 1u;
-            if (in_crown(c, r) && hgt[r] + 1u > hx)
-                hx = hgt[r] + 1u;
-            if (hx > 255u)
-                hx = 255u;
-            if (k == cap)
-                return 0;
-            hgt[x] = (unsigned char)hx;
-            w->list[k++] = x;
-            start[hx + 1u]++;
-            if (x == s)
-                goto listed;
-            parent = t->parent[x];
-            if (t->left[parent] == x && in_crown(c, t->right[parent])) {
-                x = t->right[parent];
-                break;
-            }
-            x = parent;
-        }
+    for (x = post_first(t, s, c->gamma); x != ATRBVH_U32_MAX;
+         x = post_next(t, s, x, c->gamma)) {
+        const uint32_t l = t->left[x], r = t->right[x];
+        unsigned hx = 0;
+        if (in_crown(c, l))
+            hx = hgt[l] + 1u;
+        if (in_crown(c, r) && hgt[r] + 1u > hx)
+            hx = hgt[r] + 1u;
+        if (hx > 255u)
+            hx = 255u;
+        if (k == cap)
+            return 0;
+        hgt[x] = (unsigned char)hx;
+        w->list[k++] = x;
+        start[hx + 1u]++;
     }
-listed:
     for (h = 1; h < 257u; h++)
         start[h] += start[h - 1u];
     for (i = 0; i < k; i++)
@@ -569,9 +550,8 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
 }
 
 /* How many treelets walk_lanes takes at a time (lane_batch), 1 for the
- * post-order walk.  TRBVH: as many as its DP takes side by side, 4 where
- * the CPU has AVX (atrbvh_trbvh_costs4), else 2 on x86 (SSE2), 1
- * elsewhere.  ATRBVH of up to ATRBVH_TREELET_MAX leaves or adaptive: 4
+ * post-order walk.  TRBVH: 4 where the CPU has AVX (its DP in
+ * atrbvh_trbvh_costs4's lanes), else 1.  ATRBVH of up to ATRBVH_TREELET_MAX leaves or adaptive: 4
  * formations side by side (the agglomerations one by one); larger
  * treelets go in post-order (process_agg).  ATRBVH_CPU_LANES=1 or 2 in the
  * environment asks for fewer (tests/test_hashes.c builds every tree each
@@ -581,12 +561,9 @@ static unsigned opt_lanes(atrbvh_method method, unsigned n)
     const char *env = getenv("ATRBVH_CPU_LANES");
     unsigned most = 1u;
     if (method == ATRBVH_METHOD_TRBVH) {
-#ifdef ATRBVH_TRBVH_PAIRS
-        most = 2u;
 #ifdef ATRBVH_TRBVH_QUADS
         if (__builtin_cpu_supports("avx"))
             most = 4u;
-#endif
 #endif
     } else if (n <= ATRBVH_TREELET_MAX || n == ATRBVH_TREELET_AUTO) {
         most = 4u;
@@ -610,7 +587,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     unsigned char *block;
     size_t subsets = 0, pairs = 0, stride = 0, off_cost, off_count,
            off_split, off_dist, off_list, total, marks = 0, cap;
-    /* In lanes (walk_lanes), TRBVH: lanes 1 .. lanes-1's scratch from
+    /* In lanes (walk_lanes), TRBVH: lanes 1 .. 3's scratch from
      * lane1 (lane_size bytes each, the first's), the interleaved costs at
      * off_pack, the two lists of pcap entries at off_lists; hgt: the
      * heights */
@@ -679,13 +656,13 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
                 most = g + 1u;
         }
         pcap = most < ((uint64_t)1 << 20) ? (size_t)most : (size_t)1 << 20;
-        /* TRBVH: the lanes' scratch and their interleaved costs
-         * (subsets is 0 for ATRBVH: nothing) */
+        /* TRBVH: the four lanes' scratch and their interleaved costs
+         * (atrbvh_trbvh_costs4 takes four lanes however many are used;
+         * subsets is 0 for ATRBVH: nothing) */
         lane_size = cfg->method == ATRBVH_METHOD_TRBVH ? off_dist : 0u;
         lane1 = stride;
-        off_pack = lane1 + (lanes - 1u) * lane_size;
-        off_lists =
-            off_pack + ALIGN64(2u * lanes * subsets * sizeof(double));
+        off_pack = lane1 + 3u * lane_size;
+        off_lists = off_pack + ALIGN64(8u * subsets * sizeof(double));
         stride = off_lists + ALIGN64(2u * pcap * sizeof(uint32_t));
         hgt = (size_t)(t->n - 1u);
     }
@@ -742,7 +719,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         workers[k].trbvh.split = (uint32_t *)(void *)(base + off_split);
         workers[k].dist = (double *)(void *)(base + off_dist);
         workers[k].lane[0] = workers[k].trbvh;
-        for (l = 1; lane_size > 0u && l < lanes; l++) {
+        for (l = 1; lane_size > 0u && l < 4u; l++) {
             unsigned char *at = base + lane1 + (l - 1u) * lane_size;
             workers[k].lane[l].box = (float *)(void *)at;
             workers[k].lane[l].cost = (double *)(void *)(at + off_cost);

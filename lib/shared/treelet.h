@@ -684,116 +684,36 @@ ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
     return found;
 }
 
-/* ------------------------------------------------- TRBVH, two at once */
-/* Two treelets' DP side by side, one per lane of SSE2's two doubles (x86
- * CPUs; the CPU driver pairs treelets of disjoint subtrees, optimise.c).
- * Lane by lane it is atrbvh_trbvh_costs: the same subsets, the same
- * partitions, the same IEEE sums in the same order, and each minimum
- * written as the scalar one's select (MINPD's a < b ? a : b is the
- * scalar lo < c ? lo : c and flat < best ? flat : best), so each lane's
- * C(S) has the scalar bits.  The partition loop's instructions (about
- * half of a TRBVH(7) treelet's) then serve two treelets; its loads are
- * one 16-byte pair per cost.
+/* ------------------------------------------------ TRBVH, four at once */
+/* Four treelets' DP side by side, one per lane of AVX's four doubles (x86
+ * CPUs with AVX, chosen at run time by the driver, __builtin_cpu_supports;
+ * the CPU driver takes treelets of disjoint subtrees, optimise.c).  Lane
+ * by lane it is atrbvh_trbvh_costs: the same subsets, the same partitions,
+ * the same IEEE sums in the same order (the compiler contracts nothing,
+ * -ffp-contract=off, and AVX has no FMA), and each minimum written as the
+ * scalar one's select (VMINPD's a < b ? a : b is the scalar lo < c ? lo :
+ * c and flat < best ? flat : best), so each lane's C(S) has the scalar
+ * bits.  The partition loop's instructions (about half of a TRBVH(7)
+ * treelet's) then serve four treelets; its loads are one 32-byte vector
+ * per cost.  Fewer than four treelets fill the other lanes with the first
+ * one's (results unused).
  *
- * The two cost tables are interleaved in `pair` (4 * 2^n doubles,
- * 16-byte aligned): C(S) of both lanes at pair[2S], pair[2S + 1], then
- * the mirror rev[full ^ X] = C(X) of both lanes, as in
- * atrbvh_trbvh_costs.  Each lane's own scratch (s0, s1) gets the subset
- * boxes, areas and counts (atrbvh_trbvh_subsets); atrbvh_trbvh_lane then
- * leaves, for a lane whose treelet is kept, its scratch exactly as
- * atrbvh_trbvh_costs would have (for atrbvh_trbvh_extract).  found[l] is
- * C(all leaves) of lane l. */
-#if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
-#define ATRBVH_TRBVH_PAIRS 1
-/* atrbvh_trbvh_min on both lanes (its enumeration, two running minima per
- * lane).  cost and rest as doubles, the pair of subset P at 2P: the
- * masks are kept doubled (2E - 2d2 = 2(E - d2), the same bits moved up
- * one), so each pair is addressed with x86's scale of 8. */
-ATRBVH_FN __m128d atrbvh_trbvh_min2(const double *cost, const double *rest,
-                                    atrbvh_trbvh_mask S, __m128d base)
-{
-    const atrbvh_trbvh_mask delta = (S - 1u) & S;
-    const atrbvh_trbvh_mask lb = delta & (0u - delta);
-    const atrbvh_trbvh_mask l2 = lb + lb, d2 = (delta ^ lb) << 1;
-    const double *cost_lb = cost + l2, *rest_lb = rest + l2;
-    atrbvh_trbvh_mask E;
-    __m128d lo0 = _mm_add_pd(base, _mm_load_pd(cost + l2)), lo1;
-    lo0 = _mm_add_pd(lo0, _mm_load_pd(rest + l2));
-    lo1 = lo0;
-    for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
-        __m128d c = _mm_add_pd(base, _mm_load_pd(cost + E));
-        c = _mm_add_pd(c, _mm_load_pd(rest + E));
-        lo0 = _mm_min_pd(lo0, c);
-        c = _mm_add_pd(base, _mm_load_pd(cost_lb + E));
-        c = _mm_add_pd(c, _mm_load_pd(rest_lb + E));
-        lo1 = _mm_min_pd(lo1, c);
-    }
-    return _mm_min_pd(lo0, lo1);
-}
-
-#if defined(__GNUC__) || defined(__clang__)
-__attribute__((noinline, unused)) static void
-#else
-ATRBVH_FN void
-#endif
-atrbvh_trbvh_costs2(const atrbvh_cost_params *p, atrbvh_u32 n,
-                    const atrbvh_treelet_leaves *lv0,
-                    const atrbvh_treelet_leaves *lv1, atrbvh_trbvh_scratch s0,
-                    atrbvh_trbvh_scratch s1, double *pair, double found[2])
-{
-    const atrbvh_u32 full = (1u << n) - 1u;
-    const atrbvh_u32 lim = !p->collapse          ? 0u
-                           : p->max_leaf == 0u ? ATRBVH_U32_MAX
-                                               : p->max_leaf;
-    const __m128d ci = _mm_set1_pd(p->ci), ct = _mm_set1_pd(p->ct);
-    __m128d *cost = (__m128d *)(void *)pair;
-    __m128d *rev_top = cost + ((atrbvh_trbvh_mask)1 << n) + full;
-    atrbvh_u32 k;
-
-    for (k = 0; k < n; k++) {
-        atrbvh_trbvh_subsets(n, k, lv0, s0);
-        atrbvh_trbvh_subsets(n, k, lv1, s1);
-    }
-    for (k = 0; k < n; k++) {
-        const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k;
-        const __m128d leaf = _mm_set_pd(lv1->cost[k], lv0->cost[k]);
-        atrbvh_trbvh_mask S;
-        cost[bit] = leaf;
-        *(rev_top - bit) = leaf;
-        for (S = bit + 1u; S < bit + bit; S++) {
-            const __m128d area = _mm_set_pd(s1.cost[S], s0.cost[S]);
-            const __m128d base = _mm_mul_pd(ci, area);
-            __m128d *rest = rev_top - S;
-            __m128d best = atrbvh_trbvh_min2(
-                pair, (const double *)(const void *)rest, S, base);
-            const atrbvh_u32 n0 = s0.count[S], n1 = s1.count[S];
-            if (n0 <= lim || n1 <= lim) {
-                /* flat < best ? flat : best in the lanes that may
-                 * collapse, best in the others */
-                const __m128d take = _mm_castsi128_pd(_mm_set_epi32(
-                    -(int)(n1 <= lim), -(int)(n1 <= lim), -(int)(n0 <= lim),
-                    -(int)(n0 <= lim)));
-                __m128d flat = _mm_mul_pd(ct, area);
-                flat = _mm_mul_pd(flat, _mm_set_pd((double)n1, (double)n0));
-                flat = _mm_min_pd(flat, best);
-                best = _mm_or_pd(_mm_and_pd(take, flat),
-                                 _mm_andnot_pd(take, best));
-            }
-            cost[S] = best;
-            rest[0] = best; /* rev[full ^ S] */
-        }
-    }
-    _mm_storel_pd(&found[0], cost[full]);
-    _mm_storeh_pd(&found[1], cost[full]);
-}
-
-/* Lane `lane` of atrbvh_trbvh_costs2 (lanes 2) or atrbvh_trbvh_costs4
- * (lanes 4) into that lane's scratch, as atrbvh_trbvh_costs leaves it:
- * C(S) in cost[S], the mirror and the areas in the box planes (their
- * floats dead by then). */
-ATRBVH_FN void atrbvh_trbvh_lane(atrbvh_u32 n, const double *pair,
-                                 atrbvh_u32 lanes, atrbvh_u32 lane,
-                                 atrbvh_trbvh_scratch s)
+ * The four cost tables are interleaved in `quad` (8 * 2^n doubles,
+ * 32-byte aligned): C(S) of lane l at quad[4S + l], then the mirror
+ * rev[full ^ X] = C(X) of the four lanes, as in atrbvh_trbvh_costs.  Each
+ * lane's own scratch gets the subset boxes, areas and counts
+ * (atrbvh_trbvh_subsets_avx); atrbvh_trbvh_lane then leaves, for a lane
+ * whose treelet is kept, its scratch exactly as atrbvh_trbvh_costs would
+ * have (for atrbvh_trbvh_extract).  found[l] is C(all leaves) of lane l. */
+#if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__)) && \
+    (defined(__x86_64__) || defined(__i386__))
+#include <immintrin.h>
+#define ATRBVH_TRBVH_QUADS 1
+/* Lane `lane` of atrbvh_trbvh_costs4 into that lane's scratch, as
+ * atrbvh_trbvh_costs leaves it: C(S) in cost[S], the mirror and the areas
+ * in the box planes (their floats dead by then). */
+ATRBVH_FN void atrbvh_trbvh_lane(atrbvh_u32 n, const double *quad,
+                                 atrbvh_u32 lane, atrbvh_trbvh_scratch s)
 {
     const atrbvh_u32 full = (1u << n) - 1u;
     double *rev_top = (double *)(void *)s.box + full;
@@ -801,7 +721,7 @@ ATRBVH_FN void atrbvh_trbvh_lane(atrbvh_u32 n, const double *pair,
     atrbvh_trbvh_mask S;
     ATRBVH_TRBVH_RETYPE();
     for (S = 1; S <= full; S++) {
-        const double c = pair[lanes * S + lane];
+        const double c = quad[4u * S + lane];
         areas[S] = s.cost[S];
         s.cost[S] = c;
         *(rev_top - S) = c;
@@ -809,17 +729,10 @@ ATRBVH_FN void atrbvh_trbvh_lane(atrbvh_u32 n, const double *pair,
     ATRBVH_TRBVH_RETYPE();
 }
 
-/* Four treelets at once where the CPU has AVX (chosen at run time by the
- * driver, __builtin_cpu_supports): atrbvh_trbvh_costs2 with four lanes
- * of 256 bits, the same operations lane by lane (VMINPD, VADDPD, VMULPD
- * are MINPD, ADDPD, MULPD on twice the lanes; the compiler contracts
- * nothing, -ffp-contract=off, and AVX has no FMA), so every lane keeps
- * the scalar bits.  `quad` holds 8 * 2^n doubles (32-byte aligned): C(S)
- * of lane l at quad[4S + l], then the mirror likewise. */
-#if (defined(__GNUC__) || defined(__clang__)) &&                             \
-    (defined(__x86_64__) || defined(__i386__))
-#include <immintrin.h>
-#define ATRBVH_TRBVH_QUADS 1
+/* atrbvh_trbvh_min on the four lanes (its enumeration, two running minima
+ * per lane); cost and rest as doubles, lane l of subset P at 4P + l: the
+ * masks are kept times four, so each vector is addressed with x86's scale
+ * of 8. */
 __attribute__((target("avx"))) static inline __m256d
 atrbvh_trbvh_min4(const double *cost, const double *rest, atrbvh_trbvh_mask S,
                   __m256d base)
@@ -979,7 +892,6 @@ atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
     for (l = 0; l < 4u; l++)
         found[l] = quad[4u * full + l];
 }
-#endif
 #endif
 
 /* -------------------------------------------------------------- ATRBVH */
