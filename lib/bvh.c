@@ -41,70 +41,165 @@ static void set_stats_sah(atrbvh_bvh *b, size_t leaves, unsigned depth,
     b->stats.sah_built = sah; /* atrbvh_refit's drift reference */
 }
 
-/* Right children still to be reached in measure_built's walk, at most
+/* Right children still to be reached in a walk of measure_built, at most
  * (a deeper tree is measured by the general walk, check.c). */
 #define MEASURE_STACK 512
+/* measure_built's subtrees: how many the top is cut into per thread (a
+ * thread takes the next when done, so a few each evens out their sizes),
+ * the most there can be, and the smallest array worth threads. */
+#define MEASURE_PER_THREAD 8
+#define MEASURE_PIECES 256
+#define MEASURE_PARALLEL_MIN 65536u
 
-/* One forward pass over the layout's depth-first array: node i+1 must be
- * i's left child when i is internal, else the right child last put aside
- * (the stack), and every right child lies after its parent; the depth
- * comes with each node, the SAH's sums are atrbvh_sah's, in node order,
- * serially (the same bits), so the array is read once and nothing is
- * allocated.  Before, a depth per node (4 bytes, a fresh array each
- * build) and a second pass over the nodes for the SAH. */
-atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *b)
+/* A subtree of the depth-first array: nodes at .. end-1, its root at
+ * depth `depth`. */
+typedef struct measure_piece {
+    uint32_t at, end, depth;
+} measure_piece;
+
+enum { WALK_OK, WALK_BAD, WALK_DEEP };
+
+/* One forward walk over the subtree p: node i+1 must be i's left child
+ * when i is internal, else the right child last put aside (the stack),
+ * every right child lies after its parent and inside the subtree, a
+ * leaf's primitives inside the index array, and the subtree ends at its
+ * last leaf.  Its deepest node's depth into *deepest. */
+static int walk_piece(const atrbvh_node *nodes, size_t prims,
+                      measure_piece p, unsigned *deepest)
 {
-    const size_t m = b->node_count;
     struct {
         uint32_t at, depth;
     } st[MEASURE_STACK];
-    size_t i, leaves = 0, sp = 0;
-    unsigned largest = 0, deepest = 0, depth = 0;
-    double inner = 0.0, leaf_sum = 0.0, root = 0.0;
-    if (m == 0)
-        return atrbvh_i_bvh_measure(b);
-    if (m > (size_t)UINT32_MAX)
-        return ATRBVH_ERR_BACKEND; /* node indices are 32 bits */
-    for (i = 0; i < m; i++) {
-        const atrbvh_node *v = &b->nodes[i];
-        const double a = atrbvh_i_node_area(v);
-        if (i == 0)
-            root = a;
-        if (depth > deepest)
-            deepest = depth;
+    size_t i, sp = 0;
+    unsigned depth = p.depth, most = 0;
+    for (i = p.at; i < p.end; i++) {
+        const atrbvh_node *v = &nodes[i];
+        if (depth > most)
+            most = depth;
         if (v->count) {
-            if (v->index > b->prim_count || v->count > b->prim_count - v->index)
-                break;
-            leaf_sum += a * (double)v->count;
-            leaves++;
-            if (v->count > largest)
-                largest = v->count;
+            if (v->index > prims || v->count > prims - v->index)
+                return WALK_BAD;
             if (sp == 0) {
-                if (i + 1 != m)
-                    break; /* nodes after the whole tree */
-                continue;
+                *deepest = most;
+                return i + 1 == p.end ? WALK_OK : WALK_BAD;
             }
             sp--;
             if (st[sp].at != i + 1)
-                break; /* the next node is not the right child due */
+                return WALK_BAD; /* the next node is not the right child due */
             depth = st[sp].depth;
         } else {
-            inner += a;
-            if (v->index <= i + 1 || v->index >= m)
-                break;
+            if (v->index <= i + 1 || v->index >= p.end)
+                return WALK_BAD;
             if (sp == MEASURE_STACK)
-                return atrbvh_i_bvh_measure(b); /* deeper: check.c */
+                return WALK_DEEP;
             st[sp].at = v->index;
             st[sp].depth = depth + 1;
             sp++;
             depth++;
         }
     }
-    if (i < m)
+    return WALK_BAD; /* the subtree does not end where it should */
+}
+
+/* The top of the tree cut into subtrees of at most `cut` nodes (fewer
+ * where a list would overflow: those subtrees stay larger), into
+ * piece[0 .. *count); WALK_BAD when a top node's right child is not
+ * inside its subtree. */
+static int cut_pieces(const atrbvh_node *nodes, size_t m, uint32_t cut,
+                      measure_piece *piece, size_t cap, size_t *count)
+{
+    size_t k = 0, n = 1;
+    piece[0].at = 0;
+    piece[0].end = (uint32_t)m;
+    piece[0].depth = 0;
+    while (k < n) {
+        const measure_piece p = piece[k];
+        const atrbvh_node *v = &nodes[p.at];
+        if (p.end - p.at <= cut || v->count || n == cap) {
+            k++;
+            continue;
+        }
+        if (v->index <= p.at + 1 || v->index >= p.end)
+            return WALK_BAD;
+        /* the node's left subtree in its place (looked at again), its
+         * right one at the end */
+        piece[k].at = p.at + 1;
+        piece[k].end = v->index;
+        piece[k].depth = p.depth + 1;
+        piece[n].at = v->index;
+        piece[n].end = p.end;
+        piece[n].depth = p.depth + 1;
+        n++;
+    }
+    *count = n;
+    return WALK_OK;
+}
+
+/* The statistics of the layout's depth-first array, checked as such.  Two
+ * parts, which the threads share: the SAH's sums in node order, serially
+ * (atrbvh_sah's, the same bits: sah.c), with the leaves and their largest
+ * count; and the order check with the depths, a walk per subtree of the
+ * top (walk_piece), whose results (a maximum, a verdict) do not depend on
+ * the order the subtrees are walked in.  Nothing is allocated.  Measured
+ * (dragon LBVH, 909,967 nodes, 2 threads): 4.2-5.0 ms as one serial loop
+ * with both, the sums 1.2 ms (sah.c), the walk 3.2-3.9 ms alone, bound by
+ * the branch on the node kind, which no arithmetic form of the walk made
+ * faster (the stack's depths then go through memory at every node). */
+atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *b, int threads)
+{
+    const size_t m = b->node_count;
+    measure_piece piece[MEASURE_PIECES];
+    atrbvh_i_sah_sums sums;
+    size_t pieces = 1;
+    unsigned deepest = 0;
+    int verdict = WALK_OK;
+    int64_t k;
+    if (m == 0)
+        return atrbvh_i_bvh_measure(b);
+    if (m > (size_t)UINT32_MAX)
+        return ATRBVH_ERR_BACKEND; /* node indices are 32 bits */
+    if (threads < 1)
+        threads = 1;
+    if (threads > MEASURE_PIECES)
+        threads = MEASURE_PIECES;
+    piece[0].at = 0;
+    piece[0].end = (uint32_t)m;
+    piece[0].depth = 0;
+    if (threads > 1 && m >= MEASURE_PARALLEL_MIN) {
+        const size_t cap = (size_t)threads * MEASURE_PER_THREAD + 1u;
+        if (cut_pieces(b->nodes, m,
+                       (uint32_t)(m / ((size_t)threads * MEASURE_PER_THREAD)),
+                       piece, cap < MEASURE_PIECES ? cap : MEASURE_PIECES,
+                       &pieces) != WALK_OK)
+            return ATRBVH_ERR_BACKEND;
+    } else {
+        threads = 1;
+    }
+    /* item -1: the sums; item k >= 0: the walk of piece k */
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) \
+    reduction(max : deepest, verdict) if (threads > 1)
+#endif
+    for (k = -1; k < (int64_t)pieces; k++) {
+        if (k < 0) {
+            atrbvh_i_sah_sum(b->nodes, m, &sums);
+        } else {
+            unsigned most = 0;
+            const int w = walk_piece(b->nodes, b->prim_count, piece[k], &most);
+            if (w > verdict)
+                verdict = w;
+            if (most > deepest)
+                deepest = most;
+        }
+    }
+    if (verdict == WALK_DEEP)
+        return atrbvh_i_bvh_measure(b); /* deeper: check.c */
+    if (verdict != WALK_OK)
         return ATRBVH_ERR_BACKEND;
-    set_stats_sah(b, leaves, deepest, largest,
-                  atrbvh_i_sah_total(b->stats.ci, b->stats.ct, inner, leaf_sum,
-                                     root));
+    set_stats_sah(b, sums.leaves, deepest, sums.largest,
+                  atrbvh_i_sah_total(b->stats.ci, b->stats.ct, sums.inner,
+                                     sums.leaf_sum,
+                                     atrbvh_i_node_area(&b->nodes[0])));
     return ATRBVH_OK;
 }
 

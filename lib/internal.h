@@ -189,17 +189,33 @@ static inline double atrbvh_i_sah_total(double ci, double ct, double inner,
     return root > 0.0 ? (ci * inner + ct * leaves) / root : 0.0;
 }
 
+/* The sums of the SAH over nodes 0 .. m-1 in node order (sah.c): the
+ * internal nodes' areas, the leaves' areas times their counts; and the
+ * leaves and their largest count.  atrbvh_i_sah_sum_with(..., 0, ...)
+ * takes the scalar loop even where AVX is there (the tests compare the
+ * two: the same bits). */
+typedef struct atrbvh_i_sah_sums {
+    double inner, leaf_sum;
+    size_t leaves;
+    uint32_t largest;
+} atrbvh_i_sah_sums;
+void atrbvh_i_sah_sum(const atrbvh_node *nodes, size_t m,
+                       atrbvh_i_sah_sums *s);
+void atrbvh_i_sah_sum_with(const atrbvh_node *nodes, size_t m, int vector,
+                            atrbvh_i_sah_sums *s);
+
 /* Allocates an empty BVH object with room for the arrays. */
 atrbvh_bvh *atrbvh_i_bvh_alloc(size_t node_count, size_t prim_count);
 /* Fills stats.nodes, leaves, primitives, max_depth, max_leaf_primitives and
  * sah (with stats.ci/ct) from the node array; fails on an invalid array or
  * when scratch cannot be allocated. */
 atrbvh_status atrbvh_i_bvh_measure(atrbvh_bvh *bvh);
-/* The same for a tree the layout stage just wrote (lib/bvh.c): children
- * follow their parent, so one forward pass with a depth per node (4 bytes,
- * the general walk takes 12) measures it; ATRBVH_ERR_BACKEND when the
- * array is not such a tree, ATRBVH_ERR_NOMEM. */
-atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *bvh);
+/* The same for a tree the layout stage just wrote (lib/bvh.c), on up to
+ * `threads` threads (the same statistics for any count): the sums in node
+ * order, and the order check with the depths, a walk of the top's
+ * subtrees side by side; ATRBVH_ERR_BACKEND when the array is not such a
+ * tree, ATRBVH_ERR_NOMEM. */
+atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *bvh, int threads);
 /* The statistics both measures end with: counts, depth, SAH (bvh.c). */
 void atrbvh_i_bvh_set_stats(atrbvh_bvh *b, size_t leaves, unsigned depth,
                             unsigned largest);

@@ -171,7 +171,7 @@ static atrbvh_status finish(atrbvh_bvh *bvh, atrbvh_device *dev,
     bvh->stats.rounds = cfg->rounds;
     bvh->stats.backend = dev->backend->kind;
     bvh->stats.threads = cfg->threads;
-    st = atrbvh_i_bvh_measure_built(bvh);
+    st = atrbvh_i_bvh_measure_built(bvh, cfg->threads);
     if (st != ATRBVH_OK)
         return st == ATRBVH_ERR_NOMEM
                    ? atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,

@@ -381,7 +381,7 @@ START_TEST(measure_walk_deep_trees)
         atrbvh_bvh *a = caterpillar(spines[t]);
         atrbvh_bvh *g = caterpillar(spines[t]);
         double sah = atrbvh_sah(a->nodes, a->node_count, 1.2, 1.0);
-        ck_assert_int_eq(atrbvh_i_bvh_measure_built(a), ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_i_bvh_measure_built(a, 1), ATRBVH_OK);
         ck_assert_int_eq(atrbvh_i_bvh_measure(g), ATRBVH_OK);
         ck_assert_uint_eq(a->stats.nodes, 2 * spines[t] + 1);
         ck_assert_uint_eq(a->stats.leaves, spines[t] + 1);
@@ -404,13 +404,207 @@ START_TEST(measure_walk_deep_trees)
             atrbvh_bvh *badg = caterpillar(spines[t]);
             bad->nodes[spines[t] - 2].index++;
             badg->nodes[spines[t] - 2].index++;
-            ck_assert_int_ne(atrbvh_i_bvh_measure_built(bad), ATRBVH_OK);
+            ck_assert_int_ne(atrbvh_i_bvh_measure_built(bad, 1), ATRBVH_OK);
             ck_assert_int_ne(atrbvh_i_bvh_measure(badg), ATRBVH_OK);
             atrbvh_bvh_free(bad);
             atrbvh_bvh_free(badg);
         }
         atrbvh_bvh_free(a);
         atrbvh_bvh_free(g);
+    }
+}
+END_TEST
+
+/* A depth-first array of a tree of `leaves` leaves split unevenly (the
+ * left part takes about a third), with boxes and counts of many sizes:
+ * node `at` on, primitives from *prims; returns the position after it. */
+static size_t uneven(atrbvh_node *nodes, size_t at, size_t leaves,
+                     size_t *prims, unsigned *seed)
+{
+    atrbvh_node *n = &nodes[at];
+    float e;
+    *seed = *seed * 1103515245u + 12345u;
+    e = 0.25f + (float)((*seed >> 8) % 1000u) * 0.01f + (float)leaves;
+    n->min[0] = -e;
+    n->min[1] = -e * 0.5f;
+    n->min[2] = -e * 0.75f;
+    n->max[0] = e;
+    n->max[1] = e * 1.25f;
+    n->max[2] = e * 0.5f;
+    if (leaves == 1) {
+        n->count = 1u + (*seed >> 4) % 8u;
+        n->index = (uint32_t)*prims;
+        *prims += n->count;
+        return at + 1;
+    }
+    {
+        const size_t left = leaves / 3 ? leaves / 3 : 1;
+        const size_t right_at = uneven(nodes, at + 1, left, prims, seed);
+        n->count = 0;
+        n->index = (uint32_t)right_at;
+        return uneven(nodes, right_at, leaves - left, prims, seed);
+    }
+}
+
+static atrbvh_bvh *uneven_tree(size_t leaves)
+{
+    const size_t m = 2 * leaves - 1;
+    atrbvh_bvh *b = atrbvh_i_bvh_alloc(m, 8 * leaves);
+    size_t prims = 0, i;
+    unsigned seed = 7u;
+    ck_assert_ptr_nonnull(b);
+    ck_assert_uint_eq(uneven(b->nodes, 0, leaves, &prims, &seed), m);
+    b->prim_count = prims;
+    for (i = 0; i < prims; i++)
+        b->prim_indices[i] = (uint32_t)i;
+    b->stats.ci = 1.2;
+    b->stats.ct = 1.0;
+    return b;
+}
+
+/* The statistics pass on trees large enough for its threads (the top cut
+ * into subtrees walked side by side, the sums beside them): for 1, 2, 3
+ * and 8 threads the statistics of the general walk (check.c) and the SAH
+ * of atrbvh_sah to the bit; a right child out of place anywhere (deep in
+ * a subtree, at the root, at a node the top cut splits), a leaf's
+ * primitives past the index array, or the array cut short is refused by
+ * every thread count. */
+START_TEST(measure_built_threads)
+{
+    static const int threads[] = {1, 2, 3, 8};
+    const size_t leaves = 100000;
+    atrbvh_bvh *g = uneven_tree(leaves);
+    size_t t;
+    double sah;
+    ck_assert_int_eq(atrbvh_i_bvh_measure(g), ATRBVH_OK);
+    sah = atrbvh_sah(g->nodes, g->node_count, 1.2, 1.0);
+    ck_assert_uint_eq(g->stats.leaves, leaves);
+    for (t = 0; t < sizeof threads / sizeof threads[0]; t++) {
+        atrbvh_bvh *a = uneven_tree(leaves);
+        size_t at[4], c;
+        ck_assert_int_eq(atrbvh_i_bvh_measure_built(a, threads[t]),
+                         ATRBVH_OK);
+        ck_assert_uint_eq(a->stats.nodes, g->stats.nodes);
+        ck_assert_uint_eq(a->stats.leaves, g->stats.leaves);
+        ck_assert_uint_eq(a->stats.max_depth, g->stats.max_depth);
+        ck_assert_uint_eq(a->stats.max_leaf_primitives,
+                          g->stats.max_leaf_primitives);
+        ck_assert_uint_eq(a->stats.primitives, g->stats.primitives);
+        ck_assert_msg(memcmp(&a->stats.sah, &sah, sizeof sah) == 0 &&
+                          memcmp(&g->stats.sah, &sah, sizeof sah) == 0,
+                      "%d threads: SAH %.17g, general %.17g, atrbvh_sah "
+                      "%.17g",
+                      threads[t], a->stats.sah, g->stats.sah, sah);
+        /* internal nodes: the root, one a few levels down (inside the
+         * top), and two deep ones */
+        at[0] = 0;
+        at[1] = a->nodes[a->nodes[0].index].index;
+        at[2] = a->node_count / 2;
+        at[3] = a->node_count - 40;
+        for (c = 0; c < 4; c++) {
+            size_t i = at[c];
+            while (a->nodes[i].count)
+                i++; /* the next internal node */
+            a->nodes[i].index++;
+            ck_assert_msg(atrbvh_i_bvh_measure_built(a, threads[t]) !=
+                              ATRBVH_OK,
+                          "%d threads: right child of node %lu moved",
+                          threads[t], (unsigned long)i);
+            a->nodes[i].index--;
+        }
+        {
+            size_t i = a->node_count - 1; /* the last leaf */
+            a->nodes[i].count += 1000;
+            ck_assert_int_ne(atrbvh_i_bvh_measure_built(a, threads[t]),
+                             ATRBVH_OK);
+            a->nodes[i].count -= 1000;
+        }
+        a->node_count--;
+        ck_assert_int_ne(atrbvh_i_bvh_measure_built(a, threads[t]),
+                         ATRBVH_OK);
+        a->node_count++;
+        ck_assert_int_eq(atrbvh_i_bvh_measure_built(a, threads[t]),
+                         ATRBVH_OK);
+        atrbvh_bvh_free(a);
+    }
+    atrbvh_bvh_free(g);
+    /* deeper than the walk's stack, on threads: the general walk's */
+    {
+        atrbvh_bvh *a = caterpillar(40000), *c = caterpillar(40000);
+        ck_assert_int_eq(atrbvh_i_bvh_measure_built(a, 2), ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_i_bvh_measure(c), ATRBVH_OK);
+        ck_assert_uint_eq(a->stats.max_depth, 40000);
+        ck_assert_uint_eq(a->stats.max_depth, c->stats.max_depth);
+        ck_assert(memcmp(&a->stats.sah, &c->stats.sah, sizeof a->stats.sah) ==
+                  0);
+        atrbvh_bvh_free(a);
+        atrbvh_bvh_free(c);
+    }
+}
+END_TEST
+
+/* The same bits, or both NaN (which NaN an operation on two returns is the
+ * compiler's choice of operand order, not C's). */
+static int same_or_nans(double a, double b)
+{
+    return memcmp(&a, &b, sizeof a) == 0 || (a != a && b != b);
+}
+
+/* The SAH's sums (sah.c): four nodes at a time where AVX is there, and
+ * the scalar loop, on arrays of every length modulo 4 with boxes that
+ * give infinite, NaN, -0 and huge areas and counts of 2^31 and more: the
+ * same bits in every field (NaN for NaN). */
+START_TEST(sah_sums_vector_is_scalar)
+{
+    static const float odd[] = {0.0f, -0.0f, 1e30f, -1e30f, 3.4e38f,
+                                -3.4e38f, 1e-30f, 0.1f};
+    size_t m;
+    unsigned seed = 1u;
+    for (m = 0; m < 203; m++) {
+        atrbvh_node *n = malloc((m ? m : 1) * sizeof *n);
+        atrbvh_i_sah_sums v, s;
+        size_t i;
+        int k;
+        ck_assert_ptr_nonnull(n);
+        for (i = 0; i < m; i++) {
+            for (k = 0; k < 3; k++) {
+                int special;
+                seed = seed * 1103515245u + 12345u;
+                /* fractions of unlike sizes (sums that round), in a third
+                 * of the arrays some odd values */
+                special = m % 3 == 1 && (seed >> 28) < 3;
+                n[i].min[k] = special
+                                  ? odd[(seed >> 8) % 8u]
+                                  : (float)((seed >> 8) % 1000u) * 0.0137f;
+                seed = seed * 1103515245u + 12345u;
+                n[i].max[k] = special
+                                  ? odd[(seed >> 8) % 8u]
+                                  : n[i].min[k] + (float)((seed >> 8) %
+                                                          100000u) *
+                                                      0.00071f;
+            }
+            /* and in those NaN and infinities, which then take over the
+             * sums */
+            if (m % 3 == 1 && i % 37 == 5)
+                n[i].min[1] = NAN;
+            if (m % 3 == 1 && i % 41 == 7)
+                n[i].max[2] = INFINITY;
+            seed = seed * 1103515245u + 12345u;
+            n[i].count = (seed >> 29) < 3   ? 0u
+                         : (seed >> 29) < 6 ? (seed >> 8) % 9u
+                                            : 0x80000000u + (seed >> 8);
+            n[i].index = seed;
+        }
+        atrbvh_i_sah_sum_with(n, m, 1, &v);
+        atrbvh_i_sah_sum_with(n, m, 0, &s);
+        ck_assert_msg(same_or_nans(v.inner, s.inner) &&
+                          same_or_nans(v.leaf_sum, s.leaf_sum),
+                      "%lu nodes: inner %.17g / %.17g, leaves %.17g / %.17g",
+                      (unsigned long)m, v.inner, s.inner, v.leaf_sum,
+                      s.leaf_sum);
+        ck_assert_uint_eq(v.leaves, s.leaves);
+        ck_assert_uint_eq(v.largest, s.largest);
+        free(n);
     }
 }
 END_TEST
@@ -500,6 +694,8 @@ int main(void)
     tcase_add_test(tc, hierarchy_is_karras);
     tcase_add_test(tc, hierarchy_refit_is_the_refit);
     tcase_add_test(tc, measure_walk_deep_trees);
+    tcase_add_test(tc, measure_built_threads);
+    tcase_add_test(tc, sah_sums_vector_is_scalar);
     tcase_add_test(tc, large_arrays_advise_huge_pages);
     suite_add_tcase(s, tc);
     return tu_run(s);
