@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [1.94607091:27.5050583]
-set xtics (2, 5, 10, 20)
+set xrange [3.16217671:44.7847893]
+set xtics (5, 10, 20)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 2.13677412,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 6.90717831,77.3438007 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 5.59906983,73.4949382 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 8.59677905,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 6.87789096,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 12.0056309,68.0489447 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 15.4598078,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 8.12597625,68.7352597 left font ',8' noenhanced front
-set label 'embree_low' at 3.75391541,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 16.2189453,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 11.5988359,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 2.63703569,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 10.7764514,71.690965 left font ',8' noenhanced front
+set label 'LBVH' at 3.47230226,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 11.5517079,77.3438007 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 9.4857172,73.4949382 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 13.8060803,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 16.6819844,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 24.5946364,72.4804162 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 26.3975115,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 21.2791647,67.3811989 left font ',8' noenhanced front
+set label 'embree_low' at 5.64259429,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 24.7667231,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 17.1645064,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.39899965,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 11.2347292,71.690965 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
