@@ -286,12 +286,11 @@ static void lane_end(walk_ctx *c, opt_worker *w, uint32_t node,
                      atrbvh_trbvh_scratch s, double found, int packed,
                      unsigned lane)
 {
-    int applied = 0;
-    if (found < c->t.cost[node]) {
-        if (packed)
-            atrbvh_trbvh_lane(c->n, w->pack, lane, s);
-        applied = atrbvh_trbvh_keep(&c->t, c->cost, node, tl, lv, s, found);
-    }
+    const atrbvh_trbvh_tables tab =
+        packed ? atrbvh_trbvh_tables_lane(c->n, w->pack, lane, s)
+               : atrbvh_trbvh_tables_of(tl->n, s);
+    const int applied =
+        atrbvh_trbvh_keep_from(&c->t, c->cost, node, tl, lv, &tab, found);
     lane_done(c, w, node, tl, applied);
 }
 

@@ -375,7 +375,9 @@ ATRBVH_FN void atrbvh_trbvh_subsets(atrbvh_u32 n, atrbvh_u32 k,
 
 /* The best partition of S (|S| >= 2; every proper subset's cost final in
  * cost[], and at rest[P] = C(S\P) for every subset P of S (rest =
- * rev + (full ^ S), see atrbvh_trbvh_dp), base = ci*A(S)): the minimum
+ * rev + (full ^ S), see atrbvh_trbvh_dp), base = ci*A(S); both tables
+ * read every st-th entry, cost[st * P] and rest[st * P]: st = 1 but for
+ * the four-lane DP's interleaved tables, 4): the minimum
  * over P of (base + C(P)) + C(S\P),
  * P running through the nonempty subsets of delta = S minus its lowest
  * leaf in increasing order (the paper's P = (P - delta) & S), the first P
@@ -402,21 +404,22 @@ ATRBVH_FN void atrbvh_trbvh_subsets(atrbvh_u32 n, atrbvh_u32 k,
     } while (0)
 ATRBVH_FN double atrbvh_trbvh_best(ATRBVH_GLOBAL const double *cost,
                                    ATRBVH_GLOBAL const double *rest,
-                                   atrbvh_trbvh_mask S, double base,
-                                   atrbvh_trbvh_mask *bestp)
+                                   atrbvh_trbvh_mask st, atrbvh_trbvh_mask S,
+                                   double base, atrbvh_trbvh_mask *bestp)
 {
     const atrbvh_trbvh_mask delta = (S - 1u) & S;
     const atrbvh_trbvh_mask lb = delta & (0u - delta), d2 = delta ^ lb;
-    ATRBVH_GLOBAL const double *cost_lb = cost + lb, *rest_lb = rest + lb;
+    ATRBVH_GLOBAL const double *cost_lb = cost + st * lb,
+                               *rest_lb = rest + st * lb;
     atrbvh_trbvh_mask E, bp = lb;
-    double best = base + cost[lb];
-    best = best + rest[lb];
+    double best = base + cost[st * lb];
+    best = best + rest[st * lb];
     for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
-        double c = base + cost[E];
-        c = c + rest[E];
+        double c = base + cost[st * E];
+        c = c + rest[st * E];
         ATRBVH_TRBVH_TRY(c, E);
-        c = base + cost_lb[E];
-        c = c + rest_lb[E];
+        c = base + cost_lb[st * E];
+        c = c + rest_lb[st * E];
         ATRBVH_TRBVH_TRY(c, E + lb);
     }
     *bestp = bp;
@@ -464,31 +467,32 @@ ATRBVH_FN double atrbvh_trbvh_min(ATRBVH_GLOBAL const double *cost,
  * bits here, so the first equal one is the first of equal minima that
  * strict < keeps).  The caller passes the partitions' minimum, so the
  * scan stops at it, on average about halfway; should it not be met, the
- * whole scan of atrbvh_trbvh_best decides. */
+ * whole scan of atrbvh_trbvh_best decides.  The tables as there (st). */
 ATRBVH_FN atrbvh_trbvh_mask
 atrbvh_trbvh_first(ATRBVH_GLOBAL const double *cost,
-                   ATRBVH_GLOBAL const double *rest, atrbvh_trbvh_mask S,
-                   double base, double target)
+                   ATRBVH_GLOBAL const double *rest, atrbvh_trbvh_mask st,
+                   atrbvh_trbvh_mask S, double base, double target)
 {
     const atrbvh_trbvh_mask delta = (S - 1u) & S;
     const atrbvh_trbvh_mask lb = delta & (0u - delta), d2 = delta ^ lb;
-    ATRBVH_GLOBAL const double *cost_lb = cost + lb, *rest_lb = rest + lb;
+    ATRBVH_GLOBAL const double *cost_lb = cost + st * lb,
+                               *rest_lb = rest + st * lb;
     atrbvh_trbvh_mask E, bp;
-    double c = base + cost[lb];
-    c = c + rest[lb];
+    double c = base + cost[st * lb];
+    c = c + rest[st * lb];
     if (c == target)
         return lb;
     for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
-        c = base + cost[E];
-        c = c + rest[E];
+        c = base + cost[st * E];
+        c = c + rest[st * E];
         if (c == target)
             return E;
-        c = base + cost_lb[E];
-        c = c + rest_lb[E];
+        c = base + cost_lb[st * E];
+        c = c + rest_lb[st * E];
         if (c == target)
             return E + lb;
     }
-    (void)atrbvh_trbvh_best(cost, rest, S, base, &bp);
+    (void)atrbvh_trbvh_best(cost, rest, st, S, base, &bp);
     return bp;
 }
 
@@ -598,23 +602,52 @@ atrbvh_trbvh_costs(const atrbvh_cost_params *p, atrbvh_u32 n,
     return cost[full];
 }
 
-/* The optimal topology after atrbvh_trbvh_costs (its tables untouched
- * since), top down (explicit stack, no recursion): local node 0 is the
- * root, children get local ids as discovered.  The split of each subset
- * S on the way is atrbvh_trbvh_best over the final costs, the argument of
- * the minimum that atrbvh_trbvh_costs took (same sums, same order; it is
- * also left in s.split[S]). */
-ATRBVH_FN void atrbvh_trbvh_extract(const atrbvh_cost_params *p,
-                                    atrbvh_u32 n, atrbvh_trbvh_scratch s,
-                                    atrbvh_treelet_topo *topo)
+/* Where atrbvh_trbvh_extract_from reads a finished DP: C(S) at
+ * cost[stride * S], the mirror rev[full ^ X] = C(X) at rev_top[-stride *
+ * X], A(S) at area[S] and N(S) at count[S]; it writes split[S].  The
+ * scalar DP's layout (atrbvh_trbvh_tables_of: stride 1, the mirror and
+ * the areas in the box planes) or one lane of the four-lane DP's
+ * (atrbvh_trbvh_tables_lane). */
+typedef struct atrbvh_trbvh_tables {
+    ATRBVH_GLOBAL const double *cost, *rev_top, *area;
+    ATRBVH_GLOBAL const atrbvh_u32 *count;
+    ATRBVH_GLOBAL atrbvh_u32 *split;
+    atrbvh_trbvh_mask stride;
+} atrbvh_trbvh_tables;
+
+/* The tables atrbvh_trbvh_costs leaves in s (n leaves). */
+ATRBVH_FN atrbvh_trbvh_tables atrbvh_trbvh_tables_of(atrbvh_u32 n,
+                                                     atrbvh_trbvh_scratch s)
+{
+    const atrbvh_u32 full = (1u << n) - 1u;
+    atrbvh_trbvh_tables tab;
+    ATRBVH_GLOBAL double *rev_top =
+        (ATRBVH_GLOBAL double *)(ATRBVH_GLOBAL void *)s.box + full;
+    tab.cost = s.cost;
+    tab.rev_top = rev_top;
+    tab.area = rev_top + 1u;
+    tab.count = s.count;
+    tab.split = s.split;
+    tab.stride = 1u;
+    return tab;
+}
+
+/* The optimal topology after the DP (its tables untouched since), top
+ * down (explicit stack, no recursion): local node 0 is the root, children
+ * get local ids as discovered.  The split of each subset S on the way is
+ * atrbvh_trbvh_best over the final costs, the argument of the minimum
+ * that the DP took (same sums, same order; it is also left in
+ * tab->split[S]). */
+ATRBVH_FN void atrbvh_trbvh_extract_from(const atrbvh_cost_params *p,
+                                         atrbvh_u32 n,
+                                         const atrbvh_trbvh_tables *tab,
+                                         atrbvh_treelet_topo *topo)
 {
     atrbvh_u32 full = (1u << n) - 1u;
     atrbvh_u32 stack_mask[ATRBVH_TRBVH_MAX];
     atrbvh_u32 stack_node[ATRBVH_TRBVH_MAX];
     atrbvh_u32 sp, next;
-    ATRBVH_GLOBAL double *rev_top =
-        (ATRBVH_GLOBAL double *)(ATRBVH_GLOBAL void *)s.box + full;
-    ATRBVH_GLOBAL const double *areas = rev_top + 1u;
+    const atrbvh_trbvh_mask st = tab->stride;
     const atrbvh_u32 lim = !p->collapse          ? 0u
                            : p->max_leaf == 0u ? ATRBVH_U32_MAX
                                                : p->max_leaf;
@@ -632,23 +665,24 @@ ATRBVH_FN void atrbvh_trbvh_extract(const atrbvh_cost_params *p,
         node = stack_node[sp];
         {
             /* C(S) is the partitions' minimum unless the collapse term
-             * (recomputed as atrbvh_trbvh_costs did) equals it: then
-             * the partitions' minimum is unknown, scan them all. */
-            const double area = areas[S], base = p->ci * area;
-            const double target = s.cost[S];
+             * (recomputed as the DP did) equals it: then the
+             * partitions' minimum is unknown, scan them all. */
+            const double area = tab->area[S], base = p->ci * area;
+            const double target = tab->cost[st * S];
+            ATRBVH_GLOBAL const double *rest = tab->rev_top - st * S;
             int whole = 0;
-            if (s.count[S] <= lim) {
+            if (tab->count[S] <= lim) {
                 double flat = p->ct * area;
-                flat = flat * (double)s.count[S];
+                flat = flat * (double)tab->count[S];
                 whole = flat == target;
             }
             if (whole)
-                (void)atrbvh_trbvh_best(s.cost, rev_top - S, S, base, &bp);
+                (void)atrbvh_trbvh_best(tab->cost, rest, st, S, base, &bp);
             else
-                bp = atrbvh_trbvh_first(s.cost, rev_top - S, S, base,
+                bp = atrbvh_trbvh_first(tab->cost, rest, st, S, base,
                                         target);
         }
-        s.split[S] = (atrbvh_u32)bp;
+        tab->split[S] = (atrbvh_u32)bp;
         parts[0] = (atrbvh_u32)bp;
         parts[1] = S ^ parts[0];
         for (side = 0; side < 2; side++) {
@@ -671,6 +705,15 @@ ATRBVH_FN void atrbvh_trbvh_extract(const atrbvh_cost_params *p,
         }
     }
     ATRBVH_TRBVH_RETYPE();
+}
+
+/* The optimal topology after atrbvh_trbvh_costs, from its tables in s. */
+ATRBVH_FN void atrbvh_trbvh_extract(const atrbvh_cost_params *p,
+                                    atrbvh_u32 n, atrbvh_trbvh_scratch s,
+                                    atrbvh_treelet_topo *topo)
+{
+    const atrbvh_trbvh_tables tab = atrbvh_trbvh_tables_of(n, s);
+    atrbvh_trbvh_extract_from(p, n, &tab, topo);
 }
 
 /* The whole DP: costs, then the topology; returns C(all leaves). */
@@ -702,31 +745,35 @@ ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
  * 32-byte aligned): C(S) of lane l at quad[4S + l], then the mirror
  * rev[full ^ X] = C(X) of the four lanes, as in atrbvh_trbvh_costs.  Each
  * lane's own scratch gets the subset boxes, areas and counts
- * (atrbvh_trbvh_subsets_avx); atrbvh_trbvh_lane then leaves, for a lane
- * whose treelet is kept, its scratch exactly as atrbvh_trbvh_costs would
- * have (for atrbvh_trbvh_extract).  found[l] is C(all leaves) of lane l. */
+ * (atrbvh_trbvh_subsets_avx); atrbvh_trbvh_tables_lane names where a
+ * lane's tables are, for the extraction of a kept treelet
+ * (atrbvh_trbvh_keep_from).  found[l] is C(all leaves) of lane l. */
 #if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__)) && \
     (defined(__x86_64__) || defined(__i386__))
 #include <immintrin.h>
 #define ATRBVH_TRBVH_QUADS 1
-/* Lane `lane` of atrbvh_trbvh_costs4 into that lane's scratch, as
- * atrbvh_trbvh_costs leaves it: C(S) in cost[S], the mirror and the areas
- * in the box planes (their floats dead by then). */
-ATRBVH_FN void atrbvh_trbvh_lane(atrbvh_u32 n, const double *quad,
-                                 atrbvh_u32 lane, atrbvh_trbvh_scratch s)
+/* The tables of lane `lane` of atrbvh_trbvh_costs4 (n leaves), where
+ * they are: C(S) and the mirror interleaved in `quad` (every fourth
+ * entry), A(S) and N(S) in that lane's scratch s (the areas in its cost
+ * array, which costs4 leaves as atrbvh_trbvh_subsets_avx wrote it).  The
+ * extraction reads about six subsets' partitions, so it reads them there:
+ * a copy of a kept lane's 2^n - 1 costs, mirror entries and areas back to
+ * the scalar layout was 8.6% of TRBVH(7)'s optimise-stage instructions
+ * (callgrind, sibenik, one thread). */
+ATRBVH_FN atrbvh_trbvh_tables atrbvh_trbvh_tables_lane(atrbvh_u32 n,
+                                                       const double *quad,
+                                                       atrbvh_u32 lane,
+                                                       atrbvh_trbvh_scratch s)
 {
-    const atrbvh_u32 full = (1u << n) - 1u;
-    double *rev_top = (double *)(void *)s.box + full;
-    double *areas = rev_top + 1u;
-    atrbvh_trbvh_mask S;
-    ATRBVH_TRBVH_RETYPE();
-    for (S = 1; S <= full; S++) {
-        const double c = quad[4u * S + lane];
-        areas[S] = s.cost[S];
-        s.cost[S] = c;
-        *(rev_top - S) = c;
-    }
-    ATRBVH_TRBVH_RETYPE();
+    const atrbvh_trbvh_mask full = ((atrbvh_trbvh_mask)1 << n) - 1u;
+    atrbvh_trbvh_tables tab;
+    tab.cost = quad + lane;
+    tab.rev_top = quad + 4u * (((atrbvh_trbvh_mask)1 << n) + full) + lane;
+    tab.area = s.cost;
+    tab.count = s.count;
+    tab.split = s.split;
+    tab.stride = 4u;
+    return tab;
 }
 
 /* atrbvh_trbvh_min on the four lanes (its enumeration, two running minima
@@ -1365,29 +1412,42 @@ ATRBVH_FN atrbvh_u32 atrbvh_treelet_begin(const atrbvh_treelet_tree *t,
     return atrbvh_treelet_form(t, root, n, tl);
 }
 
-/* The end of a TRBVH treelet once atrbvh_trbvh_costs has filled the
- * tables of `s` for the gathered leaves *lv and found C(all leaves):
+/* The end of a TRBVH treelet once the DP has filled the tables *tab for
+ * the gathered leaves *lv and found C(all leaves):
  * the optimal topology is extracted, evaluated and written back when it
  * is strictly cheaper than the root's cost.  Returns 1 when written back.
  * A quick reject first: the DP's optimum is what evaluate recomputes (the
  * same sums in the same order), so nothing strictly cheaper exists when
  * `found` is not. */
+ATRBVH_FN int atrbvh_trbvh_keep_from(const atrbvh_treelet_tree *t,
+                                     const atrbvh_cost_params *p,
+                                     atrbvh_u32 root,
+                                     const atrbvh_treelet *tl,
+                                     const atrbvh_treelet_leaves *lv,
+                                     const atrbvh_trbvh_tables *tab,
+                                     double found)
+{
+    atrbvh_treelet_topo topo;
+    double cost;
+    if (!(found < t->cost[root]))
+        return 0;
+    atrbvh_trbvh_extract_from(p, tl->n, tab, &topo);
+    cost = atrbvh_treelet_evaluate(p, tl->n, lv, &topo);
+    if (!(cost < t->cost[root]))
+        return 0;
+    atrbvh_treelet_write(t, tl, &topo);
+    return 1;
+}
+
+/* The same with the tables atrbvh_trbvh_costs left in s. */
 ATRBVH_FN int atrbvh_trbvh_keep(const atrbvh_treelet_tree *t,
                                 const atrbvh_cost_params *p, atrbvh_u32 root,
                                 const atrbvh_treelet *tl,
                                 const atrbvh_treelet_leaves *lv,
                                 atrbvh_trbvh_scratch s, double found)
 {
-    atrbvh_treelet_topo topo;
-    double cost;
-    if (!(found < t->cost[root]))
-        return 0;
-    atrbvh_trbvh_extract(p, tl->n, s, &topo);
-    cost = atrbvh_treelet_evaluate(p, tl->n, lv, &topo);
-    if (!(cost < t->cost[root]))
-        return 0;
-    atrbvh_treelet_write(t, tl, &topo);
-    return 1;
+    const atrbvh_trbvh_tables tab = atrbvh_trbvh_tables_of(tl->n, s);
+    return atrbvh_trbvh_keep_from(t, p, root, tl, lv, &tab, found);
 }
 
 /* The end of an ATRBVH treelet of up to ATRBVH_TREELET_MAX leaves, formed
