@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.39370871:42.5823489]
+set xrange [2.80192636:49.9573884]
 set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 4.53308197,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 11.2839916,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 12.5404286,39.3531597 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 8.67106877,39.0314856 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 10.28226,38.4286758 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 20.2807996,38.4434634 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 13.7356891,38.1166438 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 15.0905964,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 5.67498213,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 25.7128208,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 18.0420993,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 3.47399732,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 15.4898127,39.3638605 left font ',8' noenhanced front
+set label 'LBVH' at 4.06569178,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 10.3432052,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 7.98785742,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 11.8488777,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 17.0101596,39.0521322 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 21.7514222,38.4434634 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 13.9359092,38.1166438 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 10.946795,38.5681918 left font ',8' noenhanced front
+set label 'embree_low' at 4.6445818,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 28.12483,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 18.5171077,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 2.8775451,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 8.97232346,38.1169475 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

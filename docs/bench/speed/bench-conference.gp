@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [17.6527482:241.179883]
+set xrange [14.7497681:223.387359]
 set xtics (20, 50, 100, 200)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 19.3594286,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 64.9555139,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 69.5206446,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 81.5490202,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 66.7060981,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 133.760574,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 123.853245,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 78.2300749,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 34.7083704,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 143.181758,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 98.0021937,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 24.4969099,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 90.7786975,38.1056054 left font ',8' noenhanced front
+set label 'LBVH' at 16.2347173,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 54.3531739,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 59.5180414,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 72.7570096,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 55.7412831,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 112.423679,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 93.00543,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 59.2758087,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 31.5060575,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 86.1735492,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 129.921785,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 21.5258102,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 78.9595111,34.2982713 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
