@@ -111,17 +111,14 @@ static int walk_piece(const atrbvh_node *nodes, size_t prims,
     return i < p.end ? WALK_DEEP : WALK_BAD;
 }
 
-/* The top of the tree cut into subtrees of at most `cut` nodes (fewer
- * where a list would overflow: those subtrees stay larger), into
+/* The whole tree in piece[0] cut into subtrees of at most `cut` nodes
+ * (fewer where a list would overflow: those subtrees stay larger), into
  * piece[0 .. *count); WALK_BAD when a top node's right child is not
  * inside its subtree. */
-static int cut_pieces(const atrbvh_node *nodes, size_t m, uint32_t cut,
+static int cut_pieces(const atrbvh_node *nodes, uint32_t cut,
                       measure_piece *piece, size_t cap, size_t *count)
 {
     size_t k = 0, n = 1;
-    piece[0].at = 0;
-    piece[0].end = (uint32_t)m;
-    piece[0].depth = 0;
     while (k < n) {
         const measure_piece p = piece[k];
         const atrbvh_node *v = &nodes[p.at];
@@ -175,7 +172,7 @@ atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *b, int threads)
     piece[0].depth = 0;
     if (threads > 1 && m >= MEASURE_PARALLEL_MIN) {
         const size_t cap = (size_t)threads * MEASURE_PER_THREAD + 1u;
-        if (cut_pieces(b->nodes, m,
+        if (cut_pieces(b->nodes,
                        (uint32_t)(m / ((size_t)threads * MEASURE_PER_THREAD)),
                        piece, cap < MEASURE_PIECES ? cap : MEASURE_PIECES,
                        &pieces) != WALK_OK)

@@ -369,6 +369,23 @@ static atrbvh_bvh *caterpillar(size_t spine)
     return b;
 }
 
+/* The statistics of a (measured by the pass after a build) are those of g
+ * (measured by the general walk), and both SAHs are `sah` to the bit. */
+static void assert_same_stats(const atrbvh_bvh *a, const atrbvh_bvh *g,
+                              double sah, const char *what)
+{
+    ck_assert_uint_eq(a->stats.nodes, g->stats.nodes);
+    ck_assert_uint_eq(a->stats.leaves, g->stats.leaves);
+    ck_assert_uint_eq(a->stats.max_depth, g->stats.max_depth);
+    ck_assert_uint_eq(a->stats.max_leaf_primitives,
+                      g->stats.max_leaf_primitives);
+    ck_assert_uint_eq(a->stats.primitives, g->stats.primitives);
+    ck_assert_msg(memcmp(&a->stats.sah, &sah, sizeof sah) == 0 &&
+                      memcmp(&g->stats.sah, &sah, sizeof sah) == 0,
+                  "%s: SAH %.17g (built) %.17g (general), atrbvh_sah %.17g",
+                  what, a->stats.sah, g->stats.sah, sah);
+}
+
 /* The statistics pass after a build (atrbvh_i_bvh_measure_built) keeps at
  * most 512 pending right children and hands deeper trees to the general
  * walk of check.c.  Around and past that bound its statistics must be the
@@ -381,23 +398,16 @@ START_TEST(measure_walk_deep_trees)
         atrbvh_bvh *a = caterpillar(spines[t]);
         atrbvh_bvh *g = caterpillar(spines[t]);
         double sah = atrbvh_sah(a->nodes, a->node_count, 1.2, 1.0);
+        char what[32];
         ck_assert_int_eq(atrbvh_i_bvh_measure_built(a, 1), ATRBVH_OK);
         ck_assert_int_eq(atrbvh_i_bvh_measure(g), ATRBVH_OK);
         ck_assert_uint_eq(a->stats.nodes, 2 * spines[t] + 1);
         ck_assert_uint_eq(a->stats.leaves, spines[t] + 1);
         ck_assert_uint_eq(a->stats.max_depth, spines[t]);
-        ck_assert_uint_eq(a->stats.max_depth, g->stats.max_depth);
         ck_assert_uint_eq(a->stats.max_leaf_primitives,
                           spines[t] >= 2 ? 3 : 2);
-        ck_assert_uint_eq(a->stats.max_leaf_primitives,
-                          g->stats.max_leaf_primitives);
-        ck_assert_uint_eq(a->stats.primitives, g->stats.primitives);
-        ck_assert_msg(memcmp(&a->stats.sah, &sah, sizeof sah) == 0 &&
-                          memcmp(&g->stats.sah, &sah, sizeof sah) == 0,
-                      "spine %lu: SAH %.17g (built) %.17g (general), "
-                      "atrbvh_sah %.17g",
-                      (unsigned long)spines[t], a->stats.sah, g->stats.sah,
-                      sah);
+        snprintf(what, sizeof what, "spine %lu", (unsigned long)spines[t]);
+        assert_same_stats(a, g, sah, what);
         /* a right child out of place deep down is refused by both */
         if (spines[t] >= 2) {
             atrbvh_bvh *bad = caterpillar(spines[t]);
@@ -482,19 +492,11 @@ START_TEST(measure_built_threads)
     for (t = 0; t < sizeof threads / sizeof threads[0]; t++) {
         atrbvh_bvh *a = uneven_tree(leaves);
         size_t at[4], c;
+        char what[32];
         ck_assert_int_eq(atrbvh_i_bvh_measure_built(a, threads[t]),
                          ATRBVH_OK);
-        ck_assert_uint_eq(a->stats.nodes, g->stats.nodes);
-        ck_assert_uint_eq(a->stats.leaves, g->stats.leaves);
-        ck_assert_uint_eq(a->stats.max_depth, g->stats.max_depth);
-        ck_assert_uint_eq(a->stats.max_leaf_primitives,
-                          g->stats.max_leaf_primitives);
-        ck_assert_uint_eq(a->stats.primitives, g->stats.primitives);
-        ck_assert_msg(memcmp(&a->stats.sah, &sah, sizeof sah) == 0 &&
-                          memcmp(&g->stats.sah, &sah, sizeof sah) == 0,
-                      "%d threads: SAH %.17g, general %.17g, atrbvh_sah "
-                      "%.17g",
-                      threads[t], a->stats.sah, g->stats.sah, sah);
+        snprintf(what, sizeof what, "%d threads", threads[t]);
+        assert_same_stats(a, g, sah, what);
         /* internal nodes: the root, one a few levels down (inside the
          * top), and two deep ones */
         at[0] = 0;
@@ -534,9 +536,8 @@ START_TEST(measure_built_threads)
         ck_assert_int_eq(atrbvh_i_bvh_measure_built(a, 2), ATRBVH_OK);
         ck_assert_int_eq(atrbvh_i_bvh_measure(c), ATRBVH_OK);
         ck_assert_uint_eq(a->stats.max_depth, 40000);
-        ck_assert_uint_eq(a->stats.max_depth, c->stats.max_depth);
-        ck_assert(memcmp(&a->stats.sah, &c->stats.sah, sizeof a->stats.sah) ==
-                  0);
+        assert_same_stats(a, c, atrbvh_sah(c->nodes, c->node_count, 1.2, 1.0),
+                          "spine 40000, 2 threads");
         atrbvh_bvh_free(a);
         atrbvh_bvh_free(c);
     }
