@@ -326,6 +326,100 @@ START_TEST(morton_keys)
 }
 END_TEST
 
+/* The CPU's Morton sweep, eight boxes at a time where the CPU has AVX2
+ * (cpu/morton.c), gives the keys of the per-item rule, bit for bit: on
+ * every length modulo 8 from starts that are not multiples of 8, on
+ * random boxes, and on centres at the edges of the frame (its low end,
+ * just below it, the top code's threshold and just under it, beyond the
+ * far end, a zero-extent axis, negative zero, infinities and NaN). */
+START_TEST(morton_keys_vector_is_scalar)
+{
+    static const float odd[] = {0.0f,
+                                -0.0f,
+                                -1e-7f,
+                                7.99999618530273438f, /* t = 2^21 - 1 */
+                                7.99999237060546875f, /* t = 2^21 - 2 */
+                                8.0f,
+                                1e30f,
+                                -1e30f,
+                                3.4e38f};
+    /* two frames: the second has no zero-extent axis */
+    const double frames[2][2][3] = {
+        {{0.0, -1.0, 5.0}, {2097152.0 / 8.0, 0.0, 2097152.0 / 3.3}},
+        {{0.0, -0.25, 5.5},
+         {2097152.0 / 3.3, 2097152.0 / 0.9, 2097152.0 / 8.0}}};
+    const double *lo, *scale;
+    int f;
+    const uint32_t total = 1000;
+    atrbvh_box *box = malloc(total * sizeof *box);
+    uint64_t *v = malloc(total * sizeof *v), *w = malloc(total * sizeof *w);
+    unsigned seed = 7u;
+    uint32_t i, a, b, differ = 0;
+    int k;
+    ck_assert_ptr_nonnull(box);
+    ck_assert_ptr_nonnull(v);
+    ck_assert_ptr_nonnull(w);
+    for (i = 0; i < total; i++)
+        for (k = 0; k < 3; k++) {
+            float c;
+            seed = seed * 1103515245u + 12345u;
+            if ((seed >> 28) < 4) {
+                /* a centre of odd[], as min = max (x's values; on the
+                 * other axes around their low ends) */
+                c = odd[(seed >> 8) % 9u];
+                if (k == 2)
+                    c = c + 5.0f;
+            } else {
+                c = (float)((seed >> 8) % 100000u) * 0.0000913f - 0.5f;
+            }
+            box[i].min[k] = c;
+            box[i].max[k] = c;
+            seed = seed * 1103515245u + 12345u;
+            if ((seed >> 29) == 0) /* an extent, whose centre rounds */
+                box[i].max[k] = c + (float)((seed >> 8) % 1000u) * 0.0037f;
+        }
+    box[17].min[0] = box[17].max[0] = 1.0f / 0.0f;
+    box[18].min[1] = box[18].max[1] = -1.0f / 0.0f;
+    box[19].min[2] = box[19].max[2] = 0.0f / 0.0f;
+    box[20].min[0] = 0.0f / 0.0f;
+    for (f = 1; f >= 0; f--) { /* (frame 0 last: checked below) */
+        lo = frames[f][0];
+        scale = frames[f][1];
+        for (a = 0; a < 11; a++)
+            for (b = a; b < a + 70 && b <= total; b++) {
+                memset(v, 0xa5, total * sizeof *v);
+                memset(w, 0xa5, total * sizeof *w);
+                atrbvh_i_morton_keys_with(box, a, b, lo, scale, v, 1);
+                atrbvh_i_morton_keys_with(box, a, b, lo, scale, w, 0);
+                ck_assert_mem_eq(v, w, total * sizeof *v);
+            }
+        atrbvh_i_morton_keys_with(box, 3, total, lo, scale, v, 1);
+        atrbvh_i_morton_keys_with(box, 3, total, lo, scale, w, 0);
+        ck_assert_mem_eq(v, w, total * sizeof *v);
+    }
+    /* The keys are the per-item rule's, and the edges were reached. */
+    for (i = 3; i < total; i++) {
+        const atrbvh_u32 qx = atrbvh_morton_quantise(
+            atrbvh_box_centre(box[i], 0), lo[0], scale[0]);
+        ck_assert_uint_eq(w[i],
+                          atrbvh_morton_key(
+                              qx,
+                              atrbvh_morton_quantise(
+                                  atrbvh_box_centre(box[i], 1), lo[1],
+                                  scale[1]),
+                              atrbvh_morton_quantise(
+                                  atrbvh_box_centre(box[i], 2), lo[2],
+                                  scale[2])));
+        differ |= 1u << (qx == 0 ? 0 : qx == ATRBVH_MORTON_MAX ? 1
+                         : qx == ATRBVH_MORTON_MAX - 1u ? 2 : 3);
+    }
+    ck_assert_uint_eq(differ, 15u);
+    free(box);
+    free(v);
+    free(w);
+}
+END_TEST
+
 /* A caterpillar of `spine` internal nodes in the layout's depth-first
  * order: spine node s (index s) has the next spine node as its left child
  * and a leaf as its right one, so the walk after a build has `spine` right
@@ -692,6 +786,7 @@ int main(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, radix_sort_is_stable_and_sorted);
     tcase_add_test(tc, morton_keys);
+    tcase_add_test(tc, morton_keys_vector_is_scalar);
     tcase_add_test(tc, hierarchy_is_karras);
     tcase_add_test(tc, hierarchy_refit_is_the_refit);
     tcase_add_test(tc, measure_walk_deep_trees);

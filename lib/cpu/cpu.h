@@ -133,6 +133,13 @@ void atrbvh_i_cpu_scratch_end(atrbvh_i_cpu_run *c);
 /* The stages (backend.h's atrbvh_i_stage_fn). */
 atrbvh_status atrbvh_i_cpu_bounds(atrbvh_device *, atrbvh_i_run *,
                                   atrbvh_error *);
+/* The Morton keys of boxes lo .. hi-1 in the frame (lo, scale) into
+ * keys[lo .. hi-1]: shared/arith.h's rule; with `vector`, eight at a
+ * time where the CPU has AVX2 (the same bits). */
+void atrbvh_i_morton_keys_with(const atrbvh_box *boxes, uint32_t lo,
+                               uint32_t hi, const double lo3[3],
+                               const double scale3[3], uint64_t *keys,
+                               int vector);
 atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *, atrbvh_i_run *,
                                   atrbvh_error *);
 atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *, atrbvh_i_run *,
