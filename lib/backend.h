@@ -116,6 +116,12 @@ typedef struct atrbvh_i_prims_scan {
 } atrbvh_i_prims_scan;
 void atrbvh_i_prims_sweep(const atrbvh_i_input *in, int threads,
                           atrbvh_box *boxes, atrbvh_i_prims_scan *out);
+/* The same with vector_ok 0: every triangle one at a time (where the CPU
+ * has AVX2 the sweep takes full groups of eight triangles at once, with
+ * the same results: tests/test_stages.c). */
+void atrbvh_i_prims_sweep_with(const atrbvh_i_input *in, int threads,
+                               int vector_ok, atrbvh_box *boxes,
+                               atrbvh_i_prims_scan *out);
 
 /* Options after validation and default resolution. */
 typedef struct atrbvh_i_config {

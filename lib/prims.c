@@ -16,6 +16,12 @@
 #include <math.h>
 #include <string.h>
 
+#if (defined(__GNUC__) || defined(__clang__)) &&                            \
+    (defined(__x86_64__) || defined(__i386__))
+#include <immintrin.h>
+#define PRIMS_AVX2 1
+#endif
+
 #define NO_INDEX UINT64_MAX
 
 atrbvh_status atrbvh_i_check_geometry(const atrbvh_geometry *g,
@@ -127,8 +133,191 @@ atrbvh_status atrbvh_i_check_geometry(const atrbvh_geometry *g,
                                          indexed, (atrbvh_u64)(j), (b),       \
                                          (value)))
 
+/* The sweep's groups: eight primitives, one vector of AVX2 lanes. */
+#define GROUP 8
+
+#ifdef PRIMS_AVX2
+/* The scene and centroid boxes of one thread's vector groups, lane by
+ * lane: min x, y, z then max x, y, z of each. */
+typedef struct tri_acc {
+    __m256 scene[6], centroids[6];
+} tri_acc;
+
+/* Triangles j .. j+7 by atrbvh_prim_box_triangle's common case, lane k
+ * triangle j+k, when all eight take it (their indices in range, their
+ * nine coordinates' sum finite): the same comparisons in the same operand
+ * order (MINPS and MAXPS are a < b ? a : b and a > b ? a : b, lane for
+ * lane the rule's expressions) and the same sum, then atrbvh_scene_add's
+ * into the lanes of *acc.  Returns 1 with the eight boxes written, or 0
+ * with nothing written (the caller takes the eight one at a time).  The
+ * offsets are 32-bit: the caller has checked that every index and vertex
+ * offset of the geometry fits (vertex offsets only once the indices are
+ * known to be in range). */
+__attribute__((target("avx2"))) static inline int
+tri8_avx2(const float *vertices, int32_t vst, uint32_t vlast,
+          const uint32_t *indices, int32_t ist, int64_t j, atrbvh_box *out,
+          tri_acc *acc)
+{
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256i first = _mm256_add_epi32(_mm256_set1_epi32((int32_t)j), lane);
+    const __m256 half = _mm256_set1_ps(0.5f);
+    __m256i v0, v1, v2, ok;
+    __m256 c[3][3], mn[3], mx[3], sum;
+    int k;
+    if (indices) {
+        const __m256i at = _mm256_mullo_epi32(first, _mm256_set1_epi32(ist));
+        const __m256i last = _mm256_set1_epi32((int32_t)vlast);
+        v0 = _mm256_i32gather_epi32((const int *)indices, at, 4);
+        v1 = _mm256_i32gather_epi32((const int *)(indices + 1), at, 4);
+        v2 = _mm256_i32gather_epi32((const int *)(indices + 2), at, 4);
+        /* v < vertex_count: v = min(v, vertex_count - 1), unsigned */
+        ok = _mm256_and_si256(
+            _mm256_and_si256(
+                _mm256_cmpeq_epi32(_mm256_min_epu32(v0, last), v0),
+                _mm256_cmpeq_epi32(_mm256_min_epu32(v1, last), v1)),
+            _mm256_cmpeq_epi32(_mm256_min_epu32(v2, last), v2));
+        if (_mm256_movemask_epi8(ok) != -1)
+            return 0;
+    } else { /* (the caller checked 3 (j + 7) + 2 < vertex_count) */
+        v0 = _mm256_mullo_epi32(first, _mm256_set1_epi32(3));
+        v1 = _mm256_add_epi32(v0, _mm256_set1_epi32(1));
+        v2 = _mm256_add_epi32(v0, _mm256_set1_epi32(2));
+    }
+    v0 = _mm256_mullo_epi32(v0, _mm256_set1_epi32(vst));
+    v1 = _mm256_mullo_epi32(v1, _mm256_set1_epi32(vst));
+    v2 = _mm256_mullo_epi32(v2, _mm256_set1_epi32(vst));
+    for (k = 0; k < 3; k++) {
+        c[0][k] = _mm256_i32gather_ps(vertices + k, v0, 4);
+        c[1][k] = _mm256_i32gather_ps(vertices + k, v1, 4);
+        c[2][k] = _mm256_i32gather_ps(vertices + k, v2, 4);
+    }
+    /* the rule's sum, a0 + a1 + a2 + b0 + ... + d2 in that order */
+    sum = _mm256_add_ps(c[0][0], c[0][1]);
+    sum = _mm256_add_ps(sum, c[0][2]);
+    sum = _mm256_add_ps(sum, c[1][0]);
+    sum = _mm256_add_ps(sum, c[1][1]);
+    sum = _mm256_add_ps(sum, c[1][2]);
+    sum = _mm256_add_ps(sum, c[2][0]);
+    sum = _mm256_add_ps(sum, c[2][1]);
+    sum = _mm256_add_ps(sum, c[2][2]);
+    if (_mm256_movemask_ps(_mm256_cmp_ps(_mm256_sub_ps(sum, sum),
+                                         _mm256_setzero_ps(), _CMP_EQ_OQ)) !=
+        0xff)
+        return 0;
+    for (k = 0; k < 3; k++) {
+        /* lo = b < a ? b : a; min = d < lo ? d : lo (and max alike) */
+        mn[k] = _mm256_min_ps(c[2][k], _mm256_min_ps(c[1][k], c[0][k]));
+        mx[k] = _mm256_max_ps(c[2][k], _mm256_max_ps(c[1][k], c[0][k]));
+        /* atrbvh_scene_add: the box, then its centre */
+        acc->scene[k] = _mm256_min_ps(mn[k], acc->scene[k]);
+        acc->scene[3 + k] = _mm256_max_ps(mx[k], acc->scene[3 + k]);
+        sum = _mm256_add_ps(_mm256_mul_ps(half, mn[k]),
+                            _mm256_mul_ps(half, mx[k]));
+        acc->centroids[k] = _mm256_min_ps(sum, acc->centroids[k]);
+        acc->centroids[3 + k] = _mm256_max_ps(sum, acc->centroids[3 + k]);
+    }
+    /* Six coordinate vectors to eight 24-byte boxes, four at a time:
+     * min x, y, z and max x transposed, max y and z interleaved. */
+    for (k = 0; k < 2; k++) {
+        float *o = (float *)(out + j + 4 * k);
+        __m128 r0 = k ? _mm256_extractf128_ps(mn[0], 1)
+                      : _mm256_castps256_ps128(mn[0]),
+               r1 = k ? _mm256_extractf128_ps(mn[1], 1)
+                      : _mm256_castps256_ps128(mn[1]),
+               r2 = k ? _mm256_extractf128_ps(mn[2], 1)
+                      : _mm256_castps256_ps128(mn[2]),
+               r3 = k ? _mm256_extractf128_ps(mx[0], 1)
+                      : _mm256_castps256_ps128(mx[0]);
+        const __m128 y = k ? _mm256_extractf128_ps(mx[1], 1)
+                           : _mm256_castps256_ps128(mx[1]),
+                     z = k ? _mm256_extractf128_ps(mx[2], 1)
+                           : _mm256_castps256_ps128(mx[2]);
+        const __m128 yz01 = _mm_unpacklo_ps(y, z), yz23 = _mm_unpackhi_ps(y, z);
+        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+        _mm_storeu_ps(o, r0);
+        _mm_storel_pi((__m64 *)(void *)(o + 4), yz01);
+        _mm_storeu_ps(o + 6, r1);
+        _mm_storeh_pi((__m64 *)(void *)(o + 10), yz01);
+        _mm_storeu_ps(o + 12, r2);
+        _mm_storel_pi((__m64 *)(void *)(o + 16), yz23);
+        _mm_storeu_ps(o + 18, r3);
+        _mm_storeh_pi((__m64 *)(void *)(o + 22), yz23);
+    }
+    return 1;
+}
+
+__attribute__((target("avx2"))) static void tri_acc_init(tri_acc *acc)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        acc->scene[k] = acc->centroids[k] = _mm256_set1_ps(INFINITY);
+        acc->scene[3 + k] = acc->centroids[3 + k] = _mm256_set1_ps(-INFINITY);
+    }
+}
+
+/* The lanes of *acc into the thread's boxes, lane by lane as boxes would
+ * be added (min and max: in any order the same values, up to the sign
+ * of a zero, which no Morton frame or SAH distinguishes). */
+__attribute__((target("avx2"))) static void
+tri_acc_done(const tri_acc *acc, atrbvh_box *scene, atrbvh_box *centroids)
+{
+    float sc[6][8], ce[6][8];
+    int k, l;
+    for (k = 0; k < 6; k++) {
+        _mm256_storeu_ps(sc[k], acc->scene[k]);
+        _mm256_storeu_ps(ce[k], acc->centroids[k]);
+    }
+    for (l = 0; l < 8; l++)
+        for (k = 0; k < 3; k++) {
+            scene->min[k] = sc[k][l] < scene->min[k] ? sc[k][l] : scene->min[k];
+            scene->max[k] =
+                sc[3 + k][l] > scene->max[k] ? sc[3 + k][l] : scene->max[k];
+            centroids->min[k] =
+                ce[k][l] < centroids->min[k] ? ce[k][l] : centroids->min[k];
+            centroids->max[k] = ce[3 + k][l] > centroids->max[k]
+                                    ? ce[3 + k][l]
+                                    : centroids->max[k];
+        }
+}
+#endif
+
+/* Whether the sweep may take triangles eight at a time: AVX2, and every
+ * offset it computes fits 32 bits (the index array's, and the vertex
+ * array's for an index in range). */
+static int sweep_vector(const atrbvh_geometry *g, atrbvh_u64 vst,
+                        atrbvh_u64 ist)
+{
+#ifdef PRIMS_AVX2
+    const atrbvh_u64 big = (atrbvh_u64)INT32_MAX,
+                     n = (atrbvh_u64)g->primitive_count,
+                     vc = (atrbvh_u64)g->vertex_count;
+    if (g->type != ATRBVH_GEOMETRY_TRIANGLES || n < GROUP || vc == 0 ||
+        !__builtin_cpu_supports("avx2"))
+        return 0;
+    if (vc > big / (vst ? vst : 1) - 3 || vst > big)
+        return 0;
+    if (g->indices && (ist > big || n > big / (ist ? ist : 1) - 3))
+        return 0;
+    if (!g->indices && n > vc / 3) /* (checked before the sweep) */
+        return 0;
+    return 1;
+#else
+    (void)g;
+    (void)vst;
+    (void)ist;
+    return 0;
+#endif
+}
+
 void atrbvh_i_prims_sweep(const atrbvh_i_input *in, int threads,
                           atrbvh_box *boxes, atrbvh_i_prims_scan *out)
+{
+    atrbvh_i_prims_sweep_with(in, threads, 1, boxes, out);
+}
+
+void atrbvh_i_prims_sweep_with(const atrbvh_i_input *in, int threads,
+                               int vector_ok, atrbvh_box *boxes,
+                               atrbvh_i_prims_scan *out)
 {
     const atrbvh_geometry *g = in->g;
     const int64_t n = (int64_t)g->primitive_count;
@@ -143,6 +332,10 @@ void atrbvh_i_prims_sweep(const atrbvh_i_input *in, int threads,
                      vst = in->vstride / sizeof(float),
                      ist = in->istride / sizeof(uint32_t),
                      bst = in->bstride / sizeof(float);
+    const int64_t groups = (n + GROUP - 1) / GROUP;
+    const int vector = vector_ok && sweep_vector(g, vst, ist);
+    const uint32_t vlast =
+        vcount - 1 > UINT32_MAX ? UINT32_MAX : (uint32_t)(vcount - 1);
     int k;
     for (k = 0; k < 3; k++) {
         out->scene.min[k] = out->centroids.min[k] = INFINITY;
@@ -162,35 +355,56 @@ void atrbvh_i_prims_sweep(const atrbvh_i_input *in, int threads,
         int my_fatal_kind = PRIM_OK;
         uint32_t my_value = 0;
         size_t my_invalid = 0;
+        int64_t g8, top;
+#ifdef PRIMS_AVX2
+        tri_acc acc;
+        if (vector)
+            tri_acc_init(&acc);
+#endif
         scene = out->scene;
         centroids = out->centroids;
 #ifdef _OPENMP
 #pragma omp for schedule(static) nowait
 #endif
-        for (j = 0; j < n; j++) {
-            /* Written in place, not into a local copied afterwards: the
-             * local lived on the stack (the rule's slow path indexes it),
-             * and the copy's 16-byte loads of its 4-byte stores missed
-             * store forwarding (perf, dragon: a third of the stage's
-             * samples).  A failed primitive's partial box is
-             * overwritten below or never read (the build fails). */
-            uint32_t value = 0;
-            const int r = PRIM_BOX(j, &boxes[j], &value);
-            if (r == PRIM_OK) {
-                atrbvh_scene_add(&scene, &centroids, boxes[j]);
+        for (g8 = 0; g8 < groups; g8++) {
+            j = g8 * GROUP;
+            top = n - j < GROUP ? n : j + GROUP;
+#ifdef PRIMS_AVX2
+            if (vector && top - j == GROUP &&
+                tri8_avx2(vertices, (int32_t)vst, vlast, indices, (int32_t)ist,
+                          j, boxes, &acc))
                 continue;
-            }
-            if (r == PRIM_NONFINITE) {
-                my_invalid++;
-                boxes[j].min[0] = NAN; /* marks it for compaction */
-                if (my_first_skippable < 0)
-                    my_first_skippable = j;
-            } else if (my_first_fatal < 0) {
-                my_first_fatal = j;
-                my_fatal_kind = r;
-                my_value = value;
+#endif
+            for (; j < top; j++) {
+                /* Written in place, not into a local copied afterwards:
+                 * the local lived on the stack (the rule's slow path
+                 * indexes it), and the copy's 16-byte loads of its 4-byte
+                 * stores missed store forwarding (perf, dragon: a third
+                 * of the stage's samples).  A failed primitive's partial
+                 * box is overwritten below or never read (the build
+                 * fails). */
+                uint32_t value = 0;
+                const int r = PRIM_BOX(j, &boxes[j], &value);
+                if (r == PRIM_OK) {
+                    atrbvh_scene_add(&scene, &centroids, boxes[j]);
+                    continue;
+                }
+                if (r == PRIM_NONFINITE) {
+                    my_invalid++;
+                    boxes[j].min[0] = NAN; /* marks it for compaction */
+                    if (my_first_skippable < 0)
+                        my_first_skippable = j;
+                } else if (my_first_fatal < 0) {
+                    my_first_fatal = j;
+                    my_fatal_kind = r;
+                    my_value = value;
+                }
             }
         }
+#ifdef PRIMS_AVX2
+        if (vector)
+            tri_acc_done(&acc, &scene, &centroids);
+#endif
         /* A problem that cannot be skipped (bad index, inverted box)
          * always wins over NaN/Inf so that skip_invalid never hides it;
          * among equals the lowest index wins.  Min/max only: the order of

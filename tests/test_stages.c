@@ -420,6 +420,96 @@ START_TEST(morton_keys_vector_is_scalar)
 }
 END_TEST
 
+/* The bounds sweep, eight triangles at a time where the CPU has AVX2
+ * (lib/prims.c), gives what the one-at-a-time rule gives: the boxes bit
+ * for bit, the scene and centroid boxes, the count of non-finite
+ * triangles and the first problem - on strided and packed, indexed and
+ * unindexed triangles, counts that are not multiples of 8, 1 to 3
+ * threads, with indices out of range, NaN and infinite coordinates,
+ * finite ones whose sum overflows, and signed zeros. */
+START_TEST(prims_sweep_vector_is_scalar)
+{
+    enum { V = 600, N = 203, VS = 4, IS = 5 };
+    static float vert[V * VS];
+    static uint32_t idx[N * IS];
+    static const float odd[] = {0.0f, -0.0f, 3.4e38f, -3.4e38f, 1e-40f};
+    atrbvh_box *bv = malloc(3 * V * sizeof *bv), *bs = malloc(3 * V * sizeof *bs);
+    unsigned seed = 3u;
+    int kase, bad, threads, i;
+    ck_assert_ptr_nonnull(bv);
+    ck_assert_ptr_nonnull(bs);
+    for (kase = 0; kase < 3; kase++)      /* strided, packed, unindexed */
+        for (bad = 0; bad < 3; bad++) {   /* none, zeros, all kinds */
+            atrbvh_geometry g;
+            atrbvh_i_input in;
+            atrbvh_error err;
+            const int vs = kase == 0 ? VS : 3;
+            int n = kase == 2 ? V / 3 - 1 : N;
+            for (i = 0; i < V * vs; i++) {
+                seed = seed * 1103515245u + 12345u;
+                vert[i] = (float)((seed >> 8) % 20000u) * 0.00113f - 9.0f;
+                /* signed zeros in a quarter of the coordinates (bad 1:
+                 * where only the operand order of a comparison tells
+                 * them apart), then all of odd[] */
+                if (bad == 1 && (seed >> 30) == 0)
+                    vert[i] = (seed >> 9) & 1u ? 0.0f : -0.0f;
+                if (bad == 2 && (seed >> 28) == 0)
+                    vert[i] = odd[(seed >> 9) % 5u];
+            }
+            if (bad == 2) {
+                vert[7 * vs + 1] = 1.0f / 0.0f;
+                vert[101 * vs + 2] = 0.0f / 0.0f;
+                vert[150 * vs] = -1.0f / 0.0f;
+            }
+            for (i = 0; i < N * IS; i++) {
+                seed = seed * 1103515245u + 12345u;
+                idx[i] = (seed >> 8) % V;
+                if (bad == 2 && (seed >> 27) == 0)
+                    idx[i] = (seed >> 26) & 1u ? V + 5u : 0xffffffffu;
+            }
+            g = atrbvh_geometry_triangles(vert, V, kase == 2 ? NULL : idx,
+                                          (size_t)n);
+            if (kase == 0) {
+                g.vertex_stride = VS * sizeof(float);
+                g.index_stride = IS * sizeof(uint32_t);
+            }
+            for (; n >= N - 9 || (kase == 2 && n >= V / 3 - 10); n--) {
+                g.primitive_count = (size_t)n;
+                ck_assert_int_eq(atrbvh_i_check_geometry(&g, &in, &err),
+                                 ATRBVH_OK);
+                for (threads = 1; threads <= 3; threads++) {
+                    atrbvh_i_prims_scan v, sc;
+                    int k;
+                    memset(bv, 0xa5, 3 * V * sizeof *bv);
+                    memset(bs, 0xa5, 3 * V * sizeof *bs);
+                    atrbvh_i_prims_sweep_with(&in, threads, 1, bv, &v);
+                    atrbvh_i_prims_sweep_with(&in, 1, 0, bs, &sc);
+                    ck_assert_mem_eq(bv, bs, 3 * V * sizeof *bv);
+                    for (k = 0; k < 3; k++) {
+                        ck_assert(v.scene.min[k] == sc.scene.min[k]);
+                        ck_assert(v.scene.max[k] == sc.scene.max[k]);
+                        ck_assert(v.centroids.min[k] == sc.centroids.min[k]);
+                        ck_assert(v.centroids.max[k] == sc.centroids.max[k]);
+                    }
+                    ck_assert_uint_eq(v.invalid, sc.invalid);
+                    ck_assert_int_eq(v.first_bad, sc.first_bad);
+                    ck_assert_int_eq(v.bad_kind, sc.bad_kind);
+                    ck_assert_uint_eq(v.bad_value, sc.bad_value);
+                    /* each kind of input was reached */
+                    if (bad == 0)
+                        ck_assert_int_eq(sc.first_bad, -1);
+                    if (bad == 2 && kase != 2)
+                        ck_assert_int_eq(sc.bad_kind, ATRBVH_PRIM_BAD_INDEX);
+                    if (bad == 2 && kase == 2)
+                        ck_assert_int_eq(sc.bad_kind, ATRBVH_PRIM_NONFINITE);
+                }
+            }
+        }
+    free(bv);
+    free(bs);
+}
+END_TEST
+
 /* A caterpillar of `spine` internal nodes in the layout's depth-first
  * order: spine node s (index s) has the next spine node as its left child
  * and a leaf as its right one, so the walk after a build has `spine` right
@@ -787,6 +877,7 @@ int main(void)
     tcase_add_test(tc, radix_sort_is_stable_and_sorted);
     tcase_add_test(tc, morton_keys);
     tcase_add_test(tc, morton_keys_vector_is_scalar);
+    tcase_add_test(tc, prims_sweep_vector_is_scalar);
     tcase_add_test(tc, hierarchy_is_karras);
     tcase_add_test(tc, hierarchy_refit_is_the_refit);
     tcase_add_test(tc, measure_walk_deep_trees);
