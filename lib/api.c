@@ -164,6 +164,19 @@ void atrbvh_i_advise_huge(void *p, size_t bytes)
 #endif
 }
 
+int atrbvh_i_avx2(void)
+{
+#if (defined(__GNUC__) || defined(__clang__)) &&                            \
+    (defined(__x86_64__) || defined(__i386__))
+    const char *no = getenv("ATRBVH_NO_AVX2");
+    if (no && no[0] && strcmp(no, "0") != 0)
+        return 0;
+    return __builtin_cpu_supports("avx2");
+#else
+    return 0;
+#endif
+}
+
 void *atrbvh_i_alloc_array(size_t count, size_t size)
 {
     size_t bytes;

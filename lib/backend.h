@@ -37,6 +37,12 @@ void *atrbvh_i_alloc_array(size_t count, size_t size);
  * block of `bytes` at p from the C library's malloc, when 8 MiB or more;
  * nothing otherwise (a replaced allocator's blocks, other systems). */
 void atrbvh_i_advise_huge(void *p, size_t bytes);
+/* Whether the CPU paths with AVX2 may run: the CPU (and the system)
+ * support AVX2, and the environment variable ATRBVH_NO_AVX2 is unset,
+ * empty or "0".  Every such path gives the bits of the one it replaces
+ * (the tests run both): the batch ray queries' node test (traverse.c),
+ * the bounds sweep (prims.c) and the Morton keys (cpu/morton.c). */
+int atrbvh_i_avx2(void);
 /* Fills `error` (may be NULL) and returns `status`; printf-style text. */
 atrbvh_status atrbvh_i_fail(atrbvh_error *error, atrbvh_status status,
                             uint64_t index, const char *fmt, ...)

@@ -292,7 +292,7 @@ static int sweep_vector(const atrbvh_geometry *g, atrbvh_u64 vst,
                      n = (atrbvh_u64)g->primitive_count,
                      vc = (atrbvh_u64)g->vertex_count;
     if (g->type != ATRBVH_GEOMETRY_TRIANGLES || n < GROUP || vc == 0 ||
-        !__builtin_cpu_supports("avx2"))
+        !atrbvh_i_avx2())
         return 0;
     if (vc > big / (vst ? vst : 1) - 3 || vst > big)
         return 0;

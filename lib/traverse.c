@@ -1097,10 +1097,7 @@ wide_any_avx2(const atrbvh_trav_scene *s, const void *w, const void *tris,
  * bits; the tests run both). */
 static int wide_avx2(void)
 {
-    const char *no = getenv("ATRBVH_NO_AVX2");
-    if (no && no[0] && strcmp(no, "0") != 0)
-        return 0;
-    return __builtin_cpu_supports("avx2");
+    return atrbvh_i_avx2(); /* (api.c) */
 }
 #endif
 

@@ -161,6 +161,7 @@ atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *dev, atrbvh_i_run *run,
                  fs[3] = {run->morton_scale[0], run->morton_scale[1],
                           run->morton_scale[2]};
     const double s0 = fs[0], s1 = fs[1], s2 = fs[2];
+    const int vector = atrbvh_i_avx2();
     const uint32_t n = run->n;
     const int blocks = (int)atrbvh_i_sort_blocks(n, run->cfg->threads);
     uint64_t *keys, key_or = 0, key_and = ~(uint64_t)0;
@@ -213,7 +214,7 @@ atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *dev, atrbvh_i_run *run,
          * in the first-level cache, the rest of the sweep over them. */
         for (c0 = lo; c0 < hi; c0 = c1) {
             c1 = hi - c0 > MORTON_CHUNK ? c0 + MORTON_CHUNK : hi;
-            atrbvh_i_morton_keys_with(boxes, c0, c1, flo, fs, keys, 1);
+            atrbvh_i_morton_keys_with(boxes, c0, c1, flo, fs, keys, vector);
             for (i = c0; i < (int64_t)c1; i++) {
                 const uint64_t key = keys[i];
                 order[i] = (uint32_t)i;
