@@ -278,6 +278,30 @@ static int load_table(void)
     return 0;
 }
 
+/* Whether the build of (g, o) with the environment variable `var` set to
+ * `value` hashes as `hex` (the default build's, of `nodes` nodes); says
+ * so on stderr when not. */
+static int same_with(const char *var, const char *value,
+                     const atrbvh_geometry *g, const atrbvh_build_options *o,
+                     const char *hex, size_t nodes, const char *scene_name,
+                     const char *config)
+{
+    char other[65];
+    size_t other_nodes;
+    atrbvh_bvh *bvh;
+    ck_assert_int_eq(setenv(var, value, 1), 0);
+    bvh = tu_build(g, o);
+    ck_assert_int_eq(unsetenv(var), 0);
+    tree_hash(bvh, other, &other_nodes);
+    atrbvh_bvh_free(bvh);
+    if (strcmp(other, hex) == 0)
+        return 1;
+    fprintf(stderr, "test_hashes: %s %s: %s=%s builds another tree (sha256 "
+            "%s, %zu nodes) than the default (%s, %zu nodes)\n", scene_name,
+            config, var, value, other, other_nodes, hex, nodes);
+    return 0;
+}
+
 static line *find_line(const char *scene_name, const char *config)
 {
     int k;
@@ -329,41 +353,13 @@ START_TEST(tree_hashes)
             /* The bounds sweep and the Morton keys without AVX2: every
              * later stage reads only what they give, so the LBVH's
              * boxes and order show it all. */
-            char other[65];
-            size_t other_nodes;
-            ck_assert_int_eq(setenv("ATRBVH_NO_AVX2", "1", 1), 0);
-            bvh = tu_build(&g, &o);
-            ck_assert_int_eq(unsetenv("ATRBVH_NO_AVX2"), 0);
-            tree_hash(bvh, other, &other_nodes);
-            atrbvh_bvh_free(bvh);
-            if (strcmp(other, hex) != 0) {
-                fprintf(stderr, "test_hashes: %s %s: ATRBVH_NO_AVX2=1 "
-                        "builds another tree (sha256 %s, %zu nodes) than "
-                        "the default (%s, %zu nodes)\n",
-                        se->name, configs[c].name, other, other_nodes, hex,
-                        nodes);
-                bad++;
-            }
+            bad += !same_with("ATRBVH_NO_AVX2", "1", &g, &o, hex, nodes,
+                              se->name, configs[c].name);
         } else {
-            static const char *const lanes[] = {"1", "2"};
-            size_t k;
-            for (k = 0; k < sizeof lanes / sizeof *lanes; k++) {
-                char other[65];
-                size_t other_nodes;
-                ck_assert_int_eq(setenv("ATRBVH_CPU_LANES", lanes[k], 1), 0);
-                bvh = tu_build(&g, &o);
-                ck_assert_int_eq(unsetenv("ATRBVH_CPU_LANES"), 0);
-                tree_hash(bvh, other, &other_nodes);
-                atrbvh_bvh_free(bvh);
-                if (strcmp(other, hex) != 0) {
-                    fprintf(stderr, "test_hashes: %s %s: ATRBVH_CPU_LANES=%s "
-                            "builds another tree (sha256 %s, %zu nodes) "
-                            "than the default (%s, %zu nodes)\n",
-                            se->name, configs[c].name, lanes[k], other,
-                            other_nodes, hex, nodes);
-                    bad++;
-                }
-            }
+            bad += !same_with("ATRBVH_CPU_LANES", "1", &g, &o, hex, nodes,
+                              se->name, configs[c].name);
+            bad += !same_with("ATRBVH_CPU_LANES", "2", &g, &o, hex, nodes,
+                              se->name, configs[c].name);
         }
         snprintf(sah, sizeof sah, "%.17g", st.sah);
         if (write_path) {
