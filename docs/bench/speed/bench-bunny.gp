@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.80192636:49.9573884]
-set xtics (5, 10, 20)
+set xrange [3.49677363:58.4433015]
+set xtics (5, 10, 20, 50)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 4.06569178,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 10.3432052,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 7.98785742,39.0414315 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 11.8488777,39.3432138 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 17.0101596,39.0521322 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 21.7514222,38.4434634 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 13.9359092,38.1166438 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.946795,38.5681918 left font ',8' noenhanced front
-set label 'embree_low' at 4.6445818,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 28.12483,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 18.5171077,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 2.8775451,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 8.97232346,38.1169475 left font ',8' noenhanced front
+set label 'LBVH' at 4.66246152,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 11.046145,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 14.026026,39.3531597 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 9.60884246,39.0314856 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 11.1012331,38.1169475 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 23.7271959,38.4434634 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 15.365832,38.031627 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 17.327186,38.8799201 left font ',8' noenhanced front
+set label 'embree_low' at 4.87424191,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 33.3291278,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 22.7243026,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 3.5889996,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 9.82575506,38.4286758 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.01902393:40.3499837]
-set xtics (5, 10, 20)
+set xrange [2.11170956:50.6641403]
+set xtics (5, 10, 20, 50)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 3.896053,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 10.4261506,77.3438007 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 8.26640489,73.4949382 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 12.6265254,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 10.9834448,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 24.0599586,69.7722947 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 23.6040897,71.3951472 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 19.5529177,67.3811989 left font ',8' noenhanced front
-set label 'embree_low' at 5.17739774,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 15.5029077,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 23.265985,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 3.09225254,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 15.4840505,71.690965 left font ',8' noenhanced front
+set label 'LBVH' at 2.938617,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 9.59639432,77.3438007 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 7.27293009,73.4949382 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 11.7448788,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 12.4454594,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 19.1103738,69.7722947 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 17.3019289,72.7492079 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.4786396,67.3811989 left font ',8' noenhanced front
+set label 'embree_low' at 4.95532228,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 26.8831544,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 18.249094,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 2.17465997,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 7.75187061,71.690965 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
