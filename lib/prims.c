@@ -267,17 +267,17 @@ tri_acc_done(const tri_acc *acc, atrbvh_box *scene, atrbvh_box *centroids)
         _mm256_storeu_ps(sc[k], acc->scene[k]);
         _mm256_storeu_ps(ce[k], acc->centroids[k]);
     }
-    for (l = 0; l < 8; l++)
+    for (l = 0; l < 8; l++) {
+        atrbvh_box s, c;
         for (k = 0; k < 3; k++) {
-            scene->min[k] = sc[k][l] < scene->min[k] ? sc[k][l] : scene->min[k];
-            scene->max[k] =
-                sc[3 + k][l] > scene->max[k] ? sc[3 + k][l] : scene->max[k];
-            centroids->min[k] =
-                ce[k][l] < centroids->min[k] ? ce[k][l] : centroids->min[k];
-            centroids->max[k] = ce[3 + k][l] > centroids->max[k]
-                                    ? ce[3 + k][l]
-                                    : centroids->max[k];
+            s.min[k] = sc[k][l];
+            s.max[k] = sc[3 + k][l];
+            c.min[k] = ce[k][l];
+            c.max[k] = ce[3 + k][l];
         }
+        *scene = atrbvh_box_union(*scene, s);
+        *centroids = atrbvh_box_union(*centroids, c);
+    }
 }
 #endif
 
