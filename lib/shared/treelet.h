@@ -776,6 +776,18 @@ ATRBVH_FN atrbvh_trbvh_tables atrbvh_trbvh_tables_lane(atrbvh_u32 n,
     return tab;
 }
 
+/* Lane for lane m ? b : a, m a mask of all ones or all zeros per lane
+ * (a comparison's).  Not VBLENDVPD: GCC 12 folds _mm256_blendv_pd into a
+ * vector condition, which in a function compiled for AVX by attribute
+ * it lowers lane by lane, a branch on each lane's sign (objdump: the
+ * collapse choice of atrbvh_trbvh_costs4 became a compare and a jump per
+ * lane). */
+__attribute__((target("avx"))) static inline __m256d
+atrbvh_select4(__m256d a, __m256d b, __m256d m)
+{
+    return _mm256_or_pd(_mm256_and_pd(m, b), _mm256_andnot_pd(m, a));
+}
+
 /* atrbvh_trbvh_min on the four lanes (its enumeration, two running minima
  * per lane); cost and rest as doubles, lane l of subset P at 4P + l: the
  * masks are kept times four, so each vector is addressed with x86's scale
@@ -930,7 +942,7 @@ atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
                                      _mm256_set_pd((double)n3, (double)n2,
                                                    (double)n1, (double)n0));
                 flat = _mm256_min_pd(flat, best);
-                best = _mm256_blendv_pd(best, flat, take);
+                best = atrbvh_select4(best, flat, take);
             }
             _mm256_store_pd(quad + 4u * S, best);
             _mm256_store_pd(rest, best); /* rev[full ^ S] */
