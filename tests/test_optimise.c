@@ -17,6 +17,7 @@
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -627,6 +628,103 @@ START_TEST(atrbvh_is_naive_greedy)
     ck_assert_int_gt(ties, 0);
 }
 END_TEST
+
+#ifdef ATRBVH_AGG_QUADS
+/* The agglomerations in AVX's lanes (atrbvh_agglomerate4, the CPU's path
+ * for treelets side by side) give each lane exactly what
+ * atrbvh_agglomerate_at gives its treelet: the merges, boxes, counts and
+ * costs bit for bit, and the root's cost.  Four different treelets (a
+ * different leaf mode each, ties among them), or lanes repeating the
+ * first as lane_batch fills them, for every size and cost model. */
+START_TEST(atrbvh_lanes_are_scalar)
+{
+    enum { M = ATRBVH_TREELET_MAX };
+    static atrbvh_box box[4 * M];
+    static double cost[4 * M];
+    static atrbvh_u32 count[4 * M];
+    static double dist[M * (M - 1) / 2];
+    static double dist4[4 * M * (M - 1) / 2 + 4];
+    /* 32-byte aligned, as the driver's scratch */
+    double *d4 = (double *)(void *)(((uintptr_t)dist4 + 31u) & ~(uintptr_t)31u);
+    atrbvh_treelet_tree t;
+    rng r;
+    unsigned n, trial, l, a, q, ties = 0;
+    int model;
+    if (!__builtin_cpu_supports("avx")) {
+        fprintf(stderr, "test_optimise: no AVX here, lanes not tested\n");
+        return;
+    }
+    memset(&t, 0, sizeof t);
+    t.box = box;
+    t.cost = cost;
+    t.count = count;
+    rng_seed(&r, 29);
+    for (model = 0; model < 3; model++) {
+        atrbvh_cost_params p = cost_model(model);
+        for (n = 3; n <= M; n++)
+            for (trial = 0; trial < 12; trial++) {
+                atrbvh_treelet tl[4];
+                const atrbvh_treelet *in[4];
+                atrbvh_treelet_topo topo[4], ref;
+                atrbvh_treelet_topo *out[4];
+                double found[4], root;
+                /* trials 8 and up: lanes 1.. repeat lane 0 (2, 3 or 4
+                 * treelets used) */
+                const unsigned used = trial < 8u ? 4u : 2u + trial % 3u;
+                for (l = 0; l < 4u; l++) {
+                    atrbvh_treelet_leaves lv;
+                    const int mode = (int)((trial + l) % 5u);
+                    random_leaves(&r, n, mode, &p, &lv);
+                    ties += mode == 1 || mode == 2 || mode == 4;
+                    /* trials 3 and 7: zeros of both signs in the boxes,
+                     * where only the unions' operand order says which
+                     * one a merged box holds */
+                    if (trial % 4u == 3u)
+                        for (a = 0; a < n; a++) {
+                            const unsigned bits = rng_below(&r, 8);
+                            lv.box[a].min[bits % 3u] = bits & 4u ? -0.0f : 0.0f;
+                            lv.box[a].max[bits % 3u] = bits & 4u ? 0.0f : -0.0f;
+                        }
+                    tl[l].n = n;
+                    for (a = 0; a < n; a++) {
+                        /* leaf ids in no particular order */
+                        const atrbvh_u32 id = l * M + (a * 7u + trial) % n;
+                        tl[l].leaf[a] = id;
+                        box[id] = lv.box[a];
+                        cost[id] = lv.cost[a];
+                        count[id] = lv.count[a];
+                    }
+                    in[l] = l < used ? &tl[l] : &tl[0];
+                    out[l] = &topo[l];
+                }
+                atrbvh_agglomerate4(&p, n, &t, in, d4, out, found);
+                for (l = 0; l < 4u; l++) {
+                    root = atrbvh_agglomerate_at(&p, n, &t, in[l], 0, dist, &ref);
+                    ck_assert_msg(memcmp(&found[l], &root, sizeof root) == 0,
+                                  "model %d n %u trial %u lane %u: root cost "
+                                  "%.17g, scalar %.17g",
+                                  model, n, trial, l, found[l], root);
+                    ck_assert_uint_eq(topo[l].root, ref.root);
+                    for (q = 0; q + 1u < n; q++) {
+                        ck_assert_msg(topo[l].left[q] == ref.left[q] &&
+                                          topo[l].right[q] == ref.right[q],
+                                      "model %d n %u trial %u lane %u merge "
+                                      "%u: (%u, %u), scalar (%u, %u)",
+                                      model, n, trial, l, q, topo[l].left[q],
+                                      topo[l].right[q], ref.left[q],
+                                      ref.right[q]);
+                        ck_assert(same_box(&topo[l].box[q], &ref.box[q]));
+                        ck_assert_uint_eq(topo[l].count[q], ref.count[q]);
+                        ck_assert(memcmp(&topo[l].cost[q], &ref.cost[q],
+                                         sizeof ref.cost[q]) == 0);
+                    }
+                }
+            }
+    }
+    ck_assert_uint_gt(ties, 100u);
+}
+END_TEST
+#endif
 
 /* Treelet formation on a hand-made tree: the largest-area expandable leaf
  * goes first, ties to the lowest slot, real leaves never expand. */
@@ -1293,6 +1391,9 @@ static Suite *optimise_suite(void)
     tcase_add_test(tc, trbvh_large_n);
     tcase_add_test(tc, trbvh_matches_plain_dp);
     tcase_add_test(tc, atrbvh_is_naive_greedy);
+#ifdef ATRBVH_AGG_QUADS
+    tcase_add_test(tc, atrbvh_lanes_are_scalar);
+#endif
     suite_add_tcase(s, tc);
 
     tc = tcase_create("tree");

@@ -35,13 +35,16 @@
  * nodes go by height instead of in post-order - any order that takes a
  * node after the crown nodes below it gives the same tree - so that
  * treelets of disjoint subtrees run side by side: their formations
- * interleaved (each a chain of dependent loads), and TRBVH's DP in the
- * lanes of one vector register (shared/treelet.h's atrbvh_trbvh_costs4,
- * four with AVX, chosen at run time; opt_lanes).  Measured on sibenik at one thread, callgrind: the
- * TRBVH(7,3) optimise stage went from 439M to 279M instructions per build
- * with four lanes; ATRBVH(9,2)'s from 117M to 125M (the listing), but
- * faster (interleaved formations, their prefetches).  The top (few
- * treelets) stays in post-order.
+ * interleaved (each a chain of dependent loads), and TRBVH's DP and
+ * ATRBVH's agglomerations in the lanes of one vector register
+ * (shared/treelet.h's atrbvh_trbvh_costs4 and atrbvh_agglomerate4, four
+ * with AVX, chosen at run time; opt_lanes).  Measured on sibenik at one
+ * thread, callgrind: the TRBVH(7,3) optimise stage went from 439M to 279M
+ * instructions per build with four lanes; ATRBVH(9,2)'s from 117M to 125M
+ * with its formations side by side (the listing), but faster (their loads
+ * overlap), and its agglomerations in lanes cut the mispredicted branches
+ * five-fold (docs/optimisers.md).  The top (few treelets) stays in
+ * post-order.
  */
 #include "cpu.h"
 #include "shared/treelet.h"
@@ -59,6 +62,8 @@ typedef struct opt_worker {
                                    distances (= dist) and the treelet's
                                    arrays, atrbvh_agg_layout            */
     double *dist;               /* n(n-1)/2 distances (ATRBVH)          */
+    double *dist4;              /* ATRBVH in lanes: four interleaved
+                                   matrices (atrbvh_agglomerate4)       */
     uint64_t treelets;          /* treelets processed                   */
     uint64_t applied;           /* of which restructured                */
     uint64_t skipped;           /* known unchanged, not processed       */
@@ -97,6 +102,9 @@ typedef struct walk_ctx {
      * height in the crown (hgt, saturating at 255); NULL otherwise. */
     unsigned char *hgt;
     unsigned lanes;
+    /* ATRBVH in lanes, where the CPU has AVX: the agglomerations side by
+     * side too (atrbvh_agglomerate4), not only the formations */
+    int agg4;
     /* Progress inside a round: treelets done of about `crown`; only the
      * calling thread (OpenMP thread 0) reports, every `step` treelets.
      * Progress and cancellation never change what a treelet computes. */
@@ -312,6 +320,50 @@ static void lane_run(walk_ctx *c, opt_worker *w, unsigned ready,
 }
 #endif
 
+#ifdef ATRBVH_AGG_QUADS
+/* The agglomerations of `ready` (2 to 4) formed ATRBVH treelets of
+ * lane_batch: those with as many leaves as the first (at least 3) side by
+ * side in atrbvh_agglomerate4's lanes when two or more do (the lanes
+ * left over repeat the first, into a spare topology), any other one by
+ * one as atrbvh_atrbvh_keep does it; then each treelet's write-back when
+ * cheaper.  The treelets' subtrees are disjoint, so none reads what
+ * another writes back. */
+static void lane_agg(walk_ctx *c, opt_worker *w, unsigned ready,
+                     const uint32_t *root, const atrbvh_treelet *tl)
+{
+    const atrbvh_treelet *in[4];
+    atrbvh_treelet_topo topo[4], spare;
+    atrbvh_treelet_topo *out[4];
+    double found[4];
+    unsigned l, lane[4], used = 0;
+    const atrbvh_u32 n = tl[0].n;
+    for (l = 0; l < ready; l++)
+        lane[l] = n >= 3u && tl[l].n == n ? used++ : 4u;
+    if (used > 1u) {
+        for (l = 0; l < 4u; l++) {
+            in[l] = &tl[0];
+            out[l] = &spare;
+        }
+        for (l = 0; l < ready; l++)
+            if (lane[l] < 4u) {
+                in[lane[l]] = &tl[l];
+                out[lane[l]] = &topo[l];
+            }
+        atrbvh_agglomerate4(c->cost, n, &c->t, in, w->dist4, out, found);
+    }
+    for (l = 0; l < ready; l++) {
+        int applied = 0;
+        if (used > 1u && lane[l] < 4u)
+            applied = atrbvh_atrbvh_apply(&c->t, root[l], &tl[l], &topo[l],
+                                          found[lane[l]]);
+        else if (tl[l].n >= 3u)
+            applied = atrbvh_atrbvh_keep(&c->t, c->cost, root[l], &tl[l],
+                                         w->dist);
+        lane_done(c, w, root[l], &tl[l], applied);
+    }
+}
+#endif
+
 /* `ready` (1 to 4) treelet roots of one height (disjoint subtrees, none
  * skipped): each root refreshed, the treelets formed side by side (one
  * expansion of each in turn, so that their loads overlap: a formation is
@@ -343,6 +395,12 @@ static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
                 more = 1;
     }
     if (c->method == ATRBVH_METHOD_ATRBVH) {
+#ifdef ATRBVH_AGG_QUADS
+        if (c->agg4 && ready > 1u) {
+            lane_agg(c, w, ready, root, tl);
+            return;
+        }
+#endif
         for (l = 0; l < ready; l++)
             lane_done(c, w, root[l], &tl[l],
                       tl[l].n >= 3u ? atrbvh_atrbvh_keep(&c->t, c->cost,
@@ -550,11 +608,12 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
 
 /* How many treelets walk_lanes takes at a time (lane_batch), 1 for the
  * post-order walk.  TRBVH: 4 where the CPU has AVX (its DP in
- * atrbvh_trbvh_costs4's lanes), else 1.  ATRBVH of up to ATRBVH_TREELET_MAX leaves or adaptive: 4
- * formations side by side (the agglomerations one by one); larger
- * treelets go in post-order (process_agg).  ATRBVH_CPU_LANES=1 or 2 in the
- * environment asks for fewer (tests/test_hashes.c builds every tree each
- * way: the same bits). */
+ * atrbvh_trbvh_costs4's lanes), else 1.  ATRBVH of up to
+ * ATRBVH_TREELET_MAX leaves or adaptive: 4 formations side by side, and
+ * where the CPU has AVX the agglomerations too (atrbvh_agglomerate4's
+ * lanes; without AVX one by one); larger treelets go in post-order
+ * (process_agg).  ATRBVH_CPU_LANES=1 or 2 in the environment asks for
+ * fewer (tests/test_hashes.c builds every tree each way: the same bits). */
 static unsigned opt_lanes(atrbvh_method method, unsigned n)
 {
     const char *env = getenv("ATRBVH_CPU_LANES");
@@ -591,7 +650,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
      * off_pack, the two lists of pcap entries at off_lists; hgt: the
      * heights */
     size_t lane_size = 0, lane1 = 0, off_pack = 0, off_lists = 0, pcap = 0,
-           hgt = 0;
+           hgt = 0, off_dist4 = 0;
     uint32_t *list;
     unsigned round, n = cfg->treelet_size;
     unsigned lanes = opt_lanes(cfg->method, n), l;
@@ -599,7 +658,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
      * largest) and the smallest subtree that can hold a treelet. */
     unsigned nmax = n == ATRBVH_TREELET_AUTO ? ATRBVH_AUTO_MAX : n;
     unsigned nmin = n == ATRBVH_TREELET_AUTO ? cfg->gamma : n;
-    int threads = cfg->threads > 0 ? cfg->threads : 1, k;
+    int threads = cfg->threads > 0 ? cfg->threads : 1, k, agg4 = 0;
 
     if (cfg->method == ATRBVH_METHOD_LBVH || cfg->rounds == 0)
         return ATRBVH_OK;
@@ -661,7 +720,17 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         lane_size = cfg->method == ATRBVH_METHOD_TRBVH ? off_dist : 0u;
         lane1 = stride;
         off_pack = lane1 + 3u * lane_size;
-        off_lists = off_pack + ALIGN64(8u * subsets * sizeof(double));
+        off_dist4 = off_pack + ALIGN64(8u * subsets * sizeof(double));
+        off_lists = off_dist4;
+#ifdef ATRBVH_AGG_QUADS
+        /* ATRBVH: the agglomerations in AVX's lanes too, their four
+         * matrices (nmax is at most ATRBVH_TREELET_MAX here: opt_lanes) */
+        agg4 = cfg->method == ATRBVH_METHOD_ATRBVH &&
+               nmax <= ATRBVH_TREELET_MAX && __builtin_cpu_supports("avx");
+        if (agg4)
+            off_lists += ALIGN64((size_t)atrbvh_agglomerate4_doubles(nmax) *
+                                 sizeof(double));
+#endif
         stride = off_lists + ALIGN64(2u * pcap * sizeof(uint32_t));
         hgt = (size_t)(t->n - 1u);
     }
@@ -727,6 +796,8 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         }
         if (lane_size > 0u)
             workers[k].pack = (double *)(void *)(base + off_pack);
+        if (agg4)
+            workers[k].dist4 = (double *)(void *)(base + off_dist4);
         if (hgt > 0u) {
             workers[k].list = (uint32_t *)(void *)(base + off_lists);
             workers[k].order = workers[k].list + pcap;
@@ -744,6 +815,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     /* the heights: each written before it is read (walk_lanes) */
     c.hgt = hgt > 0u ? block + (size_t)threads * stride + 2u * marks : NULL;
     c.lanes = lanes;
+    c.agg4 = agg4;
 
     c.t.left = t->left;
     c.t.right = t->right;

@@ -779,9 +779,9 @@ ATRBVH_FN atrbvh_trbvh_tables atrbvh_trbvh_tables_lane(atrbvh_u32 n,
 /* Lane for lane m ? b : a, m a mask of all ones or all zeros per lane
  * (a comparison's).  Not VBLENDVPD: GCC 12 folds _mm256_blendv_pd into a
  * vector condition, which in a function compiled for AVX by attribute
- * it lowers lane by lane, a branch on each lane's sign (objdump: the
- * collapse choice of atrbvh_trbvh_costs4 became a compare and a jump per
- * lane). */
+ * it lowers lane by lane, a branch on each lane's sign (objdump: not one
+ * VBLENDVPD left in atrbvh_agglomerate4, which was then slower than the
+ * scalar agglomeration). */
 __attribute__((target("avx"))) static inline __m256d
 atrbvh_select4(__m256d a, __m256d b, __m256d m)
 {
@@ -1309,6 +1309,266 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
     return atrbvh_agglomerate_at(p, n, 0, 0, lv, dist, topo);
 }
 
+#ifdef ATRBVH_TRBVH_QUADS
+/* ------------------------------------------------------ ATRBVH in lanes */
+/* The agglomerations of four formed treelets of n leaves each side by
+ * side in AVX's lanes (CPU, x86, chosen at run time: optimise.c's
+ * lane_batch); lane l is treelet tl[l], read in place as
+ * atrbvh_agglomerate_at reads it (a lane left over may repeat another
+ * lane's treelet into a spare topology).  Each lane's result is exactly
+ * atrbvh_agglomerate_at's for its treelet: the same merges in the same
+ * order, the same boxes, counts and costs in topo[l] (all but the
+ * pre-order), the root merge's cost in found[l].
+ *
+ * The search is the one the scalar function's row minima stand for, done
+ * in full: the pair of slots (i, j), i > j, of smallest distance, the
+ * first in linear order (row i, then column j) among equal minima, with
+ * strict < in that order.  Distances are union areas, never NaN and never
+ * -0 (a sum of three products of non-negative widths is -0 only when
+ * each product is, and three widths cannot pairwise differ in sign), so
+ * equal minima have equal bits and the minimum is the scalar one's value.
+ * After the merge (slot j's cluster left, slot i's right, the result in
+ * slot j, the last slot's cluster into slot i) every live entry of the
+ * matrix is rewritten with masks, lane for lane: row and column j take
+ * the distances to the merged cluster, row and column i those of the last
+ * slot, the others stay; the same pass finds the next minimum.  Nothing
+ * branches on a value and every loop's trip count depends on the step
+ * only, the same in every treelet.
+ *
+ * The arithmetic is the scalar one's: the unions are VMINPS and VMAXPS
+ * with the scalar's first operand (the row's cluster when the matrix is
+ * filled, the merged cluster after a merge, slot j's in the merge: x < y
+ * ? x : y lane for lane), the areas atrbvh_box_area's double operations
+ * in its order, the merge's cost atrbvh_node_cost's (VMINPD of flat and
+ * binary is `flat < binary ? flat : binary`, blended in where the count
+ * may collapse).
+ *
+ * Scratch: dist4, 32-byte aligned, atrbvh_agglomerate4_doubles(n)
+ * doubles: the four triangular matrices interleaved, entry k of lane l at
+ * 4k + l.  n is 3 .. ATRBVH_TREELET_MAX. */
+#define ATRBVH_AGG_QUADS 1
+ATRBVH_FN atrbvh_u64 atrbvh_agglomerate4_doubles(atrbvh_u32 n)
+{
+    return 4u * ((atrbvh_u64)n * (n - 1u) / 2u);
+}
+
+/* The six coordinate vectors of one slot's four boxes. */
+__attribute__((target("avx"))) static inline void
+atrbvh_load_box4(float b[6][4], __m128 v[6])
+{
+    atrbvh_u32 c;
+    for (c = 0; c < 6u; c++)
+        v[c] = _mm_load_ps(b[c]);
+}
+
+/* The union areas of the four lanes' boxes q (the first operand) and b. */
+__attribute__((target("avx"))) static inline __m256d
+atrbvh_union_area4(const __m128 q[6], float bf[6][4])
+{
+    const __m256d dx =
+        _mm256_sub_pd(_mm256_cvtps_pd(_mm_max_ps(q[3], _mm_load_ps(bf[3]))),
+                      _mm256_cvtps_pd(_mm_min_ps(q[0], _mm_load_ps(bf[0]))));
+    const __m256d dy =
+        _mm256_sub_pd(_mm256_cvtps_pd(_mm_max_ps(q[4], _mm_load_ps(bf[4]))),
+                      _mm256_cvtps_pd(_mm_min_ps(q[1], _mm_load_ps(bf[1]))));
+    const __m256d dz =
+        _mm256_sub_pd(_mm256_cvtps_pd(_mm_max_ps(q[5], _mm_load_ps(bf[5]))),
+                      _mm256_cvtps_pd(_mm_min_ps(q[2], _mm_load_ps(bf[2]))));
+    __m256d s = _mm256_mul_pd(dx, dy);
+    s = _mm256_add_pd(s, _mm256_mul_pd(dy, dz));
+    s = _mm256_add_pd(s, _mm256_mul_pd(dz, dx));
+    return _mm256_mul_pd(_mm256_set1_pd(2.0), s);
+}
+
+/* One live entry of the search: v at pair code `at` (64 i + j) taken
+ * where strictly lower than the lanes' minimum so far. */
+#define ATRBVH_AGG4_SEEK(v, code, best, at)                                    \
+    do {                                                                       \
+        (at) = atrbvh_select4((at), (code),                                    \
+                              _mm256_cmp_pd((v), (best), _CMP_LT_OQ));         \
+        (best) = _mm256_min_pd((best), (v));                                   \
+    } while (0)
+
+__attribute__((noinline, unused, target("avx"))) static void
+atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
+                    const atrbvh_treelet_tree *t,
+                    const atrbvh_treelet *const tl[4], double *dist4,
+                    atrbvh_treelet_topo *const topo[4], double found[4])
+{
+    /* per slot: the four lanes' cluster boxes (six coordinates of four
+     * lanes), costs, counts and codes; the merged boxes */
+    __attribute__((aligned(16))) float box[ATRBVH_TREELET_MAX][6][4];
+    __attribute__((aligned(32))) double area_of[ATRBVH_TREELET_MAX][4];
+    __attribute__((aligned(32))) double pick[4], cost_of[4];
+    __attribute__((aligned(16))) float merged[6][4];
+    double cost[ATRBVH_TREELET_MAX][4];
+    atrbvh_u32 count[ATRBVH_TREELET_MAX][4], code[ATRBVH_TREELET_MAX][4];
+    atrbvh_u32 base[ATRBVH_TREELET_MAX], cnt[4];
+    __m128 row[6];
+    const atrbvh_u32 lim = !p->collapse          ? 0u
+                           : p->max_leaf == 0u ? ATRBVH_U32_MAX
+                                               : p->max_leaf;
+    const __m256d one = _mm256_set1_pd(1.0), inf = _mm256_set1_pd(
+                                                  __builtin_inf());
+    __m256d best = inf, at = _mm256_setzero_pd();
+    atrbvh_u32 a, r, c, l, m, q;
+
+    for (a = 0; a < n; a++) {
+        const atrbvh_u32 n0 = tl[0]->leaf[a], n1 = tl[1]->leaf[a],
+                         n2 = tl[2]->leaf[a], n3 = tl[3]->leaf[a];
+        const atrbvh_box b0 = t->box[n0], b1 = t->box[n1], b2 = t->box[n2],
+                         b3 = t->box[n3];
+        for (c = 0; c < 3u; c++) {
+            _mm_store_ps(box[a][c], _mm_set_ps(b3.min[c], b2.min[c],
+                                               b1.min[c], b0.min[c]));
+            _mm_store_ps(box[a][c + 3u], _mm_set_ps(b3.max[c], b2.max[c],
+                                                    b1.max[c], b0.max[c]));
+        }
+        cost[a][0] = t->cost[n0];
+        cost[a][1] = t->cost[n1];
+        cost[a][2] = t->cost[n2];
+        cost[a][3] = t->cost[n3];
+        count[a][0] = t->count[n0];
+        count[a][1] = t->count[n1];
+        count[a][2] = t->count[n2];
+        count[a][3] = t->count[n3];
+        for (l = 0; l < 4u; l++)
+            code[a][l] = a;
+        base[a] = a * (a - 1u) / 2u;
+    }
+    /* the matrix row by row (the row's cluster first, as
+     * atrbvh_agglomerate_at fills it), searched on the way */
+    for (r = 1; r < n; r++) {
+        __m256d k = _mm256_set1_pd((double)(64u * r));
+        atrbvh_load_box4(box[r], row);
+        for (c = 0; c < r; c++, k = _mm256_add_pd(k, one)) {
+            const __m256d v = atrbvh_union_area4(row, box[c]);
+            _mm256_store_pd(dist4 + 4u * (base[r] + c), v);
+            ATRBVH_AGG4_SEEK(v, k, best, at);
+        }
+    }
+    for (m = n, q = 0;; m--, q++) {
+        const atrbvh_u32 last = m - 1u;
+        atrbvh_u32 I[4], J[4];
+        __m256d iv, jv, binary, flat, take, res, far;
+        __m128 mb[6];
+        /* each lane's pair: slot j's cluster (left) and slot i's */
+        _mm256_store_pd(pick, at);
+        for (l = 0; l < 4u; l++) {
+            const atrbvh_u32 k = (atrbvh_u32)pick[l];
+            I[l] = k >> 6;
+            J[l] = k & 63u;
+        }
+        iv = _mm256_set_pd((double)I[3], (double)I[2], (double)I[1],
+                           (double)I[0]);
+        jv = _mm256_set_pd((double)J[3], (double)J[2], (double)J[1],
+                           (double)J[0]);
+        for (c = 0; c < 6u; c++) {
+            const __m128 x = _mm_set_ps(box[J[3]][c][3], box[J[2]][c][2],
+                                        box[J[1]][c][1], box[J[0]][c][0]);
+            const __m128 y = _mm_set_ps(box[I[3]][c][3], box[I[2]][c][2],
+                                        box[I[1]][c][1], box[I[0]][c][0]);
+            mb[c] = c < 3u ? _mm_min_ps(x, y) : _mm_max_ps(x, y);
+            _mm_store_ps(merged[c], mb[c]);
+        }
+        /* the merges' costs, atrbvh_node_cost lane for lane: the pair's
+         * distance (best) is the merged area */
+        for (l = 0; l < 4u; l++) {
+            atrbvh_treelet_topo *to = topo[l];
+            const atrbvh_u32 i = I[l], j = J[l];
+            to->left[q] = code[j][l];
+            to->right[q] = code[i][l];
+            to->count[q] = cnt[l] = count[j][l] + count[i][l];
+            to->box[q].min[0] = merged[0][l];
+            to->box[q].min[1] = merged[1][l];
+            to->box[q].min[2] = merged[2][l];
+            to->box[q].max[0] = merged[3][l];
+            to->box[q].max[1] = merged[4][l];
+            to->box[q].max[2] = merged[5][l];
+        }
+        binary = _mm256_mul_pd(_mm256_set1_pd(p->ci), best);
+        binary = _mm256_add_pd(
+            binary, _mm256_set_pd(cost[J[3]][3], cost[J[2]][2], cost[J[1]][1],
+                                  cost[J[0]][0]));
+        binary = _mm256_add_pd(
+            binary, _mm256_set_pd(cost[I[3]][3], cost[I[2]][2], cost[I[1]][1],
+                                  cost[I[0]][0]));
+        flat = _mm256_mul_pd(_mm256_set1_pd(p->ct), best);
+        flat = _mm256_mul_pd(flat, _mm256_set_pd((double)cnt[3], (double)cnt[2],
+                                                 (double)cnt[1], (double)cnt[0]));
+        take = _mm256_castsi256_pd(_mm256_set_epi64x(
+            -(long long)(cnt[3] <= lim), -(long long)(cnt[2] <= lim),
+            -(long long)(cnt[1] <= lim), -(long long)(cnt[0] <= lim)));
+        res = atrbvh_select4(binary, _mm256_min_pd(flat, binary), take);
+        _mm256_store_pd(cost_of, res);
+        /* slot j takes the merge, slot i the last cluster (onto itself
+         * when i is the last slot) */
+        for (l = 0; l < 4u; l++) {
+            const atrbvh_u32 i = I[l], j = J[l];
+            atrbvh_treelet_topo *to = topo[l];
+            to->cost[q] = cost_of[l];
+            cost[j][l] = cost_of[l];
+            count[j][l] = cnt[l];
+            code[j][l] = n + q;
+            cost[i][l] = cost[last][l];
+            count[i][l] = count[last][l];
+            code[i][l] = code[last][l];
+        }
+        if (last == 1u) {
+            _mm256_storeu_pd(found, res);
+            break;
+        }
+        /* the distances to the merged clusters (the merged box first, as
+         * atrbvh_agglomerate_at's atrbvh_union_areas), slot i's being
+         * the last cluster's in its lanes */
+        far = atrbvh_union_area4(mb, box[last]);
+        for (a = 0; a < last; a++)
+            _mm256_store_pd(
+                area_of[a],
+                atrbvh_select4(atrbvh_union_area4(mb, box[a]), far,
+                                 _mm256_cmp_pd(_mm256_set1_pd((double)a), iv,
+                                               _CMP_EQ_OQ)));
+        /* the live entries of the next step rewritten, lane for lane:
+         * (r, c) takes (last, c) in row i and (last, r) in column i,
+         * then the distance to the merge in row and column j (the (i, j)
+         * entry that of slot i's new cluster), and the search for the
+         * next pair on the way */
+        best = inf;
+        at = _mm256_setzero_pd();
+        for (r = 1; r < last; r++) {
+            const __m256d rv = _mm256_set1_pd((double)r);
+            const __m256d ri = _mm256_cmp_pd(rv, iv, _CMP_EQ_OQ);
+            const __m256d rj = _mm256_cmp_pd(rv, jv, _CMP_EQ_OQ);
+            const __m256d lr = _mm256_load_pd(dist4 + 4u * (base[last] + r));
+            const __m256d ar = _mm256_load_pd(area_of[r]);
+            double *at_r = dist4 + 4u * base[r];
+            const double *lrow = dist4 + 4u * base[last];
+            __m256d k = _mm256_set1_pd((double)(64u * r)),
+                    cv = _mm256_setzero_pd();
+            for (c = 0; c < r; c++, k = _mm256_add_pd(k, one),
+                cv = _mm256_add_pd(cv, one)) {
+                __m256d v = _mm256_load_pd(at_r + 4u * c);
+                v = atrbvh_select4(v, _mm256_load_pd(lrow + 4u * c), ri);
+                v = atrbvh_select4(v, lr, _mm256_cmp_pd(cv, iv, _CMP_EQ_OQ));
+                v = atrbvh_select4(v, _mm256_load_pd(area_of[c]), rj);
+                v = atrbvh_select4(v, ar, _mm256_cmp_pd(cv, jv, _CMP_EQ_OQ));
+                _mm256_store_pd(at_r + 4u * c, v);
+                ATRBVH_AGG4_SEEK(v, k, best, at);
+            }
+        }
+        /* the boxes: the merge into slot j, the last cluster into slot i */
+        for (l = 0; l < 4u; l++)
+            for (c = 0; c < 6u; c++) {
+                box[J[l]][c][l] = merged[c][l];
+                box[I[l]][c][l] = box[last][c][l];
+            }
+    }
+    for (l = 0; l < 4u; l++)
+        topo[l]->root = n - 2u;
+}
+#undef ATRBVH_AGG4_SEEK
+#endif
+
 /* ------------------------------------------------------ evaluate, write */
 /* Fills topo->order: the local nodes in pre-order from the root (explicit
  * stack), left subtree first. */
@@ -1462,12 +1722,27 @@ ATRBVH_FN int atrbvh_trbvh_keep(const atrbvh_treelet_tree *t,
     return atrbvh_trbvh_keep_from(t, p, root, tl, lv, &tab, found);
 }
 
+/* The end of an ATRBVH treelet whose agglomeration left its merges in
+ * *topo and the root merge's cost in `found`: written back when strictly
+ * cheaper than the root's cost (a quick reject as in atrbvh_trbvh_keep:
+ * the merges hold evaluate's boxes, counts and costs, the root's is
+ * `found`).  Returns 1 when written back. */
+ATRBVH_FN int atrbvh_atrbvh_apply(const atrbvh_treelet_tree *t,
+                                  atrbvh_u32 root, const atrbvh_treelet *tl,
+                                  atrbvh_treelet_topo *topo, double found)
+{
+    if (!(found < t->cost[root]))
+        return 0;
+    /* only the pre-order is missing */
+    atrbvh_treelet_preorder(tl->n, topo);
+    atrbvh_treelet_write(t, tl, topo);
+    return 1;
+}
+
 /* The end of an ATRBVH treelet of up to ATRBVH_TREELET_MAX leaves, formed
  * into *tl (at least 3 leaves): the agglomerative clustering of its
- * leaves, read from the tree in place (no gather), written back when the
- * root merge is strictly cheaper than the root's cost (a quick reject as
- * in atrbvh_trbvh_keep: the merges hold evaluate's boxes, counts and
- * costs, the root's is the returned cost).  Returns 1 when written back. */
+ * leaves, read from the tree in place (no gather), then
+ * atrbvh_atrbvh_apply.  Returns 1 when written back. */
 ATRBVH_FN int atrbvh_atrbvh_keep(const atrbvh_treelet_tree *t,
                                  const atrbvh_cost_params *p, atrbvh_u32 root,
                                  const atrbvh_treelet *tl,
@@ -1475,12 +1750,7 @@ ATRBVH_FN int atrbvh_atrbvh_keep(const atrbvh_treelet_tree *t,
 {
     atrbvh_treelet_topo topo;
     const double found = atrbvh_agglomerate_at(p, tl->n, t, tl, 0, dist, &topo);
-    if (!(found < t->cost[root]))
-        return 0;
-    /* only the pre-order is missing */
-    atrbvh_treelet_preorder(tl->n, &topo);
-    atrbvh_treelet_write(t, tl, &topo);
-    return 1;
+    return atrbvh_atrbvh_apply(t, root, tl, &topo, found);
 }
 
 /* Restructures the treelet rooted at internal node `root` (whose subtree
