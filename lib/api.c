@@ -204,6 +204,29 @@ int atrbvh_i_resolve_threads(int requested)
 #endif
 }
 
+void atrbvh_i_join_arrive(atrbvh_i_join *j)
+{
+#ifdef _OPENMP
+    const int team = omp_get_num_threads();
+    int done, k;
+    if (team < 2)
+        return;
+#pragma omp atomic capture
+    done = ++j->done;
+    if (omp_get_thread_num() != 0)
+        return;
+    for (k = 0; done < team && k < ATRBVH_I_JOIN_SPIN; k++) {
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+        __builtin_ia32_pause();
+#endif
+#pragma omp atomic read
+        done = j->done;
+    }
+#else
+    (void)j;
+#endif
+}
+
 double atrbvh_i_now_ms(void)
 {
 #if defined(CLOCK_MONOTONIC) && _POSIX_C_SOURCE >= 199309L

@@ -336,6 +336,7 @@ void atrbvh_i_prims_sweep_with(const atrbvh_i_input *in, int threads,
     const int vector = vector_ok && sweep_vector(g, vst, ist);
     const uint32_t vlast =
         vcount - 1 > UINT32_MAX ? UINT32_MAX : (uint32_t)(vcount - 1);
+    atrbvh_i_join join = {0};
     int k;
     for (k = 0; k < 3; k++) {
         out->scene.min[k] = out->centroids.min[k] = INFINITY;
@@ -428,6 +429,7 @@ void atrbvh_i_prims_sweep_with(const atrbvh_i_input *in, int threads,
                 out->bad_kind = PRIM_NONFINITE;
             }
         }
+        atrbvh_i_join_arrive(&join);
     }
 }
 

@@ -265,6 +265,7 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
      * and primitive box n-1 is also leaf 0's entry. */
     const atrbvh_box last =
         mode != TOPOLOGY && !ready ? t->box[n - 1] : atrbvh_box_empty();
+    atrbvh_i_join join = {0};
     int b;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(blocks)
@@ -308,6 +309,7 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
                            (int64_t)((uint64_t)n * (uint64_t)(b + 1) /
                                      (uint64_t)blocks));
         }
+        atrbvh_i_join_arrive(&join);
     }
     /* The second pass: the same stack over every block's leftovers, each
      * arriving with the subtree between the previous leftover and it. */

@@ -447,6 +447,7 @@ static atrbvh_status emit_all(layout_ctx *c, atrbvh_i_scratch *scratch,
     const atrbvh_i_tree *t = c->t;
     const uint32_t root_count = t->count[0];
     layout_cut k;
+    atrbvh_i_join join = {0};
     int64_t i;
     k.cut = atrbvh_i_frontier_cut(root_count, threads);
     k.cap = atrbvh_i_frontier_cap(threads);
@@ -470,10 +471,16 @@ static atrbvh_status emit_all(layout_ctx *c, atrbvh_i_scratch *scratch,
         return ATRBVH_OK;
     }
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+#pragma omp parallel num_threads(threads)
 #endif
-    for (i = 0; i < (int64_t)k.nfront; i++)
-        emit(c, k.front[i].node, k.front[i].at, k.front[i].prim);
+    {
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1) nowait
+#endif
+        for (i = 0; i < (int64_t)k.nfront; i++)
+            emit(c, k.front[i].node, k.front[i].at, k.front[i].prim);
+        atrbvh_i_join_arrive(&join);
+    }
     /* the top bottom-up: a node's children come after it in preorder */
     for (i = (int64_t)k.ntop - 1; i >= 0; i--)
         emit_inner(c, k.top[i].node, k.top[i].at, k.top[i].prim);

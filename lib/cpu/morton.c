@@ -165,6 +165,7 @@ atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *dev, atrbvh_i_run *run,
     const uint32_t n = run->n;
     const int blocks = (int)atrbvh_i_sort_blocks(n, run->cfg->threads);
     uint64_t *keys, key_or = 0, key_and = ~(uint64_t)0;
+    atrbvh_i_join join = {0};
     uint32_t *order, *counts = NULL;
     atrbvh_u32 sh = 0, bi = 1; /* (no guess: a 2-entry dummy row) */
     uint32_t shift, bits;
@@ -201,28 +202,38 @@ atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *dev, atrbvh_i_run *run,
     shift = sh;
     bits = bi;
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(blocks) schedule(static, 1) \
+#pragma omp parallel num_threads(blocks)
+#endif
+    {
+#ifdef _OPENMP
+#pragma omp for schedule(static, 1) nowait \
     reduction(| : key_or) reduction(& : key_and)
 #endif
-    for (b = 0; b < blocks; b++) {
-        uint32_t dummy[2], *cnt = counts ? counts + ((size_t)b << bits) : dummy;
-        uint32_t lo, hi, c0, c1;
-        int64_t i;
-        atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo, &hi);
-        memset(cnt, 0, ((size_t)1 << bits) * sizeof *cnt);
-        /* A chunk's keys (vector where the CPU can), then, while they are
-         * in the first-level cache, the rest of the sweep over them. */
-        for (c0 = lo; c0 < hi; c0 = c1) {
-            c1 = hi - c0 > MORTON_CHUNK ? c0 + MORTON_CHUNK : hi;
-            atrbvh_i_morton_keys_with(boxes, c0, c1, flo, fs, keys, vector);
-            for (i = c0; i < (int64_t)c1; i++) {
-                const uint64_t key = keys[i];
-                order[i] = (uint32_t)i;
-                cnt[atrbvh_sort_digit_bits(key, shift, bits)]++;
-                key_or |= key;
-                key_and &= key;
+        for (b = 0; b < blocks; b++) {
+            uint32_t dummy[2],
+                *cnt = counts ? counts + ((size_t)b << bits) : dummy;
+            uint32_t lo, hi, c0, c1;
+            int64_t i;
+            atrbvh_block_range(n, (atrbvh_u32)b, (atrbvh_u32)blocks, &lo,
+                               &hi);
+            memset(cnt, 0, ((size_t)1 << bits) * sizeof *cnt);
+            /* A chunk's keys (vector where the CPU can), then, while they
+             * are in the first-level cache, the rest of the sweep over
+             * them. */
+            for (c0 = lo; c0 < hi; c0 = c1) {
+                c1 = hi - c0 > MORTON_CHUNK ? c0 + MORTON_CHUNK : hi;
+                atrbvh_i_morton_keys_with(boxes, c0, c1, flo, fs, keys,
+                                          vector);
+                for (i = c0; i < (int64_t)c1; i++) {
+                    const uint64_t key = keys[i];
+                    order[i] = (uint32_t)i;
+                    cnt[atrbvh_sort_digit_bits(key, shift, bits)]++;
+                    key_or |= key;
+                    key_and &= key;
+                }
             }
         }
+        atrbvh_i_join_arrive(&join);
     }
     c->key_varying = key_or ^ key_and;
     c->msd_counts = counts;

@@ -195,6 +195,7 @@ static atrbvh_status sort_big(uint64_t *keys, uint32_t *values,
     const uint64_t *bk = tmp_keys + s;
     uint64_t varying = 0;
     uint32_t shift, bits, buckets, *counts, *start, d;
+    atrbvh_i_join join = {0};
     int64_t i;
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(blocks) schedule(static) \
@@ -238,7 +239,7 @@ static atrbvh_status sort_big(uint64_t *keys, uint32_t *values,
                           values + s, len, shift, bits, start);
         /* the sub-buckets, in cache, back into keys */
 #ifdef _OPENMP
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, 16) nowait
 #endif
         for (k = 0; k < (int64_t)buckets; k++) {
             const uint32_t s2 = s + start[k], len2 = start[k + 1] - start[k];
@@ -248,6 +249,7 @@ static atrbvh_status sort_big(uint64_t *keys, uint32_t *values,
             if (len2 && lv)
                 bucket_leaves(keys, values, n, s2, s2 + len2, lv);
         }
+        atrbvh_i_join_arrive(&join);
     }
     if (lv) /* the splits between sub-buckets (the bucket's last: msd_sort) */
         for (d = 0; d < buckets; d++) {
@@ -278,6 +280,7 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
     const uint32_t big = atrbvh_sort_big(n, (uint32_t)blocks);
     atrbvh_status st = ATRBVH_OK;
     uint32_t *counts, *start;
+    atrbvh_i_join join = {0};
 
     counts = count_here ? atrbvh_i_alloc_array((size_t)blocks * buckets,
                                                sizeof *counts)
@@ -313,7 +316,7 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
                           tmp_values, n, shift, bits, start);
         /* Buckets are independent; the result lands back in keys/values. */
 #ifdef _OPENMP
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, 16) nowait
 #endif
         for (bk = 0; bk < (int64_t)buckets; bk++) {
             const uint32_t s = start[bk], len = start[bk + 1] - s;
@@ -325,6 +328,7 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
             if (len && lv)
                 bucket_leaves(keys, values, n, s, s + len, lv);
         }
+        atrbvh_i_join_arrive(&join);
     }
     {
         uint32_t bk2;
