@@ -250,8 +250,8 @@ static void leaf_prims(atrbvh_i_tree *t, const uint32_t *order,
  * SIZES and COSTS first gather the leaf boxes and write the deltas (the
  * file's comment).  With `order`, also each leaf's original primitive. */
 static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
-                               const uint32_t *order, const uint32_t *ids,
-                               int ready)
+                               int threads, const uint32_t *order,
+                               const uint32_t *ids, int ready)
 {
     atrbvh_i_tree *t = x->t;
     const int64_t n = x->n;
@@ -268,7 +268,7 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
     atrbvh_i_join join = {0};
     int b;
 #ifdef _OPENMP
-#pragma omp parallel num_threads(blocks)
+#pragma omp parallel num_threads(threads < blocks ? threads : blocks)
 #endif
     {
         int64_t i;
@@ -293,7 +293,7 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
          * region's end, which waits for them; the loop's own barrier was
          * one more thread hand-over. */
 #ifdef _OPENMP
-#pragma omp for schedule(static, 1) nowait
+#pragma omp for schedule(dynamic, 1) nowait
 #endif
         for (b = 0; b < blocks; b++) {
             counts[b] = block_pass(
@@ -378,18 +378,24 @@ static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
             leaf_prims(t, order, ids, 0, 1);
         return;
     }
-    blocks = threads < 1 ? 1 : threads;
+    /* ATRBVH_I_BLOCKS_PER_THREAD blocks a thread, taken in turn (cpu.h) */
+    if (threads < 1)
+        threads = 1;
+    blocks = threads < 2 ? 1
+             : threads > ATRBVH_HIER_BLOCKS / ATRBVH_I_BLOCKS_PER_THREAD
+                 ? ATRBVH_HIER_BLOCKS
+                 : threads * ATRBVH_I_BLOCKS_PER_THREAD;
     if (blocks > ATRBVH_HIER_BLOCKS)
         blocks = ATRBVH_HIER_BLOCKS;
     if ((int64_t)blocks > n - 1)
         blocks = (int)(n - 1);
     /* (three calls: each inlined for its own mode) */
     if (!p)
-        pass(&x, TOPOLOGY, blocks, order, ids, 0);
+        pass(&x, TOPOLOGY, blocks, threads, order, ids, 0);
     else if (size)
-        pass(&x, SIZES, blocks, order, ids, ready);
+        pass(&x, SIZES, blocks, threads, order, ids, ready);
     else
-        pass(&x, COSTS, blocks, order, ids, ready);
+        pass(&x, COSTS, blocks, threads, order, ids, ready);
 }
 
 void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,

@@ -164,6 +164,7 @@ atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *dev, atrbvh_i_run *run,
     const int vector = atrbvh_i_avx2();
     const uint32_t n = run->n;
     const int blocks = (int)atrbvh_i_sort_blocks(n, run->cfg->threads);
+    const int team = run->cfg->threads < blocks ? run->cfg->threads : blocks;
     uint64_t *keys, key_or = 0, key_and = ~(uint64_t)0;
     atrbvh_i_join join = {0};
     uint32_t *order, *counts = NULL;
@@ -202,11 +203,11 @@ atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *dev, atrbvh_i_run *run,
     shift = sh;
     bits = bi;
 #ifdef _OPENMP
-#pragma omp parallel num_threads(blocks)
+#pragma omp parallel num_threads(team)
 #endif
     {
 #ifdef _OPENMP
-#pragma omp for schedule(static, 1) nowait \
+#pragma omp for schedule(dynamic, 1) nowait \
     reduction(| : key_or) reduction(& : key_and)
 #endif
         for (b = 0; b < blocks; b++) {

@@ -62,10 +62,19 @@ atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
 
 uint32_t atrbvh_i_sort_blocks(uint32_t n, int threads)
 {
-    uint32_t blocks = threads < 1                ? 1u
-                      : threads > MAX_BLOCKS ? MAX_BLOCKS
-                                                 : (uint32_t)threads;
+    /* ATRBVH_I_BLOCKS_PER_THREAD blocks a thread, taken in turn
+     * (cpu.h) */
+    uint32_t blocks = threads < 2 ? 1u
+                      : threads > MAX_BLOCKS / ATRBVH_I_BLOCKS_PER_THREAD
+                          ? MAX_BLOCKS
+                          : (uint32_t)threads * ATRBVH_I_BLOCKS_PER_THREAD;
     return blocks > n ? (n ? n : 1u) : blocks;
+}
+
+/* The team for `blocks` blocks on `threads` threads. */
+static int team(int blocks, int threads)
+{
+    return threads < 1 ? 1 : threads < blocks ? threads : blocks;
 }
 
 /* Not inlined: in the region's function the loop reloaded its pointers,
@@ -190,7 +199,7 @@ static void scatter_block(const uint32_t *counts, int b, int blocks,
 static atrbvh_status sort_big(uint64_t *keys, uint32_t *values,
                               uint64_t *tmp_keys, uint32_t *tmp_values,
                               uint32_t n, uint32_t s, uint32_t len,
-                              int blocks, sort_leaves *lv)
+                              int blocks, int threads, sort_leaves *lv)
 {
     const uint64_t *bk = tmp_keys + s;
     uint64_t varying = 0;
@@ -198,8 +207,8 @@ static atrbvh_status sort_big(uint64_t *keys, uint32_t *values,
     atrbvh_i_join join = {0};
     int64_t i;
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(blocks) schedule(static) \
-    reduction(| : varying)
+#pragma omp parallel for num_threads(team(blocks, threads)) \
+    schedule(static) reduction(| : varying)
 #endif
     for (i = 1; i < (int64_t)len; i++)
         varying |= bk[i] ^ bk[0];
@@ -220,19 +229,19 @@ static atrbvh_status sort_big(uint64_t *keys, uint32_t *values,
         return ATRBVH_ERR_NOMEM;
     }
 #ifdef _OPENMP
-#pragma omp parallel num_threads(blocks)
+#pragma omp parallel num_threads(team(blocks, threads))
 #endif
     {
         int b;
         int64_t k;
 #ifdef _OPENMP
-#pragma omp for schedule(static, 1)
+#pragma omp for schedule(dynamic, 1)
 #endif
         for (b = 0; b < blocks; b++)
             count_block(bk, len, b, blocks, shift, bits,
                         counts + (size_t)b * buckets);
 #ifdef _OPENMP
-#pragma omp for schedule(static, 1)
+#pragma omp for schedule(dynamic, 1)
 #endif
         for (b = 0; b < blocks; b++)
             scatter_block(counts, b, blocks, bk, tmp_values + s, keys + s,
@@ -269,7 +278,8 @@ static atrbvh_status sort_big(uint64_t *keys, uint32_t *values,
  * its sweep (morton.c); NULL: counted here, first. */
 static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
                               uint64_t *tmp_keys, uint32_t *tmp_values,
-                              uint32_t n, int blocks, uint32_t shift,
+                              uint32_t n, int blocks, int threads,
+                              uint32_t shift,
                               uint32_t bits, uint32_t *counted,
                               sort_leaves *lv)
 {
@@ -277,7 +287,8 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
     const int count_here = counted == NULL;
     /* buckets of more than `big` keys (shared/sort.h's atrbvh_sort_big):
      * sort_big, after the others */
-    const uint32_t big = atrbvh_sort_big(n, (uint32_t)blocks);
+    const uint32_t big =
+        atrbvh_sort_big(n, (uint32_t)team(blocks, threads));
     atrbvh_status st = ATRBVH_OK;
     uint32_t *counts, *start;
     atrbvh_i_join join = {0};
@@ -294,14 +305,14 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
     }
 
 #ifdef _OPENMP
-#pragma omp parallel num_threads(blocks)
+#pragma omp parallel num_threads(team(blocks, threads))
 #endif
     {
         int b;
         int64_t bk;
         if (count_here) { /* (the same for every thread) */
 #ifdef _OPENMP
-#pragma omp for schedule(static, 1)
+#pragma omp for schedule(dynamic, 1)
 #endif
             for (b = 0; b < blocks; b++)
                 count_block(keys, n, b, blocks, shift, bits,
@@ -309,7 +320,7 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
         }
         /* each block's offsets and scatter (scatter_block) */
 #ifdef _OPENMP
-#pragma omp for schedule(static, 1)
+#pragma omp for schedule(dynamic, 1)
 #endif
         for (b = 0; b < blocks; b++)
             scatter_block(counts, b, blocks, keys, values, tmp_keys,
@@ -336,7 +347,7 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
             if (start[bk2 + 1] - start[bk2] > big)
                 st = sort_big(keys, values, tmp_keys, tmp_values, n,
                               start[bk2], start[bk2 + 1] - start[bk2],
-                              blocks, lv);
+                              blocks, threads, lv);
     }
     if (st != ATRBVH_OK) {
         if (count_here)
@@ -371,8 +382,8 @@ atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,
      * of about ATRBVH_SORT_BUCKET_TARGET items. */
     atrbvh_sort_msd(n, varying, &shift, &bits);
     return msd_sort(keys, values, tmp_keys, tmp_values, n,
-                    (int)atrbvh_i_sort_blocks(n, threads), shift, bits, NULL,
-                    NULL);
+                    (int)atrbvh_i_sort_blocks(n, threads), threads, shift,
+                    bits, NULL, NULL);
 }
 
 /* The stage: keys (morton) sorted with their build indices. */
@@ -430,7 +441,7 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
             blocks = (int)c->msd_blocks;
         }
         st = msd_sort(c->keys, c->order, tmp_keys, tmp_order, n, blocks,
-                      shift, bits, counted, &lv);
+                      run->cfg->threads, shift, bits, counted, &lv);
         c->leaves_ready = st == ATRBVH_OK;
     }
     atrbvh_i_free(c->msd_counts);
