@@ -158,6 +158,7 @@ atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *b, int threads)
     size_t pieces = 1;
     unsigned deepest = 0;
     int verdict = WALK_OK;
+    atrbvh_i_join join = {0};
     int64_t k;
     if (m == 0)
         return atrbvh_i_bvh_measure(b);
@@ -182,20 +183,27 @@ atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *b, int threads)
     }
     /* item -1: the sums; item k >= 0: the walk of piece k */
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) \
-    reduction(max : deepest, verdict) if (threads > 1)
+#pragma omp parallel num_threads(threads) if (threads > 1)
 #endif
-    for (k = -1; k < (int64_t)pieces; k++) {
-        if (k < 0) {
-            atrbvh_i_sah_sum(b->nodes, m, &sums);
-        } else {
-            unsigned most = 0;
-            const int w = walk_piece(b->nodes, b->prim_count, piece[k], &most);
-            if (w > verdict)
-                verdict = w;
-            if (most > deepest)
-                deepest = most;
+    {
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1) nowait \
+    reduction(max : deepest, verdict)
+#endif
+        for (k = -1; k < (int64_t)pieces; k++) {
+            if (k < 0) {
+                atrbvh_i_sah_sum(b->nodes, m, &sums);
+            } else {
+                unsigned most = 0;
+                const int w =
+                    walk_piece(b->nodes, b->prim_count, piece[k], &most);
+                if (w > verdict)
+                    verdict = w;
+                if (most > deepest)
+                    deepest = most;
+            }
         }
+        atrbvh_i_join_arrive(&join);
     }
     if (verdict == WALK_DEEP)
         return atrbvh_i_bvh_measure(b); /* deeper: check.c */

@@ -125,6 +125,7 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
 {
     const uint32_t root_count = c->t->count[0];
     const size_t cap = atrbvh_i_frontier_cap(threads);
+    atrbvh_i_join join = {0};
     size_t k = 0;
     int64_t i;
     unsigned char *block;
@@ -148,10 +149,16 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
         return ATRBVH_OK;
     }
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+#pragma omp parallel num_threads(threads)
 #endif
-    for (i = 0; i < (int64_t)k; i++)
-        c->cost[i] = decide(c, c->list[i]);
+    {
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1) nowait
+#endif
+        for (i = 0; i < (int64_t)k; i++)
+            c->cost[i] = decide(c, c->list[i]);
+        atrbvh_i_join_arrive(&join);
+    }
     c->next = 0;
     (void)top_decide(c, 0);
     return ATRBVH_OK;

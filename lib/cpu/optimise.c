@@ -583,6 +583,7 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
 {
     const uint32_t root_count = c->t.count[0];
     uint32_t cut = atrbvh_i_frontier_cut(root_count, threads);
+    atrbvh_i_join join = {0};
     size_t k = 0;
     int64_t i;
     /* above gamma, so that every top node is a crown node (gamma is at
@@ -599,10 +600,16 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
         return;
     }
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+#pragma omp parallel num_threads(threads)
 #endif
-    for (i = 0; i < (int64_t)k; i++)
-        walk_frontier(c, list[i], pcap);
+    {
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1) nowait
+#endif
+        for (i = 0; i < (int64_t)k; i++)
+            walk_frontier(c, list[i], pcap);
+        atrbvh_i_join_arrive(&join);
+    }
     walk_serial(c, 0, cut);
 }
 
