@@ -758,12 +758,12 @@ __kernel void refit(__global atrbvh_box *box, __global uint *count,
 /* ---------------------------------------------------------------- optimise */
 /* Round preparation (a separate launch, so it sees the tree as the round
  * starts): for each internal node, how many of its children are in the
- * crown (subtree count >= gamma), and the list of crown nodes with no crown
- * child, where the walks start. */
+ * crown (subtree count >= gamma), with ATRBVH_CL_START set on the crown
+ * nodes with no crown child, where the walks start. */
+#define ATRBVH_CL_START 0x80000000u
 __kernel void opt_prepare(__global const uint *left, __global const uint *right,
                           __global const uint *count, __global uint *needed,
-                          __global uint *counter, __global uint *list,
-                          __global uint *list_count, atrbvh_kargs_optimise a)
+                          __global uint *counter, atrbvh_kargs_optimise a)
 {
     uint i = (uint)get_global_id(0), l, r, k;
     if (i >= a.n_internal)
@@ -772,14 +772,15 @@ __kernel void opt_prepare(__global const uint *left, __global const uint *right,
     r = right[i];
     k = (uint)(l < a.n_internal && count[l] >= a.gamma) +
         (uint)(r < a.n_internal && count[r] >= a.gamma);
-    needed[i] = k;
+    needed[i] = count[i] >= a.gamma && k == 0u ? ATRBVH_CL_START : k;
     counter[i] = 0u;
-    if (count[i] >= a.gamma && k == 0u)
-        list[atomic_inc(list_count)] = i;
 }
 
 /* One round: `workers` persistent items take contiguous shares of the
- * start nodes and walk up; a crown node is processed (atrbvh_treelet_process, the CPU's
+ * internal nodes, in node order, and walk up from the start nodes in
+ * theirs (opt_prepare's marks: neighbouring nodes, whose walks meet soon
+ * on data still in cache, as the CPU's post-order walk of a subtree
+ * does); a crown node is processed (atrbvh_treelet_process, the CPU's
  * function) by the item whose arrival completes its crown children, i.e.
  * only after its whole subtree is final.  The treelet root keeps its id and
  * parent, so the walk's way up stays valid.  The tree arrays are read and
@@ -789,14 +790,12 @@ __kernel void opt_prepare(__global const uint *left, __global const uint *right,
 __kernel void opt_round(__global uint *left, __global uint *right,
                         __global uint *parent, __global uint *count,
                         __global atrbvh_box *box, __global double *cost,
-                        __global const uint *list, __global const uint *needed,
-                        __global uint *counter, __global uchar *scratch,
-                        __global uchar *marks, __global uint *tally,
-                        __global const uint *list_count,
-                        atrbvh_kargs_optimise a)
+                        __global const uint *needed, __global uint *counter,
+                        __global uchar *scratch, __global uchar *marks,
+                        __global uint *tally, atrbvh_kargs_optimise a)
 {
     uint w = (uint)get_global_id(0), k, done = 0u, applied = 0u,
-         skipped = 0u, len;
+         skipped = 0u;
     atrbvh_treelet_marks m;
     atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
                                              a.max_leaf);
@@ -830,15 +829,13 @@ __kernel void opt_round(__global uint *left, __global uint *right,
      * CPU; a one-word dummy otherwise). */
     m.chg = marks;
     m.same = marks + (a.marks ? a.n_internal : 0u);
-    /* A contiguous share of the start list (neighbouring nodes: their walks
-     * meet soon, on data still in cache, as the CPU's post-order walk of a
-     * subtree does), not every workers-th entry.  The list's length is
-     * opt_prepare's, read here: the host queues both launches without
-     * waiting (items beyond the list's length have no share). */
-    len = *list_count;
-    for (k = (uint)((ulong)len * w / a.workers);
-         k < (uint)((ulong)len * (w + 1u) / a.workers); k++) {
-        uint x = list[k];
+    /* (the marks are read from `needed`, which no item writes in a round:
+     * the same start nodes whatever the other items have restructured) */
+    for (k = (uint)((ulong)a.n_internal * w / a.workers);
+         k < (uint)((ulong)a.n_internal * (w + 1u) / a.workers); k++) {
+        uint x = k;
+        if (!(needed[k] & ATRBVH_CL_START))
+            continue;
         for (;;) {
             uint up;
             int r;
@@ -863,6 +860,7 @@ __kernel void opt_round(__global uint *left, __global uint *right,
             up = t.parent[x]; /* volatile, as every tree read here */
             /* our treelet's writes before the count ... */
             ATRBVH_CL_FENCE();
+            /* (up has a crown child: never a start, no mark) */
             if (atomic_inc(&counter[up]) + 1u < needed[up])
                 break;
             /* ... the other arrivals' writes after it (the reads go

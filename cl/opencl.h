@@ -80,9 +80,8 @@ enum {
     B_COST,
     B_LEAF_PRIM,
     B_COUNTER,    /* bottom-up arrival counters           */
-    B_NEEDED,     /* optimise: crown children per node    */
-    B_LIST,       /* optimise: walk starts                */
-    B_LIST_COUNT,
+    B_NEEDED,     /* optimise: crown children per node,
+                     the walks' starts marked             */
     B_SCRATCH,    /* optimise: per-worker treelet tables  */
     B_MARKS,      /* optimise: skip marks, 2 bytes a node */
     B_TALLY,      /* optimise: treelet counts             */

@@ -599,18 +599,14 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
                                 "treelet scratch", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_NEEDED, a.n_internal, 4,
                                 "crown children", error));
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_LIST, a.n_internal, 4, "walk starts",
-                                error));
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_LIST_COUNT, 1, 4, "walk start count",
-                                error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_MARKS, marks, 1, "skip marks", error));
     CL_CHECK(atrbvh_i_cl_zero(c, B_MARKS, marks, "skip marks", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_TALLY, 3, 4, "treelet counts", error));
     CL_CHECK(atrbvh_i_cl_zero(c, B_TALLY, 3 * 4, "treelet counts", error));
-    /* The rounds are queued without a wait: opt_round reads the list's
-     * length on the device, and workers_max items always run (those
-     * beyond the list have no share; the tree does not depend on how
-     * many items share the list). */
+    /* The rounds are queued without a wait: opt_round finds the walks'
+     * starts in opt_prepare's marks on the device (the tree does not
+     * depend on how many items share the nodes, nor on which walks first:
+     * a treelet waits for its whole subtree). */
     a.workers = workers_max;
     c->counters_zero = 0; /* (the kernels' own zeroing from here on) */
     for (round = 0; round < cfg->rounds; round++) {
@@ -626,18 +622,14 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
             break; /* no crown left (the root's count is n) */
         a.gamma = (atrbvh_u32)gamma;
         a.round = round;
-        CL_CHECK(atrbvh_i_cl_zero(c, B_LIST_COUNT, 4, "walk start count",
-                                  error));
         CL_RUN(c, K_OPT_PREPARE, a.n_internal, error, CL_BUF(B_LEFT),
                CL_BUF(B_RIGHT), CL_BUF(B_COUNT), CL_BUF(B_NEEDED),
-               CL_BUF(B_COUNTER), CL_BUF(B_LIST), CL_BUF(B_LIST_COUNT),
-               CL_VAL(a));
+               CL_BUF(B_COUNTER), CL_VAL(a));
         CL_RUN(c, K_OPT_ROUND, a.workers, error, CL_BUF(B_LEFT),
                CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
-               CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_LIST),
-               CL_BUF(B_NEEDED), CL_BUF(B_COUNTER), CL_BUF(B_SCRATCH),
-               CL_BUF(B_MARKS), CL_BUF(B_TALLY), CL_BUF(B_LIST_COUNT),
-               CL_VAL(a));
+               CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_NEEDED),
+               CL_BUF(B_COUNTER), CL_BUF(B_SCRATCH), CL_BUF(B_MARKS),
+               CL_BUF(B_TALLY), CL_VAL(a));
         /* The round's tree for the pipeline's capture (a blocking read
          * on the in-order queue sees the launch done). */
         if (atrbvh_i_stage_round(run, round + 1)) {

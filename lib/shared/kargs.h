@@ -107,8 +107,8 @@ typedef struct atrbvh_kargs_optimise {
     atrbvh_u32 max_leaf;
     atrbvh_u32 n_internal;
     atrbvh_u32 gamma;     /* crown: subtrees of at least gamma primitives */
-    atrbvh_u32 list_len;  /* unused (opt_round reads the walk starts' count
-                             on the device)                              */
+    atrbvh_u32 list_len;  /* unused (opt_round finds the walks' starts in
+                             opt_prepare's marks, on the device)         */
     atrbvh_u32 treelet_size;
     atrbvh_u32 agglomerative; /* 1: ATRBVH, 0: TRBVH                       */
     atrbvh_u32 workers;
