@@ -167,14 +167,14 @@ atrbvh_status atrbvh_i_cpu_set_tree(atrbvh_device *, atrbvh_i_run *,
 atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
                                   uint64_t *tmp_keys, uint32_t *tmp_values,
                                   uint32_t n, int threads);
-/* The blocks (contiguous ranges of atrbvh_block_range) of the sort's
- * MSD pass over n keys with `threads` threads. */
-/* Blocks of the Morton sweep and the sort's passes: one without
- * threads to share them, else ATRBVH_I_BLOCKS_PER_THREAD a thread (at
- * most 256, at most n), which the threads take in turn (dynamic): the
- * master, which starts a region 50-70 us before a sleeping thread wakes
- * (passive wait, the tool's), takes more of them meanwhile.  The sort's
- * result is the same for any number of blocks. */
+/* The blocks (contiguous ranges of atrbvh_block_range) of the Morton
+ * sweep and the sort's MSD pass over n keys with `threads` threads: one
+ * without threads to share them, else ATRBVH_I_BLOCKS_PER_THREAD a
+ * thread (at most 256, at most n), which the threads take in turn
+ * (dynamic): the master, which starts a region while a sleeping thread
+ * is still waking (passive wait, the tool's; 20-70 us on this VM), takes
+ * more of them meanwhile.  The sort's result is the same for any number
+ * of blocks. */
 #define ATRBVH_I_BLOCKS_PER_THREAD 4
 uint32_t atrbvh_i_sort_blocks(uint32_t n, int threads);
 /* The same, told the bits where the keys differ (the OR of all keys XOR

@@ -20,14 +20,15 @@
  * every node the children gamma = s and s+1 (leaves when alone).
  *
  * The nearest smaller values come from one left-to-right pass with a stack
- * per contiguous block of splits (one block per thread).  A node is
- * written as soon as both neighbours are known; the rest of each block -
- * its prefix minima (no left neighbour in the block) and what is left on
- * its stack (no right neighbour) - are strictly monotone in delta, so at
- * most ATRBVH_HIER_SIDE each, and a second, serial pass over these
- * leftovers of every block, in position order, finds their neighbours:
- * the nearest smaller split of a leftover is itself a leftover.  Deltas
- * lie in 0 .. 95, so no stack is deeper than 96.
+ * per contiguous block of splits (blocks taken in turn by the threads).
+ * A node is written as soon as both neighbours are known; the rest of
+ * each block - its prefix minima (no left neighbour in the block) and
+ * what is left on its stack (no right neighbour) - are strictly
+ * monotone in delta, so at most ATRBVH_HIER_SIDE each, and a second,
+ * serial pass over these leftovers of every block, in position order,
+ * finds their neighbours: the nearest smaller split of a leftover is
+ * itself a leftover.  Deltas lie in 0 .. 95, so no stack is deeper
+ * than 96.
  *
  * The refit in the same pass.  The stack pops nodes in post-order: the
  * node popped at split ns whose new top is ps has as its right child the
@@ -68,7 +69,8 @@
  * 0 .. 63, equal keys 64 .. 95): at most 96 entries, so a block leaves at
  * most 96 prefix minima and 95 more on its stack. */
 #define ATRBVH_HIER_SIDE 96
-/* Blocks (threads) of the first pass: its leftovers live on the stack. */
+/* Blocks of the first pass, at most (ATRBVH_I_BLOCKS_PER_THREAD a
+ * thread, taken in turn: cpu.h): their leftovers live on the stack. */
 #define ATRBVH_HIER_BLOCKS 16
 
 /* The pass is specialised for each mode (a constant at every call):

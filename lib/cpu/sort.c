@@ -12,8 +12,9 @@
  * bits that vary are sorted on, so scenes whose keys differ in fewer bits
  * sort in fewer passes.
  *
- * Parallel shape (as on a GPU): for the MSD pass each thread owns a fixed
- * contiguous block of the input, counts digits in it, an exclusive scan
+ * Parallel shape (as on a GPU): for the MSD pass the input is cut into
+ * fixed contiguous blocks (ATRBVH_I_BLOCKS_PER_THREAD a thread, taken in
+ * turn: cpu.h), the digits of each block are counted, an exclusive scan
  * over (digit, block) gives each block its output offsets, and each block
  * scatters in order; buckets are then independent items.
  *
@@ -279,9 +280,8 @@ static atrbvh_status sort_big(uint64_t *keys, uint32_t *values,
 static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
                               uint64_t *tmp_keys, uint32_t *tmp_values,
                               uint32_t n, int blocks, int threads,
-                              uint32_t shift,
-                              uint32_t bits, uint32_t *counted,
-                              sort_leaves *lv)
+                              uint32_t shift, uint32_t bits,
+                              uint32_t *counted, sort_leaves *lv)
 {
     const uint32_t buckets = 1u << bits;
     const int count_here = counted == NULL;
