@@ -14,8 +14,9 @@
  * each timed build, then WARM (default 0) untimed builds: how a build
  * fares after the threads were idle ("PoCL's workers after an idle spell"
  * in docs/opencl.md).  Run it several times: a process tends to stay in
- * one mode.  Printed: the stages' and (OpenCL) the kernels' mean times,
- * and each thread's CPU time in clock ticks from /proc/self/task/ID/stat
+ * one mode.  Printed: the builds' minimum, mean and quartiles, the
+ * stages' and (OpenCL) the kernels' mean times, and each thread's CPU
+ * time in clock ticks from /proc/self/task/ID/stat
  * (Linux).
  */
 #define _POSIX_C_SOURCE 199309L
@@ -66,6 +67,12 @@ static void print_threads(void)
     closedir(d);
 }
 
+static int by_time(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
 int main(int argc, char **argv)
 {
     const char *device = argc > 4 ? argv[4] : "cpu";
@@ -74,6 +81,7 @@ int main(int argc, char **argv)
     const long pause = argc > 5 ? atol(argv[5]) : 0;
     const int warm = argc > 6 ? atoi(argv[6]) : 0;
     double stage[ATRBVH_STAGE_COUNT] = {0}, outside = 0.0, sum = 0.0, best = 1e300;
+    double *each; /* every timed build's time, sorted for the quartiles */
     /* kernels by name, in the order first seen */
     double kernel_ms[MAX_KERNELS] = {0};
     char kernel_name[MAX_KERNELS][64];
@@ -96,6 +104,11 @@ int main(int argc, char **argv)
     }
     if (atrbvh_device_open(device, &dev, &err) != ATRBVH_OK) {
         fprintf(stderr, "modes: %s\n", err.text);
+        return 1;
+    }
+    each = malloc((size_t)builds * sizeof *each);
+    if (!each) {
+        fprintf(stderr, "modes: out of memory\n");
         return 1;
     }
     g = scene_geometry(&s);
@@ -130,6 +143,7 @@ int main(int argc, char **argv)
         if (r > 0) {
             sum += t;
             best = t < best ? t : best;
+            each[r - 1] = t;
             const char *name;
             double ms;
             size_t i;
@@ -155,6 +169,10 @@ int main(int argc, char **argv)
     printf("%s, %d builds, %d threads, %s, each after %ld ms idle and %d "
            "untimed: min %.3f ms, mean %.3f ms\n",
            argv[1], builds, threads, device, pause, warm, best, sum / builds);
+    qsort(each, (size_t)builds, sizeof *each, by_time);
+    printf("  quartiles %.3f / %.3f / %.3f ms (25th, median, 75th)\n",
+           each[builds / 4], each[builds / 2], each[3 * builds / 4]);
+    free(each);
     for (k = 0; k < ATRBVH_STAGE_COUNT; k++)
         printf("  %-10s %.3f ms\n", atrbvh_stage_name((atrbvh_stage)k),
                stage[k] / builds);
