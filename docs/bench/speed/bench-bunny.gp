@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.90574786:46.6244546]
+set xrange [2.75038835:42.9334344]
 set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 4.95979266,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 12.2018574,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 12.7979957,39.3531597 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 9.19167011,39.0314856 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 9.74860687,38.4286758 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 13.5184279,38.1317351 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 23.8936229,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 18.693122,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 6.10929967,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 19.8832121,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 28.4348235,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.78950147,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 17.1343372,39.3638605 left font ',8' noenhanced front
+set label 'LBVH' at 3.0305185,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 8.05826378,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 6.19332846,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 9.82640121,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 8.07194585,38.4286758 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 11.8477628,38.0467183 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 17.5983913,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 8.01295649,37.9447354 left font ',8' noenhanced front
+set label 'embree_low' at 4.86790086,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 24.773168,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 17.7580123,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.04944721,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 15.1790449,39.0521322 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
