@@ -177,6 +177,22 @@ atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
  * of blocks. */
 #define ATRBVH_I_BLOCKS_PER_THREAD 4
 uint32_t atrbvh_i_sort_blocks(uint32_t n, int threads);
+/* Blocks for `threads` threads by that rule, at most `most`: one for a
+ * single thread, else ATRBVH_I_BLOCKS_PER_THREAD a thread (the sort's
+ * and the hierarchy's block passes). */
+static inline int atrbvh_i_blocks_for(int threads, int most)
+{
+    return threads < 2 ? 1
+           : threads > most / ATRBVH_I_BLOCKS_PER_THREAD
+               ? most
+               : threads * ATRBVH_I_BLOCKS_PER_THREAD;
+}
+/* The team of a region over `blocks` blocks: no more threads than
+ * blocks, at least one. */
+static inline int atrbvh_i_team(int blocks, int threads)
+{
+    return threads < 1 ? 1 : threads < blocks ? threads : blocks;
+}
 /* The same, told the bits where the keys differ (the OR of all keys XOR
  * their AND; a superset is also right, only slower). */
 atrbvh_status atrbvh_i_radix_sort_varying(uint64_t *keys, uint32_t *values,

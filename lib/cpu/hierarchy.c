@@ -270,7 +270,7 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
     atrbvh_i_join join = {0};
     int b;
 #ifdef _OPENMP
-#pragma omp parallel num_threads(threads < blocks ? threads : blocks)
+#pragma omp parallel num_threads(atrbvh_i_team(blocks, threads))
 #endif
     {
         int64_t i;
@@ -380,15 +380,8 @@ static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
             leaf_prims(t, order, ids, 0, 1);
         return;
     }
-    /* ATRBVH_I_BLOCKS_PER_THREAD blocks a thread, taken in turn (cpu.h) */
-    if (threads < 1)
-        threads = 1;
-    blocks = threads < 2 ? 1
-             : threads > ATRBVH_HIER_BLOCKS / ATRBVH_I_BLOCKS_PER_THREAD
-                 ? ATRBVH_HIER_BLOCKS
-                 : threads * ATRBVH_I_BLOCKS_PER_THREAD;
-    if (blocks > ATRBVH_HIER_BLOCKS)
-        blocks = ATRBVH_HIER_BLOCKS;
+    /* blocks taken in turn by the threads (cpu.h) */
+    blocks = atrbvh_i_blocks_for(threads, ATRBVH_HIER_BLOCKS);
     if ((int64_t)blocks > n - 1)
         blocks = (int)(n - 1);
     /* (three calls: each inlined for its own mode) */

@@ -164,7 +164,7 @@ atrbvh_status atrbvh_i_cpu_morton(atrbvh_device *dev, atrbvh_i_run *run,
     const int vector = atrbvh_i_avx2();
     const uint32_t n = run->n;
     const int blocks = (int)atrbvh_i_sort_blocks(n, run->cfg->threads);
-    const int team = run->cfg->threads < blocks ? run->cfg->threads : blocks;
+    const int team = atrbvh_i_team(blocks, run->cfg->threads);
     uint64_t *keys, key_or = 0, key_and = ~(uint64_t)0;
     atrbvh_i_join join = {0};
     uint32_t *order, *counts = NULL;

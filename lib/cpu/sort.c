@@ -63,19 +63,8 @@ atrbvh_status atrbvh_i_radix_sort(uint64_t *keys, uint32_t *values,
 
 uint32_t atrbvh_i_sort_blocks(uint32_t n, int threads)
 {
-    /* ATRBVH_I_BLOCKS_PER_THREAD blocks a thread, taken in turn
-     * (cpu.h) */
-    uint32_t blocks = threads < 2 ? 1u
-                      : threads > MAX_BLOCKS / ATRBVH_I_BLOCKS_PER_THREAD
-                          ? MAX_BLOCKS
-                          : (uint32_t)threads * ATRBVH_I_BLOCKS_PER_THREAD;
+    const uint32_t blocks = (uint32_t)atrbvh_i_blocks_for(threads, MAX_BLOCKS);
     return blocks > n ? (n ? n : 1u) : blocks;
-}
-
-/* The team for `blocks` blocks on `threads` threads. */
-static int team(int blocks, int threads)
-{
-    return threads < 1 ? 1 : threads < blocks ? threads : blocks;
 }
 
 /* Not inlined: in the region's function the loop reloaded its pointers,
@@ -208,7 +197,7 @@ static atrbvh_status sort_big(uint64_t *keys, uint32_t *values,
     atrbvh_i_join join = {0};
     int64_t i;
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(team(blocks, threads)) \
+#pragma omp parallel for num_threads(atrbvh_i_team(blocks, threads)) \
     schedule(static) reduction(| : varying)
 #endif
     for (i = 1; i < (int64_t)len; i++)
@@ -230,7 +219,7 @@ static atrbvh_status sort_big(uint64_t *keys, uint32_t *values,
         return ATRBVH_ERR_NOMEM;
     }
 #ifdef _OPENMP
-#pragma omp parallel num_threads(team(blocks, threads))
+#pragma omp parallel num_threads(atrbvh_i_team(blocks, threads))
 #endif
     {
         int b;
@@ -288,7 +277,7 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
     /* buckets of more than `big` keys (shared/sort.h's atrbvh_sort_big):
      * sort_big, after the others */
     const uint32_t big =
-        atrbvh_sort_big(n, (uint32_t)team(blocks, threads));
+        atrbvh_sort_big(n, (uint32_t)atrbvh_i_team(blocks, threads));
     atrbvh_status st = ATRBVH_OK;
     uint32_t *counts, *start;
     atrbvh_i_join join = {0};
@@ -305,7 +294,7 @@ static atrbvh_status msd_sort(uint64_t *keys, uint32_t *values,
     }
 
 #ifdef _OPENMP
-#pragma omp parallel num_threads(team(blocks, threads))
+#pragma omp parallel num_threads(atrbvh_i_team(blocks, threads))
 #endif
     {
         int b;
