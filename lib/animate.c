@@ -263,6 +263,12 @@ atrbvh_status atrbvh_refit(atrbvh_bvh *bvh, const atrbvh_geometry *geometry,
     st = check_args(fn, bvh, geometry, options, &req, &in, error);
     if (st != ATRBVH_OK)
         return st;
+    /* sah_built, the drift's reference, is the SAH of the nodes as built */
+    st = atrbvh_i_bvh_settle_stats(bvh);
+    if (st != ATRBVH_OK)
+        return atrbvh_i_fail(error, st, NO_INDEX,
+                             "%s: cannot measure the tree as built (%s)", fn,
+                             atrbvh_strerror(st));
     atrbvh_i_bvh_drop_wide(bvh); /* the nodes change */
     st = dev_get(&a, &req, 0, error);
     if (st != ATRBVH_OK)
@@ -525,7 +531,8 @@ atrbvh_status atrbvh_reoptimise(atrbvh_bvh *bvh,
                    out.prim_count * sizeof *out.prim_indices);
             bvh->node_count = out.node_count;
             bvh->node_capacity = cap;
-            bvh->stats = out.stats;
+            bvh->stats = out.stats; /* measured (reopt_run) */
+            bvh->stats_pending = 0;
             bvh->stats.method = req.cfg.method;
             bvh->stats.treelet_size = req.cfg.treelet_size;
             bvh->stats.rounds = req.cfg.rounds;

@@ -321,7 +321,8 @@ typedef struct atrbvh_stats {
     unsigned rounds;         /* 0 for LBVH                              */
     atrbvh_backend backend;
     int threads;             /* threads the build ran with              */
-    double build_ms;         /* whole build, wall clock                 */
+    double build_ms;         /* whole build, wall clock (not the
+                                measure of atrbvh_bvh_stats)            */
     /* added with animation (atrbvh_refit): */
     double sah_built;        /* SAH when built, loaded or re-optimised;
                                 sah / sah_built is a refitted tree's
@@ -344,10 +345,14 @@ ATRBVH_API const atrbvh_node *atrbvh_bvh_nodes(const atrbvh_bvh *bvh,
 ATRBVH_API const uint32_t *atrbvh_bvh_primitive_indices(const atrbvh_bvh *bvh,
                                                         size_t *count);
 /* Fills the first `size` bytes of *stats (size: the caller's
- * sizeof(atrbvh_stats); the atrbvh_bvh_stats macro passes it).  Returns
+ * sizeof(atrbvh_stats); the atrbvh_bvh_stats macro passes it).  A build
+ * leaves leaves, max_depth, max_leaf_primitives and the SAH to this call,
+ * which measures them (a pass over the nodes, every call until the tree
+ * is refitted or re-optimised; not in build_ms).  Returns
  * ATRBVH_ERR_INVALID_ARGUMENT, *stats untouched, when a pointer is NULL or
  * size is not the size of a version of the struct (the first, ending
- * with build_ms, or this one). */
+ * with build_ms, or this one); ATRBVH_ERR_NOMEM or ATRBVH_ERR_BACKEND,
+ * *stats untouched, when that measure fails (atrbvh_bvh_stats(3)). */
 ATRBVH_API atrbvh_status atrbvh_bvh_stats_sized(const atrbvh_bvh *bvh,
                                                 atrbvh_stats *stats,
                                                 size_t size);

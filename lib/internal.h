@@ -120,6 +120,12 @@ struct atrbvh_bvh {
                    (atrbvh_i_bvh_drop_wide). */
     void *wide_tris; /* beside it, the triangles of the leaves for one
                         geometry (lib/traverse.c); dropped with it */
+    /* A build leaves the statistics that take a pass over the nodes
+     * (leaves, max_depth, max_leaf_primitives, sah, sah_built) to their
+     * first reader: atrbvh_i_bvh_stats_of measures them into a copy,
+     * atrbvh_i_bvh_settle_stats into stats (lib/bvh.c).  0: stats holds
+     * them (a loaded, refitted or re-optimised tree, a debug build). */
+    int stats_pending;
 };
 
 /* Frees the 4-wide copy of the tree (lib/traverse.c); the next uncounted
@@ -216,6 +222,14 @@ atrbvh_status atrbvh_i_bvh_measure(atrbvh_bvh *bvh);
  * subtrees side by side; ATRBVH_ERR_BACKEND when the array is not such a
  * tree, ATRBVH_ERR_NOMEM. */
 atrbvh_status atrbvh_i_bvh_measure_built(atrbvh_bvh *bvh, int threads);
+/* The statistics of `b` into *out: its stats, with the pending fields
+ * (stats_pending) measured as atrbvh_i_bvh_measure_built does, on the
+ * build's threads; b is not changed.  ATRBVH_ERR_BACKEND, ATRBVH_ERR_NOMEM
+ * as there. */
+atrbvh_status atrbvh_i_bvh_stats_of(const atrbvh_bvh *b, atrbvh_stats *out);
+/* The same into b->stats, none pending after it: before anything changes
+ * the nodes (atrbvh_refit's drift is against the SAH as built). */
+atrbvh_status atrbvh_i_bvh_settle_stats(atrbvh_bvh *b);
 /* The statistics both measures end with: counts, depth, SAH (bvh.c). */
 void atrbvh_i_bvh_set_stats(atrbvh_bvh *b, size_t leaves, unsigned depth,
                             unsigned largest);

@@ -155,13 +155,13 @@ static atrbvh_status invalid_first(atrbvh_i_run *run, atrbvh_status st,
     return bad;
 }
 
-/* Statistics of the tree built, the device record, stage times. */
+/* The tree's counts and how it was built, the device record, stage times
+ * (the statistics of a pass over the nodes wait: lib/bvh.c). */
 static atrbvh_status finish(atrbvh_bvh *bvh, atrbvh_device *dev,
                             const atrbvh_i_run *run, const double *stage_ms,
                             double t0, atrbvh_error *error)
 {
     const atrbvh_i_config *cfg = run->cfg;
-    atrbvh_status st;
     int s;
     bvh->stats.invalid_skipped = run->invalid;
     bvh->stats.ci = cfg->cost.ci;
@@ -171,20 +171,31 @@ static atrbvh_status finish(atrbvh_bvh *bvh, atrbvh_device *dev,
     bvh->stats.rounds = cfg->rounds;
     bvh->stats.backend = dev->backend->kind;
     bvh->stats.threads = cfg->threads;
-    st = atrbvh_i_bvh_measure_built(bvh, cfg->threads);
-    if (st != ATRBVH_OK)
-        return st == ATRBVH_ERR_NOMEM
-                   ? atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
-                                   "cannot allocate statistics scratch for "
-                                   "%lu nodes",
-                                   (unsigned long)bvh->node_count)
-                   : atrbvh_i_fail(error, ATRBVH_ERR_BACKEND, NO_INDEX,
-                                   "internal error: the built tree is "
-                                   "invalid");
+    /* The counts a reader can have at once; the rest (a pass over the
+     * nodes: 7-10% of an LBVH on 2 threads) waits for the first request
+     * (atrbvh_bvh_stats, lib/bvh.c), as the tree's users need none of
+     * it to trace. */
+    bvh->stats.nodes = bvh->node_count;
+    bvh->stats.primitives = bvh->split_prims ? bvh->split_prims
+                                             : bvh->prim_count;
+    bvh->stats_pending = 1;
 #ifdef ATRBVH_DEBUG_CHECKS
-    st = atrbvh_i_bvh_check(bvh, 1, error);
-    if (st != ATRBVH_OK)
-        return st;
+    {
+        /* measured at once: the walk checks the layout's order too */
+        atrbvh_status st = atrbvh_i_bvh_settle_stats(bvh);
+        if (st != ATRBVH_OK)
+            return st == ATRBVH_ERR_NOMEM
+                       ? atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                                       "cannot allocate statistics scratch "
+                                       "for %lu nodes",
+                                       (unsigned long)bvh->node_count)
+                       : atrbvh_i_fail(error, ATRBVH_ERR_BACKEND, NO_INDEX,
+                                       "internal error: the built tree is "
+                                       "invalid");
+        st = atrbvh_i_bvh_check(bvh, 1, error);
+        if (st != ATRBVH_OK)
+            return st;
+    }
 #endif
     if (dev->backend->kind != ATRBVH_BACKEND_CPU) {
         const char *name;

@@ -1,7 +1,7 @@
 /*
  * sah.c - the SAH cost of a node array (the slides' equation 1), measured
  * on the tree actually built, never an estimate; and the sums behind it,
- * which the statistics pass after a build (bvh.c) shares.
+ * which the statistics pass over a built tree (bvh.c) shares.
  *
  * The two sums (internal areas; leaf areas times their counts) are taken
  * in node order, serially: the same bits on every run, for any thread

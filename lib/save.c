@@ -20,6 +20,8 @@ static atrbvh_status serialise(const atrbvh_bvh *bvh, unsigned char **data,
     size_t total, nodes_bytes, prims_bytes, i;
     unsigned char *buf, *p;
     uint64_t input;
+    atrbvh_stats stats;
+    atrbvh_status st;
     if (bvh->node_count == 0 || bvh->prim_count == 0 || !bvh->nodes ||
         !bvh->prim_indices)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, (uint64_t)-1,
@@ -33,6 +35,12 @@ static atrbvh_status serialise(const atrbvh_bvh *bvh, unsigned char **data,
                              "large to save in memory",
                              (unsigned long)bvh->node_count,
                              (unsigned long)bvh->prim_count);
+    /* the header's SAH: a build leaves it to its first reader (bvh.c) */
+    st = atrbvh_i_bvh_stats_of(bvh, &stats);
+    if (st != ATRBVH_OK)
+        return atrbvh_i_fail(error, st, (uint64_t)-1,
+                             "cannot measure the BVH's SAH (%s)",
+                             atrbvh_strerror(st));
     total = HEADER_SIZE + nodes_bytes + prims_bytes + CRC_SIZE;
     buf = (unsigned char *)atrbvh_i_malloc(total);
     if (!buf)
@@ -56,7 +64,7 @@ static atrbvh_status serialise(const atrbvh_bvh *bvh, unsigned char **data,
     put_u64(buf + 48, input);
     put_f64(buf + 56, bvh->stats.ci);
     put_f64(buf + 64, bvh->stats.ct);
-    put_f64(buf + 72, bvh->stats.sah);
+    put_f64(buf + 72, stats.sah);
     put_u32(buf + 80, (uint32_t)bvh->stats.backend);
     p = buf + HEADER_SIZE;
     for (i = 0; i < bvh->node_count; i++, p += NODE_SIZE) {

@@ -148,6 +148,16 @@ START_TEST(round_trip_memory)
             ck_assert_uint_eq(rd64(d + 32), nn);
             ck_assert_uint_eq(rd64(d + 40), np);
             ck_assert_uint_eq(rd64(d + 48), sizes[s]);
+            {
+                /* the header's SAH: the tree's, which the build left to
+                 * its first reader, here the save (lib/bvh.c) */
+                atrbvh_stats st;
+                uint64_t bits;
+                ck_assert_int_eq(atrbvh_bvh_stats(b, &st), ATRBVH_OK);
+                ck_assert(st.sah > 0.0);
+                memcpy(&bits, &st.sah, sizeof bits);
+                ck_assert_uint_eq(rd64(d + 72), bits);
+            }
             ck_assert_uint_eq(tu_rd32(d + n - 4), tu_crc32(d, n - 4));
             for (i = 0; i < nn; i++) {
                 const unsigned char *q = d + 96 + 32 * i;

@@ -5,6 +5,8 @@
  * pass against the refit's climb, the Morton key properties, and the
  * statistics walk after a build on trees deeper than its stack.
  */
+#include "config.h" /* ATRBVH_DEBUG_CHECKS */
+
 #include <check.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -656,6 +658,73 @@ static atrbvh_bvh *uneven_tree(size_t leaves)
     return b;
 }
 
+/* A build leaves its statistics of a pass over the nodes (leaves, depth,
+ * largest leaf, SAH) to their first reader (lib/bvh.c): the getter
+ * measures them into its copy, keeping nothing in the const tree, and
+ * gives what the general walk and atrbvh_sah give, the same at every
+ * call; settling them into the tree gives the same again.  Trees of
+ * more than 65,536 nodes, so that the measure runs on its threads. */
+START_TEST(stats_measured_when_first_read)
+{
+    static const atrbvh_method methods[] = {ATRBVH_METHOD_LBVH,
+                                            ATRBVH_METHOD_ATRBVH,
+                                            ATRBVH_METHOD_TRBVH};
+    static const int threads[] = {1, 3};
+    const size_t T = 40000;
+    float *v = tu_random_triangles(T, 77, 1.0f, 0.0f);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * T, NULL, T);
+    size_t m, t;
+    for (m = 0; m < 3; m++)
+        for (t = 0; t < 2; t++) {
+            atrbvh_build_options o;
+            atrbvh_stats x, y;
+            atrbvh_bvh *b, general;
+            double sah;
+            char what[48];
+            atrbvh_build_options_init(&o);
+            o.method = methods[m];
+            o.max_leaf_size = 1;
+            o.threads = threads[t];
+            b = tu_build(&g, &o);
+            ck_assert_uint_gt(b->node_count, 65536);
+#ifndef ATRBVH_DEBUG_CHECKS
+            ck_assert_int_eq(b->stats_pending, 1); /* (debug: measured) */
+#endif
+            ck_assert_int_eq(atrbvh_bvh_stats(b, &x), ATRBVH_OK);
+            ck_assert_int_eq(atrbvh_bvh_stats(b, &y), ATRBVH_OK);
+            ck_assert(memcmp(&x, &y, sizeof x) == 0);
+#ifndef ATRBVH_DEBUG_CHECKS
+            ck_assert_int_eq(b->stats_pending, 1);
+#endif
+            sah = atrbvh_sah(b->nodes, b->node_count, x.ci, x.ct);
+            ck_assert(memcmp(&x.sah_built, &x.sah, sizeof sah) == 0);
+            general = *b; /* the general walk into a copy of the stats */
+            ck_assert_int_eq(atrbvh_i_bvh_measure(&general), ATRBVH_OK);
+            ck_assert_uint_eq(x.nodes, b->node_count);
+            ck_assert_uint_eq(x.primitives, T);
+            ck_assert_uint_eq(x.leaves, general.stats.leaves);
+            ck_assert_uint_eq(x.max_depth, general.stats.max_depth);
+            ck_assert_uint_eq(x.max_leaf_primitives,
+                              general.stats.max_leaf_primitives);
+            snprintf(what, sizeof what, "method %d, %d threads",
+                     (int)methods[m], threads[t]);
+            ck_assert_msg(memcmp(&x.sah, &sah, sizeof sah) == 0 &&
+                              memcmp(&general.stats.sah, &sah,
+                                     sizeof sah) == 0,
+                          "%s: SAH %.17g (read) %.17g (general), atrbvh_sah "
+                          "%.17g",
+                          what, x.sah, general.stats.sah, sah);
+            ck_assert_int_eq(atrbvh_i_bvh_settle_stats(b), ATRBVH_OK);
+            ck_assert_int_eq(b->stats_pending, 0);
+            ck_assert(memcmp(&b->stats, &x, sizeof x) == 0);
+            ck_assert_int_eq(atrbvh_bvh_stats(b, &y), ATRBVH_OK);
+            ck_assert(memcmp(&x, &y, sizeof x) == 0);
+            atrbvh_bvh_free(b);
+        }
+    free(v);
+}
+END_TEST
+
 /* The statistics pass on trees large enough for its threads (the top cut
  * into subtrees walked side by side, the sums beside them): for 1, 2, 3
  * and 8 threads the statistics of the general walk (check.c) and the SAH
@@ -882,6 +951,7 @@ int main(void)
     tcase_add_test(tc, hierarchy_refit_is_the_refit);
     tcase_add_test(tc, measure_walk_deep_trees);
     tcase_add_test(tc, measure_built_threads);
+    tcase_add_test(tc, stats_measured_when_first_read);
     tcase_add_test(tc, sah_sums_vector_is_scalar);
     tcase_add_test(tc, large_arrays_advise_huge_pages);
     suite_add_tcase(s, tc);
