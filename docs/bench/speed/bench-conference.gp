@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [15.9467303:202.275739]
-set xtics (20, 50, 100, 200)
+set xrange [13.7220932:189.90263]
+set xtics (20, 50, 100)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 17.442684,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 42.6785304,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 45.643628,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 51.1834779,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 42.0346353,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 81.6560237,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 102.321465,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 49.2394331,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 28.5939631,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 121.877404,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 81.9094105,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 20.5416989,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 69.4952664,38.1056054 left font ',8' noenhanced front
+set label 'LBVH' at 15.0555836,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 41.6324137,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 44.2281144,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 51.3861134,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 39.6744198,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 75.4794325,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 90.7913683,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 46.3358198,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 27.2299986,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 112.083834,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 81.6449081,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 19.1499825,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 66.9085223,39.3747167 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

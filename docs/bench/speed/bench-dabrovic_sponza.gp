@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [4.36985962:37.5637408]
+set xrange [2.44128811:35.2562324]
 set xtics (5, 10, 20)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 5.82566829,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 12.2020022,77.3438007 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 9.86855291,73.4949382 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 15.3479675,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 16.2175943,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 21.6760568,72.4804162 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 24.4593731,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 20.0517026,67.3811989 left font ',8' noenhanced front
-set label 'embree_low' at 6.83731551,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 19.9311716,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 15.0231058,79.1043654 left font ',8' noenhanced front
-set label 'LBVH/cl' at 4.45763043,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 11.6942129,71.690965 left font ',8' noenhanced front
+set label 'LBVH' at 2.68256016,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 8.40155798,77.3438007 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 6.32816145,73.4949382 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 9.81865896,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 7.75138192,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 16.1074803,72.4804162 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 18.7652383,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 13.6479939,67.3811989 left font ',8' noenhanced front
+set label 'embree_low' at 5.48351921,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 20.7003995,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 14.4539742,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 3.49041045,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 13.403127,74.3990865 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [47.0522651:545.532455]
+set xrange [41.1602739:623.787789]
 set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 62.7655963,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 124.401819,63.4134696 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 97.0946143,61.8432232 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 150.525223,62.4957022 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 118.37368,60.8121607 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 145.904064,59.8198299 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 252.643049,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 188.631948,61.3999923 left font ',8' noenhanced front
-set label 'embree_low' at 73.5744657,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 333.43915,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 248.264565,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 48.1302643,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 189.706761,62.7480041 left font ',8' noenhanced front
+set label 'LBVH' at 55.7621166,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 126.707312,62.7681885 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 89.8794168,62.4885043 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 106.496461,61.2051399 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 109.137812,60.1668795 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 151.908335,59.8198299 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 250.095616,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 189.209904,62.0452734 left font ',8' noenhanced front
+set label 'embree_low' at 81.4393341,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 362.746622,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 245.036924,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 42.207653,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 200.199955,62.7480041 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
