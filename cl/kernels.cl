@@ -152,30 +152,136 @@ static atrbvh_box bounds_zero_box(void)
     return z;
 }
 
+/* Triangles j .. j+7 by atrbvh_prim_box_triangle's common case, lane k
+ * triangle j+k, when all eight take it (their indices in range, their
+ * nine coordinates' sum finite): the same comparisons in the same operand
+ * order and the same sum, then atrbvh_scene_add's into the lanes of acc
+ * (scene min x, y, z, max x, y, z, then the centroids' alike): the CPU's
+ * eight-wide sweep (lib/prims.c, tri8_avx2) in OpenCL's vector types.
+ * Returns 1 with the eight boxes written, or 0 with nothing written (the
+ * caller takes the eight one at a time). */
+static int bounds_tri8(__global const float *vertices, ulong vstride,
+                       ulong vcount, __global const uint *indices,
+                       ulong istride, int indexed, uint j,
+                       __global atrbvh_box *boxes, float8 *acc)
+{
+    ulong at[3][8];
+    float8 c[3][3], mn[3], mx[3], sum, lo, hi;
+    int corner, k, l;
+    for (corner = 0; corner < 3; corner++)
+        for (l = 0; l < 8; l++) {
+            at[corner][l] = atrbvh_fetch_vertex_id(
+                indices, istride, indexed, (ulong)j + (ulong)l, corner);
+            if (at[corner][l] >= vcount)
+                return 0;
+            at[corner][l] *= vstride;
+        }
+    for (corner = 0; corner < 3; corner++)
+        for (k = 0; k < 3; k++)
+            c[corner][k] = (float8)(
+                vertices[at[corner][0] + k], vertices[at[corner][1] + k],
+                vertices[at[corner][2] + k], vertices[at[corner][3] + k],
+                vertices[at[corner][4] + k], vertices[at[corner][5] + k],
+                vertices[at[corner][6] + k], vertices[at[corner][7] + k]);
+    /* the rule's sum, a0 + a1 + a2 + b0 + ... + d2 in that order */
+    sum = c[0][0] + c[0][1];
+    sum = sum + c[0][2];
+    sum = sum + c[1][0];
+    sum = sum + c[1][1];
+    sum = sum + c[1][2];
+    sum = sum + c[2][0];
+    sum = sum + c[2][1];
+    sum = sum + c[2][2];
+    if (!all(isequal(sum - sum, (float8)(0.0f))))
+        return 0;
+    for (k = 0; k < 3; k++) {
+        /* lo = b < a ? b : a; min = d < lo ? d : lo (and max alike) */
+        lo = select(c[0][k], c[1][k], c[1][k] < c[0][k]);
+        hi = select(c[0][k], c[1][k], c[1][k] > c[0][k]);
+        mn[k] = select(lo, c[2][k], c[2][k] < lo);
+        mx[k] = select(hi, c[2][k], c[2][k] > hi);
+        /* atrbvh_scene_add: the box, then its centre */
+        acc[k] = select(acc[k], mn[k], mn[k] < acc[k]);
+        acc[3 + k] = select(acc[3 + k], mx[k], mx[k] > acc[3 + k]);
+        sum = 0.5f * mn[k] + 0.5f * mx[k];
+        acc[6 + k] = select(acc[6 + k], sum, sum < acc[6 + k]);
+        acc[9 + k] = select(acc[9 + k], sum, sum > acc[9 + k]);
+    }
+    {
+        float t[6][8]; /* (a vector's lanes take constant subscripts) */
+        for (k = 0; k < 3; k++) {
+            vstore8(mn[k], 0, t[k]);
+            vstore8(mx[k], 0, t[3 + k]);
+        }
+        for (l = 0; l < 8; l++) {
+            atrbvh_box b;
+            for (k = 0; k < 3; k++) {
+                b.min[k] = t[k][l];
+                b.max[k] = t[3 + k][l];
+            }
+            boxes[j + (uint)l] = b;
+        }
+    }
+    return 1;
+}
+
 __kernel void bounds_triangles(__global const float *vertices,
                                __global const uint *indices,
                                __global atrbvh_box *boxes,
                                __global atrbvh_bounds_record *rec,
                                __global uint *sync, atrbvh_kargs_bounds a)
 {
-    uint w = (uint)get_global_id(0), lo, hi, i, bad = 0u, why;
+    uint w = (uint)get_global_id(0), lo, hi, i, bad = 0u, why, l;
     atrbvh_box scene, centroids, b;
+    float8 acc[12];
+    int k;
     if (w >= a.parts)
         return;
     atrbvh_block_range(a.n, w, a.parts, &lo, &hi);
     scene = atrbvh_box_empty();
     centroids = atrbvh_box_empty();
-    for (i = lo; i < hi; i++) {
-        why = 0u;
-        if (atrbvh_prim_box_triangle(vertices, a.vstride, a.vertex_count,
-                                     indices, a.istride, (int)a.indexed,
-                                     (ulong)i, &b, &why) != ATRBVH_PRIM_OK) {
-            bad++;
-            b = bounds_zero_box();
-        } else {
-            atrbvh_scene_add(&scene, &centroids, b);
+    for (k = 0; k < 3; k++) {
+        acc[k] = acc[6 + k] = (float8)(INFINITY);
+        acc[3 + k] = acc[9 + k] = (float8)(-INFINITY);
+    }
+    for (i = lo; i < hi; i += 8u) {
+        uint top = hi - i < 8u ? hi : i + 8u, j;
+        if (top - i == 8u &&
+            bounds_tri8(vertices, a.vstride, a.vertex_count, indices,
+                        a.istride, (int)a.indexed, i, boxes, acc))
+            continue;
+        for (j = i; j < top; j++) {
+            why = 0u;
+            if (atrbvh_prim_box_triangle(vertices, a.vstride, a.vertex_count,
+                                         indices, a.istride, (int)a.indexed,
+                                         (ulong)j, &b,
+                                         &why) != ATRBVH_PRIM_OK) {
+                bad++;
+                b = bounds_zero_box();
+            } else {
+                atrbvh_scene_add(&scene, &centroids, b);
+            }
+            boxes[j] = b;
         }
-        boxes[i] = b;
+    }
+    /* the lanes into the boxes, lane by lane as boxes would be added (in
+     * any order the same values, up to the sign of a zero, which no
+     * Morton frame or SAH distinguishes: lib/prims.c's tri_acc_done) */
+    {
+        float t[12][8];
+        for (k = 0; k < 12; k++)
+            vstore8(acc[k], 0, t[k]);
+        for (l = 0; l < 8u; l++) {
+            atrbvh_box s8, c8;
+            for (k = 0; k < 3; k++) {
+                s8.min[k] = t[k][l];
+                s8.max[k] = t[3 + k][l];
+                c8.min[k] = t[6 + k][l];
+                c8.max[k] = t[9 + k][l];
+            }
+            scene = atrbvh_box_union(scene, s8);
+            centroids = atrbvh_box_union(centroids, c8);
+        }
     }
     bounds_part(rec, sync, w, a.parts, scene, centroids, bad);
 }

@@ -267,6 +267,67 @@ START_TEST(extremes_boxes_and_invalid)
 }
 END_TEST
 
+/* The bounds kernel takes eight triangles at a time when all eight are
+ * in the common case, else one at a time (cl/kernels.cl, bounds_tri8):
+ * every stage's output the CPU's (atrbvh_validate_backends) for a packed
+ * soup and for strided indices and vertices, with counts that leave
+ * partial groups at the ends of the kernel's blocks, and with skip_invalid
+ * where NaN and infinite coordinates fall at every lane of a group. */
+START_TEST(bounds_eight_at_a_time)
+{
+    static const size_t counts[] = {7, 8, 9, 1003};
+    size_t c, i, k;
+    REQUIRE_DEVICE();
+    for (c = 0; c < sizeof counts / sizeof counts[0]; c++) {
+        const size_t n = counts[c];
+        float *v = tu_random_triangles(n, 40 + c, 4.0f, -2.0f);
+        float *sv = malloc(3 * n * 5 * sizeof *sv); /* 5 floats a vertex */
+        uint32_t *idx = malloc(n * 4 * sizeof *idx); /* 4 words a triangle */
+        atrbvh_geometry g;
+        atrbvh_build_options o;
+        atrbvh_error e;
+        int identical = 0;
+        char what[64];
+        ck_assert(sv != NULL && idx != NULL);
+        for (i = 0; i < 3 * n; i++) /* vertex i of the soup at 3n-1-i */
+            for (k = 0; k < 5; k++)
+                sv[5 * (3 * n - 1 - i) + k] = k < 3 ? v[3 * i + k] : -7.0f;
+        for (i = 0; i < n; i++) {
+            for (k = 0; k < 3; k++)
+                idx[4 * i + k] = (uint32_t)(3 * n - 1 - (3 * i + k));
+            idx[4 * i + 3] = 0xdeadbeefu;
+        }
+        snprintf(what, sizeof what, "%lu packed", (unsigned long)n);
+        g = atrbvh_geometry_triangles(v, 3 * n, NULL, n);
+        expect_identical(&g, &sample[0], what);
+        expect_identical(&g, &sample[3], what);
+        snprintf(what, sizeof what, "%lu strided", (unsigned long)n);
+        g = atrbvh_geometry_triangles(sv, 3 * n, idx, n);
+        g.vertex_stride = 5 * sizeof(float);
+        g.index_stride = 4 * sizeof(uint32_t);
+        expect_identical(&g, &sample[0], what);
+        if (n >= 16) {
+            /* a bad coordinate in lane k of group k, for every lane */
+            for (k = 0; k < 8; k++)
+                v[9 * (8 * k + k) + k % 9] =
+                    k % 2 ? 1.0f / 0.0f : 0.0f / 0.0f;
+            g = atrbvh_geometry_triangles(v, 3 * n, NULL, n);
+            atrbvh_build_options_init(&o);
+            o.method = ATRBVH_METHOD_LBVH;
+            o.skip_invalid = 1;
+            o.threads = 2;
+            ck_assert_int_eq(atrbvh_validate_backends(&g, &o, &identical, &e),
+                             ATRBVH_OK);
+            ck_assert_msg(identical, "%lu, skip_invalid: %s",
+                          (unsigned long)n, e.text);
+        }
+        free(v);
+        free(sv);
+        free(idx);
+    }
+}
+END_TEST
+
 /* ---------------------------------------------------------- real scenes */
 START_TEST(real_scenes)
 {
@@ -976,6 +1037,7 @@ static Suite *opencl_suite(void)
     tc = tcase_create("extremes");
     tcase_add_test(tc, extremes_flat_and_coincident);
     tcase_add_test(tc, extremes_boxes_and_invalid);
+    tcase_add_test(tc, bounds_eight_at_a_time);
     tcase_add_test(tc, device_sort_adversarial_keys);
     tcase_set_timeout(tc, 300);
     suite_add_tcase(s, tc);
