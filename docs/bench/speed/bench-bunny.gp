@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.49507916:39.909195]
+set xrange [2.50113701:41.6635603]
 set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 4.41933997,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 7.71017263,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 5.98809145,39.0414315 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 8.97833378,39.3432138 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 8.05355201,38.4286758 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 11.502022,38.0467183 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 16.5487287,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 7.94737063,37.9447354 left font ',8' noenhanced front
-set label 'embree_low' at 5.23276696,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 17.3191565,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 24.555986,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.90901748,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 14.2986068,39.0521322 left font ',8' noenhanced front
+set label 'LBVH' at 2.76220797,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 7.78399259,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 5.7805047,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 8.83834506,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 6.97720195,38.4286758 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 9.55122295,38.1317351 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 16.6710747,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.4726419,39.1916483 left font ',8' noenhanced front
+set label 'embree_low' at 4.73275537,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 15.8882568,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 23.7757606,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 3.53356375,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 11.8181648,38.740404 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [12.4434875:199.783969]
+set xrange [12.2137689:195.80138]
 set xtics (20, 50, 100)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 16.2593221,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 39.1141416,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 45.6033125,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 51.4909223,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 38.2960619,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 77.8789606,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 89.8076608,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 44.1136305,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 27.0223601,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 77.3674812,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 114.849619,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 21.0662454,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 65.3169659,39.3747167 left font ',8' noenhanced front
+set label 'LBVH' at 13.4704096,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 39.7878915,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 44.4377397,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 48.6490991,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 38.4179978,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 76.3730274,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 89.3006964,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 45.1785271,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 26.7247391,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 112.465366,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 80.2969759,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 18.2582824,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 63.9584705,39.3747167 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
