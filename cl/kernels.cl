@@ -231,7 +231,7 @@ __kernel void bounds_triangles(__global const float *vertices,
                                __global atrbvh_bounds_record *rec,
                                __global uint *sync, atrbvh_kargs_bounds a)
 {
-    uint w = (uint)get_global_id(0), lo, hi, i, bad = 0u, why, l;
+    uint w = (uint)get_global_id(0), lo, hi, i, top, bad = 0u, why, l;
     atrbvh_box scene, centroids, b;
     float8 acc[12];
     int k;
@@ -244,8 +244,10 @@ __kernel void bounds_triangles(__global const float *vertices,
         acc[k] = acc[6 + k] = (float8)(INFINITY);
         acc[3 + k] = acc[9 + k] = (float8)(-INFINITY);
     }
-    for (i = lo; i < hi; i += 8u) {
-        uint top = hi - i < 8u ? hi : i + 8u, j;
+    /* (i = top: i + 8 could wrap past a block ending near 2^32) */
+    for (i = lo; i < hi; i = top) {
+        uint j;
+        top = hi - i < 8u ? hi : i + 8u;
         if (top - i == 8u &&
             bounds_tri8(vertices, a.vstride, a.vertex_count, indices,
                         a.istride, (int)a.indexed, i, boxes, acc))
