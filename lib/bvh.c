@@ -283,8 +283,8 @@ atrbvh_status atrbvh_i_bvh_settle_stats(atrbvh_bvh *b)
     atrbvh_status st;
     if (!b->stats_pending)
         return ATRBVH_OK;
-    st = atrbvh_i_bvh_measure_built(
-        b, atrbvh_i_resolve_threads(b->stats.threads));
+    /* (stats_of measures into its copy before it writes *out) */
+    st = atrbvh_i_bvh_stats_of(b, &b->stats);
     if (st == ATRBVH_OK)
         b->stats_pending = 0;
     return st;

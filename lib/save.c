@@ -35,7 +35,8 @@ static atrbvh_status serialise(const atrbvh_bvh *bvh, unsigned char **data,
                              "large to save in memory",
                              (unsigned long)bvh->node_count,
                              (unsigned long)bvh->prim_count);
-    /* the header's SAH: a build leaves it to its first reader (bvh.c) */
+    /* the header's statistics, its SAH measured here when the build left
+     * it to its first reader (bvh.c) */
     st = atrbvh_i_bvh_stats_of(bvh, &stats);
     if (st != ATRBVH_OK)
         return atrbvh_i_fail(error, st, (uint64_t)-1,
@@ -47,7 +48,7 @@ static atrbvh_status serialise(const atrbvh_bvh *bvh, unsigned char **data,
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "out of memory for a %lu-byte BVH file image",
                              (unsigned long)total);
-    input = (uint64_t)bvh->stats.primitives + bvh->stats.invalid_skipped;
+    input = (uint64_t)stats.primitives + stats.invalid_skipped;
     if (input < bvh->prim_count && !bvh->split_prims)
         input = bvh->prim_count;
     memset(buf, 0, HEADER_SIZE);
@@ -56,16 +57,16 @@ static atrbvh_status serialise(const atrbvh_bvh *bvh, unsigned char **data,
     put_u32(buf + 8, bvh->split_prims ? FILE_VERSION_SPLIT : FILE_VERSION);
     put_u32(buf + 12, HEADER_SIZE);
     put_u32(buf + 16, bvh->split_prims ? FILE_FLAG_SPLIT : 0u);
-    put_u32(buf + 20, (uint32_t)bvh->stats.method);
-    put_u32(buf + 24, bvh->stats.treelet_size);
-    put_u32(buf + 28, bvh->stats.rounds);
+    put_u32(buf + 20, (uint32_t)stats.method);
+    put_u32(buf + 24, stats.treelet_size);
+    put_u32(buf + 28, stats.rounds);
     put_u64(buf + 32, (uint64_t)bvh->node_count);
     put_u64(buf + 40, (uint64_t)bvh->prim_count);
     put_u64(buf + 48, input);
-    put_f64(buf + 56, bvh->stats.ci);
-    put_f64(buf + 64, bvh->stats.ct);
+    put_f64(buf + 56, stats.ci);
+    put_f64(buf + 64, stats.ct);
     put_f64(buf + 72, stats.sah);
-    put_u32(buf + 80, (uint32_t)bvh->stats.backend);
+    put_u32(buf + 80, (uint32_t)stats.backend);
     p = buf + HEADER_SIZE;
     for (i = 0; i < bvh->node_count; i++, p += NODE_SIZE) {
         const atrbvh_node *n = &bvh->nodes[i];
