@@ -154,19 +154,19 @@ static atrbvh_box bounds_zero_box(void)
 
 /* Triangles j .. j+7 by atrbvh_prim_box_triangle's common case, lane k
  * triangle j+k, when all eight take it (their indices in range, their
- * nine coordinates' sum finite): the same comparisons in the same operand
- * order and the same sum, then atrbvh_scene_add's into the lanes of acc
- * (scene min x, y, z, max x, y, z, then the centroids' alike): the CPU's
- * eight-wide sweep (lib/prims.c, tri8_avx2) in OpenCL's vector types.
- * Returns 1 with the eight boxes written, or 0 with nothing written (the
- * caller takes the eight one at a time). */
+ * nine coordinates' sum finite): the loads, a lane at a time, and the
+ * stores here, the rule and atrbvh_scene_add's into the lanes of acc in
+ * shared/lanes.h's atrbvh_tri8_boxes, which the CPU's eight-wide sweep
+ * (lib/prims.c, tri8_avx2) runs too.  Returns 1 with the eight boxes
+ * written, or 0 with nothing written (the caller takes the eight one at a
+ * time). */
 static int bounds_tri8(__global const float *vertices, ulong vstride,
                        ulong vcount, __global const uint *indices,
                        ulong istride, int indexed, uint j,
-                       __global atrbvh_box *boxes, float8 *acc)
+                       __global atrbvh_box *boxes, atrbvh_f8 *acc)
 {
     ulong at[3][8];
-    float8 c[3][3], mn[3], mx[3], sum, lo, hi;
+    atrbvh_f8 c[3][3], mn[3], mx[3];
     int corner, k, l;
     for (corner = 0; corner < 3; corner++)
         for (l = 0; l < 8; l++) {
@@ -183,30 +183,8 @@ static int bounds_tri8(__global const float *vertices, ulong vstride,
                 vertices[at[corner][2] + k], vertices[at[corner][3] + k],
                 vertices[at[corner][4] + k], vertices[at[corner][5] + k],
                 vertices[at[corner][6] + k], vertices[at[corner][7] + k]);
-    /* the rule's sum, a0 + a1 + a2 + b0 + ... + d2 in that order */
-    sum = c[0][0] + c[0][1];
-    sum = sum + c[0][2];
-    sum = sum + c[1][0];
-    sum = sum + c[1][1];
-    sum = sum + c[1][2];
-    sum = sum + c[2][0];
-    sum = sum + c[2][1];
-    sum = sum + c[2][2];
-    if (!all(isequal(sum - sum, (float8)(0.0f))))
+    if (!atrbvh_tri8_boxes(c, mn, mx, acc))
         return 0;
-    for (k = 0; k < 3; k++) {
-        /* lo = b < a ? b : a; min = d < lo ? d : lo (and max alike) */
-        lo = select(c[0][k], c[1][k], c[1][k] < c[0][k]);
-        hi = select(c[0][k], c[1][k], c[1][k] > c[0][k]);
-        mn[k] = select(lo, c[2][k], c[2][k] < lo);
-        mx[k] = select(hi, c[2][k], c[2][k] > hi);
-        /* atrbvh_scene_add: the box, then its centre */
-        acc[k] = select(acc[k], mn[k], mn[k] < acc[k]);
-        acc[3 + k] = select(acc[3 + k], mx[k], mx[k] > acc[3 + k]);
-        sum = 0.5f * mn[k] + 0.5f * mx[k];
-        acc[6 + k] = select(acc[6 + k], sum, sum < acc[6 + k]);
-        acc[9 + k] = select(acc[9 + k], sum, sum > acc[9 + k]);
-    }
     {
         float t[6][8]; /* (a vector's lanes take constant subscripts) */
         for (k = 0; k < 3; k++) {
@@ -233,17 +211,14 @@ __kernel void bounds_triangles(__global const float *vertices,
 {
     uint w = (uint)get_global_id(0), lo, hi, i, top, bad = 0u, why, l;
     atrbvh_box scene, centroids, b;
-    float8 acc[12];
+    atrbvh_f8 acc[ATRBVH_TRI8_ACC];
     int k;
     if (w >= a.parts)
         return;
     atrbvh_block_range(a.n, w, a.parts, &lo, &hi);
     scene = atrbvh_box_empty();
     centroids = atrbvh_box_empty();
-    for (k = 0; k < 3; k++) {
-        acc[k] = acc[6 + k] = (float8)(INFINITY);
-        acc[3 + k] = acc[9 + k] = (float8)(-INFINITY);
-    }
+    atrbvh_tri8_acc_init(acc);
     /* (i = top: i + 8 could wrap past a block ending near 2^32) */
     for (i = lo; i < hi; i = top) {
         uint j;
@@ -266,24 +241,12 @@ __kernel void bounds_triangles(__global const float *vertices,
             boxes[j] = b;
         }
     }
-    /* the lanes into the boxes, lane by lane as boxes would be added (in
-     * any order the same values, up to the sign of a zero, which no
-     * Morton frame or SAH distinguishes: lib/prims.c's tri_acc_done) */
+    /* the lanes into the boxes (shared/lanes.h) */
     {
-        float t[12][8];
-        for (k = 0; k < 12; k++)
+        float t[ATRBVH_TRI8_ACC][8];
+        for (k = 0; k < ATRBVH_TRI8_ACC; k++)
             vstore8(acc[k], 0, t[k]);
-        for (l = 0; l < 8u; l++) {
-            atrbvh_box s8, c8;
-            for (k = 0; k < 3; k++) {
-                s8.min[k] = t[k][l];
-                s8.max[k] = t[3 + k][l];
-                c8.min[k] = t[6 + k][l];
-                c8.max[k] = t[9 + k][l];
-            }
-            scene = atrbvh_box_union(scene, s8);
-            centroids = atrbvh_box_union(centroids, c8);
-        }
+        atrbvh_tri8_acc_unite(t, &scene, &centroids);
     }
     bounds_part(rec, sync, w, a.parts, scene, centroids, bad);
 }

@@ -16,9 +16,9 @@
 #include <math.h>
 #include <string.h>
 
-#if (defined(__GNUC__) || defined(__clang__)) &&                            \
-    (defined(__x86_64__) || defined(__i386__))
-#include <immintrin.h>
+/* The eight-wide rule (AVX2 lanes where the compiler has them). */
+#include "shared/lanes.h"
+#ifdef ATRBVH_LANES
 #define PRIMS_AVX2 1
 #endif
 
@@ -142,32 +142,25 @@ atrbvh_status atrbvh_i_check_geometry(const atrbvh_geometry *g,
 #define SWEEP_GROUPS 128
 
 #ifdef PRIMS_AVX2
-/* The scene and centroid boxes of one thread's vector groups, lane by
- * lane: min x, y, z then max x, y, z of each. */
-typedef struct tri_acc {
-    __m256 scene[6], centroids[6];
-} tri_acc;
-
 /* Triangles j .. j+7 by atrbvh_prim_box_triangle's common case, lane k
  * triangle j+k, when all eight take it (their indices in range, their
- * nine coordinates' sum finite): the same comparisons in the same operand
- * order (MINPS and MAXPS are a < b ? a : b and a > b ? a : b, lane for
- * lane the rule's expressions) and the same sum, then atrbvh_scene_add's
- * into the lanes of *acc.  Returns 1 with the eight boxes written, or 0
- * with nothing written (the caller takes the eight one at a time).  The
- * offsets are 32-bit: the caller has checked that every index and vertex
+ * nine coordinates' sum finite): the loads (gathers) and the stores are
+ * this function's, the rule and atrbvh_scene_add's into the lanes of acc
+ * are shared/lanes.h's atrbvh_tri8_boxes, which the OpenCL bounds kernel
+ * runs too.  Returns 1 with the eight boxes written, or 0 with nothing
+ * written (the caller takes the eight one at a time).  The offsets are
+ * 32-bit: the caller has checked that every index and vertex
  * offset of the geometry fits (vertex offsets only once the indices are
  * known to be in range). */
 __attribute__((target("avx2"))) static inline int
 tri8_avx2(const float *vertices, int32_t vst, uint32_t vlast,
           const uint32_t *indices, int32_t ist, int64_t j, atrbvh_box *out,
-          tri_acc *acc)
+          atrbvh_f8 *acc)
 {
     const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     const __m256i first = _mm256_add_epi32(_mm256_set1_epi32((int32_t)j), lane);
-    const __m256 half = _mm256_set1_ps(0.5f);
     __m256i v0, v1, v2, ok;
-    __m256 c[3][3], mn[3], mx[3], sum;
+    __m256 c[3][3], mn[3], mx[3];
     int k;
     if (indices) {
         const __m256i at = _mm256_mullo_epi32(first, _mm256_set1_epi32(ist));
@@ -196,31 +189,9 @@ tri8_avx2(const float *vertices, int32_t vst, uint32_t vlast,
         c[1][k] = _mm256_i32gather_ps(vertices + k, v1, 4);
         c[2][k] = _mm256_i32gather_ps(vertices + k, v2, 4);
     }
-    /* the rule's sum, a0 + a1 + a2 + b0 + ... + d2 in that order */
-    sum = _mm256_add_ps(c[0][0], c[0][1]);
-    sum = _mm256_add_ps(sum, c[0][2]);
-    sum = _mm256_add_ps(sum, c[1][0]);
-    sum = _mm256_add_ps(sum, c[1][1]);
-    sum = _mm256_add_ps(sum, c[1][2]);
-    sum = _mm256_add_ps(sum, c[2][0]);
-    sum = _mm256_add_ps(sum, c[2][1]);
-    sum = _mm256_add_ps(sum, c[2][2]);
-    if (_mm256_movemask_ps(_mm256_cmp_ps(_mm256_sub_ps(sum, sum),
-                                         _mm256_setzero_ps(), _CMP_EQ_OQ)) !=
-        0xff)
+    /* the rule, lane by lane (shared/lanes.h) */
+    if (!atrbvh_tri8_boxes(c, mn, mx, acc))
         return 0;
-    for (k = 0; k < 3; k++) {
-        /* lo = b < a ? b : a; min = d < lo ? d : lo (and max alike) */
-        mn[k] = _mm256_min_ps(c[2][k], _mm256_min_ps(c[1][k], c[0][k]));
-        mx[k] = _mm256_max_ps(c[2][k], _mm256_max_ps(c[1][k], c[0][k]));
-        /* atrbvh_scene_add: the box, then its centre */
-        acc->scene[k] = _mm256_min_ps(mn[k], acc->scene[k]);
-        acc->scene[3 + k] = _mm256_max_ps(mx[k], acc->scene[3 + k]);
-        sum = _mm256_add_ps(_mm256_mul_ps(half, mn[k]),
-                            _mm256_mul_ps(half, mx[k]));
-        acc->centroids[k] = _mm256_min_ps(sum, acc->centroids[k]);
-        acc->centroids[3 + k] = _mm256_max_ps(sum, acc->centroids[3 + k]);
-    }
     /* Six coordinate vectors to eight 24-byte boxes, four at a time:
      * min x, y, z and max x transposed, max y and z interleaved. */
     for (k = 0; k < 2; k++) {
@@ -251,38 +222,22 @@ tri8_avx2(const float *vertices, int32_t vst, uint32_t vlast,
     return 1;
 }
 
-__attribute__((target("avx2"))) static void tri_acc_init(tri_acc *acc)
+/* The lanes' accumulators, empty; and into the thread's boxes at the end
+ * (shared/lanes.h; called from the sweep, which is not compiled for AVX2,
+ * so not inlined). */
+__attribute__((target("avx2"))) static void tri_acc_init(atrbvh_f8 *acc)
 {
-    int k;
-    for (k = 0; k < 3; k++) {
-        acc->scene[k] = acc->centroids[k] = _mm256_set1_ps(INFINITY);
-        acc->scene[3 + k] = acc->centroids[3 + k] = _mm256_set1_ps(-INFINITY);
-    }
+    atrbvh_tri8_acc_init(acc);
 }
 
-/* The lanes of *acc into the thread's boxes, lane by lane as boxes would
- * be added (min and max: in any order the same values, up to the sign
- * of a zero, which no Morton frame or SAH distinguishes). */
 __attribute__((target("avx2"))) static void
-tri_acc_done(const tri_acc *acc, atrbvh_box *scene, atrbvh_box *centroids)
+tri_acc_done(const atrbvh_f8 *acc, atrbvh_box *scene, atrbvh_box *centroids)
 {
-    float sc[6][8], ce[6][8];
-    int k, l;
-    for (k = 0; k < 6; k++) {
-        _mm256_storeu_ps(sc[k], acc->scene[k]);
-        _mm256_storeu_ps(ce[k], acc->centroids[k]);
-    }
-    for (l = 0; l < 8; l++) {
-        atrbvh_box s, c;
-        for (k = 0; k < 3; k++) {
-            s.min[k] = sc[k][l];
-            s.max[k] = sc[3 + k][l];
-            c.min[k] = ce[k][l];
-            c.max[k] = ce[3 + k][l];
-        }
-        *scene = atrbvh_box_union(*scene, s);
-        *centroids = atrbvh_box_union(*centroids, c);
-    }
+    float t[ATRBVH_TRI8_ACC][8];
+    int k;
+    for (k = 0; k < ATRBVH_TRI8_ACC; k++)
+        _mm256_storeu_ps(t[k], acc[k]);
+    atrbvh_tri8_acc_unite(t, scene, centroids);
 }
 #endif
 
@@ -363,9 +318,9 @@ void atrbvh_i_prims_sweep_with(const atrbvh_i_input *in, int threads,
         size_t my_invalid = 0;
         int64_t g8, top;
 #ifdef PRIMS_AVX2
-        tri_acc acc;
+        atrbvh_f8 acc[ATRBVH_TRI8_ACC];
         if (vector)
-            tri_acc_init(&acc);
+            tri_acc_init(acc);
 #endif
         scene = out->scene;
         centroids = out->centroids;
@@ -378,7 +333,7 @@ void atrbvh_i_prims_sweep_with(const atrbvh_i_input *in, int threads,
 #ifdef PRIMS_AVX2
             if (vector && top - j == GROUP &&
                 tri8_avx2(vertices, (int32_t)vst, vlast, indices, (int32_t)ist,
-                          j, boxes, &acc))
+                          j, boxes, acc))
                 continue;
 #endif
             for (; j < top; j++) {
@@ -409,7 +364,7 @@ void atrbvh_i_prims_sweep_with(const atrbvh_i_input *in, int threads,
         }
 #ifdef PRIMS_AVX2
         if (vector)
-            tri_acc_done(&acc, &scene, &centroids);
+            tri_acc_done(acc, &scene, &centroids);
 #endif
         /* A problem that cannot be skipped (bad index, inverted box)
          * always wins over NaN/Inf so that skip_invalid never hides it;
