@@ -10,6 +10,11 @@
 #                         with exactly one "atrbvh: " line on stderr (for
 #                         the statuses error_line says, which a script may
 #                         redefine);
+#   opencl_may_skip FILE  whether a run on OpenCL that failed, its stderr
+#                         in FILE, may be skipped: only when there is no
+#                         OpenCL (the library's ATRBVH_ERR_UNSUPPORTED
+#                         messages), never with ATRBVH_TEST_REQUIRE_OPENCL
+#                         set (tests/testutil.h, tu_opencl_may_skip);
 #   finish                the summary line; its status is the script's.
 # Sourced: `. "$(dirname "$0")/common.sh"`, with ATRBVH_BUILDDIR and
 # ATRBVH_SRCDIR set by `make check` (the current folder otherwise).
@@ -43,6 +48,14 @@ setup() {
 fail() {
     echo "FAIL: $*" >&2
     failures=$((failures + 1))
+}
+
+opencl_may_skip() {
+    case ${ATRBVH_TEST_REQUIRE_OPENCL:-} in
+    '' | 0) ;;
+    *) return 1 ;;
+    esac
+    grep -q 'OpenCL: no platform found\|OpenCL: no device found\|has no OpenCL backend' "$1"
 }
 
 # error_line RC ARGS...: whether run wants one "atrbvh: " line on stderr.

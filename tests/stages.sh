@@ -113,8 +113,10 @@ if "$TOOL" --version | grep -q 'OpenCL yes'; then
         done
         run 0 check "$T/cl"
         run 0 check "$T/atrbvh" --backend opencl
-    else
+    elif opencl_may_skip "$T/err"; then
         echo "stages.sh: no OpenCL device ($(cat "$T/err")), OpenCL part skipped" >&2
+    else
+        fail "stages --backend opencl: $(cat "$T/err")"
     fi
 fi
 

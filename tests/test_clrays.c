@@ -22,6 +22,7 @@
 #include "testutil.h"
 
 static int have_device = -1;
+static atrbvh_status why_st; /* the failed call's status */
 static char why_not[ATRBVH_ERROR_TEXT_LENGTH];
 /* The OpenCL device every query runs on: opened once (the program is
  * built at open), closed at the end of main. */
@@ -38,12 +39,13 @@ static int device_available(void)
         atrbvh_ray r = {{0.5f, 0.5f, -1.0f}, {0, 0, 1}, 0.0f, 10.0f};
         atrbvh_hit h;
         have_device = 0;
-        if (atrbvh_build(&g, NULL, &b, &e) != ATRBVH_OK) {
+        if ((why_st = atrbvh_build(&g, NULL, &b, &e)) != ATRBVH_OK) {
             snprintf(why_not, sizeof why_not, "CPU build: %.200s", e.text);
-        } else if (atrbvh_device_open("opencl", &cl_dev, &e) != ATRBVH_OK) {
+        } else if ((why_st = atrbvh_device_open("opencl", &cl_dev, &e)) !=
+                   ATRBVH_OK) {
             snprintf(why_not, sizeof why_not, "%s", e.text);
-        } else if (atrbvh_intersect_batch_device(cl_dev, b, &g, &r, 1, &h,
-                                                 NULL, &e) != ATRBVH_OK) {
+        } else if ((why_st = atrbvh_intersect_batch_device(
+                        cl_dev, b, &g, &r, 1, &h, NULL, &e)) != ATRBVH_OK) {
             snprintf(why_not, sizeof why_not, "%s", e.text);
         } else {
             have_device = 1;
@@ -56,6 +58,8 @@ static int device_available(void)
 #define REQUIRE_DEVICE()                                                       \
     do {                                                                       \
         if (!device_available()) {                                             \
+            ck_assert_msg(tu_opencl_may_skip(why_st),                          \
+                          "the OpenCL backend failed: %s", why_not);           \
             fprintf(stderr, "SKIP %s: no OpenCL device (%s)\n", __func__,      \
                     why_not);                                                  \
             return;                                                            \
@@ -579,6 +583,8 @@ START_TEST(errors)
     ck_assert_int_eq(atrbvh_occluded(b, &bad, &r), 0);
     atrbvh_device_close(cpu);
     if (!device_available()) {
+        ck_assert_msg(tu_opencl_may_skip(why_st),
+                      "the OpenCL backend failed: %s", why_not);
         fprintf(stderr, "SKIP errors (device part): no OpenCL device (%s)\n",
                 why_not);
         atrbvh_bvh_free(b);

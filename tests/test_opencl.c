@@ -3,7 +3,8 @@
  * stage (atrbvh_validate_backends compares the captured output of every
  * stage bit for bit), on generated scenes, the extremes, and the scenes of
  * $ATRBVH_SCENES; the error paths.  Every test skips, saying so, when no
- * OpenCL device (or no OpenCL support) is there.
+ * OpenCL device (or no OpenCL support) is there; any other failure of the
+ * first build - the kernels not compiling - fails it (tu_opencl_may_skip).
  */
 #define _POSIX_C_SOURCE 200809L
 #include "config.h" /* ATRBVH_KERNEL_SOURCE_OVERRIDE */
@@ -18,9 +19,11 @@
 #include "testutil.h"
 
 static int have_device = -1;
+static atrbvh_status why_st; /* the first build's status, when it failed */
 static char why_not[ATRBVH_ERROR_TEXT_LENGTH];
 
-/* 1 when an OpenCL build of one box works; else 0, reason in why_not. */
+/* 1 when an OpenCL build of one box works; else 0, status in why_st and
+ * reason in why_not. */
 static int device_available(void)
 {
     if (have_device < 0) {
@@ -34,6 +37,7 @@ static int device_available(void)
         o.backend = ATRBVH_BACKEND_OPENCL;
         st = atrbvh_build(&g, &o, &b, &e);
         have_device = st == ATRBVH_OK;
+        why_st = st;
         if (!have_device)
             snprintf(why_not, sizeof why_not, "%s", e.text);
         atrbvh_bvh_free(b);
@@ -44,6 +48,8 @@ static int device_available(void)
 #define REQUIRE_DEVICE()                                                       \
     do {                                                                       \
         if (!device_available()) {                                             \
+            ck_assert_msg(tu_opencl_may_skip(why_st),                          \
+                          "the OpenCL backend failed: %s", why_not);           \
             fprintf(stderr, "SKIP %s: no OpenCL device (%s)\n", __func__,      \
                     why_not);                                                  \
             return;                                                            \

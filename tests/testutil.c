@@ -426,6 +426,14 @@ int tu_same_bvh(const atrbvh_bvh *a, const atrbvh_bvh *b, char *msg,
     return 1;
 }
 
+int tu_opencl_may_skip(atrbvh_status st)
+{
+    const char *req = getenv("ATRBVH_TEST_REQUIRE_OPENCL");
+    if (req && *req && strcmp(req, "0") != 0)
+        return 0;
+    return st == ATRBVH_ERR_UNSUPPORTED;
+}
+
 const char *tu_scenes_dir(void)
 {
     const char *d = getenv("ATRBVH_SCENES");

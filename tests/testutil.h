@@ -110,6 +110,16 @@ void tu_fix_crc(unsigned char *d, size_t n);
 unsigned char *tu_chain_bvh_bytes(const float *v, size_t leaves,
                                   size_t *size);
 
+/* Whether a test that needs the OpenCL backend may skip, saying so, after
+ * `st`, the failed status of its first call on it: only for
+ * ATRBVH_ERR_UNSUPPORTED (a library without OpenCL, or a system without
+ * an OpenCL platform or device), and not even then when
+ * $ATRBVH_TEST_REQUIRE_OPENCL is set (to anything but "" or "0": the
+ * check stage of tests/suite.d, which installs PoCL).  Anything else -
+ * the kernels failing to compile, a device that fails - is a failure of
+ * the test, not a reason to skip it. */
+int tu_opencl_may_skip(atrbvh_status st);
+
 /* Runs every test of s (verbosity CK_VERBOSITY, default normal);
  * EXIT_SUCCESS when all passed, else EXIT_FAILURE. */
 int tu_run(Suite *s);
