@@ -67,7 +67,16 @@ static void cpu_close(atrbvh_device *dev)
  * would hold it beside the output).  A transient scratch frees each slot
  * when its last role is done, and all at the end of the layout.  With
  * kept ids (skip_invalid), leaf_prim and the ids take their own slots
- * (+8) and the node boxes are kept to the layout (layout.c). */
+ * (+8) and the node boxes are kept to the layout (layout.c).
+ *
+ * An LBVH without kept ids, of ATRBVH_I_HIER_BY_ORDER_MIN primitives or
+ * more, writes no leaf or internal box (its hierarchy pass reads the
+ * primitive boxes in place: hierarchy.c, cpu.h): of the node box slot it
+ * touches the first n boxes and at most 3072 more.  The slot is still
+ * reserved, and counted above, for 2n-1 (the sort decides, after the
+ * bounds stage filled the slot; keys that are all equal leave the
+ * gather to the hierarchy stage, which needs them all), but the pages
+ * of the rest are never touched, so never faulted in. */
 static void plan(atrbvh_i_scratch *s, size_t n, atrbvh_method method)
 {
     const size_t nodes = n ? 2 * n - 1 : 1;
@@ -245,10 +254,14 @@ static int copy_out(void *dst_ptr, const void *src, size_t n, size_t size)
 
 /* The tree after the refit (or the optimise stage, which an LBVH skips);
  * an LBVH's refit keeps no costs: the copy gets them as the refit
- * computes them (shared/stages.h), bottom-up. */
+ * computes them (shared/stages.h), bottom-up.  `by_order`: the LBVH's
+ * pass wrote no node box either (cpu.h, leaf_boxes_by_order): src->box
+ * holds the primitive boxes, and the copy gets the boxes as the refit
+ * computes them too: leaf i's is primitive leaf_prim[i]'s, a node's the
+ * union of its children's, left first. */
 static atrbvh_status capture_refit(atrbvh_i_tree *dst,
                                    const atrbvh_i_tree *src,
-                                   const atrbvh_cost_params *p)
+                                   const atrbvh_cost_params *p, int by_order)
 {
     const size_t n = src->n, nodes = 2 * n - 1;
     uint8_t *arrived;
@@ -269,11 +282,15 @@ static atrbvh_status capture_refit(atrbvh_i_tree *dst,
     memset(arrived, 0, nodes);
     for (i = n - 1; i < nodes; i++) {
         uint32_t node = (uint32_t)i, up;
+        if (by_order)
+            dst->box[i] = src->box[src->leaf_prim[i - (n - 1)]];
         dst->cost[i] = atrbvh_refit_leaf_cost(p, dst->box[i]);
         while ((up = dst->parent[node]) != ATRBVH_U32_MAX &&
                arrived[up]++ == 1) {
             const uint32_t l = dst->left[up], r = dst->right[up];
             int collapsed;
+            if (by_order)
+                dst->box[up] = atrbvh_box_union(dst->box[l], dst->box[r]);
             dst->cost[up] = atrbvh_node_cost(
                 p, atrbvh_box_area(dst->box[up]), dst->count[up],
                 dst->cost[l], dst->cost[r], &collapsed);
@@ -310,12 +327,12 @@ static atrbvh_status cpu_capture(atrbvh_device *dev, atrbvh_i_run *run,
         ok = atrbvh_i_tree_copy(&cap->hierarchy, &c->tree, 0) == ATRBVH_OK;
         break;
     case ATRBVH_STAGE_REFIT:
-        ok = capture_refit(&cap->refit, &c->tree, &run->cfg->cost) ==
-             ATRBVH_OK;
+        ok = capture_refit(&cap->refit, &c->tree, &run->cfg->cost,
+                           c->leaf_boxes_by_order) == ATRBVH_OK;
         break;
     case ATRBVH_STAGE_OPTIMISE:
-        ok = capture_refit(&cap->optimise, &c->tree, &run->cfg->cost) ==
-             ATRBVH_OK;
+        ok = capture_refit(&cap->optimise, &c->tree, &run->cfg->cost,
+                           c->leaf_boxes_by_order) == ATRBVH_OK;
         break;
     case ATRBVH_STAGE_COLLAPSE:
         ok = copy_out(&cap->collapse_size, c->size, 2 * n - 1,

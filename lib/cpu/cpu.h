@@ -26,6 +26,11 @@ static inline int atrbvh_i_is_leaf(const atrbvh_i_tree *t, uint32_t node)
  * subtrees per thread for the loop's balance; a frontier longer than
  * ATRBVH_I_FRONTIER_CAP_PER_THREAD per thread (a degenerate tree) runs on
  * one thread, with the same result. */
+/* The fewest primitives of an LBVH whose hierarchy pass reads the leaf
+ * boxes where they are (leaf_boxes_by_order, below): the pass keeps its
+ * leftovers' subtree boxes in entries n .. 2n-2 of the node box array,
+ * at most 16 blocks x 2 x 96 of them (hierarchy.c checks it). */
+#define ATRBVH_I_HIER_BY_ORDER_MIN 3073u
 #define ATRBVH_I_FRONTIER_PER_THREAD 32u
 #define ATRBVH_I_FRONTIER_CAP_PER_THREAD 512u
 
@@ -97,6 +102,16 @@ typedef struct atrbvh_i_cpu_run {
      * and the deltas in the leaves' half of the count array (sort.c's
      * sort_leaves); 0: the hierarchy stage does it */
     int leaves_ready;
+    /* sort, with leaves_ready: the leaves' boxes were not gathered; the
+     * hierarchy pass of this LBVH (no kept ids, more than
+     * ATRBVH_I_HIER_BY_ORDER_MIN primitives) reads leaf i's box at its
+     * primitive's, box[order[i]], and writes no node box: the node box
+     * array keeps the primitive boxes in its first n entries, and the
+     * leaves' half is not written (its pages never faulted in) but for
+     * the pass's leftovers (hierarchy.c).  Nothing reads an LBVH's node
+     * boxes afterwards (the layout recomputes them) but the capture of
+     * the refit stage, which builds them (backend.c). */
+    int leaf_boxes_by_order;
     uint32_t *order;    /* sort: build index of position p   */
     atrbvh_i_tree tree; /* hierarchy ... optimise            */
     uint32_t *size;     /* collapse                          */

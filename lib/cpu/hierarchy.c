@@ -60,6 +60,16 @@
  * region is the block passes alone, with no barrier: a thread hand-over
  * fewer (the tool's threads sleep at a barrier, and a wake-up costs tens
  * of microseconds on a loaded machine).
+ *
+ * An LBVH of more than a few thousand primitives needs no node box after
+ * this pass (its collapse sizes are decided here, and the layout
+ * recomputes the boxes: layout.c), so the sort writes the deltas only and
+ * the pass reads leaf i's box at its primitive's, box[order[i]]
+ * (prefetched ahead), and writes no node box: the primitive boxes stay
+ * whole, and the block passes keep their leftovers' subtree boxes in
+ * entries n .. 2n-2, unused then (hier_ctx's by_order).  The leaves' half
+ * of the array is then neither written nor read: no 24 bytes per
+ * primitive gathered, and its pages never faulted in.
  */
 #include "config.h"
 
@@ -72,6 +82,11 @@
 /* Blocks of the first pass, at most (ATRBVH_I_BLOCKS_PER_THREAD a
  * thread, taken in turn: cpu.h): their leftovers live on the stack. */
 #define ATRBVH_HIER_BLOCKS 16
+/* (an LBVH reading its leaf boxes in place keeps every leftover's box in
+ * the leaves' half of the node box array: cpu.h) */
+ATRBVH_STATIC_ASSERT(ATRBVH_I_HIER_BY_ORDER_MIN - 1u >=
+                         ATRBVH_HIER_BLOCKS * 2u * ATRBVH_HIER_SIDE,
+                     hier_leftover_boxes_fit);
 
 /* The pass is specialised for each mode (a constant at every call):
  * without the attribute GCC keeps one copy testing it at every step. */
@@ -94,6 +109,12 @@ typedef struct hier_ctx {
     const uint64_t *keys;      /* TOPOLOGY: the sorted keys            */
     const atrbvh_cost_params *p; /* SIZES, COSTS                       */
     uint32_t *size;            /* SIZES: collapse sizes (2n-1)         */
+    /* SIZES, or NULL: leaf i's box is t->box[by_order[i]] (the primitive
+     * boxes, never written over: no node box is written), and the
+     * leftovers' subtree boxes go to left_box[b * 2 * ATRBVH_HIER_SIDE
+     * + k] (entries n .. 2n-2 of the array, unused then) */
+    const uint32_t *by_order;
+    atrbvh_box *left_box;
 } hier_ctx;
 
 /* A finished subtree: its root and (SIZES, COSTS) its values. */
@@ -140,7 +161,16 @@ static ALWAYS_INLINE void leaf(const hier_ctx *x, int mode, int64_t i,
         out->size = 0;
         return;
     }
-    out->box = t->box[id];
+    if (mode == SIZES && x->by_order) {
+        /* (random reads, each one's address known ahead) */
+#if defined(__GNUC__) || defined(__clang__)
+        if (i + 16 < x->n)
+            __builtin_prefetch(&t->box[x->by_order[i + 16]]);
+#endif
+        out->box = t->box[x->by_order[i]];
+    } else {
+        out->box = t->box[id];
+    }
     out->cost = atrbvh_refit_leaf_cost(x->p, out->box);
     if (mode == SIZES) {
         out->size = 1u | ATRBVH_SIZE_LEAF;
@@ -173,7 +203,8 @@ static ALWAYS_INLINE void emit(const hier_ctx *x, int mode, int64_t s,
         const uint32_t size = atrbvh_refit_node_size(
             x->p, l->box, (uint32_t)(s - ps), l->cost, l->size, r->box,
             (uint32_t)(ns - s), r->cost, r->size, &b, &cnt, &cost);
-        t->box[id] = b;
+        if (!x->by_order)
+            t->box[id] = b;
         x->size[id] = size;
         r->box = b;
         r->cost = cost;
@@ -193,10 +224,12 @@ static ALWAYS_INLINE void emit(const hier_ctx *x, int mode, int64_t s,
 }
 
 /* The first pass over the splits lo .. hi-1.  Leftovers (ascending) go to
- * `out`, their deltas to `out_d`; returns how many. */
+ * `out`, their deltas to `out_d`, and with x->by_order their subtrees'
+ * boxes to `out_box`; returns how many. */
 static ALWAYS_INLINE uint32_t block_pass(const hier_ctx *x, int mode,
                                          int64_t lo, int64_t hi,
-                                         hier_left *out, signed char *out_d)
+                                         hier_left *out, signed char *out_d,
+                                         atrbvh_box *out_box)
 {
     hier_entry st[ATRBVH_HIER_SIDE];
     uint32_t sp = 0, nout = 0, k;
@@ -216,6 +249,8 @@ static ALWAYS_INLINE uint32_t block_pass(const hier_ctx *x, int mode,
             out[nout].s = (uint32_t)s;
             out[nout].node = carry.node;
             out[nout].cost = carry.cost;
+            if (out_box)
+                out_box[nout] = carry.box;
             out_d[nout++] = (signed char)d;
         }
         if (sp == ATRBVH_HIER_SIDE)
@@ -229,6 +264,8 @@ static ALWAYS_INLINE uint32_t block_pass(const hier_ctx *x, int mode,
         out[nout].s = (uint32_t)st[k].s;
         out[nout].node = st[k].left.node;
         out[nout].cost = st[k].left.cost;
+        if (out_box)
+            out_box[nout] = st[k].left.box;
         out_d[nout++] = (signed char)st[k].d;
     }
     return nout;
@@ -303,7 +340,9 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
                 (int64_t)((uint64_t)(n - 1) * (uint64_t)b / (uint64_t)blocks),
                 (int64_t)((uint64_t)(n - 1) * (uint64_t)(b + 1) /
                           (uint64_t)blocks),
-                left_over[b], left_d[b]);
+                left_over[b], left_d[b],
+                x->by_order ? x->left_box + (size_t)b * 2 * ATRBVH_HIER_SIDE
+                            : NULL);
             if (order)
                 leaf_prims(t, order, ids,
                            (int64_t)((uint64_t)n * (uint64_t)b /
@@ -322,7 +361,10 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
             const int d = left_d[b][k];
             carry.node = lo->node;
             carry.cost = lo->cost;
-            carry.box = mode != TOPOLOGY ? t->box[lo->node] : last;
+            carry.box = x->by_order ? x->left_box[(size_t)b * 2 *
+                                                      ATRBVH_HIER_SIDE + k]
+                        : mode != TOPOLOGY ? t->box[lo->node]
+                                           : last;
             carry.size = mode == SIZES ? x->size[lo->node] : 0u;
             while (sp > 0 && st[sp - 1].d > d) {
                 sp--;
@@ -354,11 +396,13 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
 /* The topology, and with `p` the refit's values (into `size` when not
  * NULL, else into t->cost); with `order`, each leaf's primitive.
  * `ready`: the sort stage gathered the leaves and wrote the deltas
- * (sort.c's sort_leaves). */
+ * (sort.c's sort_leaves); `by_order` (with ready, size and order, no
+ * ids): it wrote the deltas only, and leaf i's box is t->box[order[i]]
+ * (hier_ctx). */
 static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                       int threads, const uint32_t *order,
                       const uint32_t *ids, const atrbvh_cost_params *p,
-                      uint32_t *size, int ready)
+                      uint32_t *size, int ready, int by_order)
 {
     const int64_t n = t->n;
     hier_ctx x;
@@ -368,6 +412,13 @@ static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
     x.keys = sorted_keys;
     x.p = p;
     x.size = size;
+    x.by_order = NULL;
+    x.left_box = NULL;
+    if (by_order) { /* (the sort's decision: sort.c, cpu.h) */
+        x.by_order = order;
+        /* (entry n-1 is primitive n-1's box: the n-1 entries after it) */
+        x.left_box = t->box + n;
+    }
     t->parent[0] = ATRBVH_U32_MAX;
     if (n == 1) {
         /* one leaf, the root (its box is primitive box 0, in place) */
@@ -396,7 +447,7 @@ static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
 void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                         int threads)
 {
-    hierarchy(sorted_keys, t, threads, NULL, NULL, NULL, NULL, 0);
+    hierarchy(sorted_keys, t, threads, NULL, NULL, NULL, NULL, 0, 0);
 }
 
 void atrbvh_i_hierarchy_refit(const uint64_t *sorted_keys, atrbvh_i_tree *t,
@@ -404,7 +455,7 @@ void atrbvh_i_hierarchy_refit(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                               const atrbvh_cost_params *p, int threads,
                               uint32_t *size)
 {
-    hierarchy(sorted_keys, t, threads, order, NULL, p, size, 0);
+    hierarchy(sorted_keys, t, threads, order, NULL, p, size, 0, 0);
 }
 
 /* The stage: the tree's arrays (kept for the later stages), the topology,
@@ -428,7 +479,8 @@ atrbvh_status atrbvh_i_cpu_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
     if (st != ATRBVH_OK)
         return st;
     hierarchy(c->keys, t, run->cfg->threads, c->order, c->ids,
-              &run->cfg->cost, lbvh ? c->size : NULL, c->leaves_ready);
+              &run->cfg->cost, lbvh ? c->size : NULL, c->leaves_ready,
+              c->leaf_boxes_by_order);
     c->leaves_ready = 0;
     c->refitted = 1;
     /* The keys and the sort's scratch are read no more. */

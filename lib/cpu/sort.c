@@ -93,7 +93,9 @@ static void scatter(const uint64_t *keys, const uint32_t *values,
  * (whose entries 0 .. n-1 are the primitive boxes) takes box[order[i]],
  * in place (entry n-1, both primitive n-1 and leaf 0, read into `last`
  * before any leaf is written), and delta[i] the Karras delta of split i
- * (the hierarchy reads it from the leaves' half of the count array). */
+ * (the hierarchy reads it from the leaves' half of the count array).
+ * With box NULL, the deltas only: an LBVH's hierarchy pass reads each
+ * leaf's box at its primitive's (cpu.h, leaf_boxes_by_order). */
 typedef struct sort_leaves {
     atrbvh_box *box;
     atrbvh_box last;
@@ -116,6 +118,11 @@ static void bucket_leaves(const uint64_t *keys, const uint32_t *order,
     const atrbvh_box last = lv->last;
     const int64_t n = n_, hi = hi_;
     int64_t i;
+    if (!box) {
+        for (i = lo; i + 1 < hi; i++)
+            delta[i] = (uint32_t)atrbvh_karras_delta(keys, n, i, i + 1);
+        return;
+    }
     for (i = lo; i < hi; i++) {
         const uint32_t k = order[i];
 #if defined(__GNUC__) || defined(__clang__)
@@ -395,6 +402,7 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
                              "primitives",
                              (unsigned long)n);
     c->leaves_ready = 0;
+    c->leaf_boxes_by_order = 0;
     if (n < 2 || !c->key_varying) {
         /* already sorted (build order): the hierarchy gathers */
         st = ATRBVH_OK;
@@ -424,6 +432,13 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
         c->boxes = lv.box; /* (moved along if the slot had to grow) */
         lv.last = lv.box[n - 1];
         lv.delta += n - 1;
+        /* An LBVH of its own primitives (no kept ids) gathers no leaf
+         * box: its hierarchy pass reads them where they are (cpu.h) */
+        c->leaf_boxes_by_order = run->cfg->method == ATRBVH_METHOD_LBVH &&
+                                 !c->ids &&
+                                 n >= ATRBVH_I_HIER_BY_ORDER_MIN;
+        if (c->leaf_boxes_by_order)
+            lv.box = NULL;
         atrbvh_sort_msd(n, c->key_varying, &shift, &bits);
         if (c->msd_counts && shift == c->msd_shift && bits == c->msd_bits) {
             counted = c->msd_counts;
@@ -432,6 +447,7 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
         st = msd_sort(c->keys, c->order, tmp_keys, tmp_order, n, blocks,
                       run->cfg->threads, shift, bits, counted, &lv);
         c->leaves_ready = st == ATRBVH_OK;
+        c->leaf_boxes_by_order &= c->leaves_ready;
     }
     atrbvh_i_free(c->msd_counts);
     c->msd_counts = NULL;
