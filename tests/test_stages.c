@@ -938,6 +938,70 @@ START_TEST(large_arrays_advise_huge_pages)
 }
 END_TEST
 
+/* An LBVH of 3073 primitives or more reads its leaf boxes in place and
+ * writes no node box (lib/cpu/hierarchy.c, cpu.h's leaf_boxes_by_order),
+ * in a node box slot of n + 3072 boxes; with kept ids (skip_invalid that
+ * left something out) the same build gathers them into the whole 2n-1,
+ * as every build did before.  So the scene with one NaN triangle appended
+ * and skip_invalid set must give the scene's own tree, node for node:
+ * random triangles (the sort's buckets), and coincident ones (every key
+ * equal: the sort writes the deltas alone), at 1 and 2 threads, with
+ * and without collapsing, at the threshold and above it.  A caller's
+ * tree (atrbvh_reoptimise as an LBVH) gathers them too: a valid tree. */
+START_TEST(lbvh_leaf_boxes_in_place)
+{
+    static const size_t sizes[] = {3073, 5000};
+    size_t si;
+    int coincident, threads, collapse;
+    for (si = 0; si < sizeof sizes / sizeof *sizes; si++)
+        for (coincident = 0; coincident < 2; coincident++)
+            for (threads = 1; threads <= 2; threads++)
+                for (collapse = 0; collapse < 2; collapse++) {
+                const size_t n = sizes[si];
+                float *v = tu_random_triangles(n + 1, 31 + si, 4.0f, -2.0f);
+                atrbvh_geometry g;
+                atrbvh_build_options o;
+                atrbvh_bvh *a, *b;
+                char msg[256];
+                size_t i;
+                if (coincident)
+                    for (i = 1; i <= n; i++)
+                        memcpy(v + 9 * i, v, 9 * sizeof *v);
+                v[9 * n + 4] = NAN; /* the appended triangle */
+                atrbvh_build_options_init(&o);
+                o.method = ATRBVH_METHOD_LBVH;
+                o.threads = threads;
+                o.collapse = collapse; /* (off: the whole topology shows) */
+                g = atrbvh_geometry_triangles(v, 3 * n, NULL, n);
+                a = tu_build(&g, &o); /* in place */
+                ck_assert_msg(tu_check_bvh(a, &g, msg, sizeof msg),
+                              "n %zu, coincident %d, %d threads, collapse "
+                              "%d: %s", n, coincident, threads, collapse, msg);
+                o.skip_invalid = 1;
+                g = atrbvh_geometry_triangles(v, 3 * (n + 1), NULL, n + 1);
+                b = tu_build(&g, &o); /* kept ids: gathered */
+                ck_assert_msg(tu_same_bvh(a, b, msg, sizeof msg),
+                              "n %zu, coincident %d, %d threads, collapse "
+                              "%d: %s", n, coincident, threads, collapse, msg);
+                if (!coincident) {
+                    /* a caller's tree (set_tree) gathers its leaf boxes
+                     * (cpu.h): re-optimised as an LBVH, a valid tree */
+                    atrbvh_error e;
+                    g = atrbvh_geometry_triangles(v, 3 * n, NULL, n);
+                    o.skip_invalid = 0;
+                    ck_assert_msg(atrbvh_reoptimise(a, &g, &o, &e) ==
+                                      ATRBVH_OK,
+                                  "%s", e.text);
+                    ck_assert_msg(tu_check_bvh(a, &g, msg, sizeof msg), "%s",
+                                  msg);
+                }
+                atrbvh_bvh_free(a);
+                atrbvh_bvh_free(b);
+                free(v);
+            }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("stages");
@@ -954,6 +1018,7 @@ int main(void)
     tcase_add_test(tc, stats_measured_when_first_read);
     tcase_add_test(tc, sah_sums_vector_is_scalar);
     tcase_add_test(tc, large_arrays_advise_huge_pages);
+    tcase_add_test(tc, lbvh_leaf_boxes_in_place);
     suite_add_tcase(s, tc);
     return tu_run(s);
 }

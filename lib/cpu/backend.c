@@ -33,24 +33,26 @@ static void cpu_close(atrbvh_device *dev)
  *
  *   stage      live                                            LBVH  TRBVH
  *   bounds     primitive boxes, in the node box array (its
- *              slot reserved for 2n-1 boxes)                     48     48
+ *              slot reserved for 2n-1 boxes; for an LBVH n +
+ *              3072, below)                                      24     48
  *   morton     + keys, in the cost slot (reserved: n keys for
- *              an LBVH, 2n-1 costs otherwise)                    56     64
+ *              an LBVH, 2n-1 costs otherwise)                    32     64
  *   sort       + order 4, sort temporaries 12 in the parent
  *              and left slots, count 8 (its buckets' phase
- *              gathers the leaf boxes and writes the deltas for
- *              the hierarchy, sort.c)                            80     88
+ *              gathers the leaf boxes - not an LBVH's - and
+ *              writes the deltas for the hierarchy, sort.c)      56     88
  *   hierarchy  + left, right 8, parent 8, count 8 (leaf_prim is
  *              the order array); the refit in the same pass
  *              (hierarchy.c): node boxes 48 (the primitive boxes
- *              gathered in place into the leaves), costs 16 (none
+ *              gathered in place into the leaves; an LBVH reads
+ *              them in place and writes none), costs 16 (none
  *              for an LBVH: its slot takes the collapse sizes),
- *              both into the slot of the keys once read          84     92
+ *              both into the slot of the keys once read          60     92
  *   refit      (nothing left to compute; a caller's tree,
- *              set_tree, is refitted here) tree 28               84     92
+ *              set_tree, is refitted here) tree 28               60     92
  *   optimise   the same, per-thread treelet scratch               -     92
  *   collapse   costs recomputed bottom-up, sizes 8 into the
- *              cost slot                                         84     92
+ *              cost slot                                         60     92
  *   layout     tree 28, the output; an LBVH's node boxes were
  *              released at the end of the collapse (the layout
  *              recomputes them), and its parent links (the
@@ -69,15 +71,18 @@ static void cpu_close(atrbvh_device *dev)
  * kept ids (skip_invalid), leaf_prim and the ids take their own slots
  * (+8) and the node boxes are kept to the layout (layout.c).
  *
- * An LBVH without kept ids, of ATRBVH_I_HIER_BY_ORDER_MIN primitives or
- * more, writes no leaf or internal box (its hierarchy pass reads the
- * primitive boxes in place: hierarchy.c, cpu.h): of the node box slot it
- * touches the first n boxes and at most 3072 more.  The slot is still
- * reserved, and counted above, for 2n-1 (the sort decides, after the
- * bounds stage filled the slot; keys that are all equal leave the
- * gather to the hierarchy stage, which needs them all), but the pages
- * of the rest are never touched, so never faulted in. */
-static void plan(atrbvh_i_scratch *s, size_t n, atrbvh_method method)
+ * An LBVH's column is that of one without kept ids and of
+ * ATRBVH_I_HIER_BY_ORDER_MIN primitives or more, which writes no leaf or
+ * internal box (its hierarchy pass reads the primitive boxes in place:
+ * hierarchy.c, cpu.h): its node box slot holds the n primitive boxes and
+ * the pass's leftovers, at most 3072 more (atrbvh_i_node_boxes).  Its
+ * peak is then the layout's, 28 + out (about 63-70 bytes per triangle
+ * with max leaf 8; 71-78 on a handle, which keeps the parent links: 8
+ * more); it was 84 and more at the hierarchy, where the slot held 2n-1
+ * boxes, as it still does for kept ids, a caller's tree
+ * (atrbvh_i_cpu_all_node_boxes) and fewer primitives (+24). */
+static void plan(atrbvh_i_scratch *s, size_t n, atrbvh_method method,
+                 int kept_ids)
 {
     const size_t nodes = n ? 2 * n - 1 : 1;
     atrbvh_i_scratch_plan_reset(s);
@@ -86,8 +91,11 @@ static void plan(atrbvh_i_scratch *s, size_t n, atrbvh_method method)
     atrbvh_i_scratch_share(s, CPU_SIZE, CPU_COST);
     atrbvh_i_scratch_share(s, CPU_TMP_KEYS, CPU_PARENT);
     atrbvh_i_scratch_share(s, CPU_TMP_ORDER, CPU_LEFT);
-    /* 2n-1 fits in size_t whenever n boxes did (the geometry's check). */
-    atrbvh_i_scratch_reserve(s, CPU_BOX, nodes, sizeof(atrbvh_box));
+    /* 2n-1 fits in size_t whenever n boxes did (the geometry's check).
+     * An LBVH reading its leaf boxes in place: n + 3072 (cpu.h). */
+    atrbvh_i_scratch_reserve(
+        s, CPU_BOX, n ? atrbvh_i_node_boxes(method, n, kept_ids) : nodes,
+        sizeof(atrbvh_box));
     /* An LBVH keeps no costs: the slot takes the keys, then the sizes. */
     if (method == ATRBVH_METHOD_LBVH)
         atrbvh_i_scratch_reserve(s, CPU_COST, n ? n : 1, sizeof(uint64_t));
@@ -105,7 +113,7 @@ static atrbvh_status cpu_begin(atrbvh_device *dev, atrbvh_i_run *run,
     memset(c, 0, sizeof *c);
     c->scratch = &dev->scratch;
     run->state = c;
-    plan(c->scratch, run->in.g->primitive_count, run->cfg->method);
+    plan(c->scratch, run->in.g->primitive_count, run->cfg->method, 0);
     return ATRBVH_OK;
 }
 
@@ -117,6 +125,25 @@ static void cpu_end(atrbvh_device *dev, atrbvh_i_run *run)
         atrbvh_i_free(c->msd_counts);
     atrbvh_i_free(run->state);
     run->state = NULL;
+}
+
+atrbvh_status atrbvh_i_cpu_all_node_boxes(atrbvh_i_cpu_run *c,
+                                          atrbvh_i_run *run,
+                                          atrbvh_error *error)
+{
+    const size_t nodes = 2 * (size_t)run->n - 1;
+    if (!atrbvh_i_lbvh_in_place(run->cfg->method,
+                                run->in.g->primitive_count, 0))
+        return ATRBVH_OK; /* (planned so) */
+    plan(c->scratch, run->n, run->cfg->method, 1);
+    c->boxes = atrbvh_i_scratch_get(c->scratch, CPU_BOX, nodes,
+                                    sizeof *c->boxes);
+    if (!c->boxes)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                             "cannot allocate %lu node boxes",
+                             (unsigned long)nodes);
+    atrbvh_i_scratch_done(c->scratch, CPU_BOX);
+    return ATRBVH_OK;
 }
 
 static atrbvh_status cpu_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
@@ -131,7 +158,7 @@ static atrbvh_status cpu_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
          * c->boxes points into it (a slot growing later would move the
          * boxes under that pointer).  The references are copied below
          * from the pipeline's own array. */
-        plan(c->scratch, run->n, run->cfg->method);
+        plan(c->scratch, run->n, run->cfg->method, ids != NULL);
         if (!atrbvh_i_scratch_get(c->scratch, CPU_BOX, 2 * (size_t)run->n - 1,
                                   sizeof(atrbvh_box)))
             return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
@@ -139,6 +166,14 @@ static atrbvh_status cpu_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
                                  (unsigned long)(2 * (size_t)run->n - 1));
         atrbvh_i_scratch_done(c->scratch, CPU_BOX);
         c->boxes = NULL;
+    } else if (ids) {
+        /* Kept ids: the leaf boxes are gathered after all (cpu.h) */
+        const int in_slot = boxes == c->boxes;
+        const atrbvh_status st = atrbvh_i_cpu_all_node_boxes(c, run, error);
+        if (st != ATRBVH_OK)
+            return st;
+        if (in_slot)
+            boxes = c->boxes;
     }
     /* The pipeline's boxes may be the scratch the bounds stage wrote;
      * memmove keeps that case right.  Other boxes may be more than the
@@ -198,7 +233,10 @@ atrbvh_status atrbvh_i_cpu_tree_values(atrbvh_i_cpu_run *c, int costs,
 {
     atrbvh_i_scratch *s = c->scratch;
     atrbvh_i_tree *t = &c->tree;
-    const size_t nodes = 2 * (size_t)t->n - 1;
+    /* (fewer for an LBVH that reads its leaf boxes in place: cpu.h) */
+    const size_t nodes = c->leaf_boxes_by_order
+                             ? (size_t)t->n + ATRBVH_I_HIER_LEFTOVERS
+                             : 2 * (size_t)t->n - 1;
     t->box = atrbvh_i_scratch_get(s, CPU_BOX, nodes, sizeof *t->box);
     t->cost = costs ? atrbvh_i_scratch_get(s, CPU_COST, nodes, sizeof *t->cost)
                     : NULL;
@@ -278,7 +316,10 @@ static atrbvh_status capture_refit(atrbvh_i_tree *dst,
         atrbvh_i_tree_free(dst);
         return ATRBVH_ERR_NOMEM;
     }
-    memcpy(dst->box, src->box, nodes * sizeof *dst->box);
+    /* (by_order: src->box holds n + 3072 boxes, and every one of dst's
+     * is computed below) */
+    if (!by_order)
+        memcpy(dst->box, src->box, nodes * sizeof *dst->box);
     memset(arrived, 0, nodes);
     for (i = n - 1; i < nodes; i++) {
         uint32_t node = (uint32_t)i, up;

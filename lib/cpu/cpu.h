@@ -26,11 +26,13 @@ static inline int atrbvh_i_is_leaf(const atrbvh_i_tree *t, uint32_t node)
  * subtrees per thread for the loop's balance; a frontier longer than
  * ATRBVH_I_FRONTIER_CAP_PER_THREAD per thread (a degenerate tree) runs on
  * one thread, with the same result. */
-/* The fewest primitives of an LBVH whose hierarchy pass reads the leaf
- * boxes where they are (leaf_boxes_by_order, below): the pass keeps its
- * leftovers' subtree boxes in entries n .. 2n-2 of the node box array,
- * at most 16 blocks x 2 x 96 of them (hierarchy.c checks it). */
-#define ATRBVH_I_HIER_BY_ORDER_MIN 3073u
+/* An LBVH whose hierarchy pass reads the leaf boxes where they are
+ * (leaf_boxes_by_order, below) keeps its pass's leftovers' subtree boxes
+ * after the n primitive boxes in the node box array: at most 16 blocks x
+ * 2 x 96 of them (hierarchy.c checks it).  It takes at least one more
+ * primitive than that, so that they fit in 2n-1 boxes too. */
+#define ATRBVH_I_HIER_LEFTOVERS 3072u
+#define ATRBVH_I_HIER_BY_ORDER_MIN (ATRBVH_I_HIER_LEFTOVERS + 1u)
 #define ATRBVH_I_FRONTIER_PER_THREAD 32u
 #define ATRBVH_I_FRONTIER_CAP_PER_THREAD 512u
 
@@ -128,6 +130,27 @@ typedef struct atrbvh_i_cpu_run {
     int refitted;
 } atrbvh_i_cpu_run;
 
+/* Whether an LBVH of n primitives reads its leaf boxes in place
+ * (leaf_boxes_by_order): the method LBVH, no kept ids, at least
+ * ATRBVH_I_HIER_BY_ORDER_MIN primitives. */
+static inline int atrbvh_i_lbvh_in_place(atrbvh_method method, size_t n,
+                                         int kept_ids)
+{
+    return method == ATRBVH_METHOD_LBVH && !kept_ids &&
+           n >= ATRBVH_I_HIER_BY_ORDER_MIN;
+}
+
+/* The boxes of the node box slot of a build of n >= 1 primitives: the n
+ * primitive boxes and the hierarchy pass's leftovers for an LBVH that
+ * reads its leaf boxes in place, else the 2n-1 nodes. */
+static inline size_t atrbvh_i_node_boxes(atrbvh_method method, size_t n,
+                                         int kept_ids)
+{
+    return atrbvh_i_lbvh_in_place(method, n, kept_ids)
+               ? n + ATRBVH_I_HIER_LEFTOVERS
+               : 2 * n - 1;
+}
+
 /* The tree's topology arrays for n leaves in the device's scratch slots
  * (the hierarchy stage and set_tree; leaf_prim is the order array unless
  * c->ids is set); box and cost stay NULL until tree_values (refit).  The
@@ -142,6 +165,14 @@ atrbvh_status atrbvh_i_cpu_tree_values(atrbvh_i_cpu_run *c, int costs,
  * or an LBVH's refit, which computes them in its climb. */
 atrbvh_status atrbvh_i_cpu_tree_sizes(atrbvh_i_cpu_run *c,
                                       atrbvh_error *error);
+/* The node box slot at 2n-1 boxes now, for a build planned as an LBVH
+ * reading its leaf boxes in place (atrbvh_i_node_boxes) that will gather
+ * them after all: kept ids (set_prims) or a caller's tree (set_tree).
+ * The primitive boxes move along (c->boxes follows); the transient peak
+ * is the bounds' boxes twice, before any other array of the build. */
+atrbvh_status atrbvh_i_cpu_all_node_boxes(atrbvh_i_cpu_run *c,
+                                          atrbvh_i_run *run,
+                                          atrbvh_error *error);
 /* After the layout: a transient scratch frees every slot of the build. */
 void atrbvh_i_cpu_scratch_end(atrbvh_i_cpu_run *c);
 

@@ -22,7 +22,10 @@ atrbvh_status atrbvh_i_cpu_set_tree(atrbvh_device *dev, atrbvh_i_run *run,
     int64_t i;
     atrbvh_status st;
     (void)dev;
-    st = atrbvh_i_cpu_tree_arrays(c, n, error);
+    /* (a tree of the caller's: the leaf boxes are gathered, cpu.h) */
+    st = atrbvh_i_cpu_all_node_boxes(c, run, error);
+    if (st == ATRBVH_OK)
+        st = atrbvh_i_cpu_tree_arrays(c, n, error);
     if (st != ATRBVH_OK)
         return st;
     c->order = atrbvh_i_scratch_get(c->scratch, CPU_ORDER, n,

@@ -391,6 +391,7 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
     uint64_t *tmp_keys;
     uint32_t *tmp_order;
     atrbvh_status st;
+    int by_order;
     (void)dev;
     tmp_keys = atrbvh_i_scratch_get(c->scratch, CPU_TMP_KEYS, n,
                                     sizeof *tmp_keys);
@@ -401,10 +402,32 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
                              "cannot allocate sort buffers for %lu "
                              "primitives",
                              (unsigned long)n);
+    /* An LBVH of its own primitives (no kept ids, enough of them)
+     * gathers no leaf box: its hierarchy pass reads them where they are,
+     * and its node box slot holds the primitive boxes and the pass's
+     * leftovers only (cpu.h; backend.c's plan). */
+    by_order = atrbvh_i_lbvh_in_place(run->cfg->method, n, c->ids != NULL);
     c->leaves_ready = 0;
     c->leaf_boxes_by_order = 0;
-    if (n < 2 || !c->key_varying) {
+    if ((n < 2 || !c->key_varying) && !by_order) {
         /* already sorted (build order): the hierarchy gathers */
+        st = ATRBVH_OK;
+    } else if (!c->key_varying) {
+        /* every key equal: sorted already (build order), and the deltas
+         * for the hierarchy (the leaves' half of the count array) */
+        uint32_t *delta = atrbvh_i_scratch_get(
+            c->scratch, CPU_COUNT, 2 * (size_t)n - 1, sizeof *delta);
+        int64_t i;
+        if (!delta)
+            return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                                 "cannot allocate the node counts for %lu "
+                                 "primitives",
+                                 (unsigned long)n);
+        for (i = 0; i + 1 < (int64_t)n; i++)
+            delta[n - 1 + i] =
+                (uint32_t)atrbvh_karras_delta(c->keys, n, i, i + 1);
+        c->leaves_ready = 1;
+        c->leaf_boxes_by_order = 1;
         st = ATRBVH_OK;
     } else {
         /* c->order holds the build indices (morton wrote them).  When
@@ -420,8 +443,10 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
         int blocks = (int)atrbvh_i_sort_blocks(n, run->cfg->threads);
         sort_leaves lv;
         const size_t nodes = 2 * (size_t)n - 1;
-        lv.box = atrbvh_i_scratch_get(c->scratch, CPU_BOX, nodes,
-                                      sizeof *lv.box);
+        lv.box = atrbvh_i_scratch_get(
+            c->scratch, CPU_BOX,
+            atrbvh_i_node_boxes(run->cfg->method, n, c->ids != NULL),
+            sizeof *lv.box);
         lv.delta = atrbvh_i_scratch_get(c->scratch, CPU_COUNT, nodes,
                                         sizeof *lv.delta);
         if (!lv.box || !lv.delta)
@@ -432,12 +457,8 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
         c->boxes = lv.box; /* (moved along if the slot had to grow) */
         lv.last = lv.box[n - 1];
         lv.delta += n - 1;
-        /* An LBVH of its own primitives (no kept ids) gathers no leaf
-         * box: its hierarchy pass reads them where they are (cpu.h) */
-        c->leaf_boxes_by_order = run->cfg->method == ATRBVH_METHOD_LBVH &&
-                                 !c->ids &&
-                                 n >= ATRBVH_I_HIER_BY_ORDER_MIN;
-        if (c->leaf_boxes_by_order)
+        c->leaf_boxes_by_order = by_order;
+        if (by_order)
             lv.box = NULL;
         atrbvh_sort_msd(n, c->key_varying, &shift, &bits);
         if (c->msd_counts && shift == c->msd_shift && bits == c->msd_bits) {
