@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.8621206:46.1993933]
+set xrange [2.52064928:44.0348874]
 set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 3.74173239,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 9.2135154,39.4272587 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 6.5724647,39.3531597 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 7.54182536,38.7197574 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 12.1771299,39.3638605 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 11.6212072,38.1317351 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 20.5246418,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 13.7328209,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 5.27859344,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 26.5302028,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 18.8979102,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 4.44767059,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 14.9490802,38.1169475 left font ',8' noenhanced front
+set label 'LBVH' at 3.3205152,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 8.69323561,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 9.41679995,39.3531597 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 6.62088377,39.0314856 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 7.6708357,38.4286758 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 11.5506092,38.0467183 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 18.2110716,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 13.170017,39.1916483 left font ',8' noenhanced front
+set label 'embree_low' at 5.51986619,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 24.8916502,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 17.4623838,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 5.71196018,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 13.3477879,38.740404 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.94209376:39.4322585]
+set xrange [2.28023733:37.7992705]
 set xtics (5, 10, 20)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 3.75227359,104.440512 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 11.0654142,75.98974 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 7.55341208,74.8489989 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 11.7356129,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 9.99304529,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.0914914,68.0489447 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 23.4995852,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 11.5409435,68.7352597 left font ',8' noenhanced front
-set label 'embree_low' at 5.62196992,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 21.3688053,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 15.0617545,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 4.38979521,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 16.2805129,71.690965 left font ',8' noenhanced front
+set label 'LBVH' at 2.51781764,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 7.8263723,77.3438007 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 6.15724856,73.4949382 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 9.78591162,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 7.55742965,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 15.8772714,72.4804162 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 18.4728265,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 13.5042633,67.3811989 left font ',8' noenhanced front
+set label 'embree_low' at 4.87359251,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 21.5915266,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 15.2217335,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 3.31616433,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 8.45286668,68.9828435 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [37.5886456:593.062641]
+set xrange [38.1201401:608.492573]
 set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 57.1478672,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 115.563859,63.4134696 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 86.9604004,61.8432232 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 134.430819,62.4957022 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 107.344144,60.8121607 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 139.905335,59.8198299 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 246.30501,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 175.072922,62.0452734 left font ',8' noenhanced front
-set label 'embree_low' at 78.886215,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 229.658907,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 342.121262,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 38.5594878,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 187.710803,62.7480041 left font ',8' noenhanced front
+set label 'LBVH' at 42.0358423,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 125.020878,63.4134696 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 93.5585185,61.8432232 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 138.60693,62.4957022 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 118.526508,60.8121607 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 156.745696,59.8198299 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 249.641127,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 188.181934,62.0452734 left font ',8' noenhanced front
+set label 'embree_low' at 77.4937901,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 350.208195,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 241.291828,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 51.7276619,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 213.593959,62.7480041 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
