@@ -938,6 +938,35 @@ START_TEST(large_arrays_advise_huge_pages)
 }
 END_TEST
 
+/* Whether every leaf box of b is exactly the box of its triangles (v: 9
+ * floats each), as a refit computes it (min and max of the corners). */
+static int leaf_boxes_exact(const atrbvh_bvh *b, const float *v)
+{
+    size_t count, np, i;
+    const atrbvh_node *nodes = atrbvh_bvh_nodes(b, &count);
+    const uint32_t *prims = atrbvh_bvh_primitive_indices(b, &np);
+    for (i = 0; i < count; i++) {
+        const atrbvh_node *nd = &nodes[i];
+        float lo[3] = {INFINITY, INFINITY, INFINITY},
+              hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        uint32_t k;
+        int c, a;
+        if (nd->count == 0)
+            continue;
+        for (k = nd->index; k < nd->index + nd->count; k++)
+            for (c = 0; c < 3; c++)
+                for (a = 0; a < 3; a++) {
+                    const float x = v[9 * (size_t)prims[k] + 3 * c + a];
+                    lo[a] = x < lo[a] ? x : lo[a];
+                    hi[a] = x > hi[a] ? x : hi[a];
+                }
+        for (a = 0; a < 3; a++)
+            if (nd->min[a] != lo[a] || nd->max[a] != hi[a])
+                return 0;
+    }
+    return 1;
+}
+
 /* An LBVH of 3073 primitives or more reads its leaf boxes in place and
  * writes no node box (lib/cpu/hierarchy.c, cpu.h's leaf_boxes_by_order),
  * in a node box slot of n + 3072 boxes; with kept ids (skip_invalid that
@@ -947,7 +976,8 @@ END_TEST
  * random triangles (the sort's buckets), and coincident ones (every key
  * equal: the sort writes the deltas alone), at 1 and 2 threads, with
  * and without collapsing, at the threshold and above it.  A caller's
- * tree (atrbvh_reoptimise as an LBVH) gathers them too: a valid tree. */
+ * tree (atrbvh_reoptimise as an LBVH) gathers them too, in a slot grown
+ * with its primitive boxes: the same tree as where no slot had to grow. */
 START_TEST(lbvh_leaf_boxes_in_place)
 {
     static const size_t sizes[] = {3073, 5000};
@@ -984,16 +1014,44 @@ START_TEST(lbvh_leaf_boxes_in_place)
                               "n %zu, coincident %d, %d threads, collapse "
                               "%d: %s", n, coincident, threads, collapse, msg);
                 if (!coincident) {
-                    /* a caller's tree (set_tree) gathers its leaf boxes
-                     * (cpu.h): re-optimised as an LBVH, a valid tree */
+                    /* A caller's tree (set_tree) gathers its leaf boxes
+                     * (cpu.h), its slot grown to 2n-1 with the primitive
+                     * boxes in it: re-optimised as an LBVH without a
+                     * handle, the tree of the same re-optimisation on a
+                     * handle whose slot a TRBVH build made that large
+                     * already, and a valid tree. */
                     atrbvh_error e;
+                    atrbvh_device *d;
+                    atrbvh_bvh *t, *a2;
                     g = atrbvh_geometry_triangles(v, 3 * n, NULL, n);
                     o.skip_invalid = 0;
+                    a2 = tu_build(&g, &o);
+                    ck_assert_int_eq(atrbvh_device_open("cpu", &d, &e),
+                                     ATRBVH_OK);
+                    o.device = d;
+                    o.method = ATRBVH_METHOD_TRBVH;
+                    t = tu_build(&g, &o);
+                    o.method = ATRBVH_METHOD_LBVH;
+                    ck_assert_msg(atrbvh_reoptimise(a2, &g, &o, &e) ==
+                                      ATRBVH_OK,
+                                  "%s", e.text);
+                    o.device = NULL;
                     ck_assert_msg(atrbvh_reoptimise(a, &g, &o, &e) ==
                                       ATRBVH_OK,
                                   "%s", e.text);
+                    ck_assert_msg(tu_same_bvh(a, a2, msg, sizeof msg),
+                                  "n %zu, %d threads, collapse %d: "
+                                  "re-optimised: %s",
+                                  n, threads, collapse, msg);
+                    atrbvh_bvh_free(t);
+                    atrbvh_bvh_free(a2);
+                    atrbvh_device_close(d);
                     ck_assert_msg(tu_check_bvh(a, &g, msg, sizeof msg), "%s",
                                   msg);
+                    ck_assert_msg(leaf_boxes_exact(a, v), "n %zu, %d threads,"
+                                  " collapse %d: a leaf box of the "
+                                  "re-optimised tree is not its triangles'",
+                                  n, threads, collapse);
                 }
                 atrbvh_bvh_free(a);
                 atrbvh_bvh_free(b);

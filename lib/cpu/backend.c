@@ -135,7 +135,10 @@ atrbvh_status atrbvh_i_cpu_all_node_boxes(atrbvh_i_cpu_run *c,
     if (!atrbvh_i_lbvh_in_place(run->cfg->method,
                                 run->in.g->primitive_count, 0))
         return ATRBVH_OK; /* (planned so) */
-    plan(c->scratch, run->n, run->cfg->method, 1);
+    /* The slot's reserve only: plan() would forget which roles are live,
+     * and the slot would then grow without the primitive boxes that the
+     * bounds stage wrote (a live role's contents move along). */
+    atrbvh_i_scratch_reserve(c->scratch, CPU_BOX, nodes, sizeof *c->boxes);
     c->boxes = atrbvh_i_scratch_get(c->scratch, CPU_BOX, nodes,
                                     sizeof *c->boxes);
     if (!c->boxes)
