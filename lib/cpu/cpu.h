@@ -19,13 +19,6 @@ static inline int atrbvh_i_is_leaf(const atrbvh_i_tree *t, uint32_t node)
     return node >= t->n - 1;
 }
 
-/* The optimise, collapse and layout stages on the threads: a "top" of the
- * tree's nodes of more than a cut of primitives, the subtrees just below
- * it (the frontier) in one dynamic parallel loop, then the top on the
- * calling thread.  The cut leaves about ATRBVH_I_FRONTIER_PER_THREAD
- * subtrees per thread for the loop's balance; a frontier longer than
- * ATRBVH_I_FRONTIER_CAP_PER_THREAD per thread (a degenerate tree) runs on
- * one thread, with the same result. */
 /* An LBVH whose hierarchy pass reads the leaf boxes where they are
  * (leaf_boxes_by_order, below) keeps its pass's leftovers' subtree boxes
  * after the n primitive boxes in the node box array: at most 16 blocks x
@@ -33,6 +26,14 @@ static inline int atrbvh_i_is_leaf(const atrbvh_i_tree *t, uint32_t node)
  * primitive than that, so that they fit in 2n-1 boxes too. */
 #define ATRBVH_I_HIER_LEFTOVERS 3072u
 #define ATRBVH_I_HIER_BY_ORDER_MIN (ATRBVH_I_HIER_LEFTOVERS + 1u)
+
+/* The optimise, collapse and layout stages on the threads: a "top" of the
+ * tree's nodes of more than a cut of primitives, the subtrees just below
+ * it (the frontier) in one dynamic parallel loop, then the top on the
+ * calling thread.  The cut leaves about ATRBVH_I_FRONTIER_PER_THREAD
+ * subtrees per thread for the loop's balance; a frontier longer than
+ * ATRBVH_I_FRONTIER_CAP_PER_THREAD per thread (a degenerate tree) runs on
+ * one thread, with the same result. */
 #define ATRBVH_I_FRONTIER_PER_THREAD 32u
 #define ATRBVH_I_FRONTIER_CAP_PER_THREAD 512u
 
@@ -105,14 +106,13 @@ typedef struct atrbvh_i_cpu_run {
      * sort_leaves); 0: the hierarchy stage does it */
     int leaves_ready;
     /* sort, with leaves_ready: the leaves' boxes were not gathered; the
-     * hierarchy pass of this LBVH (no kept ids, more than
-     * ATRBVH_I_HIER_BY_ORDER_MIN primitives) reads leaf i's box at its
-     * primitive's, box[order[i]], and writes no node box: the node box
-     * array keeps the primitive boxes in its first n entries, and the
-     * leaves' half is not written (its pages never faulted in) but for
-     * the pass's leftovers (hierarchy.c).  Nothing reads an LBVH's node
-     * boxes afterwards (the layout recomputes them) but the capture of
-     * the refit stage, which builds them (backend.c). */
+     * hierarchy pass of this LBVH (atrbvh_i_lbvh_in_place) reads leaf
+     * i's box at its primitive's, box[order[i]], and writes no node box:
+     * the node box array, n + ATRBVH_I_HIER_LEFTOVERS boxes, keeps the
+     * primitive boxes in its first n entries and the pass's leftovers
+     * after them (hierarchy.c).  Nothing reads an LBVH's node boxes
+     * afterwards (the layout recomputes them) but the capture of the
+     * refit stage, which builds them (backend.c). */
     int leaf_boxes_by_order;
     uint32_t *order;    /* sort: build index of position p   */
     atrbvh_i_tree tree; /* hierarchy ... optimise            */

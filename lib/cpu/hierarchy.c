@@ -66,10 +66,10 @@
  * recomputes the boxes: layout.c), so the sort writes the deltas only and
  * the pass reads leaf i's box at its primitive's, box[order[i]]
  * (prefetched ahead), and writes no node box: the primitive boxes stay
- * whole, and the block passes keep their leftovers' subtree boxes in
- * entries n .. 2n-2, unused then (hier_ctx's by_order).  The leaves' half
- * of the array is then neither written nor read: no 24 bytes per
- * primitive gathered, and its pages never faulted in.
+ * whole, and the block passes keep their leftovers' subtree boxes after
+ * them (hier_ctx's by_order).  No 24 bytes per primitive gathered, and
+ * the array holds n + ATRBVH_I_HIER_LEFTOVERS boxes, not 2n-1 (the memory
+ * plan, backend.c).
  */
 #include "config.h"
 
@@ -82,9 +82,9 @@
 /* Blocks of the first pass, at most (ATRBVH_I_BLOCKS_PER_THREAD a
  * thread, taken in turn: cpu.h): their leftovers live on the stack. */
 #define ATRBVH_HIER_BLOCKS 16
-/* (an LBVH reading its leaf boxes in place keeps every leftover's box in
- * the leaves' half of the node box array: cpu.h) */
-ATRBVH_STATIC_ASSERT(ATRBVH_I_HIER_BY_ORDER_MIN - 1u >=
+/* (an LBVH reading its leaf boxes in place keeps every leftover's box
+ * after the primitive boxes, in ATRBVH_I_HIER_LEFTOVERS entries: cpu.h) */
+ATRBVH_STATIC_ASSERT(ATRBVH_I_HIER_LEFTOVERS >=
                          ATRBVH_HIER_BLOCKS * 2u * ATRBVH_HIER_SIDE,
                      hier_leftover_boxes_fit);
 
@@ -112,7 +112,7 @@ typedef struct hier_ctx {
     /* SIZES, or NULL: leaf i's box is t->box[by_order[i]] (the primitive
      * boxes, never written over: no node box is written), and the
      * leftovers' subtree boxes go to left_box[b * 2 * ATRBVH_HIER_SIDE
-     * + k] (entries n .. 2n-2 of the array, unused then) */
+     * + k] (the entries after the n primitive boxes: cpu.h) */
     const uint32_t *by_order;
     atrbvh_box *left_box;
 } hier_ctx;
@@ -416,8 +416,7 @@ static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
     x.left_box = NULL;
     if (by_order) { /* (the sort's decision: sort.c, cpu.h) */
         x.by_order = order;
-        /* (entry n-1 is primitive n-1's box: the n-1 entries after it) */
-        x.left_box = t->box + n;
+        x.left_box = t->box + n; /* (after primitive n-1's box) */
     }
     t->parent[0] = ATRBVH_U32_MAX;
     if (n == 1) {

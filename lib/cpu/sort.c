@@ -413,19 +413,20 @@ atrbvh_status atrbvh_i_cpu_sort(atrbvh_device *dev, atrbvh_i_run *run,
         /* already sorted (build order): the hierarchy gathers */
         st = ATRBVH_OK;
     } else if (!c->key_varying) {
-        /* every key equal: sorted already (build order), and the deltas
-         * for the hierarchy (the leaves' half of the count array) */
-        uint32_t *delta = atrbvh_i_scratch_get(
-            c->scratch, CPU_COUNT, 2 * (size_t)n - 1, sizeof *delta);
-        int64_t i;
-        if (!delta)
+        /* every key equal: sorted already (build order); the deltas for
+         * the hierarchy, as one bucket of the whole */
+        sort_leaves lv;
+        lv.box = NULL;
+        lv.last = atrbvh_box_empty(); /* (not read without boxes) */
+        lv.delta = atrbvh_i_scratch_get(c->scratch, CPU_COUNT,
+                                        2 * (size_t)n - 1, sizeof *lv.delta);
+        if (!lv.delta)
             return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                                  "cannot allocate the node counts for %lu "
                                  "primitives",
                                  (unsigned long)n);
-        for (i = 0; i + 1 < (int64_t)n; i++)
-            delta[n - 1 + i] =
-                (uint32_t)atrbvh_karras_delta(c->keys, n, i, i + 1);
+        lv.delta += n - 1;
+        bucket_leaves(c->keys, c->order, n, 0, n, &lv);
         c->leaves_ready = 1;
         c->leaf_boxes_by_order = 1;
         st = ATRBVH_OK;
