@@ -232,6 +232,24 @@ static void release_all(atrbvh_cl_device *c)
         clReleaseContext(c->ctx);
 }
 
+/* Whether builds read the geometry and write the output in place
+ * (opencl.h, host_memory): the device says it shares the host's memory
+ * (CL_DEVICE_HOST_UNIFIED_MEMORY, deprecated by OpenCL 2.0 but answered
+ * by every 1.2 platform) and ATRBVH_CL_COPY is unset or empty, which
+ * asks for the copies through the handle's buffers that a device with
+ * its own memory gets (tests run both ways on one device). */
+static cl_uint host_memory(cl_device_id d)
+{
+    cl_bool unified = CL_FALSE;
+    const char *copy = getenv("ATRBVH_CL_COPY");
+    if (copy && *copy)
+        return 0;
+    if (clGetDeviceInfo(d, CL_DEVICE_HOST_UNIFIED_MEMORY, sizeof unified,
+                        &unified, NULL) != CL_SUCCESS)
+        return 0;
+    return unified == CL_TRUE;
+}
+
 static atrbvh_status open_locked(atrbvh_cl_device *c, const char *spec,
                                  char *name, size_t name_size,
                                  atrbvh_error *error)
@@ -267,6 +285,7 @@ static atrbvh_status open_locked(atrbvh_cl_device *c, const char *spec,
                                  "CL_DEVICE_MAX_COMPUTE_UNITS");
     if (c->compute_units < 1)
         c->compute_units = 1;
+    c->host_memory = host_memory(c->device);
     c->ctx = clCreateContext(NULL, 1, &c->device, NULL, NULL, &err);
     if (!c->ctx)
         return atrbvh_i_cl_error(error, err, "clCreateContext", NULL);

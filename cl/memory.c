@@ -17,6 +17,12 @@
  * 20 bytes per primitive less and a build touches that much less
  * memory.
  *
+ * On a device that shares the host's memory, the geometry and output
+ * slots hold instead, for one build, buffers made over the caller's own
+ * arrays (atrbvh_i_cl_wrap, CL_MEM_USE_HOST_PTR), released at the build's
+ * end (atrbvh_i_cl_unwrap): nothing is copied, and the handle keeps no
+ * buffer for them.
+ *
  * Every launch records a profiling event; atrbvh_i_cl_finish waits for the
  * queue and adds each launch's device time to the current time table (the
  * build's, for atrbvh_bvh_kernel_time, or a ray batch's).
@@ -44,6 +50,31 @@ static int home_of(int slot)
     }
 }
 
+/* Whether one buffer of `bytes` is allowed on the device. */
+static atrbvh_status fits(const atrbvh_cl_device *c, size_t bytes,
+                          const char *what, atrbvh_error *error)
+{
+    if ((cl_ulong)bytes <= c->max_alloc)
+        return ATRBVH_OK;
+    return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, ATRBVH_CL_NO_INDEX,
+                         "OpenCL buffer %s of %lu bytes exceeds the "
+                         "device's largest allocation "
+                         "(CL_DEVICE_MAX_MEM_ALLOC_SIZE %lu)",
+                         what, (unsigned long)bytes,
+                         (unsigned long)c->max_alloc);
+}
+
+/* Empties buffer `home` (a home_of slot).  Kernels queued on the buffer
+ * keep it alive until they are done (CL reference counting). */
+static void drop(atrbvh_cl_device *c, int home)
+{
+    if (c->buf[home])
+        clReleaseMemObject(c->buf[home]);
+    c->buf[home] = NULL;
+    c->buf_bytes[home] = 0;
+    c->wrapped &= ~((uint64_t)1 << home);
+}
+
 atrbvh_status atrbvh_i_cl_buffer(atrbvh_cl_device *c, int slot, size_t count,
                                  size_t item, const char *what,
                                  atrbvh_error *error)
@@ -56,20 +87,8 @@ atrbvh_status atrbvh_i_cl_buffer(atrbvh_cl_device *c, int slot, size_t count,
                              "OpenCL buffer %s: size overflows", what);
     if (c->buf[slot] && c->buf_bytes[slot] >= bytes)
         return ATRBVH_OK;
-    if ((cl_ulong)bytes > c->max_alloc)
-        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, ATRBVH_CL_NO_INDEX,
-                             "OpenCL buffer %s of %lu bytes exceeds the "
-                             "device's largest allocation "
-                             "(CL_DEVICE_MAX_MEM_ALLOC_SIZE %lu)",
-                             what, (unsigned long)bytes,
-                             (unsigned long)c->max_alloc);
-    if (c->buf[slot]) {
-        /* Kernels queued on the old buffer keep it alive until they are
-         * done (CL reference counting). */
-        clReleaseMemObject(c->buf[slot]);
-        c->buf[slot] = NULL;
-        c->buf_bytes[slot] = 0;
-    }
+    CL_CHECK(fits(c, bytes, what, error));
+    drop(c, slot);
     c->buf[slot] = clCreateBuffer(c->ctx, CL_MEM_READ_WRITE, bytes, NULL, &err);
     if (!c->buf[slot])
         return atrbvh_i_cl_error(error, err, "clCreateBuffer", what);
@@ -83,12 +102,8 @@ atrbvh_status atrbvh_i_cl_buffer(atrbvh_cl_device *c, int slot, size_t count,
 void atrbvh_i_cl_buffers_release(atrbvh_cl_device *c)
 {
     int k;
-    for (k = 0; k < B_SLOTS; k++) {
-        if (c->buf[k])
-            clReleaseMemObject(c->buf[k]);
-        c->buf[k] = NULL;
-        c->buf_bytes[k] = 0;
-    }
+    for (k = 0; k < B_SLOTS; k++)
+        drop(c, k);
 }
 
 /* One write into slot's buffer: blocking (everything queued before it is
@@ -125,6 +140,35 @@ atrbvh_status atrbvh_i_cl_upload_queued(atrbvh_cl_device *c, int slot,
                                         const char *what, atrbvh_error *error)
 {
     return upload(c, slot, data, bytes, CL_FALSE, what, error);
+}
+
+atrbvh_status atrbvh_i_cl_wrap(atrbvh_cl_device *c, int slot,
+                               const void *data, size_t bytes,
+                               cl_mem_flags access, const char *what,
+                               atrbvh_error *error)
+{
+    cl_int err;
+    slot = home_of(slot);
+    drop(c, slot); /* a kept buffer (or an earlier wrap) goes */
+    CL_CHECK(fits(c, bytes, what, error));
+    /* (the cast: OpenCL 1.2 takes a void *; a CL_MEM_READ_ONLY buffer is
+     * never written) */
+    c->buf[slot] = clCreateBuffer(c->ctx, access | CL_MEM_USE_HOST_PTR,
+                                  bytes, (void *)(uintptr_t)data, &err);
+    if (!c->buf[slot])
+        return atrbvh_i_cl_error(error, err, "clCreateBuffer", what);
+    c->buf_bytes[slot] = bytes;
+    c->wrapped |= (uint64_t)1 << slot;
+    c->n_wraps++;
+    return ATRBVH_OK;
+}
+
+void atrbvh_i_cl_unwrap(atrbvh_cl_device *c)
+{
+    int k;
+    for (k = 0; k < B_SLOTS && c->wrapped; k++)
+        if (c->wrapped & ((uint64_t)1 << k))
+            drop(c, k);
 }
 
 atrbvh_status atrbvh_i_cl_sync(atrbvh_cl_device *c, atrbvh_error *error)

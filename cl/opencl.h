@@ -105,6 +105,8 @@ enum {
     B_T_COST,     /* per-ray box and primitive tests      */
     B_SLOTS
 };
+/* (c->wrapped has a bit per slot) */
+typedef char atrbvh_cl_slots_fit[B_SLOTS <= 64 ? 1 : -1];
 
 #define ATRBVH_CL_MAX_EVENTS 256
 #define ATRBVH_CL_MAX_TIMES 32
@@ -136,6 +138,17 @@ typedef struct atrbvh_cl_device {
      * and clFinish waits. */
     unsigned long n_launches, n_writes, n_fills, n_reads, n_finishes;
     unsigned long n_queued_reads;
+    /* ... and the buffers made over the caller's memory (wraps). */
+    unsigned long n_wraps;
+    /* The device shares the host's memory (CL_DEVICE_HOST_UNIFIED_MEMORY,
+     * a CPU device such as PoCL's, an integrated GPU) and
+     * ATRBVH_CL_COPY is unset: a build reads the caller's geometry and
+     * writes the output in place, through buffers made over them for the
+     * build (atrbvh_i_cl_wrap), instead of copying them through buffers
+     * of the handle. */
+    cl_uint host_memory;
+    uint64_t wrapped; /* slots holding a wrap (bit per slot), released
+                         by atrbvh_i_cl_unwrap at the build's end */
     cl_event events[ATRBVH_CL_MAX_EVENTS];
     int event_kernel[ATRBVH_CL_MAX_EVENTS];
     int event_count;
@@ -223,6 +236,18 @@ atrbvh_status atrbvh_i_cl_upload_queued(atrbvh_cl_device *c, int slot,
                                         const void *data, size_t bytes,
                                         const char *what,
                                         atrbvh_error *error);
+/* Slot `slot` for this build only: a buffer made over the caller's
+ * `bytes` at `data` (CL_MEM_USE_HOST_PTR with `access`, on a
+ * c->host_memory device), in place of any buffer the slot held.  The
+ * device never writes a buffer made CL_MEM_READ_ONLY, so `data` may be
+ * read-only memory.  `data` must stay valid until the build's end waits
+ * for the queue and calls atrbvh_i_cl_unwrap. */
+atrbvh_status atrbvh_i_cl_wrap(atrbvh_cl_device *c, int slot,
+                               const void *data, size_t bytes,
+                               cl_mem_flags access, const char *what,
+                               atrbvh_error *error);
+/* Releases the build's wraps (after the queue is done with them). */
+void atrbvh_i_cl_unwrap(atrbvh_cl_device *c);
 /* B_SYNC, made and zeroed the first time. */
 atrbvh_status atrbvh_i_cl_sync(atrbvh_cl_device *c, atrbvh_error *error);
 atrbvh_status atrbvh_i_cl_download(atrbvh_cl_device *c, int slot, void *data,

@@ -9,7 +9,11 @@
  * with the count of invalid primitives, the hierarchy's status (keys out
  * of order: a failed sort) and the optimise stage's counts are read in
  * the same wait, queued before it) and the layout's output
- * (the nodes' read queued, the primitives' read blocking).  The Morton
+ * (the nodes' read queued, the primitives' read blocking).  On a device
+ * that shares the host's memory (opencl.h's host_memory) the geometry is
+ * read and the output written in place, through buffers made over the
+ * caller's arrays for the build (wraps), and those reads copy nothing.
+ * The Morton
  * frame is the bounds kernel's, computed on the device from the united
  * centroid box by the host's function.  The bounds stage reads its
  * record at once only when the pipeline needs it then (a capture,
@@ -95,6 +99,7 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
     c->opt_treelets = c->opt_applied = c->opt_skipped = 0;
     c->n_launches = c->n_writes = c->n_fills = c->n_reads = 0;
     c->n_finishes = c->n_queued_reads = 0;
+    c->n_wraps = 0;
     run->state = c;
     return ATRBVH_OK;
 }
@@ -108,13 +113,27 @@ static void cl_end(atrbvh_device *dev, atrbvh_i_run *run)
      * stay on the handle for the next build). */
     if (c->event_count || c->pending)
         (void)atrbvh_i_cl_finish(c, &ignored);
+    atrbvh_i_cl_unwrap(c); /* the caller's arrays are theirs again */
     run->state = NULL;
 }
 
 /* --------------------------------------------------------------- bounds */
-/* The geometry's arrays go to the device by queued copies: the caller's
- * arrays stay as they are during the build, and the bounds stage's read
- * waits for them. */
+/* One of the caller's geometry arrays on the device: read in place on
+ * a device that shares the host's memory (a read-only wrap: the device
+ * never writes it), else a queued copy into the handle's buffer.  Either
+ * way the caller's arrays stay as they are during the build, and the
+ * build's end waits for the queue before it gives them back. */
+static atrbvh_status geometry_array(atrbvh_cl_device *c, int slot,
+                                   const void *data, size_t bytes,
+                                   const char *what, atrbvh_error *error)
+{
+    if (c->host_memory)
+        return atrbvh_i_cl_wrap(c, slot, data, bytes, CL_MEM_READ_ONLY, what,
+                                error);
+    CL_CHECK(atrbvh_i_cl_buffer(c, slot, bytes, 1, what, error));
+    return atrbvh_i_cl_upload_queued(c, slot, data, bytes, what, error);
+}
+
 static atrbvh_status upload_geometry(atrbvh_cl_device *c,
                                      const atrbvh_i_input *in,
                                      atrbvh_kargs_bounds *a,
@@ -128,9 +147,8 @@ static atrbvh_status upload_geometry(atrbvh_cl_device *c,
             return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE,
                                  ATRBVH_CL_NO_INDEX, "vertices overflow");
         bytes += 3 * sizeof(float);
-        CL_CHECK(atrbvh_i_cl_buffer(c, B_GEOMETRY, bytes, 1, "vertices", error));
-        CL_CHECK(atrbvh_i_cl_upload_queued(c, B_GEOMETRY, g->vertices, bytes,
-                                           "vertices", error));
+        CL_CHECK(geometry_array(c, B_GEOMETRY, g->vertices, bytes, "vertices",
+                                error));
         bytes = 4;
         if (indexed) {
             if (!atrbvh_i_mul_size(n - 1, in->istride, &bytes))
@@ -138,10 +156,12 @@ static atrbvh_status upload_geometry(atrbvh_cl_device *c,
                                      ATRBVH_CL_NO_INDEX, "indices overflow");
             bytes += 3 * sizeof(uint32_t);
         }
-        CL_CHECK(atrbvh_i_cl_buffer(c, B_INDICES, bytes, 1, "indices", error));
         if (indexed)
-            CL_CHECK(atrbvh_i_cl_upload_queued(c, B_INDICES, g->indices, bytes,
-                                               "indices", error));
+            CL_CHECK(geometry_array(c, B_INDICES, g->indices, bytes, "indices",
+                                    error));
+        else /* (a kernel argument all the same) */
+            CL_CHECK(atrbvh_i_cl_buffer(c, B_INDICES, bytes, 1, "indices",
+                                        error));
         a->vstride = in->vstride / sizeof(float);
         a->istride = in->istride / sizeof(uint32_t);
         a->vertex_count = g->vertex_count;
@@ -152,9 +172,8 @@ static atrbvh_status upload_geometry(atrbvh_cl_device *c,
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,
                              "boxes overflow");
     bytes += 6 * sizeof(float);
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_GEOMETRY, bytes, 1, "input boxes", error));
-    CL_CHECK(atrbvh_i_cl_upload_queued(c, B_GEOMETRY, g->boxes, bytes,
-                                       "input boxes", error));
+    CL_CHECK(geometry_array(c, B_GEOMETRY, g->boxes, bytes, "input boxes",
+                            error));
     a->bstride = in->bstride / sizeof(float);
     return ATRBVH_OK;
 }
@@ -691,12 +710,14 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
                CL_BUF(B_PARENT), CL_BUF(B_SIZE), CL_BUF(B_COUNTER),
                CL_VAL(a));
     }
-    /* The layout's kernels first (they need nothing from the host), then
+    /* The layout's kernels first (they need nothing from the host) unless
+     * they write the output in place, then
      * the host's one wait before the output: the root's size, and with
      * it (queued before it on the in-order queue) the bounds record when
      * the bounds stage left it (the pipeline then checks `bad`) and the
      * optimise stage's counts. */
-    CL_CHECK(queue_layout(c, run, error));
+    if (!c->host_memory) /* (else into the output itself: st_layout) */
+        CL_CHECK(queue_layout(c, run, error));
     if (run->bounds_deferred)
         CL_CHECK(atrbvh_i_cl_download_queued(c, B_PARTIAL, &c->bounds_rec,
                                              sizeof c->bounds_rec,
@@ -723,20 +744,36 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
 
 /* --------------------------------------------------------------- layout */
 /* Queues layout_top and layout (kernels.cl), which read nothing from the
- * host: the collapse stage queues them before its wait, so the device
- * runs them while the host waits for the root size and allocates the
- * output, and st_layout only reads it. */
+ * host.  Into the handle's output buffers, the collapse stage queues them
+ * before its wait, so the device runs them while the host waits for the
+ * root size and allocates the output, and st_layout only reads it.  On a
+ * device that shares the host's memory st_layout queues them into the
+ * output itself, which the pipeline has made by then: the device idles
+ * while the host allocates it (tens of microseconds), and nothing is
+ * copied (a tenth of a millisecond per megabyte here: docs/opencl.md). */
 static atrbvh_status queue_layout(atrbvh_cl_device *c, const atrbvh_i_run *run,
                                   atrbvh_error *error)
 {
     atrbvh_kargs_tree a = tree_args(c, run);
     cl_uint workers;
-    /* Sized for the most nodes n leaves can give (2n - 1), not this
-     * tree's count: the next build of n primitives then reuses it. */
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_NODES, tree_nodes(run),
-                                sizeof(atrbvh_node), "output nodes", error));
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_PRIMS, run->n, 4,
-                                "output primitive indices", error));
+    if (c->host_memory) {
+        /* The output object itself (st_layout: the pipeline has made it) */
+        CL_CHECK(atrbvh_i_cl_wrap(c, B_OUT_NODES, run->nodes,
+                                  (size_t)run->node_count *
+                                      sizeof(atrbvh_node),
+                                  CL_MEM_WRITE_ONLY, "output nodes", error));
+        CL_CHECK(atrbvh_i_cl_wrap(c, B_OUT_PRIMS, run->prim_indices,
+                                  (size_t)run->n * 4, CL_MEM_WRITE_ONLY,
+                                  "output primitive indices", error));
+    } else {
+        /* Sized for the most nodes n leaves can give (2n - 1), not this
+         * tree's count: the next build of n primitives then reuses it. */
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_NODES, tree_nodes(run),
+                                    sizeof(atrbvh_node), "output nodes",
+                                    error));
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_PRIMS, run->n, 4,
+                                    "output primitive indices", error));
+    }
     /* At most one listed subtree per leaf: 3 words each. */
     CL_CHECK(atrbvh_i_cl_buffer(c, B_JUMP, 3 * (size_t)run->n, 4,
                                 "layout subtree list", error));
@@ -767,7 +804,12 @@ static atrbvh_status st_layout(atrbvh_device *dev, atrbvh_i_run *run,
         CL_CHECK(queue_layout(c, run, error));
     /* One wait: the nodes' read queued, the primitives' read blocking
      * behind it on the in-order queue; then the launches' times, without
-     * a clFinish (everything queued is done). */
+     * a clFinish (everything queued is done).  On a device that shares
+     * the host's memory the kernels wrote the output itself, through
+     * wraps of it (queue_layout): the reads are then into the wrapped
+     * memory, which OpenCL allows once every command before them is done
+     * (the in-order queue), and which copies nothing on such a device
+     * (PoCL returns at once; another may copy a cached copy back). */
     CL_CHECK(atrbvh_i_cl_download_queued(
         c, B_OUT_NODES, run->nodes,
         (size_t)run->node_count * sizeof(atrbvh_node), "output nodes",

@@ -3,14 +3,21 @@
  * builds: a second build of the same scene, and a build of a smaller one,
  * create no buffer (cl/memory.c counts clCreateBuffer calls in the
  * handle's state), and still give the CPU's tree; a larger scene grows
- * them.  White-box: links the library's core and reads the backend's
- * state (cl/opencl.h).  Skips without an OpenCL device.
+ * them.  A device that shares the host's memory reads the geometry and
+ * writes the output in place (no copy; ATRBVH_CL_COPY asks for the
+ * copies), with the same trees.  White-box: links the library's core and
+ * reads the backend's state (cl/opencl.h).  Skips without an OpenCL
+ * device.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <check.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <unistd.h>
 
 #include "atrbvh.h"
 #include "backend.h" /* struct atrbvh_device: impl */
@@ -172,7 +179,7 @@ END_TEST
  * queued read (the treelet counts, which arrive with the root size) and
  * the indices' write, and no wait.  Every tree is the CPU's. */
 static void counted_build(atrbvh_device *dev, const atrbvh_geometry *g,
-                          atrbvh_method method, unsigned long out[6])
+                          atrbvh_method method, unsigned long out[7])
 {
     const atrbvh_cl_device *c = device_build(dev, g, method, 9, 2);
     out[0] = c->n_launches;
@@ -181,33 +188,65 @@ static void counted_build(atrbvh_device *dev, const atrbvh_geometry *g,
     out[3] = c->n_reads;
     out[4] = c->n_finishes;
     out[5] = c->n_queued_reads;
+    out[6] = c->n_wraps;
 }
 
-START_TEST(launches_and_waits_per_build)
+/* Opens "opencl", with ATRBVH_CL_COPY set to `copy` for the open (NULL:
+ * unset); NULL when there is no OpenCL (a skip). */
+static atrbvh_device *open_mode(const char *copy, const char *test)
 {
     atrbvh_device *dev = NULL;
     atrbvh_error e;
+    atrbvh_status st;
+    if (copy)
+        ck_assert_int_eq(setenv("ATRBVH_CL_COPY", copy, 1), 0);
+    else
+        ck_assert_int_eq(unsetenv("ATRBVH_CL_COPY"), 0);
+    st = atrbvh_device_open("opencl", &dev, &e);
+    ck_assert_int_eq(unsetenv("ATRBVH_CL_COPY"), 0);
+    if (tu_opencl_may_skip(st)) {
+        fprintf(stderr, "SKIP %s: %s\n", test, e.text);
+        return NULL;
+    }
+    ck_assert_msg(st == ATRBVH_OK, "%s", e.text);
+    return dev;
+}
+
+/* What the device says of its memory, asked here. */
+static int reports_host_memory(const atrbvh_device *dev)
+{
+    const atrbvh_cl_device *c = (const atrbvh_cl_device *)dev->impl;
+    cl_bool unified = CL_FALSE;
+    ck_assert_int_eq(clGetDeviceInfo(c->device, CL_DEVICE_HOST_UNIFIED_MEMORY,
+                                     sizeof unified, &unified, NULL),
+                     CL_SUCCESS);
+    return unified == CL_TRUE;
+}
+
+/* The counts of the comment above on one handle, whose mode (copies or
+ * the caller's memory in place) is the device's unless ATRBVH_CL_COPY
+ * was set at its open: in place, no write and one wrap per geometry
+ * array and per output array, the rest the same. */
+static void counts_on(atrbvh_device *dev, int in_place)
+{
     unsigned n = 20000, k;
     float *v;
     uint32_t *idx;
     atrbvh_geometry g;
-    unsigned long a[6];
-    atrbvh_status st = atrbvh_device_open("opencl", &dev, &e);
-    if (tu_opencl_may_skip(st)) {
-        fprintf(stderr, "SKIP launches_and_waits_per_build: %s\n", e.text);
-        return;
-    }
-    ck_assert_msg(st == ATRBVH_OK, "%s", e.text);
+    unsigned long a[7], w;
+    ck_assert_uint_eq(((const atrbvh_cl_device *)dev->impl)->host_memory,
+                      (unsigned)in_place);
     v = tu_random_triangles(n, 9, 3.0f, 1.0f);
     g = atrbvh_geometry_triangles(v, 3 * n, NULL, n);
     counted_build(dev, &g, ATRBVH_METHOD_LBVH, a); /* makes the buffers */
     counted_build(dev, &g, ATRBVH_METHOD_LBVH, a);
-    ck_assert_msg(a[0] == 8 && a[1] == 1 && a[2] == 0 && a[3] == 2 &&
-                      a[4] == 0 && a[5] == 3,
+    w = in_place ? 0 : 1;
+    ck_assert_msg(a[0] == 8 && a[1] == w && a[2] == 0 && a[3] == 2 &&
+                      a[4] == 0 && a[5] == 3 && a[6] == 3 * (1 - w),
                   "LBVH: %lu launches, %lu writes, %lu fills, %lu blocking "
-                  "reads, %lu clFinish, %lu queued reads (want 8, 1, 0, 2, "
-                  "0, 3)",
-                  a[0], a[1], a[2], a[3], a[4], a[5]);
+                  "reads, %lu clFinish, %lu queued reads, %lu wraps (want "
+                  "8, %lu, 0, 2, 0, 3, %lu)",
+                  a[0], a[1], a[2], a[3], a[4], a[5], a[6], w, 3 * (1 - w));
     /* indexed (each triangle's own three vertices), ATRBVH(9, 2) */
     idx = malloc(3 * (size_t)n * sizeof *idx);
     ck_assert_ptr_nonnull(idx);
@@ -215,15 +254,134 @@ START_TEST(launches_and_waits_per_build)
         idx[k] = k;
     g = atrbvh_geometry_triangles(v, 3 * n, idx, n);
     counted_build(dev, &g, ATRBVH_METHOD_ATRBVH, a);
-    ck_assert_msg(a[0] == 13 && a[1] == 2 && a[2] == 2 && a[3] == 2 &&
-                      a[4] == 0 && a[5] == 4,
+    ck_assert_msg(a[0] == 13 && a[1] == 2 * w && a[2] == 2 && a[3] == 2 &&
+                      a[4] == 0 && a[5] == 4 && a[6] == 4 * (1 - w),
                   "ATRBVH(9,2): %lu launches, %lu writes, %lu fills, %lu "
-                  "blocking reads, %lu clFinish, %lu queued reads (want 13, "
-                  "2, 2, 2, 0, 4)",
-                  a[0], a[1], a[2], a[3], a[4], a[5]);
+                  "blocking reads, %lu clFinish, %lu queued reads, %lu "
+                  "wraps (want 13, %lu, 2, 2, 0, 4, %lu)",
+                  a[0], a[1], a[2], a[3], a[4], a[5], a[6], 2 * w,
+                  4 * (1 - w));
     free(idx);
     free(v);
+}
+
+START_TEST(launches_and_waits_per_build)
+{
+    atrbvh_device *dev = open_mode(NULL, "launches_and_waits_per_build");
+    if (!dev)
+        return;
+    /* in place exactly when the device says it shares the host's memory */
+    counts_on(dev, reports_host_memory(dev));
     atrbvh_device_close(dev);
+    dev = open_mode("1", "launches_and_waits_per_build");
+    ck_assert_ptr_nonnull(dev);
+    counts_on(dev, 0); /* ATRBVH_CL_COPY: copies on any device */
+    atrbvh_device_close(dev);
+}
+END_TEST
+
+/* `bytes` of src in fresh pages that end where the copy ends, made
+ * read-only, with an inaccessible page after them: a write into the copy,
+ * or a read past its end, is a segmentation fault.  *base and *len: the
+ * mapping, for munmap. */
+static void *guarded_copy(const void *src, size_t bytes, void **base,
+                          size_t *len)
+{
+    size_t page = (size_t)sysconf(_SC_PAGESIZE);
+    size_t data = (bytes + page - 1) / page * page;
+    int fd = open("/dev/zero", O_RDWR); /* (MAP_ANONYMOUS is not C99's POSIX) */
+    char *m;
+    ck_assert_int_ge(fd, 0);
+    *len = data + page;
+    m = mmap(NULL, *len, PROT_READ | PROT_WRITE, MAP_PRIVATE, fd, 0);
+    close(fd);
+    ck_assert(m != MAP_FAILED);
+    memcpy(m + data - bytes, src, bytes);
+    ck_assert_int_eq(mprotect(m, data, PROT_READ), 0);
+    ck_assert_int_eq(mprotect(m + data, page, PROT_NONE), 0);
+    *base = m;
+    return m + data - bytes;
+}
+
+/* The same trees whether a build reads the caller's geometry and writes
+ * the output in place or copies them (ATRBVH_CL_COPY), and the CPU's:
+ * unindexed and indexed triangles with padded vertices (16 bytes apart,
+ * the last vertex's padding absent) and boxes 32 bytes apart, LBVH and
+ * ATRBVH(9, 2), each geometry array alone in read-only pages with an
+ * inaccessible page right after its last byte (cl/stages.c wraps them
+ * read-only and sized exactly). */
+START_TEST(in_place_and_copied_agree)
+{
+    atrbvh_device *dev[2];
+    unsigned n = 6000, k, d, m;
+    float *v = tu_random_triangles(n, 11, 3.0f, 1.0f), *pad, *boxes;
+    uint32_t *idx;
+    const float *rv, *rb;
+    const uint32_t *ri;
+    void *base[3];
+    size_t len[3], vbytes, ibytes, bbytes;
+    atrbvh_geometry g[3];
+    dev[0] = open_mode(NULL, "in_place_and_copied_agree");
+    if (!dev[0]) {
+        free(v);
+        return;
+    }
+    dev[1] = open_mode("1", "in_place_and_copied_agree");
+    ck_assert_ptr_nonnull(dev[1]);
+    /* vertices 4 floats apart; the last one's fourth float is not part of
+     * the array the geometry describes */
+    pad = malloc(12 * (size_t)n * sizeof *pad);
+    boxes = malloc(8 * (size_t)n * sizeof *boxes);
+    idx = malloc(3 * (size_t)n * sizeof *idx);
+    ck_assert(pad && boxes && idx);
+    for (k = 0; k < 3 * n; k++) {
+        memcpy(pad + 4 * k, v + 3 * k, 3 * sizeof *v);
+        pad[4 * k + 3] = -1.0f;
+        idx[k] = 3 * n - 1 - k; /* backwards */
+    }
+    for (k = 0; k < n; k++) {
+        const float *t = v + 9 * k;
+        for (d = 0; d < 3; d++) {
+            float lo = t[d], hi = t[d];
+            for (m = 1; m < 3; m++) {
+                lo = t[3 * m + d] < lo ? t[3 * m + d] : lo;
+                hi = t[3 * m + d] > hi ? t[3 * m + d] : hi;
+            }
+            boxes[8 * k + d] = lo;
+            boxes[8 * k + 3 + d] = hi;
+        }
+        boxes[8 * k + 6] = boxes[8 * k + 7] = 0.0f;
+    }
+    vbytes = (12 * (size_t)n - 1) * sizeof *pad;
+    ibytes = 3 * (size_t)n * sizeof *idx;
+    bbytes = (8 * (size_t)n - 2) * sizeof *boxes;
+    rv = guarded_copy(pad, vbytes, &base[0], &len[0]);
+    ri = guarded_copy(idx, ibytes, &base[1], &len[1]);
+    rb = guarded_copy(boxes, bbytes, &base[2], &len[2]);
+    g[0] = atrbvh_geometry_triangles(rv, 3 * n, NULL, n);
+    g[0].vertex_stride = 4 * sizeof(float);
+    g[1] = atrbvh_geometry_triangles(rv, 3 * n, ri, n);
+    g[1].vertex_stride = 4 * sizeof(float);
+    g[2] = atrbvh_geometry_boxes(rb, n);
+    g[2].box_stride = 8 * sizeof(float);
+    for (k = 0; k < 3; k++)
+        for (d = 0; d < 2; d++) {
+            const atrbvh_cl_device *c;
+            c = device_build(dev[d], &g[k], ATRBVH_METHOD_LBVH, 9, 2);
+            ck_assert_uint_eq(c->n_wraps, c->host_memory ? 3u + (k == 1) : 0u);
+            if (c->host_memory) /* the wraps are gone */
+                ck_assert(!c->buf[B_GEOMETRY] && !c->buf[B_OUT_NODES]);
+            c = device_build(dev[d], &g[k], ATRBVH_METHOD_ATRBVH, 9, 2);
+            ck_assert_uint_eq(c->n_wraps, c->host_memory ? 3u + (k == 1) : 0u);
+        }
+    for (k = 0; k < 3; k++)
+        ck_assert_int_eq(munmap(base[k], len[k]), 0);
+    free(idx);
+    free(boxes);
+    free(pad);
+    free(v);
+    atrbvh_device_close(dev[0]);
+    atrbvh_device_close(dev[1]);
 }
 END_TEST
 
@@ -234,6 +392,7 @@ int main(void)
     tcase_add_test(tc, second_build_creates_no_buffer);
     tcase_add_test(tc, skip_marks_on_the_device);
     tcase_add_test(tc, launches_and_waits_per_build);
+    tcase_add_test(tc, in_place_and_copied_agree);
     tcase_set_timeout(tc, 300);
     suite_add_tcase(s, tc);
     return tu_run(s);
