@@ -163,6 +163,32 @@ atrbvh_status atrbvh_i_cl_wrap(atrbvh_cl_device *c, int slot,
     return ATRBVH_OK;
 }
 
+atrbvh_status atrbvh_i_cl_input(atrbvh_cl_device *c, int slot,
+                                const void *data, size_t bytes,
+                                cl_bool blocking, const char *what,
+                                atrbvh_error *error)
+{
+    if (c->host_memory && bytes > 0)
+        return atrbvh_i_cl_wrap(c, slot, data, bytes, CL_MEM_READ_ONLY, what,
+                                error);
+    CL_CHECK(atrbvh_i_cl_buffer(c, slot, bytes, 1, what, error));
+    return upload(c, slot, data, bytes, blocking, what, error);
+}
+
+atrbvh_status atrbvh_i_cl_output(atrbvh_cl_device *c, int slot, void *data,
+                                 size_t count, size_t item, const char *what,
+                                 atrbvh_error *error)
+{
+    size_t bytes;
+    if (!c->host_memory || count == 0)
+        return atrbvh_i_cl_buffer(c, slot, count, item, what, error);
+    if (!atrbvh_i_mul_size(count, item, &bytes))
+        return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,
+                             "OpenCL buffer %s: size overflows", what);
+    return atrbvh_i_cl_wrap(c, slot, data, bytes, CL_MEM_WRITE_ONLY, what,
+                            error);
+}
+
 void atrbvh_i_cl_unwrap(atrbvh_cl_device *c)
 {
     int k;

@@ -106,7 +106,7 @@ enum {
     B_SLOTS
 };
 /* (c->wrapped has a bit per slot) */
-typedef char atrbvh_cl_slots_fit[B_SLOTS <= 64 ? 1 : -1];
+ATRBVH_STATIC_ASSERT(B_SLOTS <= 64, cl_slots_fit);
 
 #define ATRBVH_CL_MAX_EVENTS 256
 #define ATRBVH_CL_MAX_TIMES 32
@@ -246,7 +246,22 @@ atrbvh_status atrbvh_i_cl_wrap(atrbvh_cl_device *c, int slot,
                                const void *data, size_t bytes,
                                cl_mem_flags access, const char *what,
                                atrbvh_error *error);
-/* Releases the build's wraps (after the queue is done with them). */
+/* One of the caller's arrays that kernels read, in slot `slot`: a wrap
+ * (in place) on a c->host_memory device, else the handle's buffer and a
+ * copy into it (blocking or queued). */
+atrbvh_status atrbvh_i_cl_input(atrbvh_cl_device *c, int slot,
+                                const void *data, size_t bytes,
+                                cl_bool blocking, const char *what,
+                                atrbvh_error *error);
+/* One of the caller's arrays that kernels write (count items of `item`
+ * bytes), in slot `slot`: a wrap on a c->host_memory device, else the
+ * handle's buffer; either way read back with atrbvh_i_cl_download into
+ * `data` (no copy in place). */
+atrbvh_status atrbvh_i_cl_output(atrbvh_cl_device *c, int slot, void *data,
+                                 size_t count, size_t item, const char *what,
+                                 atrbvh_error *error);
+/* Releases the wraps of a build or ray batch (after the queue is done
+ * with them). */
 void atrbvh_i_cl_unwrap(atrbvh_cl_device *c);
 /* B_SYNC, made and zeroed the first time. */
 atrbvh_status atrbvh_i_cl_sync(atrbvh_cl_device *c, atrbvh_error *error);

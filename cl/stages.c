@@ -118,22 +118,12 @@ static void cl_end(atrbvh_device *dev, atrbvh_i_run *run)
 }
 
 /* --------------------------------------------------------------- bounds */
-/* One of the caller's geometry arrays on the device: read in place on
- * a device that shares the host's memory (a read-only wrap: the device
- * never writes it), else a queued copy into the handle's buffer.  Either
- * way the caller's arrays stay as they are during the build, and the
- * build's end waits for the queue before it gives them back. */
-static atrbvh_status geometry_array(atrbvh_cl_device *c, int slot,
-                                   const void *data, size_t bytes,
-                                   const char *what, atrbvh_error *error)
-{
-    if (c->host_memory)
-        return atrbvh_i_cl_wrap(c, slot, data, bytes, CL_MEM_READ_ONLY, what,
-                                error);
-    CL_CHECK(atrbvh_i_cl_buffer(c, slot, bytes, 1, what, error));
-    return atrbvh_i_cl_upload_queued(c, slot, data, bytes, what, error);
-}
-
+/* The caller's geometry arrays go to the device in place on a device
+ * that shares the host's memory (read-only wraps: the device never
+ * writes them), else by queued copies into the handle's buffers
+ * (atrbvh_i_cl_input).  Either way the caller's arrays stay as they are
+ * during the build, and the build's end waits for the queue before it
+ * gives them back. */
 static atrbvh_status upload_geometry(atrbvh_cl_device *c,
                                      const atrbvh_i_input *in,
                                      atrbvh_kargs_bounds *a,
@@ -147,8 +137,8 @@ static atrbvh_status upload_geometry(atrbvh_cl_device *c,
             return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE,
                                  ATRBVH_CL_NO_INDEX, "vertices overflow");
         bytes += 3 * sizeof(float);
-        CL_CHECK(geometry_array(c, B_GEOMETRY, g->vertices, bytes, "vertices",
-                                error));
+        CL_CHECK(atrbvh_i_cl_input(c, B_GEOMETRY, g->vertices, bytes, CL_FALSE,
+                                   "vertices", error));
         bytes = 4;
         if (indexed) {
             if (!atrbvh_i_mul_size(n - 1, in->istride, &bytes))
@@ -157,8 +147,8 @@ static atrbvh_status upload_geometry(atrbvh_cl_device *c,
             bytes += 3 * sizeof(uint32_t);
         }
         if (indexed)
-            CL_CHECK(geometry_array(c, B_INDICES, g->indices, bytes, "indices",
-                                    error));
+            CL_CHECK(atrbvh_i_cl_input(c, B_INDICES, g->indices, bytes,
+                                       CL_FALSE, "indices", error));
         else /* (a kernel argument all the same) */
             CL_CHECK(atrbvh_i_cl_buffer(c, B_INDICES, bytes, 1, "indices",
                                         error));
@@ -172,8 +162,8 @@ static atrbvh_status upload_geometry(atrbvh_cl_device *c,
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,
                              "boxes overflow");
     bytes += 6 * sizeof(float);
-    CL_CHECK(geometry_array(c, B_GEOMETRY, g->boxes, bytes, "input boxes",
-                            error));
+    CL_CHECK(atrbvh_i_cl_input(c, B_GEOMETRY, g->boxes, bytes, CL_FALSE,
+                               "input boxes", error));
     a->bstride = in->bstride / sizeof(float);
     return ATRBVH_OK;
 }
@@ -758,13 +748,11 @@ static atrbvh_status queue_layout(atrbvh_cl_device *c, const atrbvh_i_run *run,
     cl_uint workers;
     if (c->host_memory) {
         /* The output object itself (st_layout: the pipeline has made it) */
-        CL_CHECK(atrbvh_i_cl_wrap(c, B_OUT_NODES, run->nodes,
-                                  (size_t)run->node_count *
-                                      sizeof(atrbvh_node),
-                                  CL_MEM_WRITE_ONLY, "output nodes", error));
-        CL_CHECK(atrbvh_i_cl_wrap(c, B_OUT_PRIMS, run->prim_indices,
-                                  (size_t)run->n * 4, CL_MEM_WRITE_ONLY,
-                                  "output primitive indices", error));
+        CL_CHECK(atrbvh_i_cl_output(c, B_OUT_NODES, run->nodes,
+                                    run->node_count, sizeof(atrbvh_node),
+                                    "output nodes", error));
+        CL_CHECK(atrbvh_i_cl_output(c, B_OUT_PRIMS, run->prim_indices, run->n,
+                                    4, "output primitive indices", error));
     } else {
         /* Sized for the most nodes n leaves can give (2n - 1), not this
          * tree's count: the next build of n primitives then reuses it. */

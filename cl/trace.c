@@ -3,7 +3,10 @@
  * indices and the geometry are uploaded once per batch into buffers the
  * handle keeps; the rays go in chunks that fit the device's largest
  * allocation, one launch of intersect_closest or intersect_any per chunk
- * (shared/traverse.h per ray, the CPU's functions).
+ * (shared/traverse.h per ray, the CPU's functions).  On a device that
+ * shares the host's memory every one of these arrays, and the results,
+ * are the caller's own, wrapped for the batch (cl/memory.c): nothing is
+ * copied.
  */
 #include "config.h"
 
@@ -28,21 +31,20 @@ static atrbvh_status upload_scene(atrbvh_cl_device *c,
              (bytes += 3 * sizeof(float)) < 3 * sizeof(float)))
             return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE,
                                  ATRBVH_CL_NO_INDEX, "vertices overflow");
-        CL_CHECK(atrbvh_i_cl_buffer(c, B_T_VERTICES, bytes, 1, "vertices",
-                                    error));
-        CL_CHECK(atrbvh_i_cl_upload(c, B_T_VERTICES, g->vertices, bytes,
-                                    "vertices", error));
+        CL_CHECK(atrbvh_i_cl_input(c, B_T_VERTICES, g->vertices, bytes,
+                                   CL_TRUE, "vertices", error));
         bytes = 0;
         if (g->indices && g->primitive_count &&
             (!atrbvh_i_mul_size(g->primitive_count - 1, is, &bytes) ||
              (bytes += 12) < 12))
             return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE,
                                  ATRBVH_CL_NO_INDEX, "indices overflow");
-        CL_CHECK(atrbvh_i_cl_buffer(c, B_T_INDICES, bytes, 1, "indices",
-                                    error));
         if (g->indices)
-            CL_CHECK(atrbvh_i_cl_upload(c, B_T_INDICES, g->indices, bytes,
-                                        "indices", error));
+            CL_CHECK(atrbvh_i_cl_input(c, B_T_INDICES, g->indices, bytes,
+                                       CL_TRUE, "indices", error));
+        else /* (a kernel argument all the same) */
+            CL_CHECK(atrbvh_i_cl_buffer(c, B_T_INDICES, bytes, 1, "indices",
+                                        error));
         CL_CHECK(atrbvh_i_cl_buffer(c, B_T_BOXES, 1, 4, "boxes (unused)",
                                     error));
         a->vertex_count = g->vertex_count;
@@ -59,9 +61,8 @@ static atrbvh_status upload_scene(atrbvh_cl_device *c,
              (bytes += 6 * sizeof(float)) < 6 * sizeof(float)))
             return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE,
                                  ATRBVH_CL_NO_INDEX, "boxes overflow");
-        CL_CHECK(atrbvh_i_cl_buffer(c, B_T_BOXES, bytes, 1, "boxes", error));
-        CL_CHECK(atrbvh_i_cl_upload(c, B_T_BOXES, g->boxes, bytes, "boxes",
-                                    error));
+        CL_CHECK(atrbvh_i_cl_input(c, B_T_BOXES, g->boxes, bytes, CL_TRUE,
+                                   "boxes", error));
         CL_CHECK(atrbvh_i_cl_buffer(c, B_T_VERTICES, 1, 4,
                                     "vertices (unused)", error));
         CL_CHECK(atrbvh_i_cl_buffer(c, B_T_INDICES, 1, 4, "indices (unused)",
@@ -74,6 +75,17 @@ static atrbvh_status upload_scene(atrbvh_cl_device *c,
     return ATRBVH_OK;
 }
 
+/* A chunk's results (n of `item` bytes at data) in `slot`: in place, or
+ * the handle's buffer sized for a whole chunk. */
+static atrbvh_status chunk_output(atrbvh_cl_device *c, int slot, void *data,
+                                  size_t n, size_t chunk, size_t item,
+                                  const char *what, atrbvh_error *error)
+{
+    if (c->host_memory)
+        return atrbvh_i_cl_output(c, slot, data, n, item, what, error);
+    return atrbvh_i_cl_buffer(c, slot, chunk, item, what, error);
+}
+
 static atrbvh_status trace_batch(atrbvh_cl_device *c,
                                   const atrbvh_node *nodes, size_t node_count,
                                   const uint32_t *prim_indices,
@@ -84,7 +96,6 @@ static atrbvh_status trace_batch(atrbvh_cl_device *c,
 {
     atrbvh_kargs_trace a;
     int k = occluded ? K_INTERSECT_ANY : K_INTERSECT_CLOSEST;
-    size_t out_item = occluded ? 1 : sizeof(atrbvh_hit);
     cl_ulong chunk;
     size_t done;
     memset(&a, 0, sizeof a);
@@ -102,16 +113,12 @@ static atrbvh_status trace_batch(atrbvh_cl_device *c,
             (fp & CL_FP_DENORM))
             a.float_slabs = 1;
     }
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_T_NODES, node_count, sizeof(atrbvh_node),
-                                "BVH nodes", error));
-    CL_CHECK(atrbvh_i_cl_upload(c, B_T_NODES, nodes,
-                                node_count * sizeof(atrbvh_node), "BVH nodes",
-                                error));
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_T_PRIMS, prim_count, sizeof(uint32_t),
-                                "BVH primitive indices", error));
-    CL_CHECK(atrbvh_i_cl_upload(c, B_T_PRIMS, prim_indices,
-                                prim_count * sizeof(uint32_t),
-                                "BVH primitive indices", error));
+    CL_CHECK(atrbvh_i_cl_input(c, B_T_NODES, nodes,
+                               node_count * sizeof(atrbvh_node), CL_TRUE,
+                               "BVH nodes", error));
+    CL_CHECK(atrbvh_i_cl_input(c, B_T_PRIMS, prim_indices,
+                               prim_count * sizeof(uint32_t), CL_TRUE,
+                               "BVH primitive indices", error));
     CL_CHECK(upload_scene(c, in, &a, error));
     chunk = c->max_alloc / sizeof(atrbvh_ray);
     if (chunk > ((cl_ulong)1 << 24))
@@ -120,20 +127,28 @@ static atrbvh_status trace_batch(atrbvh_cl_device *c,
         chunk = count;
     if (chunk == 0)
         chunk = 1;
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_T_RAYS, (size_t)chunk, sizeof(atrbvh_ray),
-                                "rays", error));
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_T_OUT, (size_t)chunk, out_item,
-                                occluded ? "occlusion results" : "hits",
-                                error));
-    /* two u32 per ray (atrbvh_ray_cost), or a one-word dummy */
-    CL_CHECK(atrbvh_i_cl_buffer(c, B_T_COST, cost ? (size_t)chunk : 1,
-                                cost ? sizeof(atrbvh_ray_cost) : 4,
-                                "ray costs", error));
+    if (!cost) /* a one-word dummy */
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_T_COST, 1, 4, "ray costs", error));
     for (done = 0; done < count; done += (size_t)chunk) {
         size_t n = count - done < chunk ? count - done : (size_t)chunk;
         a.ray_count = n;
-        CL_CHECK(atrbvh_i_cl_upload(c, B_T_RAYS, rays + done,
-                                    n * sizeof(atrbvh_ray), "rays", error));
+        /* the chunk's rays and results: the caller's arrays in place, or
+         * the handle's buffers (sized for a whole chunk: the next batch
+         * of that size reuses them) */
+        CL_CHECK(atrbvh_i_cl_input(c, B_T_RAYS, rays + done,
+                                   n * sizeof(atrbvh_ray), CL_TRUE, "rays",
+                                   error));
+        if (occluded)
+            CL_CHECK(chunk_output(c, B_T_OUT, occluded + done, n,
+                                  (size_t)chunk, 1, "occlusion results",
+                                  error));
+        else
+            CL_CHECK(chunk_output(c, B_T_OUT, hits + done, n, (size_t)chunk,
+                                  sizeof(atrbvh_hit), "hits", error));
+        if (cost) /* two u32 per ray (atrbvh_ray_cost) */
+            CL_CHECK(chunk_output(c, B_T_COST, cost + done, n, (size_t)chunk,
+                                  sizeof(atrbvh_ray_cost), "ray costs",
+                                  error));
         CL_RUN(c, k, n, error, CL_BUF(B_T_NODES), CL_BUF(B_T_PRIMS),
                CL_BUF(B_T_VERTICES), CL_BUF(B_T_INDICES), CL_BUF(B_T_BOXES),
                CL_BUF(B_T_RAYS), CL_BUF(B_T_OUT), CL_BUF(B_T_COST),
@@ -174,10 +189,11 @@ atrbvh_status atrbvh_i_cl_rays(atrbvh_device *dev, const atrbvh_node *nodes,
     c->times = &times; /* the pipeline holds the handle's lock */
     st = trace_batch(c, nodes, node_count, prim_indices, prim_count, in, rays,
                       count, hits, occluded, cost, error);
-    if (c->event_count) {
+    if (c->event_count || c->pending) {
         atrbvh_error ignored;
         (void)atrbvh_i_cl_finish(c, &ignored);
     }
+    atrbvh_i_cl_unwrap(c); /* the caller's arrays are theirs again */
     c->times = &c->build_times;
     if (kernel_ms)
         for (i = 0; i < times.count; i++)

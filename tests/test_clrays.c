@@ -9,7 +9,9 @@
  * [tmin, tmax] for closest and any hit, on both.  The error paths.  Every
  * test skips, saying so, when no OpenCL device (or no OpenCL support) is
  * there.  The per-ray counts of atrbvh_*_batch_stats (boxes and
- * primitives tested) are the same on the device as on the CPU.
+ * primitives tested) are the same on the device as on the CPU.  All of it
+ * twice: with the caller's arrays in place on a device that shares the
+ * host's memory, and with ATRBVH_CL_COPY (copies).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <check.h>
@@ -626,7 +628,17 @@ static Suite *clrays_suite(void)
 
 int main(void)
 {
+    /* Twice: on a device that shares the host's memory (PoCL's) the
+     * batches use the caller's arrays in place, and with ATRBVH_CL_COPY
+     * set at the open they copy them as on any other device. */
     int status = tu_run(clrays_suite());
+    atrbvh_device_close(cl_dev);
+    cl_dev = NULL;
+    have_device = -1;
+    if (setenv("ATRBVH_CL_COPY", "1", 1) != 0)
+        return EXIT_FAILURE;
+    if (tu_run(clrays_suite()) != EXIT_SUCCESS)
+        status = EXIT_FAILURE;
     atrbvh_device_close(cl_dev);
     return status;
 }
