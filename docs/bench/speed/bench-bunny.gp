@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.48148677:47.586789]
-set xtics (5, 10, 20)
+set xrange [3.65263906:51.0253368]
+set xtics (5, 10, 20, 50)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 3.81813928,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 11.0548802,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 11.2852204,39.3531597 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 8.20487974,39.0314856 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 9.07328808,38.4286758 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 12.0952016,38.1317351 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 21.9411298,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 16.5913763,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 6.43581541,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 19.1388819,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 28.2484448,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 4.90619368,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 16.4153497,39.3638605 left font ',8' noenhanced front
+set label 'LBVH' at 4.00892187,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 11.2854017,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 8.62316065,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 12.9265491,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 10.3560635,38.4286758 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 14.5918259,38.1317351 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 22.3279892,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 15.4814557,38.8799201 left font ',8' noenhanced front
+set label 'embree_low' at 6.22327191,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 19.499269,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 30.1583767,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.86697131,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 10.5868589,38.1169475 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

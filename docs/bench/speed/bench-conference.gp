@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [13.0724491:235.987524]
+set xrange [12.5084081:211.344438]
 set xtics (20, 50, 100, 200)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 17.2751869,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 44.0489772,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 46.1157791,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 54.0645621,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 45.8631859,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 86.0825416,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 97.0384354,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 55.2620662,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 29.1774639,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 85.1875768,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 132.527042,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 21.2384438,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 65.4388454,38.1056054 left font ',8' noenhanced front
+set label 'LBVH' at 16.4247377,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 43.7553628,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 44.3881061,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 51.6251702,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 42.8556891,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 82.8567017,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 94.7277744,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 45.6298993,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 28.5837694,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 76.7567157,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 120.264771,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 21.6941183,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 71.9131728,39.3747167 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

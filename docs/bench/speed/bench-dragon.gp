@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [40.3474538:624.160032]
+set xrange [37.2117149:633.408212]
 set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 44.4427195,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 134.500683,62.7681885 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 92.2281805,62.4885043 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 104.485035,61.2051399 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 176.903313,62.7480041 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 165.564657,59.8198299 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 294.852682,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 192.655109,62.0452734 left font ',8' noenhanced front
-set label 'embree_low' at 93.2220692,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 243.08163,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 361.479228,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 53.1089494,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 195.08585,60.8121607 left font ',8' noenhanced front
+set label 'LBVH' at 41.1272658,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 133.765359,63.4134696 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 103.482301,61.8432232 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 158.170472,62.4957022 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 119.461773,60.8121607 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 177.504892,59.8198299 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 268.428422,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 121.155504,59.4641489 left font ',8' noenhanced front
+set label 'embree_low' at 85.6836829,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 234.473328,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 359.90684,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 56.3711771,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 216.157243,61.4574418 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
