@@ -235,14 +235,15 @@ static void release_all(atrbvh_cl_device *c)
 /* Whether builds read the geometry and write the output in place
  * (opencl.h, host_memory): the device says it shares the host's memory
  * (CL_DEVICE_HOST_UNIFIED_MEMORY, deprecated by OpenCL 2.0 but answered
- * by every 1.2 platform) and ATRBVH_CL_COPY is unset or empty, which
- * asks for the copies through the handle's buffers that a device with
- * its own memory gets (tests run both ways on one device). */
+ * by every 1.2 platform) and ATRBVH_CL_COPY is unset, empty or "0" (as
+ * ATRBVH_NO_AVX2 is read); set, it asks for the copies through the
+ * handle's buffers that a device with its own memory gets (tests run
+ * both ways on one device). */
 static cl_uint host_memory(cl_device_id d)
 {
     cl_bool unified = CL_FALSE;
     const char *copy = getenv("ATRBVH_CL_COPY");
-    if (copy && *copy)
+    if (copy && copy[0] && strcmp(copy, "0") != 0)
         return 0;
     if (clGetDeviceInfo(d, CL_DEVICE_HOST_UNIFIED_MEMORY, sizeof unified,
                         &unified, NULL) != CL_SUCCESS)

@@ -277,6 +277,17 @@ START_TEST(launches_and_waits_per_build)
     ck_assert_ptr_nonnull(dev);
     counts_on(dev, 0); /* ATRBVH_CL_COPY: copies on any device */
     atrbvh_device_close(dev);
+    /* "0" and empty read as unset (as ATRBVH_NO_AVX2) */
+    dev = open_mode("0", "launches_and_waits_per_build");
+    ck_assert_ptr_nonnull(dev);
+    ck_assert_uint_eq(((const atrbvh_cl_device *)dev->impl)->host_memory,
+                      (unsigned)reports_host_memory(dev));
+    atrbvh_device_close(dev);
+    dev = open_mode("", "launches_and_waits_per_build");
+    ck_assert_ptr_nonnull(dev);
+    ck_assert_uint_eq(((const atrbvh_cl_device *)dev->impl)->host_memory,
+                      (unsigned)reports_host_memory(dev));
+    atrbvh_device_close(dev);
 }
 END_TEST
 
