@@ -176,12 +176,12 @@ atrbvh_status atrbvh_i_cl_input(atrbvh_cl_device *c, int slot,
 }
 
 atrbvh_status atrbvh_i_cl_output(atrbvh_cl_device *c, int slot, void *data,
-                                 size_t count, size_t item, const char *what,
-                                 atrbvh_error *error)
+                                 size_t count, size_t keep, size_t item,
+                                 const char *what, atrbvh_error *error)
 {
     size_t bytes;
     if (!c->host_memory || count == 0)
-        return atrbvh_i_cl_buffer(c, slot, count, item, what, error);
+        return atrbvh_i_cl_buffer(c, slot, keep, item, what, error);
     if (!atrbvh_i_mul_size(count, item, &bytes))
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,
                              "OpenCL buffer %s: size overflows", what);

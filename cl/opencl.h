@@ -255,11 +255,12 @@ atrbvh_status atrbvh_i_cl_input(atrbvh_cl_device *c, int slot,
                                 atrbvh_error *error);
 /* One of the caller's arrays that kernels write (count items of `item`
  * bytes), in slot `slot`: a wrap on a c->host_memory device, else the
- * handle's buffer; either way read back with atrbvh_i_cl_download into
- * `data` (no copy in place). */
+ * handle's buffer, made for at least `keep` items (>= count: what later
+ * calls of the same size will need); either way read back with
+ * atrbvh_i_cl_download into `data` (no copy in place). */
 atrbvh_status atrbvh_i_cl_output(atrbvh_cl_device *c, int slot, void *data,
-                                 size_t count, size_t item, const char *what,
-                                 atrbvh_error *error);
+                                 size_t count, size_t keep, size_t item,
+                                 const char *what, atrbvh_error *error);
 /* Releases the wraps of a build or ray batch (after the queue is done
  * with them). */
 void atrbvh_i_cl_unwrap(atrbvh_cl_device *c);

@@ -746,22 +746,16 @@ static atrbvh_status queue_layout(atrbvh_cl_device *c, const atrbvh_i_run *run,
 {
     atrbvh_kargs_tree a = tree_args(c, run);
     cl_uint workers;
-    if (c->host_memory) {
-        /* The output object itself (st_layout: the pipeline has made it) */
-        CL_CHECK(atrbvh_i_cl_output(c, B_OUT_NODES, run->nodes,
-                                    run->node_count, sizeof(atrbvh_node),
-                                    "output nodes", error));
-        CL_CHECK(atrbvh_i_cl_output(c, B_OUT_PRIMS, run->prim_indices, run->n,
-                                    4, "output primitive indices", error));
-    } else {
-        /* Sized for the most nodes n leaves can give (2n - 1), not this
-         * tree's count: the next build of n primitives then reuses it. */
-        CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_NODES, tree_nodes(run),
-                                    sizeof(atrbvh_node), "output nodes",
-                                    error));
-        CL_CHECK(atrbvh_i_cl_buffer(c, B_OUT_PRIMS, run->n, 4,
-                                    "output primitive indices", error));
-    }
+    /* The output object itself in place (st_layout: the pipeline has
+     * made it by then), else the handle's buffers, sized for the most
+     * nodes n leaves can give (2n - 1), not this tree's count: the next
+     * build of n primitives then reuses them.  (In the collapse stage
+     * run->nodes is not made yet, and only the handle's are used.) */
+    CL_CHECK(atrbvh_i_cl_output(c, B_OUT_NODES, run->nodes, run->node_count,
+                                tree_nodes(run), sizeof(atrbvh_node),
+                                "output nodes", error));
+    CL_CHECK(atrbvh_i_cl_output(c, B_OUT_PRIMS, run->prim_indices, run->n,
+                                run->n, 4, "output primitive indices", error));
     /* At most one listed subtree per leaf: 3 words each. */
     CL_CHECK(atrbvh_i_cl_buffer(c, B_JUMP, 3 * (size_t)run->n, 4,
                                 "layout subtree list", error));

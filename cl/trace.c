@@ -75,17 +75,6 @@ static atrbvh_status upload_scene(atrbvh_cl_device *c,
     return ATRBVH_OK;
 }
 
-/* A chunk's results (n of `item` bytes at data) in `slot`: in place, or
- * the handle's buffer sized for a whole chunk. */
-static atrbvh_status chunk_output(atrbvh_cl_device *c, int slot, void *data,
-                                  size_t n, size_t chunk, size_t item,
-                                  const char *what, atrbvh_error *error)
-{
-    if (c->host_memory)
-        return atrbvh_i_cl_output(c, slot, data, n, item, what, error);
-    return atrbvh_i_cl_buffer(c, slot, chunk, item, what, error);
-}
-
 static atrbvh_status trace_batch(atrbvh_cl_device *c,
                                   const atrbvh_node *nodes, size_t node_count,
                                   const uint32_t *prim_indices,
@@ -139,16 +128,18 @@ static atrbvh_status trace_batch(atrbvh_cl_device *c,
                                    n * sizeof(atrbvh_ray), CL_TRUE, "rays",
                                    error));
         if (occluded)
-            CL_CHECK(chunk_output(c, B_T_OUT, occluded + done, n,
-                                  (size_t)chunk, 1, "occlusion results",
-                                  error));
+            CL_CHECK(atrbvh_i_cl_output(c, B_T_OUT, occluded + done, n,
+                                        (size_t)chunk, 1,
+                                        "occlusion results", error));
         else
-            CL_CHECK(chunk_output(c, B_T_OUT, hits + done, n, (size_t)chunk,
-                                  sizeof(atrbvh_hit), "hits", error));
+            CL_CHECK(atrbvh_i_cl_output(c, B_T_OUT, hits + done, n,
+                                        (size_t)chunk, sizeof(atrbvh_hit),
+                                        "hits", error));
         if (cost) /* two u32 per ray (atrbvh_ray_cost) */
-            CL_CHECK(chunk_output(c, B_T_COST, cost + done, n, (size_t)chunk,
-                                  sizeof(atrbvh_ray_cost), "ray costs",
-                                  error));
+            CL_CHECK(atrbvh_i_cl_output(c, B_T_COST, cost + done, n,
+                                        (size_t)chunk,
+                                        sizeof(atrbvh_ray_cost), "ray costs",
+                                        error));
         CL_RUN(c, k, n, error, CL_BUF(B_T_NODES), CL_BUF(B_T_PRIMS),
                CL_BUF(B_T_VERTICES), CL_BUF(B_T_INDICES), CL_BUF(B_T_BOXES),
                CL_BUF(B_T_RAYS), CL_BUF(B_T_OUT), CL_BUF(B_T_COST),
