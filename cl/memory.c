@@ -64,6 +64,16 @@ static atrbvh_status fits(const atrbvh_cl_device *c, size_t bytes,
                          (unsigned long)c->max_alloc);
 }
 
+/* count x item bytes into *bytes, or an error if that overflows. */
+static atrbvh_status size_of(size_t count, size_t item, size_t *bytes,
+                             const char *what, atrbvh_error *error)
+{
+    if (atrbvh_i_mul_size(count, item, bytes))
+        return ATRBVH_OK;
+    return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,
+                         "OpenCL buffer %s: size overflows", what);
+}
+
 /* Empties buffer `home` (a home_of slot).  Kernels queued on the buffer
  * keep it alive until they are done (CL reference counting). */
 static void drop(atrbvh_cl_device *c, int home)
@@ -82,9 +92,7 @@ atrbvh_status atrbvh_i_cl_buffer(atrbvh_cl_device *c, int slot, size_t count,
     size_t bytes;
     cl_int err;
     slot = home_of(slot);
-    if (!atrbvh_i_mul_size(count ? count : 1, item, &bytes))
-        return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,
-                             "OpenCL buffer %s: size overflows", what);
+    CL_CHECK(size_of(count ? count : 1, item, &bytes, what, error));
     if (c->buf[slot] && c->buf_bytes[slot] >= bytes)
         return ATRBVH_OK;
     CL_CHECK(fits(c, bytes, what, error));
@@ -149,8 +157,10 @@ atrbvh_status atrbvh_i_cl_wrap(atrbvh_cl_device *c, int slot,
 {
     cl_int err;
     slot = home_of(slot);
-    drop(c, slot); /* a kept buffer (or an earlier wrap) goes */
+    /* (checked first: a wrap refused for its size leaves the slot's
+     * kept buffer for the next build) */
     CL_CHECK(fits(c, bytes, what, error));
+    drop(c, slot); /* a kept buffer (or an earlier wrap) goes */
     /* (the cast: OpenCL 1.2 takes a void *; a CL_MEM_READ_ONLY buffer is
      * never written) */
     c->buf[slot] = clCreateBuffer(c->ctx, access | CL_MEM_USE_HOST_PTR,
@@ -182,9 +192,7 @@ atrbvh_status atrbvh_i_cl_output(atrbvh_cl_device *c, int slot, void *data,
     size_t bytes;
     if (!c->host_memory || count == 0)
         return atrbvh_i_cl_buffer(c, slot, keep, item, what, error);
-    if (!atrbvh_i_mul_size(count, item, &bytes))
-        return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,
-                             "OpenCL buffer %s: size overflows", what);
+    CL_CHECK(size_of(count, item, &bytes, what, error));
     return atrbvh_i_cl_wrap(c, slot, data, bytes, CL_MEM_WRITE_ONLY, what,
                             error);
 }
