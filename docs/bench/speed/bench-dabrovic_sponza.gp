@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.34433975:40.6532287]
+set xrange [2.32375586:34.1995015]
 set xtics (5, 10, 20)
 set yrange [63.7338614:116.665327]
 unset label
-set label 'LBVH' at 4.3517198,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 11.2067488,77.3438007 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 9.05178713,73.4949382 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 13.6814071,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 15.3889174,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 19.0433726,67.0641732 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 23.7344782,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 11.7797808,68.7352597 left font ',8' noenhanced front
-set label 'embree_low' at 5.57743567,110.413579 left font ',8' noenhanced front
-set label 'embree_medium' at 15.3999514,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 24.7036611,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 3.42245712,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 9.53059926,71.690965 left font ',8' noenhanced front
+set label 'LBVH' at 3.02461465,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 7.75696175,77.3438007 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 5.97042829,73.4949382 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 9.22310305,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 7.42004413,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 13.2006878,71.4956448 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 18.7755845,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 13.4691068,67.3811989 left font ',8' noenhanced front
+set label 'embree_low' at 4.91736948,110.413579 left font ',8' noenhanced front
+set label 'embree_medium' at 20.0043681,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 14.3668701,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 2.38224145,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 12.4543138,73.0450257 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [37.2117149:633.408212]
+set xrange [34.4237881:659.607203]
 set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 41.1272658,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 133.765359,63.4134696 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 103.482301,61.8432232 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 158.170472,62.4957022 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 119.461773,60.8121607 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 177.504892,59.8198299 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 268.428422,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 121.155504,59.4641489 left font ',8' noenhanced front
-set label 'embree_low' at 85.6836829,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 234.473328,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 359.90684,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 56.3711771,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 216.157243,61.4574418 left font ',8' noenhanced front
+set label 'LBVH' at 38.2053212,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 120.784617,63.4134696 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 94.7309841,61.8432232 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 147.664635,62.4957022 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 118.84459,60.8121607 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 159.768287,59.8198299 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 277.945215,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 209.540323,61.3999923 left font ',8' noenhanced front
+set label 'embree_low' at 78.5367634,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 366.046954,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 249.685794,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 53.6528025,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 198.093168,62.7480041 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
