@@ -26,7 +26,8 @@ const char *const atrbvh_i_cl_kernel_names[K_COUNT] = {
     "bounds_triangles", "bounds_boxes", "morton",
     "sort_count",       "sort_scatter", "sort_buckets", "sort_vary",
     "hierarchy",
-    "refit",            "opt_prepare",  "opt_round",     "collapse",
+    "refit",            "opt_prepare",  "opt_round",     "opt_round4",
+    "collapse",
     "layout_top",       "layout",
     "intersect_closest", "intersect_any"};
 
@@ -251,6 +252,21 @@ static cl_uint host_memory(cl_device_id d)
     return unified == CL_TRUE;
 }
 
+/* Whether the optimise stage's items walk several treelets at once
+ * (opencl.h, several_walks): a CPU device, unless ATRBVH_CL_WALKS is "1"
+ * (tests take the GPU's kernel on PoCL with it too). */
+static cl_uint several_walks(cl_device_id d)
+{
+    cl_device_type type = 0;
+    const char *walks = getenv("ATRBVH_CL_WALKS");
+    if (walks && strcmp(walks, "1") == 0)
+        return 0;
+    if (clGetDeviceInfo(d, CL_DEVICE_TYPE, sizeof type, &type, NULL) !=
+        CL_SUCCESS)
+        return 0;
+    return (type & CL_DEVICE_TYPE_CPU) != 0;
+}
+
 static atrbvh_status open_locked(atrbvh_cl_device *c, const char *spec,
                                  char *name, size_t name_size,
                                  atrbvh_error *error)
@@ -287,6 +303,7 @@ static atrbvh_status open_locked(atrbvh_cl_device *c, const char *spec,
     if (c->compute_units < 1)
         c->compute_units = 1;
     c->host_memory = host_memory(c->device);
+    c->several_walks = several_walks(c->device);
     c->ctx = clCreateContext(NULL, 1, &c->device, NULL, NULL, &err);
     if (!c->ctx)
         return atrbvh_i_cl_error(error, err, "clCreateContext", NULL);

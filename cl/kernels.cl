@@ -858,6 +858,61 @@ __kernel void opt_prepare(__global const uint *left, __global const uint *right,
  * written through t's volatile pointers (ATRBVH_SHARED_GLOBAL, treelet.h):
  * they hold nodes other items wrote in this launch.  Scratch: a.stride
  * bytes per worker. */
+/* Item w's view of a round: the cost model, the tree, its scratch, the
+ * skip marks. */
+typedef struct opt_view {
+    atrbvh_cost_params p;
+    atrbvh_treelet_tree t;
+    atrbvh_trbvh_scratch s;
+    atrbvh_agg_scratch agg;
+    atrbvh_treelet_marks m;
+    __global double *dist4; /* opt_round4, ATRBVH: atrbvh_agglomerate4's */
+} opt_view;
+
+static void opt_item(__global uint *left, __global uint *right,
+                     __global uint *parent, __global uint *count,
+                     __global atrbvh_box *box, __global double *cost,
+                     __global uchar *scratch, __global uchar *marks,
+                     const atrbvh_kargs_optimise *a, uint w, opt_view *v)
+{
+    __global uchar *base = scratch + (ulong)w * a->stride;
+    v->p = atrbvh_kargs_cost(a->ci, a->ct, a->collapse, a->max_leaf);
+    v->s.box = (__global float *)base;
+    v->s.cost = (__global double *)(base + a->off_cost);
+    v->s.count = (__global uint *)(base + a->off_count);
+    v->s.split = (__global uint *)(base + a->off_split);
+    /* ATRBVH: the distances, and above 32 leaves the treelet's arrays,
+     * laid out for the largest size (the host sized them alike). */
+    atrbvh_agg_layout(base + a->off_dist,
+                      a->treelet_size == ATRBVH_TREELET_AUTO
+                          ? (uint)ATRBVH_AUTO_MAX
+                          : a->agglomerative ? a->treelet_size : 2u,
+                      &v->agg);
+    v->dist4 = (__global double *)(base + a->off_dist4);
+    v->t.left = left;
+    v->t.right = right;
+    v->t.parent = parent;
+    v->t.count = count;
+    v->t.box = box;
+    v->t.cost = cost;
+    v->t.n_internal = a->n_internal;
+    /* The skip marks: chg, then same, one byte per internal node each
+     * (a.marks: TRBVH, ATRBVH up to 32 leaves or adaptive, as on the
+     * CPU; a one-word dummy otherwise). */
+    v->m.chg = marks;
+    v->m.same = marks + (a->marks ? a->n_internal : 0u);
+}
+
+/* The round's treelet counts of one item into the build's (the host
+ * zeroes them per build). */
+static void opt_tally(__global uint *tally, uint done, uint applied,
+                      uint skipped)
+{
+    atomic_add(&tally[0], done);
+    atomic_add(&tally[1], applied);
+    atomic_add(&tally[2], skipped);
+}
+
 __kernel void opt_round(__global uint *left, __global uint *right,
                         __global uint *parent, __global uint *count,
                         __global atrbvh_box *box, __global double *cost,
@@ -867,39 +922,10 @@ __kernel void opt_round(__global uint *left, __global uint *right,
 {
     uint w = (uint)get_global_id(0), k, done = 0u, applied = 0u,
          skipped = 0u;
-    atrbvh_treelet_marks m;
-    atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
-                                             a.max_leaf);
-    atrbvh_treelet_tree t;
-    atrbvh_trbvh_scratch s;
-    atrbvh_agg_scratch agg;
-    __global uchar *base;
+    opt_view v;
     if (w >= a.workers)
         return;
-    base = scratch + (ulong)w * a.stride;
-    s.box = (__global float *)base;
-    s.cost = (__global double *)(base + a.off_cost);
-    s.count = (__global uint *)(base + a.off_count);
-    s.split = (__global uint *)(base + a.off_split);
-    /* ATRBVH: the distances, and above 32 leaves the treelet's arrays,
-     * laid out for the largest size (the host sized them alike). */
-    atrbvh_agg_layout(base + a.off_dist,
-                      a.treelet_size == ATRBVH_TREELET_AUTO
-                          ? (uint)ATRBVH_AUTO_MAX
-                          : a.agglomerative ? a.treelet_size : 2u,
-                      &agg);
-    t.left = left;
-    t.right = right;
-    t.parent = parent;
-    t.count = count;
-    t.box = box;
-    t.cost = cost;
-    t.n_internal = a.n_internal;
-    /* The skip marks: chg, then same, one byte per internal node each
-     * (a.marks: TRBVH, ATRBVH up to 32 leaves or adaptive, as on the
-     * CPU; a one-word dummy otherwise). */
-    m.chg = marks;
-    m.same = marks + (a.marks ? a.n_internal : 0u);
+    opt_item(left, right, parent, count, box, cost, scratch, marks, &a, w, &v);
     /* (the marks are read from `needed`, which no item writes in a round:
      * the same start nodes whatever the other items have restructured) */
     for (k = (uint)((ulong)a.n_internal * w / a.workers);
@@ -912,14 +938,14 @@ __kernel void opt_round(__global uint *left, __global uint *right,
             int r;
             if (a.marks)
                 r = atrbvh_treelet_process_marked(
-                    &t, &p, x,
+                    &v.t, &v.p, x,
                     a.treelet_size == ATRBVH_TREELET_AUTO
-                        ? atrbvh_treelet_auto_size(t.count[x], a.gamma)
+                        ? atrbvh_treelet_auto_size(v.t.count[x], a.gamma)
                         : a.treelet_size,
-                    (int)a.agglomerative, s, agg.dist, m, a.round);
+                    (int)a.agglomerative, v.s, v.agg.dist, v.m, a.round);
             else
-                r = atrbvh_atrbvh_process(&t, &p, x, a.treelet_size, a.gamma,
-                                          s, &agg);
+                r = atrbvh_atrbvh_process(&v.t, &v.p, x, a.treelet_size,
+                                          a.gamma, v.s, &v.agg);
             if (r == ATRBVH_TREELET_SKIPPED) {
                 skipped++;
             } else {
@@ -928,7 +954,7 @@ __kernel void opt_round(__global uint *left, __global uint *right,
             }
             if (x == 0u)
                 break;
-            up = t.parent[x]; /* volatile, as every tree read here */
+            up = v.t.parent[x]; /* volatile, as every tree read here */
             /* our treelet's writes before the count ... */
             ATRBVH_CL_FENCE();
             /* (up has a crown child: never a start, no mark) */
@@ -941,10 +967,110 @@ __kernel void opt_round(__global uint *left, __global uint *right,
             x = up;
         }
     }
-    /* The build's treelet counts (the host zeroes them per build). */
-    atomic_add(&tally[0], done);
-    atomic_add(&tally[1], applied);
-    atomic_add(&tally[2], skipped);
+    opt_tally(tally, done, applied, skipped);
+}
+
+/* opt_round on a CPU device (the host's choice, cl/stages.c), where the
+ * skip marks are kept: each item walks up to ATRBVH_CL_WALKS walks at
+ * once, as the CPU's walk_lanes takes up to four treelets of one height
+ * (lib/cpu/optimise.c).  Each step takes the treelet at every walk's
+ * node: the skipped ones as atrbvh_treelet_process_marked skips them, the
+ * others refreshed and formed side by side, one expansion of each in
+ * turn (atrbvh_treelet_form's steps: a formation is a chain of dependent
+ * loads, and those of several treelets overlap), then each one's
+ * topology and write-back (atrbvh_treelet_finish; ATRBVH's agglomerations
+ * side by side in a double4's lanes, atrbvh_agglomerate_side) and its
+ * marks; then every walk climbs as opt_round's does, and the walks that
+ * stop make room for the item's next start nodes.  The walks' nodes are
+ * crown nodes none of which is below another (a node is walked only once
+ * every crown node below it is done), so their treelets' subtrees are
+ * disjoint: none reads what another writes back, and each treelet is the
+ * pure function of its subtree that opt_round computes - the same tree,
+ * bit for bit. */
+#define ATRBVH_CL_WALKS 4u
+__kernel void opt_round4(__global uint *left, __global uint *right,
+                         __global uint *parent, __global uint *count,
+                         __global atrbvh_box *box, __global double *cost,
+                         __global const uint *needed, __global uint *counter,
+                         __global uchar *scratch, __global uchar *marks,
+                         __global uint *tally, atrbvh_kargs_optimise a)
+{
+    uint w = (uint)get_global_id(0), k, end, done = 0u, applied = 0u,
+         skipped = 0u, walks = 0u, l, ready, more, step;
+    uint at[ATRBVH_CL_WALKS], root[ATRBVH_CL_WALKS], size[ATRBVH_CL_WALKS];
+    int r[ATRBVH_CL_WALKS];
+    atrbvh_treelet tl[ATRBVH_CL_WALKS];
+    double area[ATRBVH_CL_WALKS][ATRBVH_TREELET_MAX];
+    opt_view v;
+    if (w >= a.workers)
+        return;
+    opt_item(left, right, parent, count, box, cost, scratch, marks, &a, w, &v);
+    k = (uint)((ulong)a.n_internal * w / a.workers);
+    end = (uint)((ulong)a.n_internal * (w + 1u) / a.workers);
+    for (;;) {
+        /* the item's next start nodes (opt_prepare's marks) */
+        for (; walks < ATRBVH_CL_WALKS && k < end; k++)
+            if (needed[k] & ATRBVH_CL_START)
+                at[walks++] = k;
+        if (walks == 0u)
+            break;
+        /* the treelets not skipped, refreshed and formed side by side */
+        ready = 0u;
+        for (l = 0u; l < walks; l++) {
+            const uint x = at[l];
+            if (atrbvh_treelet_marks_skip(&v.t, v.m, x)) {
+                skipped++;
+                continue;
+            }
+            root[ready] = x;
+            size[ready] = a.treelet_size == ATRBVH_TREELET_AUTO
+                              ? atrbvh_treelet_auto_size(v.t.count[x], a.gamma)
+                              : a.treelet_size;
+            atrbvh_treelet_refresh(&v.t, &v.p, x);
+            atrbvh_treelet_form_first(&v.t, x, &tl[ready], area[ready]);
+            ready++;
+        }
+        for (step = 2u, more = 1u; more; step++) {
+            more = 0u;
+            for (l = 0u; l < ready; l++)
+                if (tl[l].n == step && step < size[l] &&
+                    atrbvh_treelet_form_next(&v.t, &tl[l], area[l]))
+                    more = 1u;
+        }
+        /* ATRBVH: the agglomerations side by side too, in a double4's
+         * lanes (atrbvh_agglomerate_side, as the CPU's walk_lanes) */
+        if (a.agglomerative && ready > 1u)
+            atrbvh_agglomerate_side(&v.t, &v.p, ready, root, tl, v.agg.dist,
+                                    v.dist4, r);
+        else
+            for (l = 0u; l < ready; l++)
+                r[l] = atrbvh_treelet_finish(&v.t, &v.p, root[l],
+                                             (int)a.agglomerative, v.s,
+                                             v.agg.dist, &tl[l]);
+        for (l = 0u; l < ready; l++) {
+            atrbvh_treelet_marks_done(v.m, &tl[l], root[l], r[l], a.round);
+            done++;
+            applied += (uint)r[l];
+        }
+        /* every walk one step up, as opt_round's (the last arrival goes
+         * on; the others stop) */
+        ready = 0u;
+        for (l = 0u; l < walks; l++) {
+            const uint x = at[l];
+            uint up;
+            if (x == 0u)
+                continue;
+            up = v.t.parent[x];
+            ATRBVH_CL_FENCE();
+            if (atomic_inc(&counter[up]) + 1u < needed[up])
+                continue;
+            ATRBVH_CL_FENCE();
+            counter[up] = 0u;
+            at[ready++] = up;
+        }
+        walks = ready;
+    }
+    opt_tally(tally, done, applied, skipped);
 }
 
 /* ---------------------------------------------------------------- collapse */

@@ -44,6 +44,7 @@ enum {
     K_REFIT,
     K_OPT_PREPARE,
     K_OPT_ROUND,
+    K_OPT_ROUND4,
     K_COLLAPSE,
     K_LAYOUT_TOP,
     K_LAYOUT,
@@ -147,6 +148,11 @@ typedef struct atrbvh_cl_device {
      * build (atrbvh_i_cl_wrap), instead of copying them through buffers
      * of the handle. */
     cl_uint host_memory;
+    /* A CPU device (CL_DEVICE_TYPE_CPU) and ATRBVH_CL_WALKS is not "1":
+     * the optimise stage's items take several treelets at once
+     * (opt_round4, as the CPU's walk_lanes does); else one at a time
+     * (opt_round: a GPU's many items have no room to spare). */
+    cl_uint several_walks;
     uint64_t wrapped; /* slots holding a wrap (bit per slot), released
                          by atrbvh_i_cl_unwrap at the build's end */
     cl_event events[ATRBVH_CL_MAX_EVENTS];

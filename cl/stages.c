@@ -551,19 +551,24 @@ static atrbvh_status st_refit(atrbvh_device *dev, atrbvh_i_run *run,
 static void scratch_layout(const atrbvh_i_config *cfg,
                            atrbvh_kargs_optimise *a)
 {
-    size_t subsets = 0, agg = 0, n = cfg->treelet_size;
-    if (a->agglomerative)
-        agg = (size_t)atrbvh_agg_layout(
-            NULL,
-            n == ATRBVH_TREELET_AUTO ? ATRBVH_AUTO_MAX : (atrbvh_u32)n,
-            NULL);
-    else
+    size_t subsets = 0, agg = 0, agg4 = 0, n = cfg->treelet_size;
+    if (a->agglomerative) {
+        const atrbvh_u32 nmax =
+            n == ATRBVH_TREELET_AUTO ? ATRBVH_AUTO_MAX : (atrbvh_u32)n;
+        agg = (size_t)atrbvh_agg_layout(NULL, nmax, NULL);
+        /* opt_round4: the four interleaved matrices of its
+         * agglomerations side by side (atrbvh_agglomerate4) */
+        if (a->walks && nmax <= ATRBVH_TREELET_MAX)
+            agg4 = (size_t)atrbvh_agglomerate4_doubles(nmax) * sizeof(double);
+    } else {
         subsets = (size_t)1 << n;
+    }
     a->off_cost = ALIGN64(subsets * sizeof(atrbvh_box));
     a->off_count = a->off_cost + ALIGN64(subsets * sizeof(double));
     a->off_split = a->off_count + ALIGN64(subsets * sizeof(uint32_t));
     a->off_dist = a->off_split + ALIGN64(subsets * sizeof(uint32_t));
-    a->stride = a->off_dist + ALIGN64(agg);
+    a->off_dist4 = a->off_dist + ALIGN64(agg);
+    a->stride = a->off_dist4 + ALIGN64(agg4);
 }
 
 static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
@@ -596,6 +601,9 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
         marks = (2u * (size_t)a.n_internal + 3u) & ~(size_t)3u;
     else
         marks = 4;
+    /* several treelets an item on a CPU device, where the marks are
+     * kept (opt_round4) */
+    a.walks = a.marks && c->several_walks;
     scratch_layout(cfg, &a);
     /* Enough persistent workers to fill the device, scratch bounded. */
     workers_max = c->compute_units * 64u;
@@ -634,7 +642,8 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
         CL_RUN(c, K_OPT_PREPARE, a.n_internal, error, CL_BUF(B_LEFT),
                CL_BUF(B_RIGHT), CL_BUF(B_COUNT), CL_BUF(B_NEEDED),
                CL_BUF(B_COUNTER), CL_VAL(a));
-        CL_RUN(c, K_OPT_ROUND, a.workers, error, CL_BUF(B_LEFT),
+        CL_RUN(c, a.walks ? K_OPT_ROUND4 : K_OPT_ROUND,
+               a.workers, error, CL_BUF(B_LEFT),
                CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
                CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_NEEDED),
                CL_BUF(B_COUNTER), CL_BUF(B_SCRATCH), CL_BUF(B_MARKS),

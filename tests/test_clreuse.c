@@ -81,12 +81,11 @@ END_TEST
  * change nothing are skipped, the tree still the CPU's; one round skips
  * none; ATRBVH above 32 leaves keeps no marks; a second build on the
  * same handle starts from clean marks (the same counts again). */
-/* Builds g with the method on the CPU and on dev, the trees equal; the
- * handle's counters then describe the device build. */
-static const atrbvh_cl_device *device_build(atrbvh_device *dev,
-                                            const atrbvh_geometry *g,
-                                            atrbvh_method method,
-                                            unsigned treelet, unsigned rounds)
+/* Builds g with the method on the CPU and on dev, the trees equal;
+ * returns the device's. */
+static atrbvh_bvh *device_tree(atrbvh_device *dev, const atrbvh_geometry *g,
+                               atrbvh_method method, unsigned treelet,
+                               unsigned rounds)
 {
     atrbvh_build_options o;
     atrbvh_bvh *x, *y;
@@ -100,7 +99,16 @@ static const atrbvh_cl_device *device_build(atrbvh_device *dev,
     y = tu_build(g, &o);
     ck_assert_msg(atrbvh_compare(x, y, &e) == 0, "%s", e.text);
     atrbvh_bvh_free(x);
-    atrbvh_bvh_free(y);
+    return y;
+}
+
+/* device_tree; the handle's counters then describe the device build. */
+static const atrbvh_cl_device *device_build(atrbvh_device *dev,
+                                            const atrbvh_geometry *g,
+                                            atrbvh_method method,
+                                            unsigned treelet, unsigned rounds)
+{
+    atrbvh_bvh_free(device_tree(dev, g, method, treelet, rounds));
     return (const atrbvh_cl_device *)dev->impl;
 }
 
@@ -154,6 +162,85 @@ START_TEST(skip_marks_on_the_device)
     ck_assert(a[0] > 0 && a[2] == 0);
     free(v);
     atrbvh_device_close(dev);
+}
+END_TEST
+
+/* The optimise stage's kernel (cl/stages.c): on a CPU device, where the
+ * skip marks are kept (TRBVH, ATRBVH up to 32 leaves or adaptive), each
+ * work-item takes several treelets at once (opt_round4, as the CPU's
+ * walk_lanes; ATRBVH's agglomerations side by side in a double4's
+ * lanes), else one at a time (opt_round), and ATRBVH_CL_WALKS=1 at the
+ * open asks for opt_round on any device.  The trees are the CPU's either
+ * way.  Returns the build's optimise kernel: 4 for opt_round4, 1 for
+ * opt_round (failing when both or neither ran). */
+static int opt_kernel(atrbvh_device *dev, const atrbvh_geometry *g,
+                      atrbvh_method method, unsigned treelet,
+                      unsigned rounds)
+{
+    atrbvh_bvh *y = device_tree(dev, g, method, treelet, rounds);
+    const char *name;
+    size_t i;
+    int four = 0, one = 0;
+    for (i = 0; atrbvh_bvh_kernel_time(y, i, &name, NULL); i++) {
+        four += strcmp(name, "opt_round4") == 0;
+        one += strcmp(name, "opt_round") == 0;
+    }
+    atrbvh_bvh_free(y);
+    ck_assert_msg((four > 0) != (one > 0),
+                  "method %d, treelet %u: opt_round4 %d, opt_round %d",
+                  (int)method, treelet, four, one);
+    return four ? 4 : 1;
+}
+
+static atrbvh_device *open_walks(const char *walks, const char *test)
+{
+    atrbvh_device *dev = NULL;
+    atrbvh_error e;
+    atrbvh_status st;
+    if (walks)
+        ck_assert_int_eq(setenv("ATRBVH_CL_WALKS", walks, 1), 0);
+    st = atrbvh_device_open("opencl", &dev, &e);
+    ck_assert_int_eq(unsetenv("ATRBVH_CL_WALKS"), 0);
+    if (tu_opencl_may_skip(st)) {
+        fprintf(stderr, "SKIP %s: %s\n", test, e.text);
+        return NULL;
+    }
+    ck_assert_msg(st == ATRBVH_OK, "%s", e.text);
+    return dev;
+}
+
+START_TEST(several_treelets_an_item_on_a_cpu_device)
+{
+    const char *const modes[3] = {NULL, "0", "1"};
+    unsigned n = 20000, k;
+    float *v = tu_random_triangles(n, 11, 3.0f, 1.0f);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * n, NULL, n);
+    for (k = 0; k < 3u; k++) {
+        atrbvh_device *dev =
+            open_walks(modes[k], "several_treelets_an_item_on_a_cpu_device");
+        cl_device_type type = 0;
+        int want;
+        if (!dev)
+            break;
+        ck_assert_int_eq(
+            clGetDeviceInfo(((const atrbvh_cl_device *)dev->impl)->device,
+                            CL_DEVICE_TYPE, sizeof type, &type, NULL),
+            CL_SUCCESS);
+        want = (type & CL_DEVICE_TYPE_CPU) && k < 2u ? 4 : 1;
+        ck_assert_int_eq(opt_kernel(dev, &g, ATRBVH_METHOD_ATRBVH, 9, 2),
+                         want);
+        ck_assert_int_eq(opt_kernel(dev, &g, ATRBVH_METHOD_TRBVH, 7, 3),
+                         want);
+        ck_assert_int_eq(opt_kernel(dev, &g, ATRBVH_METHOD_ATRBVH,
+                                    ATRBVH_TREELET_AUTO, 4),
+                         want);
+        ck_assert_int_eq(opt_kernel(dev, &g, ATRBVH_METHOD_ATRBVH, 3, 2),
+                         want);
+        /* above 32 leaves (no marks): one at a time on any device */
+        ck_assert_int_eq(opt_kernel(dev, &g, ATRBVH_METHOD_ATRBVH, 48, 2), 1);
+        atrbvh_device_close(dev);
+    }
+    free(v);
 }
 END_TEST
 
@@ -402,6 +489,7 @@ int main(void)
     TCase *tc = tcase_create("buffers");
     tcase_add_test(tc, second_build_creates_no_buffer);
     tcase_add_test(tc, skip_marks_on_the_device);
+    tcase_add_test(tc, several_treelets_an_item_on_a_cpu_device);
     tcase_add_test(tc, launches_and_waits_per_build);
     tcase_add_test(tc, in_place_and_copied_agree);
     tcase_set_timeout(tc, 300);

@@ -322,45 +322,18 @@ static void lane_run(walk_ctx *c, opt_worker *w, unsigned ready,
 
 #ifdef ATRBVH_AGG_QUADS
 /* The agglomerations of `ready` (2 to 4) formed ATRBVH treelets of
- * lane_batch: those with as many leaves as the first (at least 3) side by
- * side in atrbvh_agglomerate4's lanes when two or more do (the lanes
- * left over repeat the first, into a spare topology), any other one by
- * one as atrbvh_atrbvh_keep does it; then each treelet's write-back when
- * cheaper.  The treelets' subtrees are disjoint, so none reads what
- * another writes back. */
+ * lane_batch, side by side where they can be (shared/treelet.h's
+ * atrbvh_agglomerate_side, which the opt_round4 kernel calls too), then
+ * each one's marks and counts. */
 static void lane_agg(walk_ctx *c, opt_worker *w, unsigned ready,
                      const uint32_t *root, const atrbvh_treelet *tl)
 {
-    const atrbvh_treelet *in[4];
-    atrbvh_treelet_topo topo[4], spare;
-    atrbvh_treelet_topo *out[4];
-    double found[4];
-    unsigned l, lane[4], used = 0;
-    const atrbvh_u32 n = tl[0].n;
+    int applied[4];
+    unsigned l;
+    atrbvh_agglomerate_side(&c->t, c->cost, ready, root, tl, w->dist,
+                            w->dist4, applied);
     for (l = 0; l < ready; l++)
-        lane[l] = n >= 3u && tl[l].n == n ? used++ : 4u;
-    if (used > 1u) {
-        for (l = 0; l < 4u; l++) {
-            in[l] = &tl[0];
-            out[l] = &spare;
-        }
-        for (l = 0; l < ready; l++)
-            if (lane[l] < 4u) {
-                in[lane[l]] = &tl[l];
-                out[lane[l]] = &topo[l];
-            }
-        atrbvh_agglomerate4(c->cost, n, &c->t, in, w->dist4, out, found);
-    }
-    for (l = 0; l < ready; l++) {
-        int applied = 0;
-        if (used > 1u && lane[l] < 4u)
-            applied = atrbvh_atrbvh_apply(&c->t, root[l], &tl[l], &topo[l],
-                                          found[lane[l]]);
-        else if (tl[l].n >= 3u)
-            applied = atrbvh_atrbvh_keep(&c->t, c->cost, root[l], &tl[l],
-                                         w->dist);
-        lane_done(c, w, root[l], &tl[l], applied);
-    }
+        lane_done(c, w, root[l], &tl[l], applied[l]);
 }
 #endif
 

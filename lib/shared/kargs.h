@@ -103,6 +103,7 @@ typedef struct atrbvh_kargs_optimise {
     atrbvh_u64 off_count;
     atrbvh_u64 off_split;
     atrbvh_u64 off_dist;
+    atrbvh_u64 off_dist4; /* opt_round4, ATRBVH: atrbvh_agglomerate4's */
     atrbvh_u32 collapse;
     atrbvh_u32 max_leaf;
     atrbvh_u32 n_internal;
@@ -114,6 +115,7 @@ typedef struct atrbvh_kargs_optimise {
     atrbvh_u32 workers;
     atrbvh_u32 round;     /* from 0 (the skip marks)                      */
     atrbvh_u32 marks;     /* 1: skip marks (atrbvh_treelet_process_marked) */
+    atrbvh_u32 walks;     /* 1: opt_round4 (several treelets an item)     */
 } atrbvh_kargs_optimise;
 
 /* intersect_closest, intersect_any (atrbvh_trav_scene's scalars) */
@@ -161,8 +163,8 @@ ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_sort) == 32, kargs_sort);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_tree) == 40, kargs_tree);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_tree, n) == 16,
                      kargs_tree_n);
-ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_optimise) == 96, kargs_optimise);
-ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_optimise, collapse) == 56,
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_optimise) == 112, kargs_optimise);
+ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_optimise, collapse) == 64,
                      kargs_optimise_collapse);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_trace) == 80, kargs_trace);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_trace, boxes) == 64,

@@ -1312,11 +1312,12 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
     return atrbvh_agglomerate_at(p, n, 0, 0, lv, dist, topo);
 }
 
-#ifdef ATRBVH_TRBVH_QUADS
+#if defined(__OPENCL_VERSION__) || defined(ATRBVH_TRBVH_QUADS)
 /* ------------------------------------------------------ ATRBVH in lanes */
 /* The agglomerations of four formed treelets of n leaves each side by
- * side in AVX's lanes (CPU, x86, chosen at run time: optimise.c's
- * lane_batch); lane l is treelet tl[l], read in place as
+ * side in the lanes of a vector (on the CPU AVX's, x86, chosen at run
+ * time: optimise.c's lane_batch; in OpenCL C double4 and float4, the
+ * opt_round4 kernel on a CPU device); lane l is treelet tl[l], read in place as
  * atrbvh_agglomerate_at reads it (a lane left over may repeat another
  * lane's treelet into a spare topology).  Each lane's result is exactly
  * atrbvh_agglomerate_at's for its treelet: the same merges in the same
@@ -1339,7 +1340,8 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
  * only, the same in every treelet.
  *
  * The arithmetic is the scalar one's: the unions are VMINPS and VMAXPS
- * with the scalar's first operand (the row's cluster when the matrix is
+ * (OpenCL: the same selects, atrbvh_agg4_fmin) with the scalar's first
+ * operand (the row's cluster when the matrix is
  * filled, the merged cluster after a merge, slot j's in the merge: x < y
  * ? x : y lane for lane), the areas atrbvh_box_area's double operations
  * in its order, the merge's cost atrbvh_node_cost's (VMINPD of flat and
@@ -1348,72 +1350,135 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
  *
  * Scratch: dist4, 32-byte aligned, atrbvh_agglomerate4_doubles(n)
  * doubles: the four triangular matrices interleaved, entry k of lane l at
- * 4k + l.  n is 3 .. ATRBVH_TREELET_MAX. */
+ * 4k + l.  n is 3 .. ATRBVH_TREELET_MAX.
+ *
+ * Written once for both: the vector words below are AVX's intrinsics in
+ * C and OpenCL C's vector types and built-ins on a device, each the same
+ * operation lane for lane (tests/test_opencl.c compares the kernel's
+ * trees with the CPU's, tests/test_hashes.c the CPU's lanes with its
+ * scalar path). */
 #define ATRBVH_AGG_QUADS 1
+#ifdef __OPENCL_VERSION__
+typedef float4 atrbvh_agg_f4;  /* one coordinate of four lanes' boxes */
+typedef double4 atrbvh_agg_d4; /* four lanes' areas, costs or codes    */
+typedef long4 atrbvh_agg_m4;   /* a comparison's lanes: all ones or 0  */
+#define ATRBVH_AGG4_FN static inline
+#define ATRBVH_AGG4_MAIN static
+#define ATRBVH_AGG4_ALIGNED(b)
+#define atrbvh_agg4_fload(p) vload4(0, (p))
+#define atrbvh_agg4_fstore(p, v) vstore4((v), 0, (p))
+#define atrbvh_agg4_fset(a, b, c, d) ((float4)((a), (b), (c), (d)))
+#define atrbvh_agg4_fmin(a, b) select((b), (a), (a) < (b))
+#define atrbvh_agg4_fmax(a, b) select((b), (a), (a) > (b))
+#define atrbvh_agg4_widen(v) convert_double4(v)
+#define atrbvh_agg4_set1(x) ((double4)(x))
+#define atrbvh_agg4_set(a, b, c, d) ((double4)((a), (b), (c), (d)))
+#define atrbvh_agg4_add(a, b) ((a) + (b))
+#define atrbvh_agg4_sub(a, b) ((a) - (b))
+#define atrbvh_agg4_mul(a, b) ((a) * (b))
+#define atrbvh_agg4_min(a, b) select((b), (a), (a) < (b))
+#define atrbvh_agg4_lt(a, b) ((a) < (b))
+#define atrbvh_agg4_eq(a, b) ((a) == (b))
+#define atrbvh_agg4_select(a, b, m) select((a), (b), (m))
+#define atrbvh_agg4_mask(a, b, c, d)                                           \
+    ((long4)(-(long)(a), -(long)(b), -(long)(c), -(long)(d)))
+#define atrbvh_agg4_load(p) vload4(0, (p))
+#define atrbvh_agg4_store(p, v) vstore4((v), 0, (p))
+#define atrbvh_agg4_storeu(p, v) vstore4((v), 0, (p))
+#define ATRBVH_AGG4_INF ((double)INFINITY)
+#else
+typedef __m128 atrbvh_agg_f4;
+typedef __m256d atrbvh_agg_d4;
+typedef __m256d atrbvh_agg_m4;
+#define ATRBVH_AGG4_FN __attribute__((target("avx"))) static inline
+#define ATRBVH_AGG4_MAIN __attribute__((noinline, unused, target("avx"))) static
+#define ATRBVH_AGG4_ALIGNED(b) __attribute__((aligned(b)))
+#define atrbvh_agg4_fload(p) _mm_load_ps(p)
+#define atrbvh_agg4_fstore(p, v) _mm_store_ps((p), (v))
+#define atrbvh_agg4_fset(a, b, c, d) _mm_set_ps((d), (c), (b), (a))
+#define atrbvh_agg4_fmin(a, b) _mm_min_ps((a), (b))
+#define atrbvh_agg4_fmax(a, b) _mm_max_ps((a), (b))
+#define atrbvh_agg4_widen(v) _mm256_cvtps_pd(v)
+#define atrbvh_agg4_set1(x) _mm256_set1_pd(x)
+#define atrbvh_agg4_set(a, b, c, d) _mm256_set_pd((d), (c), (b), (a))
+#define atrbvh_agg4_add(a, b) _mm256_add_pd((a), (b))
+#define atrbvh_agg4_sub(a, b) _mm256_sub_pd((a), (b))
+#define atrbvh_agg4_mul(a, b) _mm256_mul_pd((a), (b))
+#define atrbvh_agg4_min(a, b) _mm256_min_pd((a), (b))
+#define atrbvh_agg4_lt(a, b) _mm256_cmp_pd((a), (b), _CMP_LT_OQ)
+#define atrbvh_agg4_eq(a, b) _mm256_cmp_pd((a), (b), _CMP_EQ_OQ)
+#define atrbvh_agg4_select(a, b, m) atrbvh_select4((a), (b), (m))
+#define atrbvh_agg4_mask(a, b, c, d)                                           \
+    _mm256_castsi256_pd(_mm256_set_epi64x(-(long long)(d), -(long long)(c),  \
+                                          -(long long)(b), -(long long)(a)))
+#define atrbvh_agg4_load(p) _mm256_load_pd(p)
+#define atrbvh_agg4_store(p, v) _mm256_store_pd((p), (v))
+#define atrbvh_agg4_storeu(p, v) _mm256_storeu_pd((p), (v))
+#define ATRBVH_AGG4_INF __builtin_inf()
+#endif
 ATRBVH_FN atrbvh_u64 atrbvh_agglomerate4_doubles(atrbvh_u32 n)
 {
     return 4u * ((atrbvh_u64)n * (n - 1u) / 2u);
 }
 
 /* The six coordinate vectors of one slot's four boxes. */
-__attribute__((target("avx"))) static inline void
-atrbvh_load_box4(float b[6][4], __m128 v[6])
+ATRBVH_AGG4_FN void atrbvh_load_box4(float b[6][4], atrbvh_agg_f4 v[6])
 {
     atrbvh_u32 c;
     for (c = 0; c < 6u; c++)
-        v[c] = _mm_load_ps(b[c]);
+        v[c] = atrbvh_agg4_fload(b[c]);
 }
 
 /* The union areas of the four lanes' boxes q (the first operand) and b. */
-__attribute__((target("avx"))) static inline __m256d
-atrbvh_union_area4(const __m128 q[6], float bf[6][4])
+ATRBVH_AGG4_FN atrbvh_agg_d4 atrbvh_union_area4(const atrbvh_agg_f4 q[6],
+                                                float bf[6][4])
 {
-    const __m256d dx =
-        _mm256_sub_pd(_mm256_cvtps_pd(_mm_max_ps(q[3], _mm_load_ps(bf[3]))),
-                      _mm256_cvtps_pd(_mm_min_ps(q[0], _mm_load_ps(bf[0]))));
-    const __m256d dy =
-        _mm256_sub_pd(_mm256_cvtps_pd(_mm_max_ps(q[4], _mm_load_ps(bf[4]))),
-                      _mm256_cvtps_pd(_mm_min_ps(q[1], _mm_load_ps(bf[1]))));
-    const __m256d dz =
-        _mm256_sub_pd(_mm256_cvtps_pd(_mm_max_ps(q[5], _mm_load_ps(bf[5]))),
-                      _mm256_cvtps_pd(_mm_min_ps(q[2], _mm_load_ps(bf[2]))));
-    __m256d s = _mm256_mul_pd(dx, dy);
-    s = _mm256_add_pd(s, _mm256_mul_pd(dy, dz));
-    s = _mm256_add_pd(s, _mm256_mul_pd(dz, dx));
-    return _mm256_mul_pd(_mm256_set1_pd(2.0), s);
+    const atrbvh_agg_d4 dx = atrbvh_agg4_sub(
+        atrbvh_agg4_widen(atrbvh_agg4_fmax(q[3], atrbvh_agg4_fload(bf[3]))),
+        atrbvh_agg4_widen(atrbvh_agg4_fmin(q[0], atrbvh_agg4_fload(bf[0]))));
+    const atrbvh_agg_d4 dy = atrbvh_agg4_sub(
+        atrbvh_agg4_widen(atrbvh_agg4_fmax(q[4], atrbvh_agg4_fload(bf[4]))),
+        atrbvh_agg4_widen(atrbvh_agg4_fmin(q[1], atrbvh_agg4_fload(bf[1]))));
+    const atrbvh_agg_d4 dz = atrbvh_agg4_sub(
+        atrbvh_agg4_widen(atrbvh_agg4_fmax(q[5], atrbvh_agg4_fload(bf[5]))),
+        atrbvh_agg4_widen(atrbvh_agg4_fmin(q[2], atrbvh_agg4_fload(bf[2]))));
+    atrbvh_agg_d4 s = atrbvh_agg4_mul(dx, dy);
+    s = atrbvh_agg4_add(s, atrbvh_agg4_mul(dy, dz));
+    s = atrbvh_agg4_add(s, atrbvh_agg4_mul(dz, dx));
+    return atrbvh_agg4_mul(atrbvh_agg4_set1(2.0), s);
 }
 
 /* One live entry of the search: v at pair code `at` (64 i + j) taken
  * where strictly lower than the lanes' minimum so far. */
 #define ATRBVH_AGG4_SEEK(v, code, best, at)                                    \
     do {                                                                       \
-        (at) = atrbvh_select4((at), (code),                                    \
-                              _mm256_cmp_pd((v), (best), _CMP_LT_OQ));         \
-        (best) = _mm256_min_pd((best), (v));                                   \
+        (at) = atrbvh_agg4_select((at), (code), atrbvh_agg4_lt((v), (best)));  \
+        (best) = atrbvh_agg4_min((best), (v));                                 \
     } while (0)
 
-__attribute__((noinline, unused, target("avx"))) static void
+ATRBVH_AGG4_MAIN void
 atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
                     const atrbvh_treelet_tree *t,
-                    const atrbvh_treelet *const tl[4], double *dist4,
+                    const atrbvh_treelet *const tl[4],
+                    ATRBVH_GLOBAL double *dist4,
                     atrbvh_treelet_topo *const topo[4], double found[4])
 {
     /* per slot: the four lanes' cluster boxes (six coordinates of four
      * lanes), costs, counts and codes; the merged boxes */
-    __attribute__((aligned(16))) float box[ATRBVH_TREELET_MAX][6][4];
-    __attribute__((aligned(32))) double area_of[ATRBVH_TREELET_MAX][4];
-    __attribute__((aligned(32))) double pick[4], cost_of[4];
-    __attribute__((aligned(16))) float merged[6][4];
+    ATRBVH_AGG4_ALIGNED(16) float box[ATRBVH_TREELET_MAX][6][4];
+    ATRBVH_AGG4_ALIGNED(32) double area_of[ATRBVH_TREELET_MAX][4];
+    ATRBVH_AGG4_ALIGNED(32) double pick[4], cost_of[4];
+    ATRBVH_AGG4_ALIGNED(16) float merged[6][4];
     double cost[ATRBVH_TREELET_MAX][4];
     atrbvh_u32 count[ATRBVH_TREELET_MAX][4], code[ATRBVH_TREELET_MAX][4];
     atrbvh_u32 base[ATRBVH_TREELET_MAX], cnt[4];
-    __m128 row[6];
+    atrbvh_agg_f4 row[6];
     const atrbvh_u32 lim = !p->collapse          ? 0u
                            : p->max_leaf == 0u ? ATRBVH_U32_MAX
                                                : p->max_leaf;
-    const __m256d one = _mm256_set1_pd(1.0), inf = _mm256_set1_pd(
-                                                  __builtin_inf());
-    __m256d best = inf, at = _mm256_setzero_pd();
+    const atrbvh_agg_d4 one = atrbvh_agg4_set1(1.0),
+                        inf = atrbvh_agg4_set1(ATRBVH_AGG4_INF);
+    atrbvh_agg_d4 best = inf, at = atrbvh_agg4_set1(0.0);
     atrbvh_u32 a, r, c, l, m, q;
 
     for (a = 0; a < n; a++) {
@@ -1422,10 +1487,12 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
         const atrbvh_box b0 = t->box[n0], b1 = t->box[n1], b2 = t->box[n2],
                          b3 = t->box[n3];
         for (c = 0; c < 3u; c++) {
-            _mm_store_ps(box[a][c], _mm_set_ps(b3.min[c], b2.min[c],
-                                               b1.min[c], b0.min[c]));
-            _mm_store_ps(box[a][c + 3u], _mm_set_ps(b3.max[c], b2.max[c],
-                                                    b1.max[c], b0.max[c]));
+            atrbvh_agg4_fstore(box[a][c], atrbvh_agg4_fset(b0.min[c], b1.min[c],
+                                                           b2.min[c],
+                                                           b3.min[c]));
+            atrbvh_agg4_fstore(box[a][c + 3u],
+                               atrbvh_agg4_fset(b0.max[c], b1.max[c],
+                                                b2.max[c], b3.max[c]));
         }
         cost[a][0] = t->cost[n0];
         cost[a][1] = t->cost[n1];
@@ -1442,37 +1509,40 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
     /* the matrix row by row (the row's cluster first, as
      * atrbvh_agglomerate_at fills it), searched on the way */
     for (r = 1; r < n; r++) {
-        __m256d k = _mm256_set1_pd((double)(64u * r));
+        atrbvh_agg_d4 k = atrbvh_agg4_set1((double)(64u * r));
         atrbvh_load_box4(box[r], row);
-        for (c = 0; c < r; c++, k = _mm256_add_pd(k, one)) {
-            const __m256d v = atrbvh_union_area4(row, box[c]);
-            _mm256_store_pd(dist4 + 4u * (base[r] + c), v);
+        for (c = 0; c < r; c++, k = atrbvh_agg4_add(k, one)) {
+            const atrbvh_agg_d4 v = atrbvh_union_area4(row, box[c]);
+            atrbvh_agg4_store(dist4 + 4u * (base[r] + c), v);
             ATRBVH_AGG4_SEEK(v, k, best, at);
         }
     }
     for (m = n, q = 0;; m--, q++) {
         const atrbvh_u32 last = m - 1u;
         atrbvh_u32 I[4], J[4];
-        __m256d iv, jv, binary, flat, take, res, far;
-        __m128 mb[6];
+        atrbvh_agg_d4 iv, jv, binary, flat, res, far;
+        atrbvh_agg_m4 take;
+        atrbvh_agg_f4 mb[6];
         /* each lane's pair: slot j's cluster (left) and slot i's */
-        _mm256_store_pd(pick, at);
+        atrbvh_agg4_store(pick, at);
         for (l = 0; l < 4u; l++) {
             const atrbvh_u32 k = (atrbvh_u32)pick[l];
             I[l] = k >> 6;
             J[l] = k & 63u;
         }
-        iv = _mm256_set_pd((double)I[3], (double)I[2], (double)I[1],
-                           (double)I[0]);
-        jv = _mm256_set_pd((double)J[3], (double)J[2], (double)J[1],
-                           (double)J[0]);
+        iv = atrbvh_agg4_set((double)I[0], (double)I[1], (double)I[2],
+                             (double)I[3]);
+        jv = atrbvh_agg4_set((double)J[0], (double)J[1], (double)J[2],
+                             (double)J[3]);
         for (c = 0; c < 6u; c++) {
-            const __m128 x = _mm_set_ps(box[J[3]][c][3], box[J[2]][c][2],
-                                        box[J[1]][c][1], box[J[0]][c][0]);
-            const __m128 y = _mm_set_ps(box[I[3]][c][3], box[I[2]][c][2],
-                                        box[I[1]][c][1], box[I[0]][c][0]);
-            mb[c] = c < 3u ? _mm_min_ps(x, y) : _mm_max_ps(x, y);
-            _mm_store_ps(merged[c], mb[c]);
+            const atrbvh_agg_f4 x =
+                atrbvh_agg4_fset(box[J[0]][c][0], box[J[1]][c][1],
+                                 box[J[2]][c][2], box[J[3]][c][3]);
+            const atrbvh_agg_f4 y =
+                atrbvh_agg4_fset(box[I[0]][c][0], box[I[1]][c][1],
+                                 box[I[2]][c][2], box[I[3]][c][3]);
+            mb[c] = c < 3u ? atrbvh_agg4_fmin(x, y) : atrbvh_agg4_fmax(x, y);
+            atrbvh_agg4_fstore(merged[c], mb[c]);
         }
         /* the merges' costs, atrbvh_node_cost lane for lane: the pair's
          * distance (best) is the merged area */
@@ -1489,21 +1559,21 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
             to->box[q].max[1] = merged[4][l];
             to->box[q].max[2] = merged[5][l];
         }
-        binary = _mm256_mul_pd(_mm256_set1_pd(p->ci), best);
-        binary = _mm256_add_pd(
-            binary, _mm256_set_pd(cost[J[3]][3], cost[J[2]][2], cost[J[1]][1],
-                                  cost[J[0]][0]));
-        binary = _mm256_add_pd(
-            binary, _mm256_set_pd(cost[I[3]][3], cost[I[2]][2], cost[I[1]][1],
-                                  cost[I[0]][0]));
-        flat = _mm256_mul_pd(_mm256_set1_pd(p->ct), best);
-        flat = _mm256_mul_pd(flat, _mm256_set_pd((double)cnt[3], (double)cnt[2],
-                                                 (double)cnt[1], (double)cnt[0]));
-        take = _mm256_castsi256_pd(_mm256_set_epi64x(
-            -(long long)(cnt[3] <= lim), -(long long)(cnt[2] <= lim),
-            -(long long)(cnt[1] <= lim), -(long long)(cnt[0] <= lim)));
-        res = atrbvh_select4(binary, _mm256_min_pd(flat, binary), take);
-        _mm256_store_pd(cost_of, res);
+        binary = atrbvh_agg4_mul(atrbvh_agg4_set1(p->ci), best);
+        binary = atrbvh_agg4_add(
+            binary, atrbvh_agg4_set(cost[J[0]][0], cost[J[1]][1],
+                                    cost[J[2]][2], cost[J[3]][3]));
+        binary = atrbvh_agg4_add(
+            binary, atrbvh_agg4_set(cost[I[0]][0], cost[I[1]][1],
+                                    cost[I[2]][2], cost[I[3]][3]));
+        flat = atrbvh_agg4_mul(atrbvh_agg4_set1(p->ct), best);
+        flat = atrbvh_agg4_mul(flat,
+                               atrbvh_agg4_set((double)cnt[0], (double)cnt[1],
+                                               (double)cnt[2], (double)cnt[3]));
+        take = atrbvh_agg4_mask(cnt[0] <= lim, cnt[1] <= lim, cnt[2] <= lim,
+                                cnt[3] <= lim);
+        res = atrbvh_agg4_select(binary, atrbvh_agg4_min(flat, binary), take);
+        atrbvh_agg4_store(cost_of, res);
         /* slot j takes the merge, slot i the last cluster (onto itself
          * when i is the last slot) */
         for (l = 0; l < 4u; l++) {
@@ -1518,7 +1588,7 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
             code[i][l] = code[last][l];
         }
         if (last == 1u) {
-            _mm256_storeu_pd(found, res);
+            atrbvh_agg4_storeu(found, res);
             break;
         }
         /* the distances to the merged clusters (the merged box first, as
@@ -1526,36 +1596,37 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
          * the last cluster's in its lanes */
         far = atrbvh_union_area4(mb, box[last]);
         for (a = 0; a < last; a++)
-            _mm256_store_pd(
+            atrbvh_agg4_store(
                 area_of[a],
-                atrbvh_select4(atrbvh_union_area4(mb, box[a]), far,
-                                 _mm256_cmp_pd(_mm256_set1_pd((double)a), iv,
-                                               _CMP_EQ_OQ)));
+                atrbvh_agg4_select(
+                    atrbvh_union_area4(mb, box[a]), far,
+                    atrbvh_agg4_eq(atrbvh_agg4_set1((double)a), iv)));
         /* the live entries of the next step rewritten, lane for lane:
          * (r, c) takes (last, c) in row i and (last, r) in column i,
          * then the distance to the merge in row and column j (the (i, j)
          * entry that of slot i's new cluster), and the search for the
          * next pair on the way */
         best = inf;
-        at = _mm256_setzero_pd();
+        at = atrbvh_agg4_set1(0.0);
         for (r = 1; r < last; r++) {
-            const __m256d rv = _mm256_set1_pd((double)r);
-            const __m256d ri = _mm256_cmp_pd(rv, iv, _CMP_EQ_OQ);
-            const __m256d rj = _mm256_cmp_pd(rv, jv, _CMP_EQ_OQ);
-            const __m256d lr = _mm256_load_pd(dist4 + 4u * (base[last] + r));
-            const __m256d ar = _mm256_load_pd(area_of[r]);
-            double *at_r = dist4 + 4u * base[r];
-            const double *lrow = dist4 + 4u * base[last];
-            __m256d k = _mm256_set1_pd((double)(64u * r)),
-                    cv = _mm256_setzero_pd();
-            for (c = 0; c < r; c++, k = _mm256_add_pd(k, one),
-                cv = _mm256_add_pd(cv, one)) {
-                __m256d v = _mm256_load_pd(at_r + 4u * c);
-                v = atrbvh_select4(v, _mm256_load_pd(lrow + 4u * c), ri);
-                v = atrbvh_select4(v, lr, _mm256_cmp_pd(cv, iv, _CMP_EQ_OQ));
-                v = atrbvh_select4(v, _mm256_load_pd(area_of[c]), rj);
-                v = atrbvh_select4(v, ar, _mm256_cmp_pd(cv, jv, _CMP_EQ_OQ));
-                _mm256_store_pd(at_r + 4u * c, v);
+            const atrbvh_agg_d4 rv = atrbvh_agg4_set1((double)r);
+            const atrbvh_agg_m4 ri = atrbvh_agg4_eq(rv, iv);
+            const atrbvh_agg_m4 rj = atrbvh_agg4_eq(rv, jv);
+            const atrbvh_agg_d4 lr =
+                atrbvh_agg4_load(dist4 + 4u * (base[last] + r));
+            const atrbvh_agg_d4 ar = atrbvh_agg4_load(area_of[r]);
+            ATRBVH_GLOBAL double *at_r = dist4 + 4u * base[r];
+            ATRBVH_GLOBAL const double *lrow = dist4 + 4u * base[last];
+            atrbvh_agg_d4 k = atrbvh_agg4_set1((double)(64u * r)),
+                          cv = atrbvh_agg4_set1(0.0);
+            for (c = 0; c < r; c++, k = atrbvh_agg4_add(k, one),
+                cv = atrbvh_agg4_add(cv, one)) {
+                atrbvh_agg_d4 v = atrbvh_agg4_load(at_r + 4u * c);
+                v = atrbvh_agg4_select(v, atrbvh_agg4_load(lrow + 4u * c), ri);
+                v = atrbvh_agg4_select(v, lr, atrbvh_agg4_eq(cv, iv));
+                v = atrbvh_agg4_select(v, atrbvh_agg4_load(area_of[c]), rj);
+                v = atrbvh_agg4_select(v, ar, atrbvh_agg4_eq(cv, jv));
+                atrbvh_agg4_store(at_r + 4u * c, v);
                 ATRBVH_AGG4_SEEK(v, k, best, at);
             }
         }
@@ -1756,6 +1827,56 @@ ATRBVH_FN int atrbvh_atrbvh_keep(const atrbvh_treelet_tree *t,
     return atrbvh_atrbvh_apply(t, root, tl, &topo, found);
 }
 
+#ifdef ATRBVH_AGG_QUADS
+/* The agglomerations of `ready` (2 to 4) formed ATRBVH treelets whose
+ * subtrees are disjoint (roots root[l], formed into tl[l], each root
+ * refreshed): those with as many leaves as the first (at least 3) side by
+ * side in atrbvh_agglomerate4's lanes when two or more do (the lanes left
+ * over repeat the first, into a spare topology), any other one by one as
+ * atrbvh_atrbvh_keep does it; then each one's write-back when cheaper
+ * (applied[l] 1).  No treelet reads what another writes back.  The CPU's
+ * walk_lanes (lib/cpu/optimise.c, with AVX) and the opt_round4 kernel
+ * call this; dist is one treelet's matrix, dist4 the four lanes'. */
+ATRBVH_FN void atrbvh_agglomerate_side(const atrbvh_treelet_tree *t,
+                                       const atrbvh_cost_params *p,
+                                       atrbvh_u32 ready,
+                                       const atrbvh_u32 *root,
+                                       const atrbvh_treelet *tl,
+                                       ATRBVH_GLOBAL double *dist,
+                                       ATRBVH_GLOBAL double *dist4,
+                                       int *applied)
+{
+    const atrbvh_treelet *in[4];
+    atrbvh_treelet_topo topo[4], spare;
+    atrbvh_treelet_topo *out[4];
+    double found[4];
+    atrbvh_u32 l, lane[4], used = 0;
+    const atrbvh_u32 n = tl[0].n;
+    for (l = 0; l < ready; l++)
+        lane[l] = n >= 3u && tl[l].n == n ? used++ : 4u;
+    if (used > 1u) {
+        for (l = 0; l < 4u; l++) {
+            in[l] = &tl[0];
+            out[l] = &spare;
+        }
+        for (l = 0; l < ready; l++)
+            if (lane[l] < 4u) {
+                in[lane[l]] = &tl[l];
+                out[lane[l]] = &topo[l];
+            }
+        atrbvh_agglomerate4(p, n, t, in, dist4, out, found);
+    }
+    for (l = 0; l < ready; l++) {
+        applied[l] = 0;
+        if (used > 1u && lane[l] < 4u)
+            applied[l] = atrbvh_atrbvh_apply(t, root[l], &tl[l], &topo[l],
+                                             found[lane[l]]);
+        else if (tl[l].n >= 3u)
+            applied[l] = atrbvh_atrbvh_keep(t, p, root[l], &tl[l], dist);
+    }
+}
+#endif
+
 /* Restructures the treelet rooted at internal node `root` (whose subtree
  * must be final): refreshes the root's cost from its children, forms the
  * treelet, builds a topology (TRBVH subset DP, or ATRBVH agglomerative
@@ -1765,6 +1886,29 @@ ATRBVH_FN int atrbvh_atrbvh_keep(const atrbvh_treelet_tree *t,
  * the scratch (`s` for TRBVH, `dist` for ATRBVH) and the walk differ.
  * The formed treelet is left in *tl (its internal ids are the ones a
  * write-back reuses). */
+/* The rest of a treelet once it is formed into *tl (its root refreshed):
+ * the topology and the write-back when strictly cheaper (1), or nothing
+ * (0, and always for fewer than 3 leaves).  The OpenCL kernel that forms
+ * several treelets side by side (opt_round4) ends each with this. */
+ATRBVH_FN int atrbvh_treelet_finish(const atrbvh_treelet_tree *t,
+                                    const atrbvh_cost_params *p,
+                                    atrbvh_u32 root, int agglomerative,
+                                    atrbvh_trbvh_scratch s,
+                                    ATRBVH_GLOBAL double *dist,
+                                    const atrbvh_treelet *tl)
+{
+    atrbvh_treelet_leaves lv;
+    double found;
+    if (tl->n < 3u)
+        return 0;
+    if (!agglomerative) {
+        atrbvh_treelet_gather(t, tl, &lv);
+        found = atrbvh_trbvh_costs(p, tl->n, &lv, s);
+        return atrbvh_trbvh_keep(t, p, root, tl, &lv, s, found);
+    }
+    return atrbvh_atrbvh_keep(t, p, root, tl, dist);
+}
+
 ATRBVH_FN int atrbvh_treelet_process_tl(const atrbvh_treelet_tree *t,
                                         const atrbvh_cost_params *p,
                                         atrbvh_u32 root, atrbvh_u32 n,
@@ -1773,16 +1917,8 @@ ATRBVH_FN int atrbvh_treelet_process_tl(const atrbvh_treelet_tree *t,
                                         ATRBVH_GLOBAL double *dist,
                                         atrbvh_treelet *tl)
 {
-    atrbvh_treelet_leaves lv;
-    double found;
-    if (atrbvh_treelet_begin(t, p, root, n, tl) < 3u)
-        return 0;
-    if (!agglomerative) {
-        atrbvh_treelet_gather(t, tl, &lv);
-        found = atrbvh_trbvh_costs(p, tl->n, &lv, s);
-        return atrbvh_trbvh_keep(t, p, root, tl, &lv, s, found);
-    }
-    return atrbvh_atrbvh_keep(t, p, root, tl, dist);
+    (void)atrbvh_treelet_begin(t, p, root, n, tl);
+    return atrbvh_treelet_finish(t, p, root, agglomerative, s, dist, tl);
 }
 
 ATRBVH_FN int atrbvh_treelet_process(const atrbvh_treelet_tree *t,
