@@ -866,8 +866,24 @@ typedef struct opt_view {
     atrbvh_trbvh_scratch s;
     atrbvh_agg_scratch agg;
     atrbvh_treelet_marks m;
-    __global double *dist4; /* opt_round4, ATRBVH: atrbvh_agglomerate4's */
+    /* opt_round4: ATRBVH's four interleaved matrices, or TRBVH's
+     * interleaved costs (the same place) and the four lanes' tables (s
+     * the first) */
+    __global double *dist4;
+    atrbvh_trbvh_scratch lane[4];
 } opt_view;
+
+/* A TRBVH scratch (atrbvh_trbvh_scratch) from `base`. */
+static atrbvh_trbvh_scratch opt_tables(__global uchar *base,
+                                       const atrbvh_kargs_optimise *a)
+{
+    atrbvh_trbvh_scratch s;
+    s.box = (__global float *)base;
+    s.cost = (__global double *)(base + a->off_cost);
+    s.count = (__global uint *)(base + a->off_count);
+    s.split = (__global uint *)(base + a->off_split);
+    return s;
+}
 
 static void opt_item(__global uint *left, __global uint *right,
                      __global uint *parent, __global uint *count,
@@ -876,11 +892,13 @@ static void opt_item(__global uint *left, __global uint *right,
                      const atrbvh_kargs_optimise *a, uint w, opt_view *v)
 {
     __global uchar *base = scratch + (ulong)w * a->stride;
+    uint l;
     v->p = atrbvh_kargs_cost(a->ci, a->ct, a->collapse, a->max_leaf);
-    v->s.box = (__global float *)base;
-    v->s.cost = (__global double *)(base + a->off_cost);
-    v->s.count = (__global uint *)(base + a->off_count);
-    v->s.split = (__global uint *)(base + a->off_split);
+    v->s = opt_tables(base, a);
+    v->lane[0] = v->s;
+    for (l = 1u; l < 4u; l++) /* (opt_round4, TRBVH; unused otherwise) */
+        v->lane[l] =
+            opt_tables(base + a->off_lanes + (l - 1u) * a->off_dist, a);
     /* ATRBVH: the distances, and above 32 leaves the treelet's arrays,
      * laid out for the largest size (the host sized them alike). */
     atrbvh_agg_layout(base + a->off_dist,
@@ -978,9 +996,9 @@ __kernel void opt_round(__global uint *left, __global uint *right,
  * others refreshed and formed side by side, one expansion of each in
  * turn (atrbvh_treelet_form's steps: a formation is a chain of dependent
  * loads, and those of several treelets overlap), then each one's
- * topology and write-back (atrbvh_treelet_finish; ATRBVH's agglomerations
- * side by side in a double4's lanes, atrbvh_agglomerate_side) and its
- * marks; then every walk climbs as opt_round's does, and the walks that
+ * topology and write-back side by side in a double4's lanes (ATRBVH's
+ * agglomerations, atrbvh_agglomerate_side; TRBVH's DP, atrbvh_trbvh_ready)
+ * and its marks; then every walk climbs as opt_round's does, and the walks that
  * stop make room for the item's next start nodes.  The walks' nodes are
  * crown nodes none of which is below another (a node is walked only once
  * every crown node below it is done), so their treelets' subtrees are
@@ -1000,6 +1018,7 @@ __kernel void opt_round4(__global uint *left, __global uint *right,
     uint at[ATRBVH_CL_WALKS], root[ATRBVH_CL_WALKS], size[ATRBVH_CL_WALKS];
     int r[ATRBVH_CL_WALKS];
     atrbvh_treelet tl[ATRBVH_CL_WALKS];
+    atrbvh_treelet_leaves lv[ATRBVH_CL_WALKS];
     double area[ATRBVH_CL_WALKS][ATRBVH_TREELET_MAX];
     opt_view v;
     if (w >= a.workers)
@@ -1037,16 +1056,18 @@ __kernel void opt_round4(__global uint *left, __global uint *right,
                     atrbvh_treelet_form_next(&v.t, &tl[l], area[l]))
                     more = 1u;
         }
-        /* ATRBVH: the agglomerations side by side too, in a double4's
-         * lanes (atrbvh_agglomerate_side, as the CPU's walk_lanes) */
-        if (a.agglomerative && ready > 1u)
+        /* the topologies side by side in a double4's lanes, as the CPU's
+         * walk_lanes: ATRBVH's agglomerations (atrbvh_agglomerate_side),
+         * TRBVH's DP (atrbvh_trbvh_ready) */
+        if (!a.agglomerative)
+            atrbvh_trbvh_ready(&v.t, &v.p, a.treelet_size, ready, root, tl,
+                               lv, v.lane, v.dist4, r);
+        else if (ready > 1u)
             atrbvh_agglomerate_side(&v.t, &v.p, ready, root, tl, v.agg.dist,
                                     v.dist4, r);
-        else
-            for (l = 0u; l < ready; l++)
-                r[l] = atrbvh_treelet_finish(&v.t, &v.p, root[l],
-                                             (int)a.agglomerative, v.s,
-                                             v.agg.dist, &tl[l]);
+        else if (ready == 1u)
+            r[0] = atrbvh_treelet_finish(&v.t, &v.p, root[0], 1, v.s,
+                                         v.agg.dist, &tl[0]);
         for (l = 0u; l < ready; l++) {
             atrbvh_treelet_marks_done(v.m, &tl[l], root[l], r[l], a.round);
             done++;

@@ -551,7 +551,7 @@ static atrbvh_status st_refit(atrbvh_device *dev, atrbvh_i_run *run,
 static void scratch_layout(const atrbvh_i_config *cfg,
                            atrbvh_kargs_optimise *a)
 {
-    size_t subsets = 0, agg = 0, agg4 = 0, n = cfg->treelet_size;
+    size_t subsets = 0, agg = 0, four = 0, lanes = 0, n = cfg->treelet_size;
     if (a->agglomerative) {
         const atrbvh_u32 nmax =
             n == ATRBVH_TREELET_AUTO ? ATRBVH_AUTO_MAX : (atrbvh_u32)n;
@@ -559,16 +559,24 @@ static void scratch_layout(const atrbvh_i_config *cfg,
         /* opt_round4: the four interleaved matrices of its
          * agglomerations side by side (atrbvh_agglomerate4) */
         if (a->walks && nmax <= ATRBVH_TREELET_MAX)
-            agg4 = (size_t)atrbvh_agglomerate4_doubles(nmax) * sizeof(double);
+            four = (size_t)atrbvh_agglomerate4_doubles(nmax) * sizeof(double);
     } else {
         subsets = (size_t)1 << n;
+        /* opt_round4: the DP's four interleaved cost tables and their
+         * mirrors (atrbvh_trbvh_costs4, 8 x 2^n doubles) and lanes 1-3's
+         * own tables */
+        if (a->walks)
+            four = 8u * subsets * sizeof(double);
     }
     a->off_cost = ALIGN64(subsets * sizeof(atrbvh_box));
     a->off_count = a->off_cost + ALIGN64(subsets * sizeof(double));
     a->off_split = a->off_count + ALIGN64(subsets * sizeof(uint32_t));
     a->off_dist = a->off_split + ALIGN64(subsets * sizeof(uint32_t));
     a->off_dist4 = a->off_dist + ALIGN64(agg);
-    a->stride = a->off_dist4 + ALIGN64(agg4);
+    a->off_lanes = a->off_dist4 + ALIGN64(four);
+    if (a->walks && !a->agglomerative)
+        lanes = 3u * (size_t)a->off_dist;
+    a->stride = a->off_lanes + lanes;
 }
 
 static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,

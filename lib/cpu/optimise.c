@@ -285,40 +285,6 @@ static void lane_done(walk_ctx *c, opt_worker *w, uint32_t node,
     progress(c);
 }
 
-#ifdef ATRBVH_TRBVH_QUADS
-/* The end of one TRBVH treelet of walk_lanes, its DP done (C(all leaves)
- * = found; the tables in s, or in lane `lane` of w->pack when `packed`):
- * the write-back when cheaper. */
-static void lane_end(walk_ctx *c, opt_worker *w, uint32_t node,
-                     const atrbvh_treelet *tl, const atrbvh_treelet_leaves *lv,
-                     atrbvh_trbvh_scratch s, double found, int packed,
-                     unsigned lane)
-{
-    const atrbvh_trbvh_tables tab =
-        packed ? atrbvh_trbvh_tables_lane(c->n, w->pack, lane, s)
-               : atrbvh_trbvh_tables_of(tl->n, s);
-    const int applied =
-        atrbvh_trbvh_keep_from(&c->t, c->cost, node, tl, lv, &tab, found);
-    lane_done(c, w, node, tl, applied);
-}
-
-/* The TRBVH DP of `ready` (2 to 4) gathered treelets side by side
- * (atrbvh_trbvh_costs4, the first treelet repeated in the lanes left
- * over, their results unused), then each one's end. */
-static void lane_run(walk_ctx *c, opt_worker *w, unsigned ready,
-                     const uint32_t *node, const atrbvh_treelet *tl,
-                     const atrbvh_treelet_leaves *lv)
-{
-    const atrbvh_treelet_leaves *in[4];
-    double found[4];
-    unsigned l;
-    for (l = 0; l < 4u; l++)
-        in[l] = &lv[l < ready ? l : 0u];
-    atrbvh_trbvh_costs4(c->cost, c->n, in, w->lane, w->pack, found);
-    for (l = 0; l < ready; l++)
-        lane_end(c, w, node[l], &tl[l], &lv[l], w->lane[l], found[l], 1, l);
-}
-#endif
 
 #ifdef ATRBVH_AGG_QUADS
 /* The agglomerations of `ready` (2 to 4) formed ATRBVH treelets of
@@ -341,18 +307,20 @@ static void lane_agg(walk_ctx *c, opt_worker *w, unsigned ready,
  * skipped): each root refreshed, the treelets formed side by side (one
  * expansion of each in turn, so that their loads overlap: a formation is
  * a chain of dependent loads), then each treelet's topology.  ATRBVH: the
- * agglomeration of each (atrbvh_atrbvh_keep, as process() does).  TRBVH:
- * the full treelets' DP together (lane_run); one alone, or one of fewer
- * than n leaves (not one of a crown node, which holds at least n
- * primitives; kept for safety), by the scalar DP. */
+ * agglomerations side by side with AVX (lane_agg), else one by one
+ * (atrbvh_atrbvh_keep, as process() does).  TRBVH: the full treelets' DP
+ * together (atrbvh_trbvh_ready); one alone, or one of fewer than n leaves
+ * (not one of a crown node, which holds at least n primitives; kept for
+ * safety), by the scalar DP. */
 static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
                        const uint32_t *root)
 {
     atrbvh_treelet tl[4];
     atrbvh_treelet_leaves lv[4];
     double area[4][ATRBVH_TREELET_MAX];
-    uint32_t node[4], size[4];
-    unsigned l, m, more = 1, full = 0;
+    uint32_t size[4];
+    int applied[4];
+    unsigned l, m, more = 1;
     for (l = 0; l < ready; l++) {
         size[l] = c->n == ATRBVH_TREELET_AUTO
                       ? atrbvh_treelet_auto_size(c->t.count[root[l]], c->gamma)
@@ -382,40 +350,14 @@ static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
                                     : 0);
         return;
     }
-    for (l = 0; l < ready; l++) {
-        if (tl[l].n >= 3u)
-            atrbvh_treelet_gather(&c->t, &tl[l], &lv[l]);
-#ifdef ATRBVH_TRBVH_QUADS
-        if (tl[l].n == c->n && ready > 1u) {
-            if (full != l) {
-                tl[full] = tl[l];
-                lv[full] = lv[l];
-            }
-            node[full++] = root[l];
-            continue;
-        }
-#endif
-        lane_done(c, w, root[l], &tl[l],
-                  tl[l].n >= 3u
-                      ? atrbvh_trbvh_keep(&c->t, c->cost, root[l], &tl[l],
-                                          &lv[l], w->lane[0],
-                                          atrbvh_trbvh_costs(c->cost, tl[l].n,
-                                                             &lv[l],
-                                                             w->lane[0]))
-                      : 0);
-    }
-#ifdef ATRBVH_TRBVH_QUADS
-    if (full == 1u) {
-        const double found =
-            atrbvh_trbvh_costs(c->cost, c->n, &lv[0], w->lane[0]);
-        lane_end(c, w, node[0], &tl[0], &lv[0], w->lane[0], found, 0, 0u);
-    } else if (full > 1u) {
-        lane_run(c, w, full, node, tl, lv);
-    }
-#else
-    (void)node;
-    (void)full;
-#endif
+    /* TRBVH: the full treelets' DP together, in lanes (with AVX: opt_lanes
+     * takes TRBVH one at a time without), the others one by one
+     * (shared/treelet.h's atrbvh_trbvh_ready, which the opt_round4 kernel
+     * calls too) */
+    atrbvh_trbvh_ready(&c->t, c->cost, c->n, ready, root, tl, lv, w->lane,
+                       w->pack, applied);
+    for (l = 0; l < ready; l++)
+        lane_done(c, w, root[l], &tl[l], applied[l]);
 }
 
 /* The crown of frontier subtree s (every crown node below and including

@@ -103,7 +103,11 @@ typedef struct atrbvh_kargs_optimise {
     atrbvh_u64 off_count;
     atrbvh_u64 off_split;
     atrbvh_u64 off_dist;
-    atrbvh_u64 off_dist4; /* opt_round4, ATRBVH: atrbvh_agglomerate4's */
+    atrbvh_u64 off_dist4; /* opt_round4: ATRBVH's four interleaved
+                             matrices (atrbvh_agglomerate4), TRBVH's
+                             interleaved costs (atrbvh_trbvh_costs4)     */
+    atrbvh_u64 off_lanes; /* opt_round4, TRBVH: lanes 1-3's tables, each
+                             off_dist bytes (lane 0's at 0)               */
     atrbvh_u32 collapse;
     atrbvh_u32 max_leaf;
     atrbvh_u32 n_internal;
@@ -163,8 +167,8 @@ ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_sort) == 32, kargs_sort);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_tree) == 40, kargs_tree);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_tree, n) == 16,
                      kargs_tree_n);
-ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_optimise) == 112, kargs_optimise);
-ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_optimise, collapse) == 64,
+ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_optimise) == 120, kargs_optimise);
+ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_optimise, collapse) == 72,
                      kargs_optimise_collapse);
 ATRBVH_STATIC_ASSERT(sizeof(atrbvh_kargs_trace) == 80, kargs_trace);
 ATRBVH_STATIC_ASSERT(ATRBVH_OFFSETOF(atrbvh_kargs_trace, boxes) == 64,

@@ -730,7 +730,8 @@ ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
 /* ------------------------------------------------ TRBVH, four at once */
 /* Four treelets' DP side by side, one per lane of AVX's four doubles (x86
  * CPUs with AVX, chosen at run time by the driver, __builtin_cpu_supports;
- * the CPU driver takes treelets of disjoint subtrees, optimise.c).  Lane
+ * the CPU driver takes treelets of disjoint subtrees, optimise.c) or of
+ * an OpenCL double4 (the opt_round4 kernel on a CPU device).  Lane
  * by lane it is atrbvh_trbvh_costs: the same subsets, the same partitions,
  * the same IEEE sums in the same order (the compiler contracts nothing,
  * -ffp-contract=off, and AVX has no FMA), and each minimum written as the
@@ -745,13 +746,11 @@ ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
  * 32-byte aligned): C(S) of lane l at quad[4S + l], then the mirror
  * rev[full ^ X] = C(X) of the four lanes, as in atrbvh_trbvh_costs.  Each
  * lane's own scratch gets the subset boxes, areas and counts
- * (atrbvh_trbvh_subsets_avx); atrbvh_trbvh_tables_lane names where a
- * lane's tables are, for the extraction of a kept treelet
- * (atrbvh_trbvh_keep_from).  found[l] is C(all leaves) of lane l. */
-#if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__)) && \
-    (defined(__x86_64__) || defined(__i386__))
-#include <immintrin.h>
-#define ATRBVH_TRBVH_QUADS 1
+ * (atrbvh_trbvh_subsets_avx on the CPU, atrbvh_trbvh_subsets in OpenCL
+ * C); atrbvh_trbvh_tables_lane names where a lane's tables are, for the
+ * extraction of a kept treelet (atrbvh_trbvh_keep_from).  found[l] is
+ * C(all leaves) of lane l. */
+
 /* The tables of lane `lane` of atrbvh_trbvh_costs4 (n leaves), where
  * they are: C(S) and the mirror interleaved in `quad` (every fourth
  * entry), A(S) and N(S) in that lane's scratch s (the areas in its cost
@@ -760,10 +759,9 @@ ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
  * a copy of a kept lane's 2^n - 1 costs, mirror entries and areas back to
  * the scalar layout was 8.6% of TRBVH(7)'s optimise-stage instructions
  * (callgrind, sibenik, one thread). */
-ATRBVH_FN atrbvh_trbvh_tables atrbvh_trbvh_tables_lane(atrbvh_u32 n,
-                                                       const double *quad,
-                                                       atrbvh_u32 lane,
-                                                       atrbvh_trbvh_scratch s)
+ATRBVH_FN atrbvh_trbvh_tables
+atrbvh_trbvh_tables_lane(atrbvh_u32 n, ATRBVH_GLOBAL const double *quad,
+                         atrbvh_u32 lane, atrbvh_trbvh_scratch s)
 {
     const atrbvh_trbvh_mask full = ((atrbvh_trbvh_mask)1 << n) - 1u;
     atrbvh_trbvh_tables tab;
@@ -776,6 +774,10 @@ ATRBVH_FN atrbvh_trbvh_tables atrbvh_trbvh_tables_lane(atrbvh_u32 n,
     return tab;
 }
 
+#if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__)) && \
+    (defined(__x86_64__) || defined(__i386__))
+#include <immintrin.h>
+#define ATRBVH_TRBVH_QUADS 1
 /* Lane for lane m ? b : a, m a mask of all ones or all zeros per lane
  * (a comparison's).  Not VBLENDVPD: GCC 12 folds _mm256_blendv_pd into a
  * vector condition, which in a function compiled for AVX by attribute
@@ -786,33 +788,6 @@ __attribute__((target("avx"))) static inline __m256d
 atrbvh_select4(__m256d a, __m256d b, __m256d m)
 {
     return _mm256_or_pd(_mm256_and_pd(m, b), _mm256_andnot_pd(m, a));
-}
-
-/* atrbvh_trbvh_min on the four lanes (its enumeration, two running minima
- * per lane); cost and rest as doubles, lane l of subset P at 4P + l: the
- * masks are kept times four, so each vector is addressed with x86's scale
- * of 8. */
-__attribute__((target("avx"))) static inline __m256d
-atrbvh_trbvh_min4(const double *cost, const double *rest, atrbvh_trbvh_mask S,
-                  __m256d base)
-{
-    const atrbvh_trbvh_mask delta = (S - 1u) & S;
-    const atrbvh_trbvh_mask lb = delta & (0u - delta);
-    const atrbvh_trbvh_mask l4 = lb << 2, d2 = (delta ^ lb) << 2;
-    const double *cost_lb = cost + l4, *rest_lb = rest + l4;
-    atrbvh_trbvh_mask E;
-    __m256d lo0 = _mm256_add_pd(base, _mm256_load_pd(cost + l4)), lo1;
-    lo0 = _mm256_add_pd(lo0, _mm256_load_pd(rest + l4));
-    lo1 = lo0;
-    for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
-        __m256d c = _mm256_add_pd(base, _mm256_load_pd(cost + E));
-        c = _mm256_add_pd(c, _mm256_load_pd(rest + E));
-        lo0 = _mm256_min_pd(lo0, c);
-        c = _mm256_add_pd(base, _mm256_load_pd(cost_lb + E));
-        c = _mm256_add_pd(c, _mm256_load_pd(rest_lb + E));
-        lo1 = _mm256_min_pd(lo1, c);
-    }
-    return _mm256_min_pd(lo0, lo1);
 }
 
 /* atrbvh_trbvh_subsets with AVX, eight subsets a step (bit >= 8): the
@@ -897,38 +872,151 @@ atrbvh_trbvh_subsets_avx(atrbvh_u32 n, atrbvh_u32 k,
         }
     }
 }
+#endif
 
-__attribute__((noinline, unused, target("avx"))) static void
+/* The vector words of the four-lane code (atrbvh_trbvh_costs4 and
+ * atrbvh_agglomerate4 below), written once for both: AVX's intrinsics in
+ * C (x86 CPUs with AVX, chosen at run time) and OpenCL C's vector types
+ * and built-ins (the opt_round4 kernel on a CPU device), each the same
+ * operation lane for lane: a comparison's mask all ones or all zeros per
+ * lane, select(a, b, m) m ? b : a, the minima and maxima a < b ? a : b
+ * and a > b ? a : b as VMINPD/VMAXPD (the second operand on equal values
+ * and NaN).  tests/test_opencl.c compares the kernel's trees with the
+ * CPU's, tests/test_hashes.c the CPU's lanes with its scalar path. */
+#if defined(__OPENCL_VERSION__) || defined(ATRBVH_TRBVH_QUADS)
+#define ATRBVH_LANES4 1
+#ifdef __OPENCL_VERSION__
+typedef float4 atrbvh_v4f;  /* one coordinate of four lanes' boxes */
+typedef double4 atrbvh_v4d; /* four lanes' areas, costs or codes    */
+typedef long4 atrbvh_v4m;   /* a comparison's lanes: all ones or 0  */
+#define ATRBVH_V4_FN static inline
+#define ATRBVH_V4_MAIN static
+#define ATRBVH_V4_ALIGNED(b)
+#define atrbvh_v4_fload(p) vload4(0, (p))
+#define atrbvh_v4_fstore(p, v) vstore4((v), 0, (p))
+#define atrbvh_v4_fset(a, b, c, d) ((float4)((a), (b), (c), (d)))
+#define atrbvh_v4_fmin(a, b) select((b), (a), (a) < (b))
+#define atrbvh_v4_fmax(a, b) select((b), (a), (a) > (b))
+#define atrbvh_v4_widen(v) convert_double4(v)
+#define atrbvh_v4_set1(x) ((double4)(x))
+#define atrbvh_v4_set(a, b, c, d) ((double4)((a), (b), (c), (d)))
+#define atrbvh_v4_add(a, b) ((a) + (b))
+#define atrbvh_v4_sub(a, b) ((a) - (b))
+#define atrbvh_v4_mul(a, b) ((a) * (b))
+#define atrbvh_v4_min(a, b) select((b), (a), (a) < (b))
+#define atrbvh_v4_lt(a, b) ((a) < (b))
+#define atrbvh_v4_eq(a, b) ((a) == (b))
+#define atrbvh_v4_select(a, b, m) select((a), (b), (m))
+#define atrbvh_v4_mask(a, b, c, d)                                           \
+    ((long4)(-(long)(a), -(long)(b), -(long)(c), -(long)(d)))
+#define atrbvh_v4_load(p) vload4(0, (p))
+#define atrbvh_v4_store(p, v) vstore4((v), 0, (p))
+#define atrbvh_v4_storeu(p, v) vstore4((v), 0, (p))
+#define ATRBVH_V4_INF ((double)INFINITY)
+#else
+typedef __m128 atrbvh_v4f;
+typedef __m256d atrbvh_v4d;
+typedef __m256d atrbvh_v4m;
+#define ATRBVH_V4_FN __attribute__((target("avx"))) static inline
+#define ATRBVH_V4_MAIN __attribute__((noinline, unused, target("avx"))) static
+#define ATRBVH_V4_ALIGNED(b) __attribute__((aligned(b)))
+#define atrbvh_v4_fload(p) _mm_load_ps(p)
+#define atrbvh_v4_fstore(p, v) _mm_store_ps((p), (v))
+#define atrbvh_v4_fset(a, b, c, d) _mm_set_ps((d), (c), (b), (a))
+#define atrbvh_v4_fmin(a, b) _mm_min_ps((a), (b))
+#define atrbvh_v4_fmax(a, b) _mm_max_ps((a), (b))
+#define atrbvh_v4_widen(v) _mm256_cvtps_pd(v)
+#define atrbvh_v4_set1(x) _mm256_set1_pd(x)
+#define atrbvh_v4_set(a, b, c, d) _mm256_set_pd((d), (c), (b), (a))
+#define atrbvh_v4_add(a, b) _mm256_add_pd((a), (b))
+#define atrbvh_v4_sub(a, b) _mm256_sub_pd((a), (b))
+#define atrbvh_v4_mul(a, b) _mm256_mul_pd((a), (b))
+#define atrbvh_v4_min(a, b) _mm256_min_pd((a), (b))
+#define atrbvh_v4_lt(a, b) _mm256_cmp_pd((a), (b), _CMP_LT_OQ)
+#define atrbvh_v4_eq(a, b) _mm256_cmp_pd((a), (b), _CMP_EQ_OQ)
+#define atrbvh_v4_select(a, b, m) atrbvh_select4((a), (b), (m))
+#define atrbvh_v4_mask(a, b, c, d)                                           \
+    _mm256_castsi256_pd(_mm256_set_epi64x(-(long long)(d), -(long long)(c),  \
+                                          -(long long)(b), -(long long)(a)))
+#define atrbvh_v4_load(p) _mm256_load_pd(p)
+#define atrbvh_v4_store(p, v) _mm256_store_pd((p), (v))
+#define atrbvh_v4_storeu(p, v) _mm256_storeu_pd((p), (v))
+#define ATRBVH_V4_INF __builtin_inf()
+#endif
+
+/* atrbvh_trbvh_min on the four lanes (its enumeration, two running minima
+ * per lane); cost and rest as doubles, lane l of subset P at 4P + l: the
+ * masks are kept times four, so each vector is addressed with x86's scale
+ * of 8. */
+ATRBVH_V4_FN atrbvh_v4d atrbvh_trbvh_min4(ATRBVH_GLOBAL const double *cost,
+                                               ATRBVH_GLOBAL const double *rest,
+                                               atrbvh_trbvh_mask S,
+                                               atrbvh_v4d base)
+{
+    const atrbvh_trbvh_mask delta = (S - 1u) & S;
+    const atrbvh_trbvh_mask lb = delta & (0u - delta);
+    const atrbvh_trbvh_mask l4 = lb << 2, d2 = (delta ^ lb) << 2;
+    ATRBVH_GLOBAL const double *cost_lb = cost + l4, *rest_lb = rest + l4;
+    atrbvh_trbvh_mask E;
+    atrbvh_v4d lo0 = atrbvh_v4_add(base, atrbvh_v4_load(cost + l4)),
+                  lo1;
+    lo0 = atrbvh_v4_add(lo0, atrbvh_v4_load(rest + l4));
+    lo1 = lo0;
+    for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
+        atrbvh_v4d c = atrbvh_v4_add(base, atrbvh_v4_load(cost + E));
+        c = atrbvh_v4_add(c, atrbvh_v4_load(rest + E));
+        lo0 = atrbvh_v4_min(lo0, c);
+        c = atrbvh_v4_add(base, atrbvh_v4_load(cost_lb + E));
+        c = atrbvh_v4_add(c, atrbvh_v4_load(rest_lb + E));
+        lo1 = atrbvh_v4_min(lo1, c);
+    }
+    return atrbvh_v4_min(lo0, lo1);
+}
+
+/* Each lane's subsets: AVX's eight at a time on the CPU, the scalar
+ * rule in OpenCL C (the same values). */
+#ifdef __OPENCL_VERSION__
+#define ATRBVH_TRBVH_SUBSETS4(n, k, lv, s)                                     \
+    atrbvh_trbvh_subsets((n), (k), (lv), (s))
+#else
+#define ATRBVH_TRBVH_SUBSETS4(n, k, lv, s)                                     \
+    atrbvh_trbvh_subsets_avx((n), (k), (lv), (s))
+#endif
+
+ATRBVH_V4_MAIN void
 atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
                     const atrbvh_treelet_leaves *const lv[4],
-                    const atrbvh_trbvh_scratch s[4], double *quad,
+                    const atrbvh_trbvh_scratch s[4], ATRBVH_GLOBAL double *quad,
                     double found[4])
 {
     const atrbvh_u32 full = (1u << n) - 1u;
     const atrbvh_u32 lim = !p->collapse          ? 0u
                            : p->max_leaf == 0u ? ATRBVH_U32_MAX
                                                : p->max_leaf;
-    const __m256d ci = _mm256_set1_pd(p->ci), ct = _mm256_set1_pd(p->ct);
-    double *rev_top = quad + 4u * (((atrbvh_trbvh_mask)1 << n) + full);
+    const atrbvh_v4d ci = atrbvh_v4_set1(p->ci),
+                        ct = atrbvh_v4_set1(p->ct);
+    ATRBVH_GLOBAL double *rev_top =
+        quad + 4u * (((atrbvh_trbvh_mask)1 << n) + full);
     atrbvh_u32 k, l;
 
     for (k = 0; k < n; k++)
         for (l = 0; l < 4u; l++)
-            atrbvh_trbvh_subsets_avx(n, k, lv[l], s[l]);
+            ATRBVH_TRBVH_SUBSETS4(n, k, lv[l], s[l]);
     for (k = 0; k < n; k++) {
         const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k;
-        const __m256d leaf = _mm256_set_pd(lv[3]->cost[k], lv[2]->cost[k],
-                                           lv[1]->cost[k], lv[0]->cost[k]);
+        const atrbvh_v4d leaf =
+            atrbvh_v4_set(lv[0]->cost[k], lv[1]->cost[k], lv[2]->cost[k],
+                            lv[3]->cost[k]);
         atrbvh_trbvh_mask S;
-        _mm256_store_pd(quad + 4u * bit, leaf);
-        _mm256_store_pd(rev_top - 4u * bit, leaf);
+        atrbvh_v4_store(quad + 4u * bit, leaf);
+        atrbvh_v4_store(rev_top - 4u * bit, leaf);
         for (S = bit + 1u; S < bit + bit; S++) {
-            const __m256d area =
-                _mm256_set_pd(s[3].cost[S], s[2].cost[S], s[1].cost[S],
-                              s[0].cost[S]);
-            const __m256d base = _mm256_mul_pd(ci, area);
-            double *rest = rev_top - 4u * S;
-            __m256d best = atrbvh_trbvh_min4(quad, rest, S, base);
+            const atrbvh_v4d area =
+                atrbvh_v4_set(s[0].cost[S], s[1].cost[S], s[2].cost[S],
+                                s[3].cost[S]);
+            const atrbvh_v4d base = atrbvh_v4_mul(ci, area);
+            ATRBVH_GLOBAL double *rest = rev_top - 4u * S;
+            atrbvh_v4d best = atrbvh_trbvh_min4(quad, rest, S, base);
             const atrbvh_u32 n0 = s[0].count[S], n1 = s[1].count[S],
                              n2 = s[2].count[S], n3 = s[3].count[S];
             {
@@ -937,18 +1025,17 @@ atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
                  * subset: the test whether any lane may collapse was a
                  * branch that callgrind's simulation mispredicted at
                  * about one subset in three */
-                const __m256d take = _mm256_castsi256_pd(_mm256_set_epi64x(
-                    -(long long)(n3 <= lim), -(long long)(n2 <= lim),
-                    -(long long)(n1 <= lim), -(long long)(n0 <= lim)));
-                __m256d flat = _mm256_mul_pd(ct, area);
-                flat = _mm256_mul_pd(flat,
-                                     _mm256_set_pd((double)n3, (double)n2,
-                                                   (double)n1, (double)n0));
-                flat = _mm256_min_pd(flat, best);
-                best = atrbvh_select4(best, flat, take);
+                const atrbvh_v4m take = atrbvh_v4_mask(
+                    n0 <= lim, n1 <= lim, n2 <= lim, n3 <= lim);
+                atrbvh_v4d flat = atrbvh_v4_mul(ct, area);
+                flat = atrbvh_v4_mul(
+                    flat, atrbvh_v4_set((double)n0, (double)n1, (double)n2,
+                                          (double)n3));
+                flat = atrbvh_v4_min(flat, best);
+                best = atrbvh_v4_select(best, flat, take);
             }
-            _mm256_store_pd(quad + 4u * S, best);
-            _mm256_store_pd(rest, best); /* rev[full ^ S] */
+            atrbvh_v4_store(quad + 4u * S, best);
+            atrbvh_v4_store(rest, best); /* rev[full ^ S] */
         }
     }
     for (l = 0; l < 4u; l++)
@@ -1312,7 +1399,7 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
     return atrbvh_agglomerate_at(p, n, 0, 0, lv, dist, topo);
 }
 
-#if defined(__OPENCL_VERSION__) || defined(ATRBVH_TRBVH_QUADS)
+#ifdef ATRBVH_LANES4
 /* ------------------------------------------------------ ATRBVH in lanes */
 /* The agglomerations of four formed treelets of n leaves each side by
  * side in the lanes of a vector (on the CPU AVX's, x86, chosen at run
@@ -1340,7 +1427,7 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
  * only, the same in every treelet.
  *
  * The arithmetic is the scalar one's: the unions are VMINPS and VMAXPS
- * (OpenCL: the same selects, atrbvh_agg4_fmin) with the scalar's first
+ * (OpenCL: the same selects, atrbvh_v4_fmin) with the scalar's first
  * operand (the row's cluster when the matrix is
  * filled, the merged cluster after a merge, slot j's in the merge: x < y
  * ? x : y lane for lane), the areas atrbvh_box_area's double operations
@@ -1350,113 +1437,50 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
  *
  * Scratch: dist4, 32-byte aligned, atrbvh_agglomerate4_doubles(n)
  * doubles: the four triangular matrices interleaved, entry k of lane l at
- * 4k + l.  n is 3 .. ATRBVH_TREELET_MAX.
- *
- * Written once for both: the vector words below are AVX's intrinsics in
- * C and OpenCL C's vector types and built-ins on a device, each the same
- * operation lane for lane (tests/test_opencl.c compares the kernel's
- * trees with the CPU's, tests/test_hashes.c the CPU's lanes with its
- * scalar path). */
+ * 4k + l.  n is 3 .. ATRBVH_TREELET_MAX.  Written once for both, over
+ * the vector words of atrbvh_trbvh_costs4 (ATRBVH_LANES4). */
 #define ATRBVH_AGG_QUADS 1
-#ifdef __OPENCL_VERSION__
-typedef float4 atrbvh_agg_f4;  /* one coordinate of four lanes' boxes */
-typedef double4 atrbvh_agg_d4; /* four lanes' areas, costs or codes    */
-typedef long4 atrbvh_agg_m4;   /* a comparison's lanes: all ones or 0  */
-#define ATRBVH_AGG4_FN static inline
-#define ATRBVH_AGG4_MAIN static
-#define ATRBVH_AGG4_ALIGNED(b)
-#define atrbvh_agg4_fload(p) vload4(0, (p))
-#define atrbvh_agg4_fstore(p, v) vstore4((v), 0, (p))
-#define atrbvh_agg4_fset(a, b, c, d) ((float4)((a), (b), (c), (d)))
-#define atrbvh_agg4_fmin(a, b) select((b), (a), (a) < (b))
-#define atrbvh_agg4_fmax(a, b) select((b), (a), (a) > (b))
-#define atrbvh_agg4_widen(v) convert_double4(v)
-#define atrbvh_agg4_set1(x) ((double4)(x))
-#define atrbvh_agg4_set(a, b, c, d) ((double4)((a), (b), (c), (d)))
-#define atrbvh_agg4_add(a, b) ((a) + (b))
-#define atrbvh_agg4_sub(a, b) ((a) - (b))
-#define atrbvh_agg4_mul(a, b) ((a) * (b))
-#define atrbvh_agg4_min(a, b) select((b), (a), (a) < (b))
-#define atrbvh_agg4_lt(a, b) ((a) < (b))
-#define atrbvh_agg4_eq(a, b) ((a) == (b))
-#define atrbvh_agg4_select(a, b, m) select((a), (b), (m))
-#define atrbvh_agg4_mask(a, b, c, d)                                           \
-    ((long4)(-(long)(a), -(long)(b), -(long)(c), -(long)(d)))
-#define atrbvh_agg4_load(p) vload4(0, (p))
-#define atrbvh_agg4_store(p, v) vstore4((v), 0, (p))
-#define atrbvh_agg4_storeu(p, v) vstore4((v), 0, (p))
-#define ATRBVH_AGG4_INF ((double)INFINITY)
-#else
-typedef __m128 atrbvh_agg_f4;
-typedef __m256d atrbvh_agg_d4;
-typedef __m256d atrbvh_agg_m4;
-#define ATRBVH_AGG4_FN __attribute__((target("avx"))) static inline
-#define ATRBVH_AGG4_MAIN __attribute__((noinline, unused, target("avx"))) static
-#define ATRBVH_AGG4_ALIGNED(b) __attribute__((aligned(b)))
-#define atrbvh_agg4_fload(p) _mm_load_ps(p)
-#define atrbvh_agg4_fstore(p, v) _mm_store_ps((p), (v))
-#define atrbvh_agg4_fset(a, b, c, d) _mm_set_ps((d), (c), (b), (a))
-#define atrbvh_agg4_fmin(a, b) _mm_min_ps((a), (b))
-#define atrbvh_agg4_fmax(a, b) _mm_max_ps((a), (b))
-#define atrbvh_agg4_widen(v) _mm256_cvtps_pd(v)
-#define atrbvh_agg4_set1(x) _mm256_set1_pd(x)
-#define atrbvh_agg4_set(a, b, c, d) _mm256_set_pd((d), (c), (b), (a))
-#define atrbvh_agg4_add(a, b) _mm256_add_pd((a), (b))
-#define atrbvh_agg4_sub(a, b) _mm256_sub_pd((a), (b))
-#define atrbvh_agg4_mul(a, b) _mm256_mul_pd((a), (b))
-#define atrbvh_agg4_min(a, b) _mm256_min_pd((a), (b))
-#define atrbvh_agg4_lt(a, b) _mm256_cmp_pd((a), (b), _CMP_LT_OQ)
-#define atrbvh_agg4_eq(a, b) _mm256_cmp_pd((a), (b), _CMP_EQ_OQ)
-#define atrbvh_agg4_select(a, b, m) atrbvh_select4((a), (b), (m))
-#define atrbvh_agg4_mask(a, b, c, d)                                           \
-    _mm256_castsi256_pd(_mm256_set_epi64x(-(long long)(d), -(long long)(c),  \
-                                          -(long long)(b), -(long long)(a)))
-#define atrbvh_agg4_load(p) _mm256_load_pd(p)
-#define atrbvh_agg4_store(p, v) _mm256_store_pd((p), (v))
-#define atrbvh_agg4_storeu(p, v) _mm256_storeu_pd((p), (v))
-#define ATRBVH_AGG4_INF __builtin_inf()
-#endif
 ATRBVH_FN atrbvh_u64 atrbvh_agglomerate4_doubles(atrbvh_u32 n)
 {
     return 4u * ((atrbvh_u64)n * (n - 1u) / 2u);
 }
 
 /* The six coordinate vectors of one slot's four boxes. */
-ATRBVH_AGG4_FN void atrbvh_load_box4(float b[6][4], atrbvh_agg_f4 v[6])
+ATRBVH_V4_FN void atrbvh_load_box4(float b[6][4], atrbvh_v4f v[6])
 {
     atrbvh_u32 c;
     for (c = 0; c < 6u; c++)
-        v[c] = atrbvh_agg4_fload(b[c]);
+        v[c] = atrbvh_v4_fload(b[c]);
 }
 
 /* The union areas of the four lanes' boxes q (the first operand) and b. */
-ATRBVH_AGG4_FN atrbvh_agg_d4 atrbvh_union_area4(const atrbvh_agg_f4 q[6],
+ATRBVH_V4_FN atrbvh_v4d atrbvh_union_area4(const atrbvh_v4f q[6],
                                                 float bf[6][4])
 {
-    const atrbvh_agg_d4 dx = atrbvh_agg4_sub(
-        atrbvh_agg4_widen(atrbvh_agg4_fmax(q[3], atrbvh_agg4_fload(bf[3]))),
-        atrbvh_agg4_widen(atrbvh_agg4_fmin(q[0], atrbvh_agg4_fload(bf[0]))));
-    const atrbvh_agg_d4 dy = atrbvh_agg4_sub(
-        atrbvh_agg4_widen(atrbvh_agg4_fmax(q[4], atrbvh_agg4_fload(bf[4]))),
-        atrbvh_agg4_widen(atrbvh_agg4_fmin(q[1], atrbvh_agg4_fload(bf[1]))));
-    const atrbvh_agg_d4 dz = atrbvh_agg4_sub(
-        atrbvh_agg4_widen(atrbvh_agg4_fmax(q[5], atrbvh_agg4_fload(bf[5]))),
-        atrbvh_agg4_widen(atrbvh_agg4_fmin(q[2], atrbvh_agg4_fload(bf[2]))));
-    atrbvh_agg_d4 s = atrbvh_agg4_mul(dx, dy);
-    s = atrbvh_agg4_add(s, atrbvh_agg4_mul(dy, dz));
-    s = atrbvh_agg4_add(s, atrbvh_agg4_mul(dz, dx));
-    return atrbvh_agg4_mul(atrbvh_agg4_set1(2.0), s);
+    const atrbvh_v4d dx = atrbvh_v4_sub(
+        atrbvh_v4_widen(atrbvh_v4_fmax(q[3], atrbvh_v4_fload(bf[3]))),
+        atrbvh_v4_widen(atrbvh_v4_fmin(q[0], atrbvh_v4_fload(bf[0]))));
+    const atrbvh_v4d dy = atrbvh_v4_sub(
+        atrbvh_v4_widen(atrbvh_v4_fmax(q[4], atrbvh_v4_fload(bf[4]))),
+        atrbvh_v4_widen(atrbvh_v4_fmin(q[1], atrbvh_v4_fload(bf[1]))));
+    const atrbvh_v4d dz = atrbvh_v4_sub(
+        atrbvh_v4_widen(atrbvh_v4_fmax(q[5], atrbvh_v4_fload(bf[5]))),
+        atrbvh_v4_widen(atrbvh_v4_fmin(q[2], atrbvh_v4_fload(bf[2]))));
+    atrbvh_v4d s = atrbvh_v4_mul(dx, dy);
+    s = atrbvh_v4_add(s, atrbvh_v4_mul(dy, dz));
+    s = atrbvh_v4_add(s, atrbvh_v4_mul(dz, dx));
+    return atrbvh_v4_mul(atrbvh_v4_set1(2.0), s);
 }
 
 /* One live entry of the search: v at pair code `at` (64 i + j) taken
  * where strictly lower than the lanes' minimum so far. */
 #define ATRBVH_AGG4_SEEK(v, code, best, at)                                    \
     do {                                                                       \
-        (at) = atrbvh_agg4_select((at), (code), atrbvh_agg4_lt((v), (best)));  \
-        (best) = atrbvh_agg4_min((best), (v));                                 \
+        (at) = atrbvh_v4_select((at), (code), atrbvh_v4_lt((v), (best)));  \
+        (best) = atrbvh_v4_min((best), (v));                                 \
     } while (0)
 
-ATRBVH_AGG4_MAIN void
+ATRBVH_V4_MAIN void
 atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
                     const atrbvh_treelet_tree *t,
                     const atrbvh_treelet *const tl[4],
@@ -1465,20 +1489,20 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
 {
     /* per slot: the four lanes' cluster boxes (six coordinates of four
      * lanes), costs, counts and codes; the merged boxes */
-    ATRBVH_AGG4_ALIGNED(16) float box[ATRBVH_TREELET_MAX][6][4];
-    ATRBVH_AGG4_ALIGNED(32) double area_of[ATRBVH_TREELET_MAX][4];
-    ATRBVH_AGG4_ALIGNED(32) double pick[4], cost_of[4];
-    ATRBVH_AGG4_ALIGNED(16) float merged[6][4];
+    ATRBVH_V4_ALIGNED(16) float box[ATRBVH_TREELET_MAX][6][4];
+    ATRBVH_V4_ALIGNED(32) double area_of[ATRBVH_TREELET_MAX][4];
+    ATRBVH_V4_ALIGNED(32) double pick[4], cost_of[4];
+    ATRBVH_V4_ALIGNED(16) float merged[6][4];
     double cost[ATRBVH_TREELET_MAX][4];
     atrbvh_u32 count[ATRBVH_TREELET_MAX][4], code[ATRBVH_TREELET_MAX][4];
     atrbvh_u32 base[ATRBVH_TREELET_MAX], cnt[4];
-    atrbvh_agg_f4 row[6];
+    atrbvh_v4f row[6];
     const atrbvh_u32 lim = !p->collapse          ? 0u
                            : p->max_leaf == 0u ? ATRBVH_U32_MAX
                                                : p->max_leaf;
-    const atrbvh_agg_d4 one = atrbvh_agg4_set1(1.0),
-                        inf = atrbvh_agg4_set1(ATRBVH_AGG4_INF);
-    atrbvh_agg_d4 best = inf, at = atrbvh_agg4_set1(0.0);
+    const atrbvh_v4d one = atrbvh_v4_set1(1.0),
+                        inf = atrbvh_v4_set1(ATRBVH_V4_INF);
+    atrbvh_v4d best = inf, at = atrbvh_v4_set1(0.0);
     atrbvh_u32 a, r, c, l, m, q;
 
     for (a = 0; a < n; a++) {
@@ -1487,11 +1511,11 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
         const atrbvh_box b0 = t->box[n0], b1 = t->box[n1], b2 = t->box[n2],
                          b3 = t->box[n3];
         for (c = 0; c < 3u; c++) {
-            atrbvh_agg4_fstore(box[a][c], atrbvh_agg4_fset(b0.min[c], b1.min[c],
+            atrbvh_v4_fstore(box[a][c], atrbvh_v4_fset(b0.min[c], b1.min[c],
                                                            b2.min[c],
                                                            b3.min[c]));
-            atrbvh_agg4_fstore(box[a][c + 3u],
-                               atrbvh_agg4_fset(b0.max[c], b1.max[c],
+            atrbvh_v4_fstore(box[a][c + 3u],
+                               atrbvh_v4_fset(b0.max[c], b1.max[c],
                                                 b2.max[c], b3.max[c]));
         }
         cost[a][0] = t->cost[n0];
@@ -1509,40 +1533,40 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
     /* the matrix row by row (the row's cluster first, as
      * atrbvh_agglomerate_at fills it), searched on the way */
     for (r = 1; r < n; r++) {
-        atrbvh_agg_d4 k = atrbvh_agg4_set1((double)(64u * r));
+        atrbvh_v4d k = atrbvh_v4_set1((double)(64u * r));
         atrbvh_load_box4(box[r], row);
-        for (c = 0; c < r; c++, k = atrbvh_agg4_add(k, one)) {
-            const atrbvh_agg_d4 v = atrbvh_union_area4(row, box[c]);
-            atrbvh_agg4_store(dist4 + 4u * (base[r] + c), v);
+        for (c = 0; c < r; c++, k = atrbvh_v4_add(k, one)) {
+            const atrbvh_v4d v = atrbvh_union_area4(row, box[c]);
+            atrbvh_v4_store(dist4 + 4u * (base[r] + c), v);
             ATRBVH_AGG4_SEEK(v, k, best, at);
         }
     }
     for (m = n, q = 0;; m--, q++) {
         const atrbvh_u32 last = m - 1u;
         atrbvh_u32 I[4], J[4];
-        atrbvh_agg_d4 iv, jv, binary, flat, res, far;
-        atrbvh_agg_m4 take;
-        atrbvh_agg_f4 mb[6];
+        atrbvh_v4d iv, jv, binary, flat, res, far;
+        atrbvh_v4m take;
+        atrbvh_v4f mb[6];
         /* each lane's pair: slot j's cluster (left) and slot i's */
-        atrbvh_agg4_store(pick, at);
+        atrbvh_v4_store(pick, at);
         for (l = 0; l < 4u; l++) {
             const atrbvh_u32 k = (atrbvh_u32)pick[l];
             I[l] = k >> 6;
             J[l] = k & 63u;
         }
-        iv = atrbvh_agg4_set((double)I[0], (double)I[1], (double)I[2],
+        iv = atrbvh_v4_set((double)I[0], (double)I[1], (double)I[2],
                              (double)I[3]);
-        jv = atrbvh_agg4_set((double)J[0], (double)J[1], (double)J[2],
+        jv = atrbvh_v4_set((double)J[0], (double)J[1], (double)J[2],
                              (double)J[3]);
         for (c = 0; c < 6u; c++) {
-            const atrbvh_agg_f4 x =
-                atrbvh_agg4_fset(box[J[0]][c][0], box[J[1]][c][1],
+            const atrbvh_v4f x =
+                atrbvh_v4_fset(box[J[0]][c][0], box[J[1]][c][1],
                                  box[J[2]][c][2], box[J[3]][c][3]);
-            const atrbvh_agg_f4 y =
-                atrbvh_agg4_fset(box[I[0]][c][0], box[I[1]][c][1],
+            const atrbvh_v4f y =
+                atrbvh_v4_fset(box[I[0]][c][0], box[I[1]][c][1],
                                  box[I[2]][c][2], box[I[3]][c][3]);
-            mb[c] = c < 3u ? atrbvh_agg4_fmin(x, y) : atrbvh_agg4_fmax(x, y);
-            atrbvh_agg4_fstore(merged[c], mb[c]);
+            mb[c] = c < 3u ? atrbvh_v4_fmin(x, y) : atrbvh_v4_fmax(x, y);
+            atrbvh_v4_fstore(merged[c], mb[c]);
         }
         /* the merges' costs, atrbvh_node_cost lane for lane: the pair's
          * distance (best) is the merged area */
@@ -1559,21 +1583,21 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
             to->box[q].max[1] = merged[4][l];
             to->box[q].max[2] = merged[5][l];
         }
-        binary = atrbvh_agg4_mul(atrbvh_agg4_set1(p->ci), best);
-        binary = atrbvh_agg4_add(
-            binary, atrbvh_agg4_set(cost[J[0]][0], cost[J[1]][1],
+        binary = atrbvh_v4_mul(atrbvh_v4_set1(p->ci), best);
+        binary = atrbvh_v4_add(
+            binary, atrbvh_v4_set(cost[J[0]][0], cost[J[1]][1],
                                     cost[J[2]][2], cost[J[3]][3]));
-        binary = atrbvh_agg4_add(
-            binary, atrbvh_agg4_set(cost[I[0]][0], cost[I[1]][1],
+        binary = atrbvh_v4_add(
+            binary, atrbvh_v4_set(cost[I[0]][0], cost[I[1]][1],
                                     cost[I[2]][2], cost[I[3]][3]));
-        flat = atrbvh_agg4_mul(atrbvh_agg4_set1(p->ct), best);
-        flat = atrbvh_agg4_mul(flat,
-                               atrbvh_agg4_set((double)cnt[0], (double)cnt[1],
+        flat = atrbvh_v4_mul(atrbvh_v4_set1(p->ct), best);
+        flat = atrbvh_v4_mul(flat,
+                               atrbvh_v4_set((double)cnt[0], (double)cnt[1],
                                                (double)cnt[2], (double)cnt[3]));
-        take = atrbvh_agg4_mask(cnt[0] <= lim, cnt[1] <= lim, cnt[2] <= lim,
+        take = atrbvh_v4_mask(cnt[0] <= lim, cnt[1] <= lim, cnt[2] <= lim,
                                 cnt[3] <= lim);
-        res = atrbvh_agg4_select(binary, atrbvh_agg4_min(flat, binary), take);
-        atrbvh_agg4_store(cost_of, res);
+        res = atrbvh_v4_select(binary, atrbvh_v4_min(flat, binary), take);
+        atrbvh_v4_store(cost_of, res);
         /* slot j takes the merge, slot i the last cluster (onto itself
          * when i is the last slot) */
         for (l = 0; l < 4u; l++) {
@@ -1588,7 +1612,7 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
             code[i][l] = code[last][l];
         }
         if (last == 1u) {
-            atrbvh_agg4_storeu(found, res);
+            atrbvh_v4_storeu(found, res);
             break;
         }
         /* the distances to the merged clusters (the merged box first, as
@@ -1596,37 +1620,37 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
          * the last cluster's in its lanes */
         far = atrbvh_union_area4(mb, box[last]);
         for (a = 0; a < last; a++)
-            atrbvh_agg4_store(
+            atrbvh_v4_store(
                 area_of[a],
-                atrbvh_agg4_select(
+                atrbvh_v4_select(
                     atrbvh_union_area4(mb, box[a]), far,
-                    atrbvh_agg4_eq(atrbvh_agg4_set1((double)a), iv)));
+                    atrbvh_v4_eq(atrbvh_v4_set1((double)a), iv)));
         /* the live entries of the next step rewritten, lane for lane:
          * (r, c) takes (last, c) in row i and (last, r) in column i,
          * then the distance to the merge in row and column j (the (i, j)
          * entry that of slot i's new cluster), and the search for the
          * next pair on the way */
         best = inf;
-        at = atrbvh_agg4_set1(0.0);
+        at = atrbvh_v4_set1(0.0);
         for (r = 1; r < last; r++) {
-            const atrbvh_agg_d4 rv = atrbvh_agg4_set1((double)r);
-            const atrbvh_agg_m4 ri = atrbvh_agg4_eq(rv, iv);
-            const atrbvh_agg_m4 rj = atrbvh_agg4_eq(rv, jv);
-            const atrbvh_agg_d4 lr =
-                atrbvh_agg4_load(dist4 + 4u * (base[last] + r));
-            const atrbvh_agg_d4 ar = atrbvh_agg4_load(area_of[r]);
+            const atrbvh_v4d rv = atrbvh_v4_set1((double)r);
+            const atrbvh_v4m ri = atrbvh_v4_eq(rv, iv);
+            const atrbvh_v4m rj = atrbvh_v4_eq(rv, jv);
+            const atrbvh_v4d lr =
+                atrbvh_v4_load(dist4 + 4u * (base[last] + r));
+            const atrbvh_v4d ar = atrbvh_v4_load(area_of[r]);
             ATRBVH_GLOBAL double *at_r = dist4 + 4u * base[r];
             ATRBVH_GLOBAL const double *lrow = dist4 + 4u * base[last];
-            atrbvh_agg_d4 k = atrbvh_agg4_set1((double)(64u * r)),
-                          cv = atrbvh_agg4_set1(0.0);
-            for (c = 0; c < r; c++, k = atrbvh_agg4_add(k, one),
-                cv = atrbvh_agg4_add(cv, one)) {
-                atrbvh_agg_d4 v = atrbvh_agg4_load(at_r + 4u * c);
-                v = atrbvh_agg4_select(v, atrbvh_agg4_load(lrow + 4u * c), ri);
-                v = atrbvh_agg4_select(v, lr, atrbvh_agg4_eq(cv, iv));
-                v = atrbvh_agg4_select(v, atrbvh_agg4_load(area_of[c]), rj);
-                v = atrbvh_agg4_select(v, ar, atrbvh_agg4_eq(cv, jv));
-                atrbvh_agg4_store(at_r + 4u * c, v);
+            atrbvh_v4d k = atrbvh_v4_set1((double)(64u * r)),
+                          cv = atrbvh_v4_set1(0.0);
+            for (c = 0; c < r; c++, k = atrbvh_v4_add(k, one),
+                cv = atrbvh_v4_add(cv, one)) {
+                atrbvh_v4d v = atrbvh_v4_load(at_r + 4u * c);
+                v = atrbvh_v4_select(v, atrbvh_v4_load(lrow + 4u * c), ri);
+                v = atrbvh_v4_select(v, lr, atrbvh_v4_eq(cv, iv));
+                v = atrbvh_v4_select(v, atrbvh_v4_load(area_of[c]), rj);
+                v = atrbvh_v4_select(v, ar, atrbvh_v4_eq(cv, jv));
+                atrbvh_v4_store(at_r + 4u * c, v);
                 ATRBVH_AGG4_SEEK(v, k, best, at);
             }
         }
@@ -1907,6 +1931,68 @@ ATRBVH_FN int atrbvh_treelet_finish(const atrbvh_treelet_tree *t,
         return atrbvh_trbvh_keep(t, p, root, tl, &lv, s, found);
     }
     return atrbvh_atrbvh_keep(t, p, root, tl, dist);
+}
+
+/* The TRBVH DP of `ready` (1 to 4) formed treelets whose subtrees are
+ * disjoint (roots root[l], formed into tl[l], each root refreshed), then
+ * each one's write-back when cheaper (applied[l] 1): with the four-lane
+ * code (ATRBVH_LANES4) and two or more of them of n leaves, those side by
+ * side in atrbvh_trbvh_costs4's lanes (the first repeated in the lanes
+ * left over, their results unused; the tables read in place,
+ * atrbvh_trbvh_tables_lane), any other one by one by the scalar DP (one
+ * of fewer than n leaves is not a crown node's, which holds at least n
+ * primitives: kept for safety).  s: the four lanes' scratch (the scalar
+ * DP takes s[0]); quad: 8 * 2^n doubles; lv: four leaves' records.  The
+ * CPU's walk_lanes (lib/cpu/optimise.c, with AVX) and the opt_round4
+ * kernel call this. */
+ATRBVH_FN void atrbvh_trbvh_ready(const atrbvh_treelet_tree *t,
+                                  const atrbvh_cost_params *p, atrbvh_u32 n,
+                                  atrbvh_u32 ready, const atrbvh_u32 *root,
+                                  const atrbvh_treelet *tl,
+                                  atrbvh_treelet_leaves *lv,
+                                  const atrbvh_trbvh_scratch *s,
+                                  ATRBVH_GLOBAL double *quad, int *applied)
+{
+    atrbvh_u32 l, full = 0, sel[4];
+#ifdef ATRBVH_LANES4
+    const int lanes = ready > 1u;
+#else
+    const int lanes = 0;
+    (void)quad;
+#endif
+    for (l = 0; l < ready; l++) {
+        applied[l] = 0;
+        if (tl[l].n < 3u)
+            continue;
+        if (tl[l].n == n && lanes) {
+            atrbvh_treelet_gather(t, &tl[l], &lv[full]);
+            sel[full++] = l;
+            continue;
+        }
+        applied[l] =
+            atrbvh_treelet_finish(t, p, root[l], 0, s[0], NULL, &tl[l]);
+    }
+    if (full == 1u) {
+        const atrbvh_u32 k = sel[0];
+        applied[k] = atrbvh_trbvh_keep(t, p, root[k], &tl[k], &lv[0], s[0],
+                                       atrbvh_trbvh_costs(p, n, &lv[0], s[0]));
+    }
+#ifdef ATRBVH_LANES4
+    if (full > 1u) {
+        const atrbvh_treelet_leaves *in[4];
+        double found[4];
+        for (l = 0; l < 4u; l++)
+            in[l] = &lv[l < full ? l : 0u];
+        atrbvh_trbvh_costs4(p, n, in, s, quad, found);
+        for (l = 0; l < full; l++) {
+            const atrbvh_u32 k = sel[l];
+            const atrbvh_trbvh_tables tab =
+                atrbvh_trbvh_tables_lane(n, quad, l, s[l]);
+            applied[k] = atrbvh_trbvh_keep_from(t, p, root[k], &tl[k], &lv[l],
+                                                &tab, found[l]);
+        }
+    }
+#endif
 }
 
 ATRBVH_FN int atrbvh_treelet_process_tl(const atrbvh_treelet_tree *t,
