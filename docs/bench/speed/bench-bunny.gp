@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.8815186:49.6583667]
-set xtics (5, 10, 20)
+set xrange [2.57728573:50.7941809]
+set xtics (5, 10, 20, 50)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 3.79092088,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 9.24403135,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 6.77831674,39.0414315 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 10.2648657,39.3432138 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 9.86354324,38.4286758 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 13.8872742,38.1317351 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 21.4521602,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 17.4232912,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 7.00424291,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 18.5512617,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 28.1467675,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.91055327,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 15.4912775,39.3638605 left font ',8' noenhanced front
+set label 'LBVH' at 3.43479741,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 8.51681804,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 6.6066871,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 9.46148799,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 8.16793025,38.4286758 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 12.5818803,38.0467183 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 18.2339913,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 12.8200079,39.1916483 left font ',8' noenhanced front
+set label 'embree_low' at 4.99224401,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 16.7360282,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 28.0302815,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.39184662,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 13.1854952,38.740404 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

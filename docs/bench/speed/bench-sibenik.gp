@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.68035217:45.6569921]
+set xrange [2.60095123:41.0219893]
 set xtics (5, 10, 20)
 set yrange [48.0282379:83.2612389]
 unset label
-set label 'LBVH' at 2.96246347,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 8.68667864,56.219843 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 6.43671624,53.8367777 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 11.062632,54.157298 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 8.29764564,52.0780873 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 17.4441397,50.753527 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 20.8856067,52.3325777 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 9.79332497,50.456031 left font ',8' noenhanced front
-set label 'embree_low' at 5.77200183,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 25.9389027,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 18.3018137,54.6804169 left font ',8' noenhanced front
-set label 'LBVH/cl' at 3.74104997,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 14.4509745,52.9793966 left font ',8' noenhanced front
+set label 'LBVH' at 2.86690538,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 8.97773751,56.219843 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 6.64584722,53.8367777 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 10.5089523,54.157298 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 8.4137911,52.0780873 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.7881641,50.753527 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 20.3753961,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 10.0988204,50.456031 left font ',8' noenhanced front
+set label 'embree_low' at 5.66391209,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 23.6361514,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 16.9112313,54.6804169 left font ',8' noenhanced front
+set label 'LBVH/cl' at 3.5719693,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 11.8909692,52.9793966 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
