@@ -13,9 +13,10 @@
  *      -o /tmp/kernels docs/bench/kernels.c _build/tools/.libs/libscene.a \
  *      -L_build/lib/.libs -latrbvh -lm
  *   LD_LIBRARY_PATH=_build/lib/.libs OMP_WAIT_POLICY=passive \
- *       POCL_AFFINITY=1 /tmp/kernels SCENE BUILDS [atrbvh|trbvh]
+ *       POCL_AFFINITY=1 /tmp/kernels SCENE BUILDS [atrbvh|trbvh|lbvh]
  *
- * atrbvh (default): ATRBVH(9, 2); trbvh: TRBVH(7, 3); 2 threads.  The
+ * atrbvh (default): ATRBVH(9, 2); trbvh: TRBVH(7, 3); lbvh: LBVH; 2
+ * threads.  The
  * environment at the open chooses the OpenCL handle's kernels (for
  * example ATRBVH_CL_WALKS=1: one treelet a work-item), so two runs
  * compare two settings.
@@ -55,12 +56,21 @@ int main(int argc, char **argv)
     double stage[2][ATRBVH_STAGE_COUNT] = {{0}}, kernel_ms[MAX_KERNELS] = {0};
     double *t[2];
     char *kernel_name[MAX_KERNELS] = {NULL};
-    int builds, trbvh, i, k, j, kernels = 0;
+    atrbvh_method method = ATRBVH_METHOD_ATRBVH;
+    unsigned treelet = 9, rounds = 2;
+    int builds, i, k, j, kernels = 0;
     if (argc < 3 || (builds = atoi(argv[2])) < 1) {
-        fprintf(stderr, "usage: %s SCENE BUILDS [atrbvh|trbvh]\n", argv[0]);
+        fprintf(stderr, "usage: %s SCENE BUILDS [atrbvh|trbvh|lbvh]\n",
+                argv[0]);
         return 2;
     }
-    trbvh = argc > 3 && strcmp(argv[3], "trbvh") == 0;
+    if (argc > 3 && strcmp(argv[3], "trbvh") == 0) {
+        method = ATRBVH_METHOD_TRBVH;
+        treelet = 7;
+        rounds = 3;
+    } else if (argc > 3 && strcmp(argv[3], "lbvh") == 0) {
+        method = ATRBVH_METHOD_LBVH;
+    }
     if (scene_load(argv[1], &s, why, sizeof why) != 0) {
         fprintf(stderr, "%s: %s\n", argv[1], why);
         return 1;
@@ -83,9 +93,9 @@ int main(int argc, char **argv)
             atrbvh_build_options_init(&o);
             o.threads = 2;
             o.device = dev[k];
-            o.method = trbvh ? ATRBVH_METHOD_TRBVH : ATRBVH_METHOD_ATRBVH;
-            o.treelet_size = trbvh ? 7 : 9;
-            o.rounds = trbvh ? 3 : 2;
+            o.method = method;
+            o.treelet_size = treelet;
+            o.rounds = rounds;
             t0 = now_ms();
             if (atrbvh_build(&g, &o, &b, &e) != ATRBVH_OK) {
                 fprintf(stderr, "%s\n", e.text);
