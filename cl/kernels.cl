@@ -1062,12 +1062,9 @@ __kernel void opt_round4(__global uint *left, __global uint *right,
         if (!a.agglomerative)
             atrbvh_trbvh_ready(&v.t, &v.p, a.treelet_size, ready, root, tl,
                                lv, v.lane, v.dist4, r);
-        else if (ready > 1u)
+        else if (ready > 0u) /* (one alone: atrbvh_atrbvh_keep) */
             atrbvh_agglomerate_side(&v.t, &v.p, ready, root, tl, v.agg.dist,
                                     v.dist4, r);
-        else if (ready == 1u)
-            r[0] = atrbvh_treelet_finish(&v.t, &v.p, root[0], 1, v.s,
-                                         v.agg.dist, &tl[0]);
         for (l = 0u; l < ready; l++) {
             atrbvh_treelet_marks_done(v.m, &tl[l], root[l], r[l], a.round);
             done++;

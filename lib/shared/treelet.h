@@ -1852,7 +1852,7 @@ ATRBVH_FN int atrbvh_atrbvh_keep(const atrbvh_treelet_tree *t,
 }
 
 #ifdef ATRBVH_AGG_QUADS
-/* The agglomerations of `ready` (2 to 4) formed ATRBVH treelets whose
+/* The agglomerations of `ready` (1 to 4) formed ATRBVH treelets whose
  * subtrees are disjoint (roots root[l], formed into tl[l], each root
  * refreshed): those with as many leaves as the first (at least 3) side by
  * side in atrbvh_agglomerate4's lanes when two or more do (the lanes left
