@@ -29,14 +29,9 @@
 #include <string.h>
 #include <time.h>
 
-#define MAX_KERNELS 64
+#include "harness.h"
 
-static double now_ms(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
-}
+#define MAX_KERNELS 64
 
 /* Each thread of this process: its user + system clock ticks. */
 static void print_threads(void)
