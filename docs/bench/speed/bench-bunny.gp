@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.57728573:50.7941809]
-set xtics (5, 10, 20, 50)
+set xrange [2.94471508:31.1634843]
+set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 3.43479741,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 8.51681804,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 6.6066871,39.0414315 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 9.46148799,39.3432138 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 8.16793025,38.4286758 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 12.5818803,38.0467183 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 18.2339913,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 12.8200079,39.1916483 left font ',8' noenhanced front
-set label 'embree_low' at 4.99224401,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 16.7360282,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 28.0302815,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 4.39184662,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 13.1854952,38.740404 left font ',8' noenhanced front
+set label 'LBVH' at 3.20042892,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 8.44300276,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 6.97395748,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 10.2000175,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 8.08133627,38.4286758 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 11.9778856,38.1317351 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 19.4676755,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 13.4584958,38.8799201 left font ',8' noenhanced front
+set label 'embree_low' at 6.01452299,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 16.4868981,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 12.2229481,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 3.91701212,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 8.20439897,38.1169475 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [36.752084:624.602773]
-set xtics (50, 100, 200, 500)
-set yrange [55.0033108:80.2279369]
+set xrange [35.0956433:418.703721]
+set xtics (50, 100, 200)
+set yrange [55.0033068:80.2279756]
 unset label
-set label 'LBVH' at 48.3675578,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 119.612425,63.4134696 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 89.7774525,61.8432232 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 134.797848,62.4957022 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 107.228466,60.8121607 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 139.990699,59.8198299 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 254.31672,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 175.568354,61.3999923 left font ',8' noenhanced front
-set label 'embree_low' at 70.0380404,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 355.014703,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 246.664172,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 37.7272304,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 166.337,62.7480041 left font ',8' noenhanced front
+set label 'LBVH' at 44.5643796,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 118.434035,63.4134707 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 92.4255192,61.8432221 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 134.121414,62.4957033 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 112.762766,60.8121596 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 149.915869,59.8198288 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 255.384559,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 175.601778,61.3999933 left font ',8' noenhanced front
+set label 'embree_low' at 70.1699785,77.248684 left font ',8' noenhanced front
+set label 'embree_medium' at 221.445464,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 159.350218,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 52.1518342,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 111.61781,60.1668773 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
