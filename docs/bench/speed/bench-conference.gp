@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [15.6332274:193.16884]
-set xtics (20, 50, 100)
+set xrange [20.6624222:200.550472]
+set xtics (50, 100, 200)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 19.9182493,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 47.8601253,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 51.3603807,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 59.1585128,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 47.6002809,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 98.9219738,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 117.000219,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 67.7170246,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 36.3831432,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 50.7283746,44.5451095 left font ',8' noenhanced front
-set label 'embree_high' at 79.8504464,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 24.2670528,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 68.3681244,38.1056054 left font ',8' noenhanced front
+set label 'LBVH' at 22.3882625,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 64.4535402,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 61.5640914,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 66.5866575,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 55.323159,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 116.338418,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 127.462447,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 64.6780236,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 40.3162903,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 97.8104766,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 71.5813552,44.5451095 left font ',8' noenhanced front
+set label 'LBVH/cl' at 27.3955949,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 88.5181969,38.1056054 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [35.0956433:418.703721]
-set xtics (50, 100, 200)
+set xrange [48.5905734:586.414746]
+set xtics (50, 100, 200, 500)
 set yrange [55.0033068:80.2279756]
 unset label
-set label 'LBVH' at 44.5643796,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 118.434035,63.4134707 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 92.4255192,61.8432221 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 134.121414,62.4957033 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 112.762766,60.8121596 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 149.915869,59.8198288 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 255.384559,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 175.601778,61.3999933 left font ',8' noenhanced front
-set label 'embree_low' at 70.1699785,77.248684 left font ',8' noenhanced front
-set label 'embree_medium' at 221.445464,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 159.350218,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 52.1518342,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 111.61781,60.1668773 left font ',8' noenhanced front
+set label 'LBVH' at 63.6607082,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 175.854169,62.7681885 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 117.701178,62.4885043 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 127.475838,61.2051388 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 182.288305,60.6361735 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 213.573783,59.8198288 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 356.858232,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 266.922141,61.3999933 left font ',8' noenhanced front
+set label 'embree_low' at 88.8148845,77.248684 left font ',8' noenhanced front
+set label 'embree_medium' at 291.563195,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 200.378848,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 49.7222414,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 227.358547,62.7480062 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
