@@ -246,6 +246,20 @@ typedef atrbvh_u64 atrbvh_trbvh_mask;
  * N(rest) + N(leaf k).  Entry 0 (the empty set, never a subset of the
  * DP) holds leaf k's own box and count 0 for the duration, so rest = 0
  * gives S = {k} by the same formula.  Writes entries bit .. 2*bit-1. */
+/* Entry 0 of the subset tables: leaf k's box b in the six planes of
+ * `plane` floats, count 0. */
+ATRBVH_FN void atrbvh_trbvh_subset_leaf(atrbvh_trbvh_mask plane,
+                                        atrbvh_box b, atrbvh_trbvh_scratch s)
+{
+    s.box[0] = b.min[0];
+    s.box[plane] = b.min[1];
+    s.box[2u * plane] = b.min[2];
+    s.box[3u * plane] = b.max[0];
+    s.box[4u * plane] = b.max[1];
+    s.box[5u * plane] = b.max[2];
+    s.count[0] = 0;
+}
+
 #if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
 #include <emmintrin.h>
 /* Four subsets at a time with SSE2 (bit >= 4): MINPS/MAXPS are a < b ? a :
@@ -262,13 +276,7 @@ ATRBVH_FN void atrbvh_trbvh_subsets(atrbvh_u32 n, atrbvh_u32 k,
           *c4 = c3 + plane, *c5 = c4 + plane;
     const atrbvh_box b = lv->box[k];
     atrbvh_trbvh_mask r;
-    c0[0] = b.min[0];
-    c1[0] = b.min[1];
-    c2[0] = b.min[2];
-    c3[0] = b.max[0];
-    c4[0] = b.max[1];
-    c5[0] = b.max[2];
-    s.count[0] = 0;
+    atrbvh_trbvh_subset_leaf(plane, b, s);
     if (bit < 4u) {
         for (r = 0; r < bit; r++) {
             atrbvh_box u;
@@ -346,13 +354,7 @@ ATRBVH_FN void atrbvh_trbvh_subsets(atrbvh_u32 n, atrbvh_u32 k,
                         *c3 = c2 + plane, *c4 = c3 + plane, *c5 = c4 + plane;
     const atrbvh_box b = lv->box[k];
     atrbvh_trbvh_mask r;
-    c0[0] = b.min[0];
-    c1[0] = b.min[1];
-    c2[0] = b.min[2];
-    c3[0] = b.max[0];
-    c4[0] = b.max[1];
-    c5[0] = b.max[2];
-    s.count[0] = 0;
+    atrbvh_trbvh_subset_leaf(plane, b, s);
     for (r = 0; r < bit; r++) {
         atrbvh_box u;
         u.min[0] = c0[r] < b.min[0] ? c0[r] : b.min[0];
@@ -746,15 +748,15 @@ ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
  * 32-byte aligned): C(S) of lane l at quad[4S + l], then the mirror
  * rev[full ^ X] = C(X) of the four lanes, as in atrbvh_trbvh_costs.  Each
  * lane's own scratch gets the subset boxes, areas and counts
- * (atrbvh_trbvh_subsets_avx on the CPU, atrbvh_trbvh_subsets in OpenCL
- * C); atrbvh_trbvh_tables_lane names where a lane's tables are, for the
+ * (atrbvh_trbvh_subsets4, four subsets a step, in C and in OpenCL C);
+ * atrbvh_trbvh_tables_lane names where a lane's tables are, for the
  * extraction of a kept treelet (atrbvh_trbvh_keep_from).  found[l] is
  * C(all leaves) of lane l. */
 
 /* The tables of lane `lane` of atrbvh_trbvh_costs4 (n leaves), where
  * they are: C(S) and the mirror interleaved in `quad` (every fourth
  * entry), A(S) and N(S) in that lane's scratch s (the areas in its cost
- * array, which costs4 leaves as atrbvh_trbvh_subsets_avx wrote it).  The
+ * array, which costs4 leaves as atrbvh_trbvh_subsets4 wrote it).  The
  * extraction reads about six subsets' partitions, so it reads them there:
  * a copy of a kept lane's 2^n - 1 costs, mirror entries and areas back to
  * the scalar layout was 8.6% of TRBVH(7)'s optimise-stage instructions
@@ -789,89 +791,6 @@ atrbvh_select4(__m256d a, __m256d b, __m256d m)
 {
     return _mm256_or_pd(_mm256_and_pd(m, b), _mm256_andnot_pd(m, a));
 }
-
-/* atrbvh_trbvh_subsets with AVX, eight subsets a step (bit >= 8): the
- * same comparisons (VMINPS/VMAXPS lane for lane) and the same double
- * operations in the same order, so the same bits; below 8 the SSE2 one. */
-__attribute__((target("avx"))) static inline void
-atrbvh_trbvh_subsets_avx(atrbvh_u32 n, atrbvh_u32 k,
-                         const atrbvh_treelet_leaves *lv,
-                         atrbvh_trbvh_scratch s)
-{
-    const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k,
-                            plane = (atrbvh_trbvh_mask)1 << n;
-    float *c0 = s.box, *c1 = c0 + plane, *c2 = c1 + plane, *c3 = c2 + plane,
-          *c4 = c3 + plane, *c5 = c4 + plane;
-    const atrbvh_box b = lv->box[k];
-    atrbvh_trbvh_mask r;
-    if (bit < 8u) {
-        atrbvh_trbvh_subsets(n, k, lv, s);
-        return;
-    }
-    /* entry 0: leaf k itself (atrbvh_trbvh_subsets) */
-    c0[0] = b.min[0];
-    c1[0] = b.min[1];
-    c2[0] = b.min[2];
-    c3[0] = b.max[0];
-    c4[0] = b.max[1];
-    c5[0] = b.max[2];
-    s.count[0] = 0;
-    {
-        const __m256 q0 = _mm256_set1_ps(b.min[0]),
-                     q1 = _mm256_set1_ps(b.min[1]),
-                     q2 = _mm256_set1_ps(b.min[2]),
-                     q3 = _mm256_set1_ps(b.max[0]),
-                     q4 = _mm256_set1_ps(b.max[1]),
-                     q5 = _mm256_set1_ps(b.max[2]);
-        const __m128i qn = _mm_set1_epi32((int)lv->count[k]);
-        const __m256d two = _mm256_set1_pd(2.0);
-        for (r = 0; r < bit; r += 8u) {
-            const __m256 x0 = _mm256_min_ps(_mm256_loadu_ps(c0 + r), q0);
-            const __m256 y0 = _mm256_min_ps(_mm256_loadu_ps(c1 + r), q1);
-            const __m256 z0 = _mm256_min_ps(_mm256_loadu_ps(c2 + r), q2);
-            const __m256 x1 = _mm256_max_ps(_mm256_loadu_ps(c3 + r), q3);
-            const __m256 y1 = _mm256_max_ps(_mm256_loadu_ps(c4 + r), q4);
-            const __m256 z1 = _mm256_max_ps(_mm256_loadu_ps(c5 + r), q5);
-            unsigned half;
-            _mm256_storeu_ps(c0 + bit + r, x0);
-            _mm256_storeu_ps(c1 + bit + r, y0);
-            _mm256_storeu_ps(c2 + bit + r, z0);
-            _mm256_storeu_ps(c3 + bit + r, x1);
-            _mm256_storeu_ps(c4 + bit + r, y1);
-            _mm256_storeu_ps(c5 + bit + r, z1);
-            for (half = 0; half < 2u; half++) {
-                const __m128i cr = _mm_loadu_si128(
-                    (const __m128i *)(const void *)(s.count + r + 4u * half));
-                const __m128 lx0 = half ? _mm256_extractf128_ps(x0, 1)
-                                        : _mm256_castps256_ps128(x0);
-                const __m128 ly0 = half ? _mm256_extractf128_ps(y0, 1)
-                                        : _mm256_castps256_ps128(y0);
-                const __m128 lz0 = half ? _mm256_extractf128_ps(z0, 1)
-                                        : _mm256_castps256_ps128(z0);
-                const __m128 lx1 = half ? _mm256_extractf128_ps(x1, 1)
-                                        : _mm256_castps256_ps128(x1);
-                const __m128 ly1 = half ? _mm256_extractf128_ps(y1, 1)
-                                        : _mm256_castps256_ps128(y1);
-                const __m128 lz1 = half ? _mm256_extractf128_ps(z1, 1)
-                                        : _mm256_castps256_ps128(z1);
-                const __m256d dx =
-                    _mm256_sub_pd(_mm256_cvtps_pd(lx1), _mm256_cvtps_pd(lx0));
-                const __m256d dy =
-                    _mm256_sub_pd(_mm256_cvtps_pd(ly1), _mm256_cvtps_pd(ly0));
-                const __m256d dz =
-                    _mm256_sub_pd(_mm256_cvtps_pd(lz1), _mm256_cvtps_pd(lz0));
-                __m256d t = _mm256_mul_pd(dx, dy);
-                t = _mm256_add_pd(t, _mm256_mul_pd(dy, dz));
-                t = _mm256_add_pd(t, _mm256_mul_pd(dz, dx));
-                _mm256_storeu_pd(s.cost + bit + r + 4u * half,
-                                 _mm256_mul_pd(two, t));
-                _mm_storeu_si128(
-                    (__m128i *)(void *)(s.count + bit + r + 4u * half),
-                    _mm_add_epi32(cr, qn));
-            }
-        }
-    }
-}
 #endif
 
 /* The vector words of the four-lane code (atrbvh_trbvh_costs4 and
@@ -895,6 +814,7 @@ typedef long4 atrbvh_v4m;   /* a comparison's lanes: all ones or 0  */
 #define atrbvh_v4_fload(p) vload4(0, (p))
 #define atrbvh_v4_fstore(p, v) vstore4((v), 0, (p))
 #define atrbvh_v4_fset(a, b, c, d) ((float4)((a), (b), (c), (d)))
+#define atrbvh_v4_fset1(x) ((float4)(x))
 #define atrbvh_v4_fmin(a, b) select((b), (a), (a) < (b))
 #define atrbvh_v4_fmax(a, b) select((b), (a), (a) > (b))
 #define atrbvh_v4_widen(v) convert_double4(v)
@@ -913,6 +833,11 @@ typedef long4 atrbvh_v4m;   /* a comparison's lanes: all ones or 0  */
 #define atrbvh_v4_store(p, v) vstore4((v), 0, (p))
 #define atrbvh_v4_storeu(p, v) vstore4((v), 0, (p))
 #define ATRBVH_V4_INF ((double)INFINITY)
+typedef uint4 atrbvh_v4u; /* four counts                          */
+#define atrbvh_v4_uload(p) vload4(0, (p))
+#define atrbvh_v4_ustore(p, v) vstore4((v), 0, (p))
+#define atrbvh_v4_uadd(a, b) ((a) + (b))
+#define atrbvh_v4_uset1(x) ((uint4)(x))
 #else
 typedef __m128 atrbvh_v4f;
 typedef __m256d atrbvh_v4d;
@@ -923,6 +848,7 @@ typedef __m256d atrbvh_v4m;
 #define atrbvh_v4_fload(p) _mm_load_ps(p)
 #define atrbvh_v4_fstore(p, v) _mm_store_ps((p), (v))
 #define atrbvh_v4_fset(a, b, c, d) _mm_set_ps((d), (c), (b), (a))
+#define atrbvh_v4_fset1(x) _mm_set1_ps(x)
 #define atrbvh_v4_fmin(a, b) _mm_min_ps((a), (b))
 #define atrbvh_v4_fmax(a, b) _mm_max_ps((a), (b))
 #define atrbvh_v4_widen(v) _mm256_cvtps_pd(v)
@@ -942,7 +868,77 @@ typedef __m256d atrbvh_v4m;
 #define atrbvh_v4_store(p, v) _mm256_store_pd((p), (v))
 #define atrbvh_v4_storeu(p, v) _mm256_storeu_pd((p), (v))
 #define ATRBVH_V4_INF __builtin_inf()
+typedef __m128i atrbvh_v4u;
+#define atrbvh_v4_uload(p) _mm_loadu_si128((const __m128i *)(const void *)(p))
+#define atrbvh_v4_ustore(p, v) _mm_storeu_si128((__m128i *)(void *)(p), (v))
+#define atrbvh_v4_uadd(a, b) _mm_add_epi32((a), (b))
+#define atrbvh_v4_uset1(x) _mm_set1_epi32((int)(x))
 #endif
+
+/* atrbvh_trbvh_subsets four subsets a step (bit >= 4; below, the scalar
+ * rule): the unions rest first (atrbvh_v4_fmin, fmax: a < b ? a : b and
+ * a > b ? a : b lane for lane), each area atrbvh_box_area's double
+ * operations in its order, the counts added, so every entry has the
+ * scalar loop's bits.  One lane's subsets of atrbvh_trbvh_costs4, on the
+ * CPU (where an AVX version eight at a time was as fast) and in the
+ * opt_round4 kernel (whose TRBVH(7,3) time went from 1.13-1.27x the
+ * CPU's optimise stage with the scalar loop to 0.88-1.07x:
+ * docs/opencl.md); the planes are 16-byte aligned there (bit and r
+ * multiples of 4).  The six planes are named one by one: with
+ * arrays of six the CPU's TRBVH(7,3) optimise stage took 25% longer. */
+ATRBVH_V4_FN void atrbvh_trbvh_subsets4(atrbvh_u32 n, atrbvh_u32 k,
+                                        const atrbvh_treelet_leaves *lv,
+                                        atrbvh_trbvh_scratch s)
+{
+    const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k,
+                            plane = (atrbvh_trbvh_mask)1 << n;
+    ATRBVH_GLOBAL float *c0 = s.box, *c1 = c0 + plane, *c2 = c1 + plane,
+                        *c3 = c2 + plane, *c4 = c3 + plane, *c5 = c4 + plane;
+    const atrbvh_box b = lv->box[k];
+    atrbvh_v4f q0, q1, q2, q3, q4, q5;
+    atrbvh_v4u qn;
+    atrbvh_v4d two;
+    atrbvh_trbvh_mask r;
+    if (bit < 4u) {
+        atrbvh_trbvh_subsets(n, k, lv, s);
+        return;
+    }
+    atrbvh_trbvh_subset_leaf(plane, b, s);
+    q0 = atrbvh_v4_fset1(b.min[0]);
+    q1 = atrbvh_v4_fset1(b.min[1]);
+    q2 = atrbvh_v4_fset1(b.min[2]);
+    q3 = atrbvh_v4_fset1(b.max[0]);
+    q4 = atrbvh_v4_fset1(b.max[1]);
+    q5 = atrbvh_v4_fset1(b.max[2]);
+    qn = atrbvh_v4_uset1(lv->count[k]);
+    two = atrbvh_v4_set1(2.0);
+    for (r = 0; r < bit; r += 4u) {
+        const atrbvh_v4f x0 = atrbvh_v4_fmin(atrbvh_v4_fload(c0 + r), q0),
+                         y0 = atrbvh_v4_fmin(atrbvh_v4_fload(c1 + r), q1),
+                         z0 = atrbvh_v4_fmin(atrbvh_v4_fload(c2 + r), q2),
+                         x1 = atrbvh_v4_fmax(atrbvh_v4_fload(c3 + r), q3),
+                         y1 = atrbvh_v4_fmax(atrbvh_v4_fload(c4 + r), q4),
+                         z1 = atrbvh_v4_fmax(atrbvh_v4_fload(c5 + r), q5);
+        const atrbvh_v4d dx = atrbvh_v4_sub(atrbvh_v4_widen(x1),
+                                            atrbvh_v4_widen(x0)),
+                         dy = atrbvh_v4_sub(atrbvh_v4_widen(y1),
+                                            atrbvh_v4_widen(y0)),
+                         dz = atrbvh_v4_sub(atrbvh_v4_widen(z1),
+                                            atrbvh_v4_widen(z0));
+        atrbvh_v4d t = atrbvh_v4_mul(dx, dy);
+        t = atrbvh_v4_add(t, atrbvh_v4_mul(dy, dz));
+        t = atrbvh_v4_add(t, atrbvh_v4_mul(dz, dx));
+        atrbvh_v4_fstore(c0 + bit + r, x0);
+        atrbvh_v4_fstore(c1 + bit + r, y0);
+        atrbvh_v4_fstore(c2 + bit + r, z0);
+        atrbvh_v4_fstore(c3 + bit + r, x1);
+        atrbvh_v4_fstore(c4 + bit + r, y1);
+        atrbvh_v4_fstore(c5 + bit + r, z1);
+        atrbvh_v4_storeu(s.cost + bit + r, atrbvh_v4_mul(two, t));
+        atrbvh_v4_ustore(s.count + bit + r,
+                         atrbvh_v4_uadd(atrbvh_v4_uload(s.count + r), qn));
+    }
+}
 
 /* atrbvh_trbvh_min on the four lanes (its enumeration, two running minima
  * per lane); cost and rest as doubles, lane l of subset P at 4P + l: the
@@ -973,15 +969,6 @@ ATRBVH_V4_FN atrbvh_v4d atrbvh_trbvh_min4(ATRBVH_GLOBAL const double *cost,
     return atrbvh_v4_min(lo0, lo1);
 }
 
-/* Each lane's subsets: AVX's eight at a time on the CPU, the scalar
- * rule in OpenCL C (the same values). */
-#ifdef __OPENCL_VERSION__
-#define ATRBVH_TRBVH_SUBSETS4(n, k, lv, s)                                     \
-    atrbvh_trbvh_subsets((n), (k), (lv), (s))
-#else
-#define ATRBVH_TRBVH_SUBSETS4(n, k, lv, s)                                     \
-    atrbvh_trbvh_subsets_avx((n), (k), (lv), (s))
-#endif
 
 ATRBVH_V4_MAIN void
 atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
@@ -1001,7 +988,7 @@ atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
 
     for (k = 0; k < n; k++)
         for (l = 0; l < 4u; l++)
-            ATRBVH_TRBVH_SUBSETS4(n, k, lv[l], s[l]);
+            atrbvh_trbvh_subsets4(n, k, lv[l], s[l]);
     for (k = 0; k < n; k++) {
         const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k;
         const atrbvh_v4d leaf =
