@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.75870324:61.7014709]
+set xrange [3.91998849:67.1607022]
 set xtics (5, 10, 20, 50)
 set yrange [63.7338549:116.665389]
 unset label
-set label 'LBVH' at 4.14889452,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 13.774493,77.3438024 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 10.3672502,73.4949364 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 16.5077283,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 18.9796345,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 28.0230389,72.4804197 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 35.3136157,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 25.4324018,67.3811972 left font ',8' noenhanced front
-set label 'embree_low' at 7.58971696,110.413633 left font ',8' noenhanced front
-set label 'embree_medium' at 20.1667462,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 14.4192771,79.1043672 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.06442571,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 11.9056702,71.690965 left font ',8' noenhanced front
+set label 'LBVH' at 4.33345916,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 14.4627938,77.3438024 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 11.2158777,73.4949364 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 17.6737606,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 20.1253443,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 26.1534751,68.0489424 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 38.1116697,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 17.2057807,68.7352597 left font ',8' noenhanced front
+set label 'embree_low' at 8.10793816,110.413633 left font ',8' noenhanced front
+set label 'embree_medium' at 22.8553708,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 16.2712978,79.1043672 left font ',8' noenhanced front
+set label 'LBVH/cl' at 5.41902477,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 12.4232653,71.690965 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
