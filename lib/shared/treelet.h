@@ -240,12 +240,6 @@ typedef atrbvh_u32 atrbvh_trbvh_mask;
 typedef atrbvh_u64 atrbvh_trbvh_mask;
 #endif
 
-/* Box, area and count of every subset S whose highest leaf is k (S = bit
- * | rest, bit = 2^k, rest < bit): box(S) = union(box(rest), box of leaf
- * k), rest first as atrbvh_box_union, area(S) as atrbvh_box_area, N(S) =
- * N(rest) + N(leaf k).  Entry 0 (the empty set, never a subset of the
- * DP) holds leaf k's own box and count 0 for the duration, so rest = 0
- * gives S = {k} by the same formula.  Writes entries bit .. 2*bit-1. */
 /* Entry 0 of the subset tables: leaf k's box b in the six planes of
  * `plane` floats, count 0. */
 ATRBVH_FN void atrbvh_trbvh_subset_leaf(atrbvh_trbvh_mask plane,
@@ -260,6 +254,12 @@ ATRBVH_FN void atrbvh_trbvh_subset_leaf(atrbvh_trbvh_mask plane,
     s.count[0] = 0;
 }
 
+/* Box, area and count of every subset S whose highest leaf is k (S = bit
+ * | rest, bit = 2^k, rest < bit): box(S) = union(box(rest), box of leaf
+ * k), rest first as atrbvh_box_union, area(S) as atrbvh_box_area, N(S) =
+ * N(rest) + N(leaf k).  Entry 0 (the empty set, never a subset of the
+ * DP) holds leaf k's own box and count 0 for the duration, so rest = 0
+ * gives S = {k} by the same formula.  Writes entries bit .. 2*bit-1. */
 #if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
 #include <emmintrin.h>
 /* Four subsets at a time with SSE2 (bit >= 4): MINPS/MAXPS are a < b ? a :
@@ -875,6 +875,24 @@ typedef __m128i atrbvh_v4u;
 #define atrbvh_v4_uset1(x) _mm_set1_epi32((int)(x))
 #endif
 
+/* atrbvh_box_area of four lanes' boxes, given by coordinate: its double
+ * operations in its order, lane for lane. */
+ATRBVH_V4_FN atrbvh_v4d atrbvh_area4(atrbvh_v4f x0, atrbvh_v4f y0,
+                                     atrbvh_v4f z0, atrbvh_v4f x1,
+                                     atrbvh_v4f y1, atrbvh_v4f z1)
+{
+    const atrbvh_v4d dx = atrbvh_v4_sub(atrbvh_v4_widen(x1),
+                                        atrbvh_v4_widen(x0)),
+                     dy = atrbvh_v4_sub(atrbvh_v4_widen(y1),
+                                        atrbvh_v4_widen(y0)),
+                     dz = atrbvh_v4_sub(atrbvh_v4_widen(z1),
+                                        atrbvh_v4_widen(z0));
+    atrbvh_v4d t = atrbvh_v4_mul(dx, dy);
+    t = atrbvh_v4_add(t, atrbvh_v4_mul(dy, dz));
+    t = atrbvh_v4_add(t, atrbvh_v4_mul(dz, dx));
+    return atrbvh_v4_mul(atrbvh_v4_set1(2.0), t);
+}
+
 /* atrbvh_trbvh_subsets four subsets a step (bit >= 4; below, the scalar
  * rule): the unions rest first (atrbvh_v4_fmin, fmax: a < b ? a : b and
  * a > b ? a : b lane for lane), each area atrbvh_box_area's double
@@ -897,7 +915,6 @@ ATRBVH_V4_FN void atrbvh_trbvh_subsets4(atrbvh_u32 n, atrbvh_u32 k,
     const atrbvh_box b = lv->box[k];
     atrbvh_v4f q0, q1, q2, q3, q4, q5;
     atrbvh_v4u qn;
-    atrbvh_v4d two;
     atrbvh_trbvh_mask r;
     if (bit < 4u) {
         atrbvh_trbvh_subsets(n, k, lv, s);
@@ -911,7 +928,6 @@ ATRBVH_V4_FN void atrbvh_trbvh_subsets4(atrbvh_u32 n, atrbvh_u32 k,
     q4 = atrbvh_v4_fset1(b.max[1]);
     q5 = atrbvh_v4_fset1(b.max[2]);
     qn = atrbvh_v4_uset1(lv->count[k]);
-    two = atrbvh_v4_set1(2.0);
     for (r = 0; r < bit; r += 4u) {
         const atrbvh_v4f x0 = atrbvh_v4_fmin(atrbvh_v4_fload(c0 + r), q0),
                          y0 = atrbvh_v4_fmin(atrbvh_v4_fload(c1 + r), q1),
@@ -919,22 +935,14 @@ ATRBVH_V4_FN void atrbvh_trbvh_subsets4(atrbvh_u32 n, atrbvh_u32 k,
                          x1 = atrbvh_v4_fmax(atrbvh_v4_fload(c3 + r), q3),
                          y1 = atrbvh_v4_fmax(atrbvh_v4_fload(c4 + r), q4),
                          z1 = atrbvh_v4_fmax(atrbvh_v4_fload(c5 + r), q5);
-        const atrbvh_v4d dx = atrbvh_v4_sub(atrbvh_v4_widen(x1),
-                                            atrbvh_v4_widen(x0)),
-                         dy = atrbvh_v4_sub(atrbvh_v4_widen(y1),
-                                            atrbvh_v4_widen(y0)),
-                         dz = atrbvh_v4_sub(atrbvh_v4_widen(z1),
-                                            atrbvh_v4_widen(z0));
-        atrbvh_v4d t = atrbvh_v4_mul(dx, dy);
-        t = atrbvh_v4_add(t, atrbvh_v4_mul(dy, dz));
-        t = atrbvh_v4_add(t, atrbvh_v4_mul(dz, dx));
         atrbvh_v4_fstore(c0 + bit + r, x0);
         atrbvh_v4_fstore(c1 + bit + r, y0);
         atrbvh_v4_fstore(c2 + bit + r, z0);
         atrbvh_v4_fstore(c3 + bit + r, x1);
         atrbvh_v4_fstore(c4 + bit + r, y1);
         atrbvh_v4_fstore(c5 + bit + r, z1);
-        atrbvh_v4_storeu(s.cost + bit + r, atrbvh_v4_mul(two, t));
+        atrbvh_v4_storeu(s.cost + bit + r,
+                         atrbvh_area4(x0, y0, z0, x1, y1, z1));
         atrbvh_v4_ustore(s.count + bit + r,
                          atrbvh_v4_uadd(atrbvh_v4_uload(s.count + r), qn));
     }
@@ -1444,19 +1452,12 @@ ATRBVH_V4_FN void atrbvh_load_box4(float b[6][4], atrbvh_v4f v[6])
 ATRBVH_V4_FN atrbvh_v4d atrbvh_union_area4(const atrbvh_v4f q[6],
                                                 float bf[6][4])
 {
-    const atrbvh_v4d dx = atrbvh_v4_sub(
-        atrbvh_v4_widen(atrbvh_v4_fmax(q[3], atrbvh_v4_fload(bf[3]))),
-        atrbvh_v4_widen(atrbvh_v4_fmin(q[0], atrbvh_v4_fload(bf[0]))));
-    const atrbvh_v4d dy = atrbvh_v4_sub(
-        atrbvh_v4_widen(atrbvh_v4_fmax(q[4], atrbvh_v4_fload(bf[4]))),
-        atrbvh_v4_widen(atrbvh_v4_fmin(q[1], atrbvh_v4_fload(bf[1]))));
-    const atrbvh_v4d dz = atrbvh_v4_sub(
-        atrbvh_v4_widen(atrbvh_v4_fmax(q[5], atrbvh_v4_fload(bf[5]))),
-        atrbvh_v4_widen(atrbvh_v4_fmin(q[2], atrbvh_v4_fload(bf[2]))));
-    atrbvh_v4d s = atrbvh_v4_mul(dx, dy);
-    s = atrbvh_v4_add(s, atrbvh_v4_mul(dy, dz));
-    s = atrbvh_v4_add(s, atrbvh_v4_mul(dz, dx));
-    return atrbvh_v4_mul(atrbvh_v4_set1(2.0), s);
+    return atrbvh_area4(atrbvh_v4_fmin(q[0], atrbvh_v4_fload(bf[0])),
+                        atrbvh_v4_fmin(q[1], atrbvh_v4_fload(bf[1])),
+                        atrbvh_v4_fmin(q[2], atrbvh_v4_fload(bf[2])),
+                        atrbvh_v4_fmax(q[3], atrbvh_v4_fload(bf[3])),
+                        atrbvh_v4_fmax(q[4], atrbvh_v4_fload(bf[4])),
+                        atrbvh_v4_fmax(q[5], atrbvh_v4_fload(bf[5])));
 }
 
 /* One live entry of the search: v at pair code `at` (64 i + j) taken
