@@ -1485,6 +1485,7 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
     atrbvh_u32 count[ATRBVH_TREELET_MAX][4], code[ATRBVH_TREELET_MAX][4];
     atrbvh_u32 base[ATRBVH_TREELET_MAX], cnt[4];
     atrbvh_v4f row[6];
+    atrbvh_v4m is_i[ATRBVH_TREELET_MAX], is_j[ATRBVH_TREELET_MAX];
     const atrbvh_u32 lim = !p->collapse          ? 0u
                            : p->max_leaf == 0u ? ATRBVH_U32_MAX
                                                : p->max_leaf;
@@ -1558,19 +1559,8 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
         }
         /* the merges' costs, atrbvh_node_cost lane for lane: the pair's
          * distance (best) is the merged area */
-        for (l = 0; l < 4u; l++) {
-            atrbvh_treelet_topo *to = topo[l];
-            const atrbvh_u32 i = I[l], j = J[l];
-            to->left[q] = code[j][l];
-            to->right[q] = code[i][l];
-            to->count[q] = cnt[l] = count[j][l] + count[i][l];
-            to->box[q].min[0] = merged[0][l];
-            to->box[q].min[1] = merged[1][l];
-            to->box[q].min[2] = merged[2][l];
-            to->box[q].max[0] = merged[3][l];
-            to->box[q].max[1] = merged[4][l];
-            to->box[q].max[2] = merged[5][l];
-        }
+        for (l = 0; l < 4u; l++)
+            cnt[l] = count[J[l]][l] + count[I[l]][l];
         binary = atrbvh_v4_mul(atrbvh_v4_set1(p->ci), best);
         binary = atrbvh_v4_add(
             binary, atrbvh_v4_set(cost[J[0]][0], cost[J[1]][1],
@@ -1586,12 +1576,25 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
                                 cnt[3] <= lim);
         res = atrbvh_v4_select(binary, atrbvh_v4_min(flat, binary), take);
         atrbvh_v4_store(cost_of, res);
-        /* slot j takes the merge, slot i the last cluster (onto itself
-         * when i is the last slot) */
+        /* each lane's merge into its topology, then its slots' costs,
+         * counts and codes: slot j takes the merge, slot i the last
+         * cluster (onto itself when i is the last slot) */
         for (l = 0; l < 4u; l++) {
-            const atrbvh_u32 i = I[l], j = J[l];
             atrbvh_treelet_topo *to = topo[l];
+            const atrbvh_u32 i = I[l], j = J[l];
+            const float x0 = merged[0][l], y0 = merged[1][l],
+                        z0 = merged[2][l], x1 = merged[3][l],
+                        y1 = merged[4][l], z1 = merged[5][l];
+            to->left[q] = code[j][l];
+            to->right[q] = code[i][l];
+            to->count[q] = cnt[l];
             to->cost[q] = cost_of[l];
+            to->box[q].min[0] = x0;
+            to->box[q].min[1] = y0;
+            to->box[q].min[2] = z0;
+            to->box[q].max[0] = x1;
+            to->box[q].max[1] = y1;
+            to->box[q].max[2] = z1;
             cost[j][l] = cost_of[l];
             count[j][l] = cnt[l];
             code[j][l] = n + q;
@@ -1605,14 +1608,17 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
         }
         /* the distances to the merged clusters (the merged box first, as
          * atrbvh_agglomerate_at's atrbvh_union_areas), slot i's being
-         * the last cluster's in its lanes */
+         * the last cluster's in its lanes, and each slot's masks: whether
+         * it is the lane's slot i, slot j */
         far = atrbvh_union_area4(mb, box[last]);
-        for (a = 0; a < last; a++)
-            atrbvh_v4_store(
-                area_of[a],
-                atrbvh_v4_select(
-                    atrbvh_union_area4(mb, box[a]), far,
-                    atrbvh_v4_eq(atrbvh_v4_set1((double)a), iv)));
+        for (a = 0; a < last; a++) {
+            const atrbvh_v4d av = atrbvh_v4_set1((double)a);
+            is_i[a] = atrbvh_v4_eq(av, iv);
+            is_j[a] = atrbvh_v4_eq(av, jv);
+            atrbvh_v4_store(area_of[a],
+                            atrbvh_v4_select(atrbvh_union_area4(mb, box[a]),
+                                             far, is_i[a]));
+        }
         /* the live entries of the next step rewritten, lane for lane:
          * (r, c) takes (last, c) in row i and (last, r) in column i,
          * then the distance to the merge in row and column j (the (i, j)
@@ -1621,33 +1627,41 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
         best = inf;
         at = atrbvh_v4_set1(0.0);
         for (r = 1; r < last; r++) {
-            const atrbvh_v4d rv = atrbvh_v4_set1((double)r);
-            const atrbvh_v4m ri = atrbvh_v4_eq(rv, iv);
-            const atrbvh_v4m rj = atrbvh_v4_eq(rv, jv);
+            const atrbvh_v4m ri = is_i[r], rj = is_j[r];
             const atrbvh_v4d lr =
                 atrbvh_v4_load(dist4 + 4u * (base[last] + r));
             const atrbvh_v4d ar = atrbvh_v4_load(area_of[r]);
             ATRBVH_GLOBAL double *at_r = dist4 + 4u * base[r];
             ATRBVH_GLOBAL const double *lrow = dist4 + 4u * base[last];
-            atrbvh_v4d k = atrbvh_v4_set1((double)(64u * r)),
-                          cv = atrbvh_v4_set1(0.0);
-            for (c = 0; c < r; c++, k = atrbvh_v4_add(k, one),
-                cv = atrbvh_v4_add(cv, one)) {
+            atrbvh_v4d k = atrbvh_v4_set1((double)(64u * r));
+            for (c = 0; c < r; c++, k = atrbvh_v4_add(k, one)) {
                 atrbvh_v4d v = atrbvh_v4_load(at_r + 4u * c);
                 v = atrbvh_v4_select(v, atrbvh_v4_load(lrow + 4u * c), ri);
-                v = atrbvh_v4_select(v, lr, atrbvh_v4_eq(cv, iv));
+                v = atrbvh_v4_select(v, lr, is_i[c]);
                 v = atrbvh_v4_select(v, atrbvh_v4_load(area_of[c]), rj);
-                v = atrbvh_v4_select(v, ar, atrbvh_v4_eq(cv, jv));
+                v = atrbvh_v4_select(v, ar, is_j[c]);
                 atrbvh_v4_store(at_r + 4u * c, v);
                 ATRBVH_AGG4_SEEK(v, k, best, at);
             }
         }
-        /* the boxes: the merge into slot j, the last cluster into slot i */
-        for (l = 0; l < 4u; l++)
-            for (c = 0; c < 6u; c++) {
-                box[J[l]][c][l] = merged[c][l];
-                box[I[l]][c][l] = box[last][c][l];
-            }
+        /* the boxes: the merge into slot j, the last cluster into slot i
+         * (j is neither; i may be the last slot) */
+        for (l = 0; l < 4u; l++) {
+            float *bj = &box[J[l]][0][l], *bi = &box[I[l]][0][l];
+            const float *bl = &box[last][0][l];
+            bj[0] = merged[0][l];
+            bj[4] = merged[1][l];
+            bj[8] = merged[2][l];
+            bj[12] = merged[3][l];
+            bj[16] = merged[4][l];
+            bj[20] = merged[5][l];
+            bi[0] = bl[0];
+            bi[4] = bl[4];
+            bi[8] = bl[8];
+            bi[12] = bl[12];
+            bi[16] = bl[16];
+            bi[20] = bl[20];
+        }
     }
     for (l = 0; l < 4u; l++)
         topo[l]->root = n - 2u;
