@@ -81,6 +81,13 @@ typedef struct opt_worker {
 #error "optimise.c: the adaptive size exceeds the fixed-size path"
 #endif
 
+/* The most treelets formed side by side (lane_batch): ATRBVH's where
+ * the agglomerations go in lanes, two groups of four.  Eight formations
+ * overlap more of their loads than four: dabrovic_sponza's ATRBVH(9,2)
+ * optimise stage 1.0-1.7% faster, one thread, Intel host
+ * (docs/bench/abpair.c); sixteen gained 0.3-1% more. */
+#define FORM_MAX 8u
+
 /* Trees smaller than this are optimised on one thread. */
 #define PARALLEL_MIN 2048u
 
@@ -303,11 +310,12 @@ static void lane_agg(walk_ctx *c, opt_worker *w, unsigned ready,
 }
 #endif
 
-/* `ready` (1 to 4) treelet roots of one height (disjoint subtrees, none
- * skipped): each root refreshed, the treelets formed side by side (one
- * expansion of each in turn, so that their loads overlap: a formation is
- * a chain of dependent loads), then each treelet's topology.  ATRBVH: the
- * agglomerations side by side with AVX (lane_agg), else one by one
+/* `ready` (1 to c->lanes) treelet roots of one height (disjoint
+ * subtrees, none skipped): each root refreshed, the treelets formed side
+ * by side (one expansion of each in turn, so that their loads overlap: a
+ * formation is a chain of dependent loads), then each treelet's
+ * topology.  ATRBVH: the agglomerations four at a time side by side with
+ * AVX (lane_agg; FORM_MAX formations, two groups), else one by one
  * (atrbvh_atrbvh_keep, as process() does).  TRBVH: the full treelets' DP
  * together (atrbvh_trbvh_ready); one alone, or one of fewer than n leaves
  * (not one of a crown node, which holds at least n primitives; kept for
@@ -315,10 +323,10 @@ static void lane_agg(walk_ctx *c, opt_worker *w, unsigned ready,
 static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
                        const uint32_t *root)
 {
-    atrbvh_treelet tl[4];
+    atrbvh_treelet tl[FORM_MAX];
     atrbvh_treelet_leaves lv[4];
-    double area[4][ATRBVH_TREELET_MAX];
-    uint32_t size[4];
+    double area[FORM_MAX][ATRBVH_TREELET_MAX];
+    uint32_t size[FORM_MAX];
     int applied[4];
     unsigned l, m, more = 1;
     for (l = 0; l < ready; l++) {
@@ -336,18 +344,22 @@ static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
                 more = 1;
     }
     if (c->method == ATRBVH_METHOD_ATRBVH) {
+        unsigned g;
+        for (l = 0; l < ready; l += g) {
+            g = ready - l < 4u ? ready - l : 4u;
 #ifdef ATRBVH_AGG_QUADS
-        if (c->agg4 && ready > 1u) {
-            lane_agg(c, w, ready, root, tl);
-            return;
-        }
+            if (c->agg4 && g > 1u) {
+                lane_agg(c, w, g, root + l, tl + l);
+                continue;
+            }
 #endif
-        for (l = 0; l < ready; l++)
+            g = 1u;
             lane_done(c, w, root[l], &tl[l],
                       tl[l].n >= 3u ? atrbvh_atrbvh_keep(&c->t, c->cost,
                                                          root[l], &tl[l],
                                                          w->dist)
                                     : 0);
+        }
         return;
     }
     /* TRBVH: the full treelets' DP together, in lanes (with AVX: opt_lanes
@@ -411,7 +423,7 @@ static int walk_lanes(walk_ctx *c, uint32_t s, size_t cap)
         /* one at a time from 255 on: post-order among themselves */
         const unsigned most = h < 255u ? lanes : 1u;
         const size_t end = start[h];
-        uint32_t node[4];
+        uint32_t node[FORM_MAX];
         unsigned ready = 0;
         for (; i < end; i++) {
             if (!(w = worker(c)))
@@ -533,7 +545,8 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
  * atrbvh_trbvh_costs4's lanes), else 1.  ATRBVH of up to
  * ATRBVH_TREELET_MAX leaves or adaptive: 4 formations side by side, and
  * where the CPU has AVX the agglomerations too (atrbvh_agglomerate4's
- * lanes; without AVX one by one); larger treelets go in post-order
+ * lanes, and then FORM_MAX formations: atrbvh_i_optimise; without AVX
+ * one by one); larger treelets go in post-order
  * (process_agg).  ATRBVH_CPU_LANES=1 or 2 in the environment asks for
  * fewer (tests/test_hashes.c builds every tree each way: the same bits). */
 static unsigned opt_lanes(atrbvh_method method, unsigned n)
@@ -736,7 +749,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     }
     /* the heights: each written before it is read (walk_lanes) */
     c.hgt = hgt > 0u ? block + (size_t)threads * stride + 2u * marks : NULL;
-    c.lanes = lanes;
+    c.lanes = agg4 && lanes == 4u ? FORM_MAX : lanes;
     c.agg4 = agg4;
 
     c.t.left = t->left;
