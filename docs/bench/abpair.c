@@ -20,7 +20,9 @@
  * LIB_A and LIB_B: paths of two copies of _build/lib/.libs/libatrbvh.so
  * (before and after a change).  Compare the trees first (the test suite's
  * hashes).  Defaults: atrbvh, the method's sizes and rounds, 1 thread;
- * two untimed builds with each first.
+ * two untimed builds with each first.  ABPAIR_DEVICE=opencl in the
+ * environment compares the OpenCL backend's builds instead (each library
+ * opens its own device handle, once; POCL_AFFINITY=1 as the speed runs).
  */
 #define _POSIX_C_SOURCE 199309L
 #include "atrbvh.h"
@@ -73,7 +75,8 @@ static int load(const char *path, lib *l)
         sym(l->h, "atrbvh_bvh_stage_ms", &l->stage_ms, sizeof l->stage_ms) ||
         sym(l->h, "atrbvh_bvh_free", &l->bvh_free, sizeof l->bvh_free))
         return -1;
-    if (l->open("cpu", &l->dev, &e) != ATRBVH_OK) {
+    if (l->open(getenv("ABPAIR_DEVICE") ? getenv("ABPAIR_DEVICE") : "cpu",
+                &l->dev, &e) != ATRBVH_OK) {
         fprintf(stderr, "abpair: %s: %s\n", path, e.text);
         return -1;
     }
