@@ -20,19 +20,21 @@
  * Scheduling on the CPU, per round: the "top" is the crown nodes of at
  * least `cut` primitives (cpu.h's atrbvh_i_frontier_cut), a
  * connected top part of the crown; the "frontier" is the crown nodes just
- * below it, roots of disjoint subtrees.  One parallel loop (dynamic, one
- * subtree at a time) walks each frontier subtree in post-order; then the
- * calling thread walks the top in post-order.  Each walk is a stackless
- * serial post-order walk over the parent pointers - the treelet root keeps
- * its id and parent, so the walk's way up stays valid, and a frontier
- * root keeps its primitives, so the top does not move under the loop.
+ * below it, roots of disjoint subtrees.  One parallel loop (dynamic, a
+ * chunk of neighbouring frontier subtrees at a time: FRONTIER_CHUNK) walks
+ * the frontier subtrees; then the calling thread walks the top.  Each
+ * walk follows a stackless serial post-order walk over the parent
+ * pointers - the treelet root keeps its id and parent, so the walk's way
+ * up stays valid, and a frontier root keeps its primitives, so the top
+ * does not move under the loop.
  * One hand-over between threads per round, where post-order tasks woke a
  * sleeping thread at every spawn and taskwait (on a virtual machine with
  * passive waiting, each wake-up is tens to hundreds of microseconds).
  * Scratch is per thread, allocated once per build.
  *
- * Within a frontier subtree (walk_lanes; on one thread too) the crown
- * nodes go by height instead of in post-order - any order that takes a
+ * Within a chunk of frontier subtrees, and in the top (walk_lanes; on
+ * one thread too), the crown nodes go by height instead of in post-order
+ * - any order that takes a
  * node after the crown nodes below it gives the same tree - so that
  * treelets of disjoint subtrees run side by side: their formations
  * interleaved (each a chain of dependent loads), and TRBVH's DP and
@@ -43,8 +45,7 @@
  * instructions per build with four lanes; ATRBVH(9,2)'s from 117M to 125M
  * with its formations side by side (the listing), but faster (their loads
  * overlap), and its agglomerations in lanes cut the mispredicted branches
- * five-fold (docs/optimisers.md).  The top (few treelets) stays in
- * post-order.
+ * five-fold (docs/optimisers.md).
  */
 #include "cpu.h"
 #include "shared/treelet.h"
@@ -396,9 +397,10 @@ static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
         lane_done(c, w, root[l], &tl[l], applied[l]);
 }
 
-/* The crowns of frontier subtrees roots[0 .. count-1] (every crown node
- * below and including each root), c->lanes treelets at a time
- * (lane_batch).  A treelet is a pure
+/* The crown nodes of at least `lo` primitives (lo >= gamma) below and
+ * including roots[0 .. count-1]: lo = gamma, the crowns of frontier
+ * subtrees; lo = the cut, the top (walk_round).  c->lanes treelets at a
+ * time (lane_batch).  A treelet is a pure
  * function of its root's final subtree, so any order that takes a node
  * after every crown node below it gives the post-order's tree, bit for
  * bit: the crown nodes are listed in post-order with their height (0 for
@@ -414,7 +416,7 @@ static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
  * crowns do not fit the worker's lists (cap entries): the caller then
  * walks them in post-order. */
 static int walk_lanes(walk_ctx *c, const uint32_t *roots, size_t count,
-                      size_t cap)
+                      uint32_t lo, size_t cap)
 {
     const atrbvh_treelet_tree *t = &c->t;
     const unsigned lanes = c->lanes;
@@ -425,23 +427,24 @@ static int walk_lanes(walk_ctx *c, const uint32_t *roots, size_t count,
     if (!w)
         return 1; /* the build is being cancelled: its tree is dropped */
     memset(start, 0, sizeof start);
-    /* walk_serial's post-order (lo = gamma), listing instead of visiting */
-    for (j = 0; j < count; j++)
-    for (x = post_first(t, roots[j], c->gamma); x != ATRBVH_U32_MAX;
-         x = post_next(t, roots[j], x, c->gamma)) {
-        const uint32_t l = t->left[x], r = t->right[x];
-        unsigned hx = 0;
-        if (in_crown(c, l))
-            hx = hgt[l] + 1u;
-        if (in_crown(c, r) && hgt[r] + 1u > hx)
-            hx = hgt[r] + 1u;
-        if (hx > 255u)
-            hx = 255u;
-        if (k == cap)
-            return 0;
-        hgt[x] = (unsigned char)hx;
-        w->list[k++] = x;
-        start[hx + 1u]++;
+    /* walk_serial's post-order, listing instead of visiting */
+    for (j = 0; j < count; j++) {
+        for (x = post_first(t, roots[j], lo); x != ATRBVH_U32_MAX;
+             x = post_next(t, roots[j], x, lo)) {
+            const uint32_t l = t->left[x], r = t->right[x];
+            unsigned hx = 0;
+            if (at_least(t, l, lo))
+                hx = hgt[l] + 1u;
+            if (at_least(t, r, lo) && hgt[r] + 1u > hx)
+                hx = hgt[r] + 1u;
+            if (hx > 255u)
+                hx = 255u;
+            if (k == cap)
+                return 0;
+            hgt[x] = (unsigned char)hx;
+            w->list[k++] = x;
+            start[hx + 1u]++;
+        }
     }
     for (h = 1; h < 257u; h++)
         start[h] += start[h - 1u];
@@ -522,9 +525,6 @@ static size_t frontier(const walk_ctx *c, uint32_t cut, uint32_t *out,
     }
 }
 
-/* One round over the crown: the frontier subtrees on the threads, then
- * the top on this thread; the whole crown on this thread when the tree is
- * small, or its frontier does not fit. */
 /* The crowns of frontier subtrees roots[0 .. count-1]: in lanes
  * (walk_lanes) when the build takes them and the crowns fit the worker's
  * lists of pcap entries, else each in post-order. */
@@ -532,12 +532,15 @@ static void walk_frontier(walk_ctx *c, const uint32_t *roots, size_t count,
                           size_t pcap)
 {
     size_t j;
-    if (c->hgt && walk_lanes(c, roots, count, pcap))
+    if (c->hgt && walk_lanes(c, roots, count, c->gamma, pcap))
         return;
     for (j = 0; j < count; j++)
         walk_serial(c, roots[j], c->gamma);
 }
 
+/* One round over the crown: the frontier subtrees on the threads, then
+ * the top on this thread; the whole crown on this thread when the tree is
+ * small, or its frontier does not fit. */
 static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
                        size_t pcap)
 {
@@ -589,7 +592,12 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
                           pcap);
         atrbvh_i_join_arrive(&join);
     }
-    walk_serial(c, 0, cut);
+    /* the top: in lanes too (its few nodes of a height side by side) */
+    {
+        const uint32_t top = 0;
+        if (!c->hgt || !walk_lanes(c, &top, 1u, cut, pcap))
+            walk_serial(c, 0, cut);
+    }
 }
 
 /* How many treelets walk_lanes takes at a time (lane_batch), 1 for the
