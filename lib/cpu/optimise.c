@@ -84,8 +84,10 @@ typedef struct opt_worker {
 #error "optimise.c: the adaptive size exceeds the fixed-size path"
 #endif
 
-/* The most treelets formed side by side (lane_batch): ATRBVH's where
- * the agglomerations go in lanes, two groups of four.  Eight formations
+/* The most treelets formed side by side (lane_batch) where ATRBVH's
+ * agglomerations or TRBVH's DP go in lanes: two groups of four (TRBVH:
+ * the optimise stage 1.1-1.6% faster than four, dabrovic_sponza, two
+ * threads).  Eight formations
  * overlap more of their loads than four: dabrovic_sponza's ATRBVH(9,2)
  * optimise stage 1.0-1.7% faster, one thread, Intel host
  * (docs/bench/abpair.c); sixteen gained 0.3-1% more. */
@@ -342,7 +344,8 @@ static void lane_agg(walk_ctx *c, opt_worker *w, unsigned ready,
  * topology.  ATRBVH: the agglomerations four at a time side by side with
  * AVX (lane_agg; FORM_MAX formations, two groups), else one by one
  * (atrbvh_atrbvh_keep, as process() does).  TRBVH: the full treelets' DP
- * together (atrbvh_trbvh_ready); one alone, or one of fewer than n leaves
+ * four at a time together (atrbvh_trbvh_ready; FORM_MAX formations with
+ * AVX, two groups); one alone, or one of fewer than n leaves
  * (not one of a crown node, which holds at least n primitives; kept for
  * safety), by the scalar DP. */
 static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
@@ -353,7 +356,7 @@ static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
     double area[FORM_MAX][ATRBVH_TREELET_MAX];
     uint32_t size[FORM_MAX];
     int applied[4];
-    unsigned l, m, more = 1;
+    unsigned l, m, first, more = 1;
     for (l = 0; l < ready; l++) {
         size[l] = c->n == ATRBVH_TREELET_AUTO
                       ? atrbvh_treelet_auto_size(c->t.count[root[l]], c->gamma)
@@ -391,10 +394,13 @@ static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
      * takes TRBVH one at a time without), the others one by one
      * (shared/treelet.h's atrbvh_trbvh_ready, which the opt_round4 kernel
      * calls too) */
-    atrbvh_trbvh_ready(&c->t, c->cost, c->n, ready, root, tl, lv, w->lane,
-                       w->pack, applied);
-    for (l = 0; l < ready; l++)
-        lane_done(c, w, root[l], &tl[l], applied[l]);
+    for (first = 0; first < ready; first += 4u) {
+        const unsigned g = ready - first < 4u ? ready - first : 4u;
+        atrbvh_trbvh_ready(&c->t, c->cost, c->n, g, root + first, tl + first,
+                           lv, w->lane, w->pack, applied);
+        for (l = 0; l < g; l++)
+            lane_done(c, w, root[first + l], &tl[first + l], applied[l]);
+    }
 }
 
 /* The crown nodes of at least `lo` primitives (lo >= gamma) below and
@@ -602,7 +608,8 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
 
 /* How many treelets walk_lanes takes at a time (lane_batch), 1 for the
  * post-order walk.  TRBVH: 4 where the CPU has AVX (its DP in
- * atrbvh_trbvh_costs4's lanes), else 1.  ATRBVH of up to
+ * atrbvh_trbvh_costs4's lanes; atrbvh_i_optimise then forms FORM_MAX),
+ * else 1.  ATRBVH of up to
  * ATRBVH_TREELET_MAX leaves or adaptive: 4 formations side by side, and
  * where the CPU has AVX the agglomerations too (atrbvh_agglomerate4's
  * lanes, and then FORM_MAX formations: atrbvh_i_optimise; without AVX
@@ -812,7 +819,9 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     }
     /* the heights: each written before it is read (walk_lanes) */
     c.hgt = hgt > 0u ? block + (size_t)threads * stride + 2u * marks : NULL;
-    c.lanes = agg4 && lanes == 4u ? FORM_MAX : lanes;
+    c.lanes = (agg4 || cfg->method == ATRBVH_METHOD_TRBVH) && lanes == 4u
+                  ? FORM_MAX
+                  : lanes;
     c.agg4 = agg4;
 
     c.t.left = t->left;
