@@ -34,8 +34,8 @@
  *
  * Within a chunk of frontier subtrees, and in the top (walk_lanes; on
  * one thread too), the crown nodes go by height instead of in post-order
- * - any order that takes a
- * node after the crown nodes below it gives the same tree - so that
+ * - any order that takes a node after the crown nodes below it gives the
+ * same tree - so that
  * treelets of disjoint subtrees run side by side: their formations
  * interleaved (each a chain of dependent loads), and TRBVH's DP and
  * ATRBVH's agglomerations in the lanes of one vector register
@@ -85,12 +85,11 @@ typedef struct opt_worker {
 #endif
 
 /* The most treelets formed side by side (lane_batch) where ATRBVH's
- * agglomerations or TRBVH's DP go in lanes: two groups of four (TRBVH:
- * the optimise stage 1.1-1.6% faster than four, dabrovic_sponza, two
- * threads).  Eight formations
- * overlap more of their loads than four: dabrovic_sponza's ATRBVH(9,2)
- * optimise stage 1.0-1.7% faster, one thread, Intel host
- * (docs/bench/abpair.c); sixteen gained 0.3-1% more. */
+ * agglomerations or TRBVH's DP go in lanes: two groups of four.  Eight
+ * formations overlap more of their loads than four: dabrovic_sponza's
+ * optimise stage 1.0-1.7% faster for ATRBVH(9,2) at one thread, 1.1-1.6%
+ * for TRBVH(7,3) at two, Intel host (docs/bench/abpair.c); sixteen
+ * gained 0.3-1% more. */
 #define FORM_MAX 8u
 
 /* Frontier subtrees a thread takes at a time (walk_round, walk_lanes):
@@ -406,12 +405,12 @@ static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
 /* The crown nodes of at least `lo` primitives (lo >= gamma) below and
  * including roots[0 .. count-1]: lo = gamma, the crowns of frontier
  * subtrees; lo = the cut, the top (walk_round).  c->lanes treelets at a
- * time (lane_batch).  A treelet is a pure
- * function of its root's final subtree, so any order that takes a node
- * after every crown node below it gives the post-order's tree, bit for
- * bit: the crown nodes are listed in post-order with their height (0 for
- * a node with no crown child, else one more than its highest crown
- * child), sorted by height (stable), and each height is taken in turn -
+ * time (lane_batch).  A treelet is a pure function of its root's final
+ * subtree, so any order that takes a node after every crown node below it
+ * gives the post-order's tree, bit for bit: the nodes are listed in
+ * post-order with their height (0 for a node with no such child, else one
+ * more than its highest such child), sorted by height (stable), and each
+ * height is taken in turn -
  * nodes of one height have disjoint subtrees, so several of them form,
  * run and write back side by side; the subtrees of a chunk are listed one
  * after the other and sorted together, so that the few nodes of a
@@ -568,6 +567,7 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
         walk_serial(c, 0, c->gamma);
         return;
     }
+    /* the chunks: their first roots' places in list[cap ..], then k */
     {
         uint32_t *const start = list + cap;
         size_t j, in = 0;
@@ -575,7 +575,8 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
         chunks = 0;
         for (j = 0; j < k; j++) {
             const uint32_t here = c->t.count[list[j]];
-            if (in > 0u && (in == FRONTIER_CHUNK || prims + here > CHUNK_PRIMS)) {
+            if (in > 0u &&
+                (in == FRONTIER_CHUNK || prims + here > CHUNK_PRIMS)) {
                 in = 0;
                 prims = 0;
             }
