@@ -84,6 +84,11 @@ typedef struct atrbvh_treelet_tree {
 /* A formed treelet. */
 typedef struct atrbvh_treelet {
     atrbvh_u32 n;                                /* leaves formed          */
+    atrbvh_u32 pend;                             /* forming: the slot
+                                                    filled last beside
+                                                    slot n-1, whose areas
+                                                    wait (the formation's
+                                                    comment)               */
     atrbvh_u32 leaf[ATRBVH_TREELET_MAX];         /* node ids, slot order   */
     atrbvh_u32 internal[ATRBVH_TREELET_MAX - 1]; /* [0] = root, then in
                                                     expansion order        */
@@ -124,9 +129,13 @@ typedef struct atrbvh_treelet_topo {
  * atrbvh_treelet_form_first takes the root's two children (tl->n = 2),
  * each atrbvh_treelet_form_next one expansion (tl->n + 1), returning 0
  * when no slot is an internal BVH node.  `area` holds the slots' areas
- * in between (-1 for a slot that is not an internal node).  On the CPU a
- * slot's box, cost and count are prefetched as it is filled, for the
- * gather that follows (no effect on any value). */
+ * in between (-1 for a slot that is not an internal node), but those of
+ * the two slots an expansion fills (tl->pend and n-1) only from the next
+ * step on, which computes them first: their boxes then come from memory
+ * while the other treelets of a driver take their steps, not on the way
+ * of this one's (the same areas, the same choices).  On the CPU a slot's
+ * box, cost and count are prefetched as it is filled, for that step and
+ * the gather that follows (no effect on any value). */
 #if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__))
 #define ATRBVH_TREELET_PREFETCH(t, x)                                          \
     do {                                                                       \
@@ -146,16 +155,19 @@ ATRBVH_FN void atrbvh_treelet_form_first(const atrbvh_treelet_tree *t,
     tl->leaf[1] = t->right[root];
     ATRBVH_TREELET_PREFETCH(t, tl->leaf[0]);
     ATRBVH_TREELET_PREFETCH(t, tl->leaf[1]);
-    area[0] = atrbvh_box_area(t->box[tl->leaf[0]]);
-    area[1] = atrbvh_box_area(t->box[tl->leaf[1]]);
-    /* A slot that is not an internal BVH node gets area -1: areas are
-     * never negative, so "the first expandable slot, then strictly
-     * larger" is one strict > against a start of -0.5. */
-    if (tl->leaf[0] >= t->n_internal)
-        area[0] = -1.0;
-    if (tl->leaf[1] >= t->n_internal)
-        area[1] = -1.0;
+    (void)area; /* (slots 0 and 1 wait for the first step) */
+    tl->pend = 0;
     tl->n = 2;
+}
+
+/* A slot's area for the formation: its node's box area, or -1 for a slot
+ * that is not an internal BVH node (areas are never negative, so "the
+ * first expandable slot, then strictly larger" is one strict > against a
+ * start of -0.5). */
+ATRBVH_FN double atrbvh_treelet_slot_area(const atrbvh_treelet_tree *t,
+                                          atrbvh_u32 x)
+{
+    return x < t->n_internal ? atrbvh_box_area(t->box[x]) : -1.0;
 }
 
 ATRBVH_FN int atrbvh_treelet_form_next(const atrbvh_treelet_tree *t,
@@ -164,6 +176,9 @@ ATRBVH_FN int atrbvh_treelet_form_next(const atrbvh_treelet_tree *t,
     const atrbvh_u32 m = tl->n;
     atrbvh_u32 best = ATRBVH_U32_MAX, node, child, k;
     double best_area = -0.5;
+    /* the last step's two slots */
+    area[tl->pend] = atrbvh_treelet_slot_area(t, tl->leaf[tl->pend]);
+    area[m - 1u] = atrbvh_treelet_slot_area(t, tl->leaf[m - 1u]);
     /* best moves on strict >; the maximum in place (MAXSD; equal areas
      * have equal bits: never -0 nor NaN). */
     for (k = 0; k < m; k++) {
@@ -178,12 +193,10 @@ ATRBVH_FN int atrbvh_treelet_form_next(const atrbvh_treelet_tree *t,
     child = t->left[node];
     tl->leaf[best] = child;
     ATRBVH_TREELET_PREFETCH(t, child);
-    area[best] =
-        child < t->n_internal ? atrbvh_box_area(t->box[child]) : -1.0;
     child = t->right[node];
     tl->leaf[m] = child;
     ATRBVH_TREELET_PREFETCH(t, child);
-    area[m] = child < t->n_internal ? atrbvh_box_area(t->box[child]) : -1.0;
+    tl->pend = best;
     tl->n = m + 1u;
     return 1;
 }
