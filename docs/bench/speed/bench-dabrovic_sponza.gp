@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [3.14870287:51.8258408]
+set xrange [3.92099214:54.5606072]
 set xtics (5, 10, 20, 50)
 set yrange [63.7338549:116.665389]
 unset label
-set label 'LBVH' at 4.12412859,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 10.4921595,77.3438024 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 8.7154211,73.4949364 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 13.7864561,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 10.8239075,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 19.3023988,71.495647 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 29.645737,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 19.7050385,67.3811972 left font ',8' noenhanced front
-set label 'embree_low' at 6.68343153,110.413633 left font ',8' noenhanced front
-set label 'embree_medium' at 11.9860938,79.1043672 left font ',8' noenhanced front
-set label 'embree_high' at 18.2302723,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.16179078,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 11.3816867,68.98284 left font ',8' noenhanced front
+set label 'LBVH' at 4.30285732,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 12.6453398,77.3438024 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 9.86556573,73.4949364 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 14.6734967,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 11.4475169,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 17.2137388,71.1263572 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 32.2730106,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 21.3684475,67.3811972 left font ',8' noenhanced front
+set label 'embree_low' at 8.46532634,110.413633 left font ',8' noenhanced front
+set label 'embree_medium' at 14.5311093,79.1043672 left font ',8' noenhanced front
+set label 'embree_high' at 21.6153534,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 5.73422171,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 11.7123232,68.98284 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
