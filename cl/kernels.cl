@@ -1046,7 +1046,7 @@ __kernel void opt_round4(__global uint *left, __global uint *right,
                               ? atrbvh_treelet_auto_size(v.t.count[x], a.gamma)
                               : a.treelet_size;
             atrbvh_treelet_refresh(&v.t, &v.p, x);
-            atrbvh_treelet_form_first(&v.t, x, &tl[ready], area[ready]);
+            atrbvh_treelet_form_first(&v.t, x, &tl[ready]);
             ready++;
         }
         for (step = 2u, more = 1u; more; step++) {

@@ -361,7 +361,7 @@ static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
                       ? atrbvh_treelet_auto_size(c->t.count[root[l]], c->gamma)
                       : c->n;
         atrbvh_treelet_refresh(&c->t, c->cost, root[l]);
-        atrbvh_treelet_form_first(&c->t, root[l], &tl[l], area[l]);
+        atrbvh_treelet_form_first(&c->t, root[l], &tl[l]);
     }
     for (m = 2; more; m++) {
         more = 0;

@@ -147,16 +147,14 @@ typedef struct atrbvh_treelet_topo {
 #define ATRBVH_TREELET_PREFETCH(t, x) ((void)0)
 #endif
 ATRBVH_FN void atrbvh_treelet_form_first(const atrbvh_treelet_tree *t,
-                                         atrbvh_u32 root, atrbvh_treelet *tl,
-                                         double *area)
+                                         atrbvh_u32 root, atrbvh_treelet *tl)
 {
     tl->internal[0] = root;
     tl->leaf[0] = t->left[root];
     tl->leaf[1] = t->right[root];
     ATRBVH_TREELET_PREFETCH(t, tl->leaf[0]);
     ATRBVH_TREELET_PREFETCH(t, tl->leaf[1]);
-    (void)area; /* (slots 0 and 1 wait for the first step) */
-    tl->pend = 0;
+    tl->pend = 0; /* slots 0 and 1 wait for the first step */
     tl->n = 2;
 }
 
@@ -207,7 +205,7 @@ ATRBVH_FN atrbvh_u32 atrbvh_treelet_form(const atrbvh_treelet_tree *t,
                                          atrbvh_treelet *tl)
 {
     double area[ATRBVH_TREELET_MAX];
-    atrbvh_treelet_form_first(t, root, tl, area);
+    atrbvh_treelet_form_first(t, root, tl);
     while (tl->n < n && atrbvh_treelet_form_next(t, tl, area))
         ;
     return tl->n;
