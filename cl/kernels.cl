@@ -866,9 +866,9 @@ typedef struct opt_view {
     atrbvh_trbvh_scratch s;
     atrbvh_agg_scratch agg;
     atrbvh_treelet_marks m;
-    /* opt_round4: ATRBVH's four interleaved matrices, or TRBVH's
-     * interleaved costs (the same place) and the four lanes' tables (s
-     * the first) */
+    /* opt_round4: ATRBVH's four interleaved matrices, or TRBVH's four
+     * lanes' interleaved tables (the same place) and the four lanes'
+     * splits (s the first, whose tables the scalar DP takes) */
     __global double *dist4;
     atrbvh_trbvh_scratch lane[4];
 } opt_view;
@@ -896,9 +896,15 @@ static void opt_item(__global uint *left, __global uint *right,
     v->p = atrbvh_kargs_cost(a->ci, a->ct, a->collapse, a->max_leaf);
     v->s = opt_tables(base, a);
     v->lane[0] = v->s;
-    for (l = 1u; l < 4u; l++) /* (opt_round4, TRBVH; unused otherwise) */
-        v->lane[l] =
-            opt_tables(base + a->off_lanes + (l - 1u) * a->off_dist, a);
+    for (l = 1u; l < 4u; l++) { /* (opt_round4, TRBVH; unused otherwise) */
+        /* only the split: the rest is in the interleaved tables */
+        v->lane[l].box = (__global float *)0;
+        v->lane[l].cost = (__global double *)0;
+        v->lane[l].count = (__global uint *)0;
+        v->lane[l].split =
+            (__global uint *)(base + a->off_lanes +
+                              (l - 1u) * (a->off_dist - a->off_split));
+    }
     /* ATRBVH: the distances, and above 32 leaves the treelet's arrays,
      * laid out for the largest size (the host sized them alike). */
     atrbvh_agg_layout(base + a->off_dist,

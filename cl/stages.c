@@ -549,8 +549,8 @@ static atrbvh_status st_refit(atrbvh_device *dev, atrbvh_i_run *run,
  * arrays (atrbvh_agg_layout, as the kernel carves them; for
  * ATRBVH_TREELET_AUTO the rule's largest size), each 64-byte aligned;
  * for opt_round4 (a->walks) then the four lanes' interleaved matrices or
- * costs (off_dist4) and TRBVH's lanes 1-3's subset tables (off_lanes,
- * each off_dist bytes, as lane 0's at 0). */
+ * tables (off_dist4) and TRBVH's lanes 1-3's splits (off_lanes, each
+ * off_dist - off_split bytes; lane 0's tables at 0). */
 static void scratch_layout(const atrbvh_i_config *cfg,
                            atrbvh_kargs_optimise *a)
 {
@@ -565,11 +565,10 @@ static void scratch_layout(const atrbvh_i_config *cfg,
             four = (size_t)atrbvh_agglomerate4_doubles(nmax) * sizeof(double);
     } else {
         subsets = (size_t)1 << n;
-        /* opt_round4: the DP's four interleaved cost tables and their
-         * mirrors (atrbvh_trbvh_costs4, 8 x 2^n doubles) and lanes 1-3's
-         * own tables */
+        /* opt_round4: the DP's four lanes' interleaved tables
+         * (atrbvh_trbvh_costs4) and lanes 1-3's splits */
         if (a->walks)
-            four = 8u * subsets * sizeof(double);
+            four = ATRBVH_TRBVH_QUAD_DOUBLES * subsets * sizeof(double);
     }
     a->off_cost = ALIGN64(subsets * sizeof(atrbvh_box));
     a->off_count = a->off_cost + ALIGN64(subsets * sizeof(double));
@@ -578,7 +577,7 @@ static void scratch_layout(const atrbvh_i_config *cfg,
     a->off_dist4 = a->off_dist + ALIGN64(agg);
     a->off_lanes = a->off_dist4 + ALIGN64(four);
     if (a->walks && !a->agglomerative)
-        lanes = 3u * (size_t)a->off_dist;
+        lanes = 3u * (size_t)(a->off_dist - a->off_split);
     a->stride = a->off_lanes + lanes;
 }
 

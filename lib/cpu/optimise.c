@@ -54,7 +54,8 @@
 typedef struct opt_worker {
     atrbvh_trbvh_scratch trbvh; /* 2^n entries each (TRBVH)             */
     /* TRBVH in lanes (walk_lanes): lane[0] = trbvh, lanes 1..3 their
-     * own; 8 * 2^n doubles of interleaved costs; a frontier
+     * splits; the four lanes' interleaved tables (pack,
+     * ATRBVH_TRBVH_QUAD_DOUBLES * 2^n doubles); a frontier
      * subtree's crown nodes in post-order (list), then by height */
     atrbvh_trbvh_scratch lane[4];
     double *pack;
@@ -648,9 +649,8 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     unsigned char *block;
     size_t subsets = 0, pairs = 0, stride = 0, off_cost, off_count,
            off_split, off_dist, off_list, total, marks = 0, cap;
-    /* In lanes (walk_lanes), TRBVH: lanes 1 .. 3's scratch from
-     * lane1 (lane_size bytes each, the first's), the interleaved costs at
-     * off_pack, the two lists of pcap entries at off_lists; hgt: the
+    /* In lanes (walk_lanes), TRBVH: lanes 1 .. 3's splits from lane1
+     * (lane_size bytes each), the interleaved tables at off_pack, the two lists of pcap entries at off_lists; hgt: the
      * heights */
     size_t lane_size = 0, lane1 = 0, off_pack = 0, off_lists = 0, pcap = 0,
            hgt = 0, off_dist4 = 0;
@@ -718,13 +718,16 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         }
         most *= FRONTIER_CHUNK; /* (at most 2^32 before: no overflow) */
         pcap = most < ((uint64_t)1 << 20) ? (size_t)most : (size_t)1 << 20;
-        /* TRBVH: the four lanes' scratch and their interleaved costs
+        /* TRBVH: lanes 1 .. 3's splits (the rest of their tables is in
+         * the interleaved ones) and the four lanes' interleaved tables
          * (atrbvh_trbvh_costs4 takes four lanes however many are used;
          * subsets is 0 for ATRBVH: nothing) */
-        lane_size = cfg->method == ATRBVH_METHOD_TRBVH ? off_dist : 0u;
+        lane_size =
+            cfg->method == ATRBVH_METHOD_TRBVH ? off_dist - off_split : 0u;
         lane1 = stride;
         off_pack = lane1 + 3u * lane_size;
-        off_dist4 = off_pack + ALIGN64(8u * subsets * sizeof(double));
+        off_dist4 = off_pack + ALIGN64(ATRBVH_TRBVH_QUAD_DOUBLES * subsets *
+                                         sizeof(double));
         off_lists = off_dist4;
 #ifdef ATRBVH_AGG_QUADS
         /* ATRBVH: the agglomerations in AVX's lanes too, their four
@@ -795,10 +798,10 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
         workers[k].lane[0] = workers[k].trbvh;
         for (l = 1; lane_size > 0u && l < 4u; l++) {
             unsigned char *at = base + lane1 + (l - 1u) * lane_size;
-            workers[k].lane[l].box = (float *)(void *)at;
-            workers[k].lane[l].cost = (double *)(void *)(at + off_cost);
-            workers[k].lane[l].count = (uint32_t *)(void *)(at + off_count);
-            workers[k].lane[l].split = (uint32_t *)(void *)(at + off_split);
+            workers[k].lane[l].box = NULL;
+            workers[k].lane[l].cost = NULL;
+            workers[k].lane[l].count = NULL;
+            workers[k].lane[l].split = (uint32_t *)(void *)at;
         }
         if (lane_size > 0u)
             workers[k].pack = (double *)(void *)(base + off_pack);

@@ -105,9 +105,10 @@ typedef struct atrbvh_kargs_optimise {
     atrbvh_u64 off_dist;
     atrbvh_u64 off_dist4; /* opt_round4: ATRBVH's four interleaved
                              matrices (atrbvh_agglomerate4), TRBVH's
-                             interleaved costs (atrbvh_trbvh_costs4)     */
-    atrbvh_u64 off_lanes; /* opt_round4, TRBVH: lanes 1-3's tables, each
-                             off_dist bytes (lane 0's at 0)               */
+                             interleaved tables (atrbvh_trbvh_costs4)    */
+    atrbvh_u64 off_lanes; /* opt_round4, TRBVH: lanes 1-3's splits, each
+                             off_dist - off_split bytes (lane 0's at
+                             off_split)                                   */
     atrbvh_u32 collapse;
     atrbvh_u32 max_leaf;
     atrbvh_u32 n_internal;

@@ -617,10 +617,10 @@ atrbvh_trbvh_costs(const atrbvh_cost_params *p, atrbvh_u32 n,
 
 /* Where atrbvh_trbvh_extract_from reads a finished DP: C(S) at
  * cost[stride * S], the mirror rev[full ^ X] = C(X) at rev_top[-stride *
- * X], A(S) at area[S] and N(S) at count[S]; it writes split[S].  The
- * scalar DP's layout (atrbvh_trbvh_tables_of: stride 1, the mirror and
- * the areas in the box planes) or one lane of the four-lane DP's
- * (atrbvh_trbvh_tables_lane). */
+ * X], A(S) at area[stride * S] and N(S) at count[stride * S]; it writes
+ * split[S].  The scalar DP's layout (atrbvh_trbvh_tables_of: stride 1,
+ * the mirror and the areas in the box planes) or one lane of the
+ * four-lane DP's (atrbvh_trbvh_tables_lane: stride 4). */
 typedef struct atrbvh_trbvh_tables {
     ATRBVH_GLOBAL const double *cost, *rev_top, *area;
     ATRBVH_GLOBAL const atrbvh_u32 *count;
@@ -680,13 +680,14 @@ ATRBVH_FN void atrbvh_trbvh_extract_from(const atrbvh_cost_params *p,
             /* C(S) is the partitions' minimum unless the collapse term
              * (recomputed as the DP did) equals it: then the
              * partitions' minimum is unknown, scan them all. */
-            const double area = tab->area[S], base = p->ci * area;
+            const double area = tab->area[st * S], base = p->ci * area;
             const double target = tab->cost[st * S];
+            const atrbvh_u32 count = tab->count[st * S];
             ATRBVH_GLOBAL const double *rest = tab->rev_top - st * S;
             int whole = 0;
-            if (tab->count[S] <= lim) {
+            if (count <= lim) {
                 double flat = p->ct * area;
-                flat = flat * (double)tab->count[S];
+                flat = flat * (double)count;
                 whole = flat == target;
             }
             if (whole)
@@ -755,33 +756,44 @@ ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
  * per cost.  Fewer than four treelets fill the other lanes with the first
  * one's (results unused).
  *
- * The four cost tables are interleaved in `quad` (8 * 2^n doubles,
- * 32-byte aligned): C(S) of lane l at quad[4S + l], then the mirror
- * rev[full ^ X] = C(X) of the four lanes, as in atrbvh_trbvh_costs.  Each
- * lane's own scratch gets the subset boxes, areas and counts
- * (atrbvh_trbvh_subsets4, four subsets a step, in C and in OpenCL C);
+ * All four lanes' tables are interleaved in `quad`
+ * (ATRBVH_TRBVH_QUAD_DOUBLES * 2^n doubles, 32-byte aligned), entry S of
+ * lane l at 4S + l of each: C(S), then the mirror rev[full ^ X] = C(X) as
+ * in atrbvh_trbvh_costs, then A(S), then the six box planes (floats),
+ * then N(S) (u32).  So a subset's box, area and count are made for the
+ * four lanes at once, and its ci*A(S) and collapse term are vector words
+ * as its partitions' sums are (with each lane's tables apart, the
+ * per-subset gathers of four areas and four counts were a third of
+ * atrbvh_trbvh_costs4's samples, perf, TRBVH(7,3)).
  * atrbvh_trbvh_tables_lane names where a lane's tables are, for the
  * extraction of a kept treelet (atrbvh_trbvh_keep_from).  found[l] is
  * C(all leaves) of lane l. */
 
+/* atrbvh_trbvh_costs4's tables take this many doubles a subset (2^n
+ * subsets): 4 costs, 4 mirror entries, 4 areas, 24 box floats and 4
+ * counts. */
+#define ATRBVH_TRBVH_QUAD_DOUBLES 26u
+
 /* The tables of lane `lane` of atrbvh_trbvh_costs4 (n leaves), where
- * they are: C(S) and the mirror interleaved in `quad` (every fourth
- * entry), A(S) and N(S) in that lane's scratch s (the areas in its cost
- * array, which costs4 leaves as atrbvh_trbvh_subsets4 wrote it).  The
- * extraction reads about six subsets' partitions, so it reads them there:
- * a copy of a kept lane's 2^n - 1 costs, mirror entries and areas back to
- * the scalar layout was 8.6% of TRBVH(7)'s optimise-stage instructions
- * (callgrind, sibenik, one thread). */
+ * they are: every fourth entry of `quad`'s costs, mirror, areas and
+ * counts; the split in that lane's scratch s.  The extraction reads about
+ * six subsets' partitions, so it reads them there: a copy of a kept
+ * lane's 2^n - 1 costs, mirror entries and areas back to the scalar
+ * layout was 8.6% of TRBVH(7)'s optimise-stage instructions (callgrind,
+ * sibenik, one thread). */
 ATRBVH_FN atrbvh_trbvh_tables
 atrbvh_trbvh_tables_lane(atrbvh_u32 n, ATRBVH_GLOBAL const double *quad,
                          atrbvh_u32 lane, atrbvh_trbvh_scratch s)
 {
-    const atrbvh_trbvh_mask full = ((atrbvh_trbvh_mask)1 << n) - 1u;
+    const atrbvh_trbvh_mask full = ((atrbvh_trbvh_mask)1 << n) - 1u,
+                            plane = (atrbvh_trbvh_mask)4 << n;
     atrbvh_trbvh_tables tab;
     tab.cost = quad + lane;
     tab.rev_top = quad + 4u * (((atrbvh_trbvh_mask)1 << n) + full) + lane;
-    tab.area = s.cost;
-    tab.count = s.count;
+    tab.area = quad + 2u * plane + lane;
+    tab.count = (ATRBVH_GLOBAL const atrbvh_u32 *)(ATRBVH_GLOBAL const void *)(
+                    quad + 6u * plane) +
+                lane;
     tab.split = s.split;
     tab.stride = 4u;
     return tab;
@@ -848,7 +860,9 @@ typedef uint4 atrbvh_v4u; /* four counts                          */
 #define atrbvh_v4_uload(p) vload4(0, (p))
 #define atrbvh_v4_ustore(p, v) vstore4((v), 0, (p))
 #define atrbvh_v4_uadd(a, b) ((a) + (b))
-#define atrbvh_v4_uset1(x) ((uint4)(x))
+#define atrbvh_v4_uset(a, b, c, d) ((uint4)((a), (b), (c), (d)))
+#define atrbvh_v4_ucvt(v) convert_double4(v)
+#define atrbvh_v4_le(a, b) ((a) <= (b))
 #else
 typedef __m128 atrbvh_v4f;
 typedef __m256d atrbvh_v4d;
@@ -883,7 +897,18 @@ typedef __m128i atrbvh_v4u;
 #define atrbvh_v4_uload(p) _mm_loadu_si128((const __m128i *)(const void *)(p))
 #define atrbvh_v4_ustore(p, v) _mm_storeu_si128((__m128i *)(void *)(p), (v))
 #define atrbvh_v4_uadd(a, b) _mm_add_epi32((a), (b))
-#define atrbvh_v4_uset1(x) _mm_set1_epi32((int)(x))
+#define atrbvh_v4_uset(a, b, c, d)                                           \
+    _mm_set_epi32((int)(d), (int)(c), (int)(b), (int)(a))
+#define atrbvh_v4_ucvt(v) atrbvh_ucvt4(v)
+#define atrbvh_v4_le(a, b) _mm256_cmp_pd((a), (b), _CMP_LE_OQ)
+/* Four u32 as exact doubles (AVX converts signed ones only): x - 2^31 as
+ * a signed integer, converted, plus 2^31, every step exact. */
+ATRBVH_V4_FN atrbvh_v4d atrbvh_ucvt4(atrbvh_v4u v)
+{
+    return _mm256_add_pd(
+        _mm256_cvtepi32_pd(_mm_xor_si128(v, _mm_set1_epi32(-2147483647 - 1))),
+        _mm256_set1_pd(2147483648.0));
+}
 #endif
 
 /* atrbvh_box_area of four lanes' boxes, given by coordinate: its double
@@ -902,61 +927,6 @@ ATRBVH_V4_FN atrbvh_v4d atrbvh_area4(atrbvh_v4f x0, atrbvh_v4f y0,
     t = atrbvh_v4_add(t, atrbvh_v4_mul(dy, dz));
     t = atrbvh_v4_add(t, atrbvh_v4_mul(dz, dx));
     return atrbvh_v4_mul(atrbvh_v4_set1(2.0), t);
-}
-
-/* atrbvh_trbvh_subsets four subsets a step (bit >= 4; below, the scalar
- * rule): the unions rest first (atrbvh_v4_fmin, fmax: a < b ? a : b and
- * a > b ? a : b lane for lane), each area atrbvh_box_area's double
- * operations in its order, the counts added, so every entry has the
- * scalar loop's bits.  One lane's subsets of atrbvh_trbvh_costs4, on the
- * CPU (where an AVX version eight at a time was as fast) and in the
- * opt_round4 kernel (whose TRBVH(7,3) time went from 1.13-1.27x the
- * CPU's optimise stage with the scalar loop to 0.88-1.07x:
- * docs/opencl.md); the planes are 16-byte aligned there (bit and r
- * multiples of 4).  The six planes are named one by one: with
- * arrays of six the CPU's TRBVH(7,3) optimise stage took 25% longer. */
-ATRBVH_V4_FN void atrbvh_trbvh_subsets4(atrbvh_u32 n, atrbvh_u32 k,
-                                        const atrbvh_treelet_leaves *lv,
-                                        atrbvh_trbvh_scratch s)
-{
-    const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k,
-                            plane = (atrbvh_trbvh_mask)1 << n;
-    ATRBVH_GLOBAL float *c0 = s.box, *c1 = c0 + plane, *c2 = c1 + plane,
-                        *c3 = c2 + plane, *c4 = c3 + plane, *c5 = c4 + plane;
-    const atrbvh_box b = lv->box[k];
-    atrbvh_v4f q0, q1, q2, q3, q4, q5;
-    atrbvh_v4u qn;
-    atrbvh_trbvh_mask r;
-    if (bit < 4u) {
-        atrbvh_trbvh_subsets(n, k, lv, s);
-        return;
-    }
-    atrbvh_trbvh_subset_leaf(plane, b, s);
-    q0 = atrbvh_v4_fset1(b.min[0]);
-    q1 = atrbvh_v4_fset1(b.min[1]);
-    q2 = atrbvh_v4_fset1(b.min[2]);
-    q3 = atrbvh_v4_fset1(b.max[0]);
-    q4 = atrbvh_v4_fset1(b.max[1]);
-    q5 = atrbvh_v4_fset1(b.max[2]);
-    qn = atrbvh_v4_uset1(lv->count[k]);
-    for (r = 0; r < bit; r += 4u) {
-        const atrbvh_v4f x0 = atrbvh_v4_fmin(atrbvh_v4_fload(c0 + r), q0),
-                         y0 = atrbvh_v4_fmin(atrbvh_v4_fload(c1 + r), q1),
-                         z0 = atrbvh_v4_fmin(atrbvh_v4_fload(c2 + r), q2),
-                         x1 = atrbvh_v4_fmax(atrbvh_v4_fload(c3 + r), q3),
-                         y1 = atrbvh_v4_fmax(atrbvh_v4_fload(c4 + r), q4),
-                         z1 = atrbvh_v4_fmax(atrbvh_v4_fload(c5 + r), q5);
-        atrbvh_v4_fstore(c0 + bit + r, x0);
-        atrbvh_v4_fstore(c1 + bit + r, y0);
-        atrbvh_v4_fstore(c2 + bit + r, z0);
-        atrbvh_v4_fstore(c3 + bit + r, x1);
-        atrbvh_v4_fstore(c4 + bit + r, y1);
-        atrbvh_v4_fstore(c5 + bit + r, z1);
-        atrbvh_v4_storeu(s.cost + bit + r,
-                         atrbvh_area4(x0, y0, z0, x1, y1, z1));
-        atrbvh_v4_ustore(s.count + bit + r,
-                         atrbvh_v4_uadd(atrbvh_v4_uload(s.count + r), qn));
-    }
 }
 
 /* atrbvh_trbvh_min on the four lanes (its enumeration, two running minima
@@ -989,58 +959,97 @@ ATRBVH_V4_FN atrbvh_v4d atrbvh_trbvh_min4(ATRBVH_GLOBAL const double *cost,
 }
 
 
+/* atrbvh_trbvh_costs on four lanes, their tables interleaved in quad
+ * (above).  Subset S = bit | r (bit = 2^k its highest leaf, 0 < r < bit)
+ * is made where the scalar code makes it, then costed at once: its box
+ * union(box(r), box of leaf k), rest first (atrbvh_v4_fmin, fmax: a < b ?
+ * a : b and a > b ? a : b lane for lane), its area atrbvh_box_area's
+ * double operations in their order (atrbvh_area4), N(S) = N(r) + N(leaf
+ * k); every subset of S is smaller than S, so already costed.  The six
+ * planes are named one by one (with arrays of six, the earlier per-lane
+ * subset loop made the CPU's TRBVH(7,3) optimise stage 25% slower). */
 ATRBVH_V4_MAIN void
 atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
                     const atrbvh_treelet_leaves *const lv[4],
-                    const atrbvh_trbvh_scratch s[4], ATRBVH_GLOBAL double *quad,
-                    double found[4])
+                    ATRBVH_GLOBAL double *quad, double found[4])
 {
     const atrbvh_u32 full = (1u << n) - 1u;
     const atrbvh_u32 lim = !p->collapse          ? 0u
                            : p->max_leaf == 0u ? ATRBVH_U32_MAX
                                                : p->max_leaf;
-    const atrbvh_v4d ci = atrbvh_v4_set1(p->ci),
-                        ct = atrbvh_v4_set1(p->ct);
+    const atrbvh_trbvh_mask plane = (atrbvh_trbvh_mask)4 << n;
+    const atrbvh_v4d ci = atrbvh_v4_set1(p->ci), ct = atrbvh_v4_set1(p->ct),
+                     limit = atrbvh_v4_set1((double)lim);
     ATRBVH_GLOBAL double *rev_top =
         quad + 4u * (((atrbvh_trbvh_mask)1 << n) + full);
+    ATRBVH_GLOBAL double *area = quad + 2u * plane;
+    ATRBVH_GLOBAL float *c0 =
+        (ATRBVH_GLOBAL float *)(ATRBVH_GLOBAL void *)(quad + 3u * plane);
+    ATRBVH_GLOBAL float *c1 = c0 + plane, *c2 = c1 + plane, *c3 = c2 + plane,
+                        *c4 = c3 + plane, *c5 = c4 + plane;
+    ATRBVH_GLOBAL atrbvh_u32 *count =
+        (ATRBVH_GLOBAL atrbvh_u32 *)(ATRBVH_GLOBAL void *)(quad + 6u * plane);
     atrbvh_u32 k, l;
 
-    for (k = 0; k < n; k++)
-        for (l = 0; l < 4u; l++)
-            atrbvh_trbvh_subsets4(n, k, lv[l], s[l]);
     for (k = 0; k < n; k++) {
         const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k;
         const atrbvh_v4d leaf =
             atrbvh_v4_set(lv[0]->cost[k], lv[1]->cost[k], lv[2]->cost[k],
-                            lv[3]->cost[k]);
+                          lv[3]->cost[k]);
+        const atrbvh_box *const b0 = &lv[0]->box[k], *const b1 = &lv[1]->box[k],
+                         *const b2 = &lv[2]->box[k], *const b3 = &lv[3]->box[k];
+        const atrbvh_v4f
+            q0 = atrbvh_v4_fset(b0->min[0], b1->min[0], b2->min[0], b3->min[0]),
+            q1 = atrbvh_v4_fset(b0->min[1], b1->min[1], b2->min[1], b3->min[1]),
+            q2 = atrbvh_v4_fset(b0->min[2], b1->min[2], b2->min[2], b3->min[2]),
+            q3 = atrbvh_v4_fset(b0->max[0], b1->max[0], b2->max[0], b3->max[0]),
+            q4 = atrbvh_v4_fset(b0->max[1], b1->max[1], b2->max[1], b3->max[1]),
+            q5 = atrbvh_v4_fset(b0->max[2], b1->max[2], b2->max[2], b3->max[2]);
+        const atrbvh_v4u qn =
+            atrbvh_v4_uset(lv[0]->count[k], lv[1]->count[k], lv[2]->count[k],
+                           lv[3]->count[k]);
         atrbvh_trbvh_mask S;
         atrbvh_v4_store(quad + 4u * bit, leaf);
         atrbvh_v4_store(rev_top - 4u * bit, leaf);
+        atrbvh_v4_fstore(c0 + 4u * bit, q0);
+        atrbvh_v4_fstore(c1 + 4u * bit, q1);
+        atrbvh_v4_fstore(c2 + 4u * bit, q2);
+        atrbvh_v4_fstore(c3 + 4u * bit, q3);
+        atrbvh_v4_fstore(c4 + 4u * bit, q4);
+        atrbvh_v4_fstore(c5 + 4u * bit, q5);
+        atrbvh_v4_ustore(count + 4u * bit, qn);
         for (S = bit + 1u; S < bit + bit; S++) {
-            const atrbvh_v4d area =
-                atrbvh_v4_set(s[0].cost[S], s[1].cost[S], s[2].cost[S],
-                                s[3].cost[S]);
-            const atrbvh_v4d base = atrbvh_v4_mul(ci, area);
-            ATRBVH_GLOBAL double *rest = rev_top - 4u * S;
-            atrbvh_v4d best = atrbvh_trbvh_min4(quad, rest, S, base);
-            const atrbvh_u32 n0 = s[0].count[S], n1 = s[1].count[S],
-                             n2 = s[2].count[S], n3 = s[3].count[S];
-            {
-                /* flat < best ? flat : best in the lanes that may
-                 * collapse, best in the others; computed for every
-                 * subset: the test whether any lane may collapse was a
-                 * branch that callgrind's simulation mispredicted at
-                 * about one subset in three */
-                const atrbvh_v4m take = atrbvh_v4_mask(
-                    n0 <= lim, n1 <= lim, n2 <= lim, n3 <= lim);
-                atrbvh_v4d flat = atrbvh_v4_mul(ct, area);
-                flat = atrbvh_v4_mul(
-                    flat, atrbvh_v4_set((double)n0, (double)n1, (double)n2,
-                                          (double)n3));
-                flat = atrbvh_v4_min(flat, best);
-                best = atrbvh_v4_select(best, flat, take);
-            }
-            atrbvh_v4_store(quad + 4u * S, best);
+            const atrbvh_trbvh_mask r4 = 4u * (S - bit), s4 = 4u * S;
+            const atrbvh_v4f x0 = atrbvh_v4_fmin(atrbvh_v4_fload(c0 + r4), q0),
+                             y0 = atrbvh_v4_fmin(atrbvh_v4_fload(c1 + r4), q1),
+                             z0 = atrbvh_v4_fmin(atrbvh_v4_fload(c2 + r4), q2),
+                             x1 = atrbvh_v4_fmax(atrbvh_v4_fload(c3 + r4), q3),
+                             y1 = atrbvh_v4_fmax(atrbvh_v4_fload(c4 + r4), q4),
+                             z1 = atrbvh_v4_fmax(atrbvh_v4_fload(c5 + r4), q5);
+            const atrbvh_v4d a = atrbvh_area4(x0, y0, z0, x1, y1, z1);
+            const atrbvh_v4u m = atrbvh_v4_uadd(atrbvh_v4_uload(count + r4), qn);
+            const atrbvh_v4d nd = atrbvh_v4_ucvt(m);
+            ATRBVH_GLOBAL double *rest = rev_top - s4;
+            atrbvh_v4d best =
+                atrbvh_trbvh_min4(quad, rest, S, atrbvh_v4_mul(ci, a));
+            atrbvh_v4d flat;
+            atrbvh_v4_fstore(c0 + s4, x0);
+            atrbvh_v4_fstore(c1 + s4, y0);
+            atrbvh_v4_fstore(c2 + s4, z0);
+            atrbvh_v4_fstore(c3 + s4, x1);
+            atrbvh_v4_fstore(c4 + s4, y1);
+            atrbvh_v4_fstore(c5 + s4, z1);
+            atrbvh_v4_store(area + s4, a);
+            atrbvh_v4_ustore(count + s4, m);
+            /* flat < best ? flat : best in the lanes that may collapse
+             * (N(S) <= lim, compared as doubles: exact), best in the
+             * others; computed for every subset, with no branch (the test
+             * whether any lane may collapse was mispredicted at about one
+             * subset in three, callgrind) */
+            flat = atrbvh_v4_mul(atrbvh_v4_mul(ct, a), nd);
+            flat = atrbvh_v4_min(flat, best);
+            best = atrbvh_v4_select(best, flat, atrbvh_v4_le(nd, limit));
+            atrbvh_v4_store(quad + s4, best);
             atrbvh_v4_store(rest, best); /* rev[full ^ S] */
         }
     }
@@ -1960,8 +1969,8 @@ ATRBVH_FN int atrbvh_treelet_finish(const atrbvh_treelet_tree *t,
  * atrbvh_trbvh_tables_lane), any other one by one by the scalar DP (one
  * of fewer than n leaves is not a crown node's, which holds at least n
  * primitives: kept for safety).  s: the four lanes' scratch (the scalar
- * DP takes s[0]); quad: 8 * 2^n doubles; lv: four leaves' records.  The
- * CPU's walk_lanes (lib/cpu/optimise.c, with AVX) and the opt_round4
+ * DP takes s[0]); quad: ATRBVH_TRBVH_QUAD_DOUBLES * 2^n doubles; lv:
+ * four leaves' records.  The CPU's walk_lanes (lib/cpu/optimise.c, with AVX) and the opt_round4
  * kernel call this. */
 ATRBVH_FN void atrbvh_trbvh_ready(const atrbvh_treelet_tree *t,
                                   const atrbvh_cost_params *p, atrbvh_u32 n,
@@ -2001,7 +2010,7 @@ ATRBVH_FN void atrbvh_trbvh_ready(const atrbvh_treelet_tree *t,
         double found[4];
         for (l = 0; l < 4u; l++)
             in[l] = &lv[l < full ? l : 0u];
-        atrbvh_trbvh_costs4(p, n, in, s, quad, found);
+        atrbvh_trbvh_costs4(p, n, in, quad, found);
         for (l = 0; l < full; l++) {
             const atrbvh_u32 k = sel[l];
             const atrbvh_trbvh_tables tab =
