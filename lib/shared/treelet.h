@@ -620,12 +620,14 @@ atrbvh_trbvh_costs(const atrbvh_cost_params *p, atrbvh_u32 n,
  * X], A(S) at area[stride * S] and N(S) at count[stride * S]; it writes
  * split[S].  The scalar DP's layout (atrbvh_trbvh_tables_of: stride 1,
  * the mirror and the areas in the box planes) or one lane of the
- * four-lane DP's (atrbvh_trbvh_tables_lane: stride 4). */
+ * four-lane DP's (atrbvh_trbvh_tables_lane: stride 4, and the split of
+ * all leaves, which that DP finds as it goes, in top). */
 typedef struct atrbvh_trbvh_tables {
     ATRBVH_GLOBAL const double *cost, *rev_top, *area;
     ATRBVH_GLOBAL const atrbvh_u32 *count;
     ATRBVH_GLOBAL atrbvh_u32 *split;
     atrbvh_trbvh_mask stride;
+    atrbvh_u32 top; /* the split of all leaves when the DP kept it, or 0 */
 } atrbvh_trbvh_tables;
 
 /* The tables atrbvh_trbvh_costs leaves in s (n leaves). */
@@ -642,6 +644,7 @@ ATRBVH_FN atrbvh_trbvh_tables atrbvh_trbvh_tables_of(atrbvh_u32 n,
     tab.count = s.count;
     tab.split = s.split;
     tab.stride = 1u;
+    tab.top = 0u;
     return tab;
 }
 
@@ -676,7 +679,9 @@ ATRBVH_FN void atrbvh_trbvh_extract_from(const atrbvh_cost_params *p,
         sp--;
         S = stack_mask[sp];
         node = stack_node[sp];
-        {
+        if (S == full && tab->top != 0u) {
+            bp = tab->top;
+        } else {
             /* C(S) is the partitions' minimum unless the collapse term
              * (recomputed as the DP did) equals it: then the
              * partitions' minimum is unknown, scan them all. */
@@ -767,7 +772,7 @@ ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
  * atrbvh_trbvh_costs4's samples, perf, TRBVH(7,3)).
  * atrbvh_trbvh_tables_lane names where a lane's tables are, for the
  * extraction of a kept treelet (atrbvh_trbvh_keep_from).  found[l] is
- * C(all leaves) of lane l. */
+ * C(all leaves) of lane l, top[l] its split (atrbvh_trbvh_argmin4). */
 
 /* atrbvh_trbvh_costs4's tables take this many doubles a subset (2^n
  * subsets): 4 costs, 4 mirror entries, 4 areas, 24 box floats and 4
@@ -776,14 +781,16 @@ ATRBVH_FN double atrbvh_trbvh_dp(const atrbvh_cost_params *p, atrbvh_u32 n,
 
 /* The tables of lane `lane` of atrbvh_trbvh_costs4 (n leaves), where
  * they are: every fourth entry of `quad`'s costs, mirror, areas and
- * counts; the split in that lane's scratch s.  The extraction reads about
+ * counts; the split of all leaves `top`, the other splits in that lane's
+ * scratch s.  The extraction reads about
  * six subsets' partitions, so it reads them there: a copy of a kept
  * lane's 2^n - 1 costs, mirror entries and areas back to the scalar
  * layout was 8.6% of TRBVH(7)'s optimise-stage instructions (callgrind,
  * sibenik, one thread). */
 ATRBVH_FN atrbvh_trbvh_tables
 atrbvh_trbvh_tables_lane(atrbvh_u32 n, ATRBVH_GLOBAL const double *quad,
-                         atrbvh_u32 lane, atrbvh_trbvh_scratch s)
+                         atrbvh_u32 lane, atrbvh_u32 top,
+                         atrbvh_trbvh_scratch s)
 {
     const atrbvh_trbvh_mask full = ((atrbvh_trbvh_mask)1 << n) - 1u,
                             plane = (atrbvh_trbvh_mask)4 << n;
@@ -796,6 +803,7 @@ atrbvh_trbvh_tables_lane(atrbvh_u32 n, ATRBVH_GLOBAL const double *quad,
                 lane;
     tab.split = s.split;
     tab.stride = 4u;
+    tab.top = top;
     return tab;
 }
 
@@ -850,6 +858,8 @@ typedef long4 atrbvh_v4m;   /* a comparison's lanes: all ones or 0  */
 #define atrbvh_v4_lt(a, b) ((a) < (b))
 #define atrbvh_v4_eq(a, b) ((a) == (b))
 #define atrbvh_v4_select(a, b, m) select((a), (b), (m))
+#define atrbvh_v4_mor(a, b) ((a) | (b))
+#define atrbvh_v4_mand(a, b) ((a) & (b))
 #define atrbvh_v4_mask(a, b, c, d)                                           \
     ((long4)(-(long)(a), -(long)(b), -(long)(c), -(long)(d)))
 #define atrbvh_v4_load(p) vload4(0, (p))
@@ -886,6 +896,8 @@ typedef __m256d atrbvh_v4m;
 #define atrbvh_v4_lt(a, b) _mm256_cmp_pd((a), (b), _CMP_LT_OQ)
 #define atrbvh_v4_eq(a, b) _mm256_cmp_pd((a), (b), _CMP_EQ_OQ)
 #define atrbvh_v4_select(a, b, m) atrbvh_select4((a), (b), (m))
+#define atrbvh_v4_mor(a, b) _mm256_or_pd((a), (b))
+#define atrbvh_v4_mand(a, b) _mm256_and_pd((a), (b))
 #define atrbvh_v4_mask(a, b, c, d)                                           \
     _mm256_castsi256_pd(_mm256_set_epi64x(-(long long)(d), -(long long)(c),  \
                                           -(long long)(b), -(long long)(a)))
@@ -959,6 +971,49 @@ ATRBVH_V4_FN atrbvh_v4d atrbvh_trbvh_min4(ATRBVH_GLOBAL const double *cost,
 }
 
 
+/* atrbvh_trbvh_min4 with its argument: the same value, and in *arg each
+ * lane's split as atrbvh_trbvh_best finds it, the first among equal
+ * minima in the enumeration order, which is increasing P (each running
+ * minimum moves on strict <; at the join the lower value, or on equal
+ * values the smaller P).  The splits as doubles (exact), so that the
+ * selects are the cost's.  For the subset of all leaves, whose split a
+ * kept treelet's extraction would otherwise find again by a scalar scan
+ * of 2^(n-1) - 1 partitions. */
+ATRBVH_V4_FN atrbvh_v4d atrbvh_trbvh_argmin4(ATRBVH_GLOBAL const double *cost,
+                                             ATRBVH_GLOBAL const double *rest,
+                                             atrbvh_trbvh_mask S,
+                                             atrbvh_v4d base, atrbvh_v4d *arg)
+{
+    const atrbvh_trbvh_mask delta = (S - 1u) & S;
+    const atrbvh_trbvh_mask lb = delta & (0u - delta);
+    const atrbvh_trbvh_mask l4 = lb << 2, d2 = (delta ^ lb) << 2;
+    ATRBVH_GLOBAL const double *cost_lb = cost + l4, *rest_lb = rest + l4;
+    atrbvh_trbvh_mask E;
+    atrbvh_v4d lo0 = atrbvh_v4_add(base, atrbvh_v4_load(cost + l4)), lo1,
+               p0 = atrbvh_v4_set1((double)lb), p1 = p0;
+    atrbvh_v4m m;
+    lo0 = atrbvh_v4_add(lo0, atrbvh_v4_load(rest + l4));
+    lo1 = lo0;
+    for (E = d2 & (0u - d2); E; E = (E - d2) & d2) {
+        const double e = (double)(E >> 2);
+        atrbvh_v4d c = atrbvh_v4_add(base, atrbvh_v4_load(cost + E));
+        c = atrbvh_v4_add(c, atrbvh_v4_load(rest + E));
+        m = atrbvh_v4_lt(c, lo0);
+        lo0 = atrbvh_v4_select(lo0, c, m);
+        p0 = atrbvh_v4_select(p0, atrbvh_v4_set1(e), m);
+        c = atrbvh_v4_add(base, atrbvh_v4_load(cost_lb + E));
+        c = atrbvh_v4_add(c, atrbvh_v4_load(rest_lb + E));
+        m = atrbvh_v4_lt(c, lo1);
+        lo1 = atrbvh_v4_select(lo1, c, m);
+        p1 = atrbvh_v4_select(p1, atrbvh_v4_set1(e + (double)lb), m);
+    }
+    m = atrbvh_v4_mor(atrbvh_v4_lt(lo1, lo0),
+                      atrbvh_v4_mand(atrbvh_v4_eq(lo1, lo0),
+                                     atrbvh_v4_lt(p1, p0)));
+    *arg = atrbvh_v4_select(p0, p1, m);
+    return atrbvh_v4_min(lo0, lo1);
+}
+
 /* atrbvh_trbvh_costs on four lanes, their tables interleaved in quad
  * (above).  Subset S = bit | r (bit = 2^k its highest leaf, 0 < r < bit)
  * is made where the scalar code makes it, then costed at once: its box
@@ -971,7 +1026,8 @@ ATRBVH_V4_FN atrbvh_v4d atrbvh_trbvh_min4(ATRBVH_GLOBAL const double *cost,
 ATRBVH_V4_MAIN void
 atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
                     const atrbvh_treelet_leaves *const lv[4],
-                    ATRBVH_GLOBAL double *quad, double found[4])
+                    ATRBVH_GLOBAL double *quad, double found[4],
+                    atrbvh_u32 top[4])
 {
     const atrbvh_u32 full = (1u << n) - 1u;
     const atrbvh_u32 lim = !p->collapse          ? 0u
@@ -989,6 +1045,8 @@ atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
                         *c4 = c3 + plane, *c5 = c4 + plane;
     ATRBVH_GLOBAL atrbvh_u32 *count =
         (ATRBVH_GLOBAL atrbvh_u32 *)(ATRBVH_GLOBAL void *)(quad + 6u * plane);
+    atrbvh_v4d arg = atrbvh_v4_set1(0.0);
+    double split[4];
     atrbvh_u32 k, l;
 
     for (k = 0; k < n; k++) {
@@ -1030,9 +1088,12 @@ atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
             const atrbvh_v4u m = atrbvh_v4_uadd(atrbvh_v4_uload(count + r4), qn);
             const atrbvh_v4d nd = atrbvh_v4_ucvt(m);
             ATRBVH_GLOBAL double *rest = rev_top - s4;
-            atrbvh_v4d best =
-                atrbvh_trbvh_min4(quad, rest, S, atrbvh_v4_mul(ci, a));
-            atrbvh_v4d flat;
+            atrbvh_v4d best, flat;
+            if (S != full)
+                best = atrbvh_trbvh_min4(quad, rest, S, atrbvh_v4_mul(ci, a));
+            else
+                best = atrbvh_trbvh_argmin4(quad, rest, S,
+                                            atrbvh_v4_mul(ci, a), &arg);
             atrbvh_v4_fstore(c0 + s4, x0);
             atrbvh_v4_fstore(c1 + s4, y0);
             atrbvh_v4_fstore(c2 + s4, z0);
@@ -1053,8 +1114,11 @@ atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
             atrbvh_v4_store(rest, best); /* rev[full ^ S] */
         }
     }
-    for (l = 0; l < 4u; l++)
+    atrbvh_v4_storeu(split, arg);
+    for (l = 0; l < 4u; l++) {
         found[l] = quad[4u * full + l];
+        top[l] = (atrbvh_u32)split[l];
+    }
 }
 #endif
 
@@ -2008,13 +2072,14 @@ ATRBVH_FN void atrbvh_trbvh_ready(const atrbvh_treelet_tree *t,
     if (full > 1u) {
         const atrbvh_treelet_leaves *in[4];
         double found[4];
+        atrbvh_u32 top[4];
         for (l = 0; l < 4u; l++)
             in[l] = &lv[l < full ? l : 0u];
-        atrbvh_trbvh_costs4(p, n, in, quad, found);
+        atrbvh_trbvh_costs4(p, n, in, quad, found, top);
         for (l = 0; l < full; l++) {
             const atrbvh_u32 k = sel[l];
             const atrbvh_trbvh_tables tab =
-                atrbvh_trbvh_tables_lane(n, quad, l, s[l]);
+                atrbvh_trbvh_tables_lane(n, quad, l, top[l], s[l]);
             applied[k] = atrbvh_trbvh_keep_from(t, p, root[k], &tl[k], &lv[l],
                                                 &tab, found[l]);
         }
