@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [57.7689243:531.466481]
-set xtics (100, 200, 500)
+set xrange [33.1574738:325.605804]
+set xtics (50, 100, 200)
 set yrange [55.0033068:80.2279756]
 unset label
-set label 'LBVH' at 72.0441854,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 167.387839,63.4134707 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 134.219717,61.8432221 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 188.271408,62.4957033 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 159.236014,60.8121596 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 216.692545,59.8198288 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 341.407653,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 238.235156,61.3999933 left font ',8' noenhanced front
-set label 'embree_low' at 93.0118834,77.248684 left font ',8' noenhanced front
-set label 'embree_medium' at 275.243478,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 207.818259,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 58.9662306,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 234.248319,62.7480062 left font ',8' noenhanced front
+set label 'LBVH' at 35.9417721,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 95.2516606,63.4134707 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 77.3163592,61.8432221 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 110.093084,62.4957033 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 98.3143981,60.8121596 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 132.673081,59.8198288 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 199.240099,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 151.625578,61.3999933 left font ',8' noenhanced front
+set label 'embree_low' at 73.7677972,77.248684 left font ',8' noenhanced front
+set label 'embree_medium' at 206.461921,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 152.134513,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 45.2819783,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 141.88386,62.7480062 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

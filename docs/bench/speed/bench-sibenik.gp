@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [4.79330482:61.6189943]
-set xtics (5, 10, 20, 50)
+set xrange [2.72742849:35.4868043]
+set xtics (5, 10, 20)
 set yrange [48.0282344:83.2612717]
 unset label
-set label 'LBVH' at 6.60485241,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 13.9067387,56.2198439 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 10.8056885,53.8367768 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 16.9666394,54.157298 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 13.6923642,52.0780864 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 27.7645541,50.7535261 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 37.0284779,52.3325777 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 17.2818072,50.4560301 left font ',8' noenhanced front
-set label 'embree_low' at 9.12010339,79.0998893 left font ',8' noenhanced front
-set label 'embree_medium' at 26.6312223,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 22.9468374,55.827539 left font ',8' noenhanced front
-set label 'LBVH/cl' at 4.90780446,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 20.7256921,52.9793966 left font ',8' noenhanced front
+set label 'LBVH' at 3.4923401,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 8.12436315,56.2198439 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 7.43163852,53.8367768 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 10.9652162,55.0586082 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 7.60638048,52.0780864 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 15.8812436,50.7535261 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 21.2737651,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 9.61708536,50.4560301 left font ',8' noenhanced front
+set label 'embree_low' at 5.85832414,79.0998893 left font ',8' noenhanced front
+set label 'embree_medium' at 12.488764,53.5332947 left font ',8' noenhanced front
+set label 'embree_high' at 17.7439598,54.6804169 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.12794828,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 9.72723903,51.8322745 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
