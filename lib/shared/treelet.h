@@ -707,9 +707,9 @@ ATRBVH_FN void atrbvh_trbvh_extract_from(const atrbvh_cost_params *p,
         for (side = 0; side < 2; side++) {
             atrbvh_u32 part = parts[side], code;
             if ((part & (part - 1u)) == 0u) {
-                code = 0;
-                while ((1u << code) != part)
-                    code++;
+                /* a leaf: the index of its bit (the loop that counted up
+                 * to it was mispredicted) */
+                code = (atrbvh_u32)(63 - ATRBVH_CLZ64(part));
             } else {
                 code = n + next;
                 stack_mask[sp] = part;
