@@ -1816,8 +1816,15 @@ ATRBVH_FN void atrbvh_treelet_write(const atrbvh_treelet_tree *t,
                                     const atrbvh_treelet_topo *topo)
 {
     atrbvh_u32 ids[ATRBVH_TREELET_MAX - 1];
-    atrbvh_u32 id_of[ATRBVH_TREELET_MAX - 1];
-    atrbvh_u32 n = tl->n, k, q;
+    /* the node of each local code: leaves 0 .. n-1, then the internal
+     * nodes (id_of), so that a child's node is one load, not a branch on
+     * whether the child is a leaf, which was mispredicted (cachegrind) */
+    atrbvh_u32 node_of[2u * ATRBVH_TREELET_MAX - 1u];
+    const atrbvh_u32 n = tl->n;
+    atrbvh_u32 *const id_of = node_of + n;
+    atrbvh_u32 k, q;
+    for (k = 0; k < n; k++)
+        node_of[k] = tl->leaf[k];
     /* internal[1..n-2] in ascending order: each id goes to its rank, the
      * number of smaller ones (the ids are distinct), counted without a
      * branch (an insertion sort's comparisons mispredicted: 40% of this
@@ -1835,8 +1842,7 @@ ATRBVH_FN void atrbvh_treelet_write(const atrbvh_treelet_tree *t,
     for (k = 0; k + 1u < n; k++) {
         atrbvh_u32 id = id_of[k];
         atrbvh_u32 l = topo->left[k], r = topo->right[k];
-        atrbvh_u32 lid = l < n ? tl->leaf[l] : id_of[l - n];
-        atrbvh_u32 rid = r < n ? tl->leaf[r] : id_of[r - n];
+        atrbvh_u32 lid = node_of[l], rid = node_of[r];
         t->left[id] = lid;
         t->right[id] = rid;
         t->parent[lid] = id;
