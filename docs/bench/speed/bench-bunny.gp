@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.57775709:26.3203744]
+set xrange [2.71618199:23.6656657]
 set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 3.22450537,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 7.30505808,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 5.7203199,39.0414315 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 8.31051726,39.3432138 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 6.78617314,38.4286758 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 9.31513375,38.1317351 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 14.6513596,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 11.246941,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 6.22390659,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 11.8464281,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 16.5600539,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 4.22768378,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 6.89663719,38.1169475 left font ',8' noenhanced front
+set label 'LBVH' at 3.34612735,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 7.32353939,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 5.8218804,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 8.35848676,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 6.93513935,38.4286758 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 9.41670716,38.1317351 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 14.2189839,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 10.2765471,38.8799201 left font ',8' noenhanced front
+set label 'embree_low' at 5.69846595,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 15.3447849,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 11.8052671,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 3.80021017,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 7.16926113,38.1169475 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [33.1574738:325.605804]
+set xrange [37.1726771:360.280654]
 set xtics (50, 100, 200)
 set yrange [55.0033068:80.2279756]
 unset label
-set label 'LBVH' at 35.9417721,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 95.2516606,63.4134707 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 77.3163592,61.8432221 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 110.093084,62.4957033 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 98.3143981,60.8121596 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 132.673081,59.8198288 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 199.240099,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 151.625578,61.3999933 left font ',8' noenhanced front
-set label 'embree_low' at 73.7677972,77.248684 left font ',8' noenhanced front
-set label 'embree_medium' at 206.461921,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 152.134513,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 45.2819783,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 141.88386,62.7480062 left font ',8' noenhanced front
+set label 'LBVH' at 46.2662485,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 116.058044,62.7681885 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 87.3575518,63.1337865 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 85.8349304,61.8504211 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 97.4421096,60.8121596 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 132.384311,59.8198288 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 210.586681,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 126.644223,61.5759794 left font ',8' noenhanced front
+set label 'embree_low' at 73.6367661,77.248684 left font ',8' noenhanced front
+set label 'embree_medium' at 229.046794,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 155.457399,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 55.1721649,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 192.326314,61.4574418 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
