@@ -650,8 +650,8 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     size_t subsets = 0, pairs = 0, stride = 0, off_cost, off_count,
            off_split, off_dist, off_list, total, marks = 0, cap;
     /* In lanes (walk_lanes), TRBVH: lanes 1 .. 3's splits from lane1
-     * (lane_size bytes each), the interleaved tables at off_pack, the two lists of pcap entries at off_lists; hgt: the
-     * heights */
+     * (lane_size bytes each), the interleaved tables at off_pack, the
+     * two lists of pcap entries at off_lists; hgt: the heights */
     size_t lane_size = 0, lane1 = 0, off_pack = 0, off_lists = 0, pcap = 0,
            hgt = 0, off_dist4 = 0;
     uint32_t *list;

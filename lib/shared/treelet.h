@@ -1085,7 +1085,8 @@ atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
                              y1 = atrbvh_v4_fmax(atrbvh_v4_fload(c4 + r4), q4),
                              z1 = atrbvh_v4_fmax(atrbvh_v4_fload(c5 + r4), q5);
             const atrbvh_v4d a = atrbvh_area4(x0, y0, z0, x1, y1, z1);
-            const atrbvh_v4u m = atrbvh_v4_uadd(atrbvh_v4_uload(count + r4), qn);
+            const atrbvh_v4u m =
+                atrbvh_v4_uadd(atrbvh_v4_uload(count + r4), qn);
             const atrbvh_v4d nd = atrbvh_v4_ucvt(m);
             ATRBVH_GLOBAL double *rest = rev_top - s4;
             atrbvh_v4d best, flat;
@@ -2038,10 +2039,10 @@ ATRBVH_FN int atrbvh_treelet_finish(const atrbvh_treelet_tree *t,
  * left over, their results unused; the tables read in place,
  * atrbvh_trbvh_tables_lane), any other one by one by the scalar DP (one
  * of fewer than n leaves is not a crown node's, which holds at least n
- * primitives: kept for safety).  s: the four lanes' scratch (the scalar
- * DP takes s[0]); quad: ATRBVH_TRBVH_QUAD_DOUBLES * 2^n doubles; lv:
- * four leaves' records.  The CPU's walk_lanes (lib/cpu/optimise.c, with AVX) and the opt_round4
- * kernel call this. */
+ * primitives: kept for safety).  s: the four lanes' splits (the scalar
+ * DP takes s[0]'s whole tables); quad: ATRBVH_TRBVH_QUAD_DOUBLES * 2^n
+ * doubles; lv: four leaves' records.  The CPU's walk_lanes
+ * (lib/cpu/optimise.c, with AVX) and the opt_round4 kernel call this. */
 ATRBVH_FN void atrbvh_trbvh_ready(const atrbvh_treelet_tree *t,
                                   const atrbvh_cost_params *p, atrbvh_u32 n,
                                   atrbvh_u32 ready, const atrbvh_u32 *root,
