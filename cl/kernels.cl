@@ -494,11 +494,13 @@ typedef struct hier_entry {
 /* The tree the pass writes, and the build's constants. */
 typedef struct hier_tree {
     __global uint *left, *right, *parent, *count, *size;
+    __global uchar *flat;
     __global atrbvh_box *box;
     __global double *cost;
     long n;
     atrbvh_cost_params p;
-    uint sizes; /* an LBVH: the collapse sizes too */
+    uint sizes; /* 1 (an LBVH): the collapse sizes too; 2 (a tree to
+                   optimise): the collapse decisions (flat) */
 } hier_tree;
 
 /* Leaf position i as a finished subtree, its box b (its primitive's)
@@ -514,8 +516,10 @@ static HIER_INLINE void hier_leaf(const hier_tree *t, long i, atrbvh_box b,
      * be loaded again) */
     t->count[id] = 1u;
     t->cost[id] = co;
-    if (t->sizes)
+    if (t->sizes == 1u)
         t->size[id] = size;
+    else if (t->sizes == 2u)
+        t->flat[id] = 1; /* (a leaf: one output leaf) */
     out->box = b;
     out->cost = co;
     out->node = id;
@@ -536,8 +540,10 @@ static HIER_INLINE void hier_store(const hier_tree *t, uint id, uint lc,
     t->parent[rc] = id;
     t->box[id] = b;
     t->cost[id] = co;
-    if (t->sizes)
+    if (t->sizes == 1u)
         t->size[id] = size;
+    else if (t->sizes == 2u) /* (the size's flag: the cost's choice) */
+        t->flat[id] = (uchar)(size >> 31);
     r->box = b;
     r->cost = co;
     r->size = size;
@@ -641,7 +647,8 @@ static HIER_INLINE void hier_merge(const hier_tree *t,
                 carry.node = in[2u * k + 1u];
                 carry.box = load_box_v(t->box, carry.node);
                 carry.cost = load_f64_v(t->cost, carry.node);
-                carry.size = t->sizes ? load_u32_v(t->size, carry.node) : 0u;
+                carry.size =
+                    t->sizes == 1u ? load_u32_v(t->size, carry.node) : 0u;
                 while (sp > 0u && st[sp - 1u].d > d) {
                     sp--;
                     if (sp > 0u)
@@ -682,8 +689,9 @@ static HIER_INLINE void hier_pass(
     __global uint *parent, __global uint *count, __global uint *leaf_prim,
     __global const uint *order, __global const uint *ids, __global uint *over,
     __global atrbvh_box *box, __global double *cost, __global uint *size,
-    __global const atrbvh_box *prim_boxes, __global uint *sync,
-    __global uint *status, uint blocks, atrbvh_kargs_tree a, uint sizes)
+    __global uchar *flat, __global const atrbvh_box *prim_boxes,
+    __global uint *sync, __global uint *status, uint blocks,
+    atrbvh_kargs_tree a, uint sizes)
 {
     uint b = (uint)get_global_id(0), sp = 0u, nout = 0u, k, bad = 0u;
     long lo, hi, s;
@@ -698,6 +706,7 @@ static HIER_INLINE void hier_pass(
     t.parent = parent;
     t.count = count;
     t.size = size;
+    t.flat = flat;
     t.box = box;
     t.cost = cost;
     t.n = (long)a.n;
@@ -757,19 +766,24 @@ __kernel void hierarchy(__global const ulong *keys, __global uint *left,
                         __global const uint *order, __global const uint *ids,
                         __global uint *over, __global atrbvh_box *box,
                         __global double *cost, __global uint *size,
+                        __global uchar *flat,
                         __global const atrbvh_box *prim_boxes,
                         __global uint *sync, __global uint *flag,
                         uint blocks, atrbvh_kargs_tree a)
 {
     /* flag[1]: the keys' order (hier_merge); flag[0] is the layout's */
-    if (a.sizes)
+    if (a.sizes == 1u)
         hier_pass(keys, left, right, parent, count, leaf_prim, order, ids,
-                  over, box, cost, size, prim_boxes, sync, flag + 1, blocks,
-                  a, 1u);
+                  over, box, cost, size, flat, prim_boxes, sync, flag + 1,
+                  blocks, a, 1u);
+    else if (a.sizes == 2u)
+        hier_pass(keys, left, right, parent, count, leaf_prim, order, ids,
+                  over, box, cost, size, flat, prim_boxes, sync, flag + 1,
+                  blocks, a, 2u);
     else
         hier_pass(keys, left, right, parent, count, leaf_prim, order, ids,
-                  over, box, cost, size, prim_boxes, sync, flag + 1, blocks,
-                  a, 0u);
+                  over, box, cost, size, flat, prim_boxes, sync, flag + 1,
+                  blocks, a, 0u);
 }
 
 /* ------------------------------------------------------------------- refit */
@@ -889,7 +903,8 @@ static void opt_item(__global uint *left, __global uint *right,
                      __global uint *parent, __global uint *count,
                      __global atrbvh_box *box, __global double *cost,
                      __global uchar *scratch, __global uchar *marks,
-                     const atrbvh_kargs_optimise *a, uint w, opt_view *v)
+                     __global uchar *flat, const atrbvh_kargs_optimise *a,
+                     uint w, opt_view *v)
 {
     __global uchar *base = scratch + (ulong)w * a->stride;
     uint l;
@@ -919,6 +934,8 @@ static void opt_item(__global uint *left, __global uint *right,
     v->t.count = count;
     v->t.box = box;
     v->t.cost = cost;
+    v->t.flat = a->flags ? (ATRBVH_SHARED_GLOBAL uchar *)flat
+                         : (ATRBVH_SHARED_GLOBAL uchar *)0;
     v->t.n_internal = a->n_internal;
     /* The skip marks: chg, then same, one byte per internal node each
      * (a.marks: TRBVH, ATRBVH up to 32 leaves or adaptive, as on the
@@ -942,14 +959,16 @@ __kernel void opt_round(__global uint *left, __global uint *right,
                         __global atrbvh_box *box, __global double *cost,
                         __global const uint *needed, __global uint *counter,
                         __global uchar *scratch, __global uchar *marks,
-                        __global uint *tally, atrbvh_kargs_optimise a)
+                        __global uchar *flat, __global uint *tally,
+                        atrbvh_kargs_optimise a)
 {
     uint w = (uint)get_global_id(0), k, done = 0u, applied = 0u,
          skipped = 0u;
     opt_view v;
     if (w >= a.workers)
         return;
-    opt_item(left, right, parent, count, box, cost, scratch, marks, &a, w, &v);
+    opt_item(left, right, parent, count, box, cost, scratch, marks, flat, &a,
+             w, &v);
     /* (the marks are read from `needed`, which no item writes in a round:
      * the same start nodes whatever the other items have restructured) */
     for (k = (uint)((ulong)a.n_internal * w / a.workers);
@@ -1017,7 +1036,8 @@ __kernel void opt_round4(__global uint *left, __global uint *right,
                          __global atrbvh_box *box, __global double *cost,
                          __global const uint *needed, __global uint *counter,
                          __global uchar *scratch, __global uchar *marks,
-                         __global uint *tally, atrbvh_kargs_optimise a)
+                         __global uchar *flat, __global uint *tally,
+                         atrbvh_kargs_optimise a)
 {
     uint w = (uint)get_global_id(0), k, end, done = 0u, applied = 0u,
          skipped = 0u, walks = 0u, l, ready, more, step;
@@ -1029,7 +1049,8 @@ __kernel void opt_round4(__global uint *left, __global uint *right,
     opt_view v;
     if (w >= a.workers)
         return;
-    opt_item(left, right, parent, count, box, cost, scratch, marks, &a, w, &v);
+    opt_item(left, right, parent, count, box, cost, scratch, marks, flat, &a,
+             w, &v);
     k = (uint)((ulong)a.n_internal * w / a.workers);
     end = (uint)((ulong)a.n_internal * (w + 1u) / a.workers);
     for (;;) {
@@ -1099,13 +1120,16 @@ __kernel void opt_round4(__global uint *left, __global uint *right,
 
 /* ---------------------------------------------------------------- collapse */
 /* Bottom-up: output size of every subtree and the leaf decision
- * (atrbvh_collapse_size, the CPU's function). */
+ * (atrbvh_collapse_size, the CPU's function), or with the decisions kept
+ * (a.sizes 2: an optimised tree's, `flat`) the sizes counted from them
+ * (shared/stages.h's atrbvh_size_counted, as the CPU's count_out). */
 __kernel void collapse(__global const atrbvh_box *box,
                        __global const uint *count,
                        __global const double *cost, __global const uint *left,
                        __global const uint *right,
                        __global const uint *parent, __global uint *size,
-                       __global uint *counter, atrbvh_kargs_tree a)
+                       __global const uchar *flat, __global uint *counter,
+                       atrbvh_kargs_tree a)
 {
     uint i = (uint)get_global_id(0), node;
     atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
@@ -1123,9 +1147,13 @@ __kernel void collapse(__global const atrbvh_box *box,
         counter[up] = 0u; /* zero for the next pass */
         l = left[up];
         r = right[up];
-        size[up] = atrbvh_collapse_size(&p, box[up], count[up], cost[l],
-                                        cost[r], load_u32_v(size, l),
-                                        load_u32_v(size, r));
+        if (a.sizes == 2u)
+            size[up] = atrbvh_size_counted(flat[up], load_u32_v(size, l),
+                                           load_u32_v(size, r));
+        else
+            size[up] = atrbvh_collapse_size(&p, box[up], count[up], cost[l],
+                                            cost[r], load_u32_v(size, l),
+                                            load_u32_v(size, r));
         node = up;
     }
 }

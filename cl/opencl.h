@@ -87,6 +87,8 @@ enum {
     B_MARKS,      /* optimise: skip marks, 2 bytes a node */
     B_TALLY,      /* optimise: treelet counts             */
     B_SIZE,       /* collapse: output nodes per subtree   */
+    B_FLAT,       /* an optimised tree's collapse
+                     decisions, a byte a node            */
     B_JUMP,       /* hierarchy leftovers; layout subtrees */
     B_FLAG,       /* layout: their count; then the
                      hierarchy's status (keys out of order) */
@@ -172,6 +174,9 @@ typedef struct atrbvh_cl_device {
                                launch leave it so)               */
     cl_uint refitted;       /* this build: the hierarchy kernel
                                refitted its tree (no refit launch) */
+    cl_uint flags;          /* this build: B_FLAT holds the collapse
+                               decisions, kept by the optimise stage
+                               (the collapse counts the sizes)     */
     cl_uint prims_set;      /* this build: set_prims replaced the
                                bounds kernel's boxes (the host's
                                Morton frame then)                 */

@@ -25,6 +25,7 @@ atrbvh_status atrbvh_i_cl_set_tree(atrbvh_device *dev, atrbvh_i_run *run,
     c->has_ids = 0;
     c->ranges = 0; /* any tree: the layout walks its leaves */
     c->refitted = 0; /* the refit kernel climbs it */
+    c->flags = 0;    /* (nor are its collapse decisions kept) */
     parent = atrbvh_i_scratch_get(&dev->scratch, 0, nodes, sizeof *parent);
     if (!parent)
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, ATRBVH_CL_NO_INDEX,

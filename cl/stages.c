@@ -93,6 +93,7 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
     c->counted = 0;
     c->counters_zero = 0;
     c->refitted = 0;
+    c->flags = 0;
     c->prims_set = 0;
     c->laid_out = 0;
     c->tally_late = 0;
@@ -481,8 +482,13 @@ static atrbvh_status st_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
                                 "node boxes", error));
     CL_CHECK(atrbvh_i_cl_buffer(c, B_COST, nodes, sizeof(double),
                                 "node costs", error));
-    /* (an optimised tree's sizes come from the collapse: passed unused) */
+    /* (an optimised tree's sizes come from the collapse: passed unused;
+     * its collapse decisions, kept by the optimise stage, into B_FLAT) */
     CL_CHECK(atrbvh_i_cl_buffer(c, B_SIZE, nodes, 4, "subtree sizes", error));
+    c->flags = run->cfg->method != ATRBVH_METHOD_LBVH;
+    if (c->flags)
+        CL_CHECK(atrbvh_i_cl_buffer(c, B_FLAT, nodes, 1,
+                                    "collapse decisions", error));
     CL_CHECK(atrbvh_i_cl_sync(c, error));
     /* Blocks: enough items for every compute unit (one block of no split
      * for a single primitive); their leftovers (ATRBVH_CL_HIER_OVER words
@@ -499,13 +505,15 @@ static atrbvh_status st_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
      * wait (st_collapse). */
     CL_CHECK(atrbvh_i_cl_buffer(c, B_FLAG, 2, 4, "hierarchy status",
                                 error));
-    a.sizes = run->cfg->method == ATRBVH_METHOD_LBVH;
-    /* ids: read only when has_ids; B_ORDER stands in otherwise. */
+    a.sizes = c->flags ? 2u : 1u;
+    /* ids: read only when has_ids; B_ORDER stands in otherwise, and
+     * B_SIZE for B_FLAT. */
     CL_RUN(c, K_HIERARCHY, blocks, error, CL_BUF(B_KEYS), CL_BUF(B_LEFT),
            CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
            CL_BUF(B_LEAF_PRIM), CL_BUF(B_ORDER),
            CL_BUF(c->has_ids ? B_IDS : B_ORDER), CL_BUF(B_JUMP),
-           CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_SIZE), CL_BUF(B_BOXES),
+           CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_SIZE),
+           CL_BUF(c->flags ? B_FLAT : B_SIZE), CL_BUF(B_BOXES),
            CL_BUF(B_SYNC), CL_BUF(B_FLAG), CL_VAL(blocks), CL_VAL(a));
     c->ranges = 1;
     c->refitted = 1;
@@ -614,6 +622,8 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     /* several treelets an item on a CPU device, where the marks are
      * kept (opt_round4) */
     a.walks = a.marks && c->several_walks;
+    /* the collapse decisions kept (B_FLAT; B_MARKS stands in) */
+    a.flags = c->flags;
     scratch_layout(cfg, &a);
     /* Enough persistent workers to fill the device, scratch bounded. */
     workers_max = c->compute_units * 64u;
@@ -657,7 +667,8 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
                CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_COUNT),
                CL_BUF(B_BOX), CL_BUF(B_COST), CL_BUF(B_NEEDED),
                CL_BUF(B_COUNTER), CL_BUF(B_SCRATCH), CL_BUF(B_MARKS),
-               CL_BUF(B_TALLY), CL_VAL(a));
+               CL_BUF(c->flags ? B_FLAT : B_MARKS), CL_BUF(B_TALLY),
+               CL_VAL(a));
         /* The round's tree for the pipeline's capture (a blocking read
          * on the in-order queue sees the launch done). */
         if (atrbvh_i_stage_round(run, round + 1)) {
@@ -714,9 +725,13 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
             CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4,
                                       "node counters", error));
         c->counters_zero = 1; /* the kernel leaves them zero */
+        /* the sizes counted from the kept decisions (a.sizes 2), else
+         * decided from the costs (a caller's tree) */
+        a.sizes = c->flags ? 2u : 0u;
         CL_RUN(c, K_COLLAPSE, run->n, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
                CL_BUF(B_COST), CL_BUF(B_LEFT), CL_BUF(B_RIGHT),
-               CL_BUF(B_PARENT), CL_BUF(B_SIZE), CL_BUF(B_COUNTER),
+               CL_BUF(B_PARENT), CL_BUF(B_SIZE),
+               CL_BUF(c->flags ? B_FLAT : B_SIZE), CL_BUF(B_COUNTER),
                CL_VAL(a));
     }
     /* The layout's kernels first (they need nothing from the host) unless

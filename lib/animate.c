@@ -44,6 +44,7 @@ enum {
     SLOT_PRIMS,
     SLOT_DEPTH                       /* node depths (statistics)         */
 };
+ATRBVH_STATIC_ASSERT(SLOT_DEPTH < ATRBVH_I_SCRATCH_SLOTS, lib_slots_fit);
 
 /* Node-sized scratch is taken for the largest tree of the primitive count
  * (2n - 1 nodes), so that frames whose node count grows allocate

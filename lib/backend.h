@@ -86,7 +86,7 @@ void atrbvh_i_join_arrive(atrbvh_i_join *j);
 #define ATRBVH_I_SCRATCH_SLOTS 24
 /* Slots from this one on are the library's own (lib/animate.c); a
  * backend uses the ones below it. */
-#define ATRBVH_I_SCRATCH_LIB 16
+#define ATRBVH_I_SCRATCH_LIB 17
 typedef struct atrbvh_i_scratch {
     void *ptr[ATRBVH_I_SCRATCH_SLOTS];
     size_t bytes[ATRBVH_I_SCRATCH_SLOTS];
@@ -198,6 +198,9 @@ struct atrbvh_i_run {
      * host's exact error) and clears bounds_deferred. */
     int bounds_late_ok;
     int bounds_deferred;
+    /* pipeline: the stages' results may be captured (backend->capture
+     * after each stage), so a backend keeps what its capture reads */
+    int captured;
     /* pipeline, with triangle splitting (lib/split.c): the primitives
      * kept; n is then the number of references, each with the id of
      * its primitive (set_prims). 0: no splitting. */

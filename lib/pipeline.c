@@ -365,6 +365,7 @@ atrbvh_status atrbvh_i_build_run(const atrbvh_geometry *geometry,
     prog.dev = dev;
     /* Nothing reads the bounds' results before the collapse stage:
      * a backend may report them there (backend.h). */
+    run.captured = cap || prog.capture;
     run.bounds_late_ok = !cap && !prog.capture && !req.cfg.skip_invalid &&
                          !(req.cfg.split_budget > 0.0 &&
                            geometry->type == ATRBVH_GEOMETRY_TRIANGLES);

@@ -11,6 +11,12 @@
 #include <string.h>
 
 #include "testutil.h"
+#include "shared/arith.h" /* atrbvh_node_cost: the rule itself */
+
+/* The collapse stage's size of a node emitted as a leaf (lib/shared's
+ * ATRBVH_SIZE_LEAF, a flag over the subtree's output node count). */
+#define SIZE_LEAF 0x80000000u
+#define SIZE_MASK 0x7fffffffu
 
 static long double area(const atrbvh_node *n)
 {
@@ -171,6 +177,170 @@ START_TEST(never_raises_sah)
 }
 END_TEST
 
+/* ------------------------------------------ an optimised tree's decisions */
+/* The optimise stage's final tree and the collapse stage's sizes, as a
+ * build's capture gives them. */
+typedef struct captured {
+    size_t nodes;
+    uint32_t *left, *right, *count, *size;
+    atrbvh_box *box;
+    double *cost;
+} captured;
+
+static void *copy_of(const atrbvh_array *a, size_t item)
+{
+    void *p = malloc(a->rows * a->cols * item);
+    ck_assert(p != NULL);
+    memcpy(p, a->data, a->rows * a->cols * item);
+    return p;
+}
+
+static int keep_stages(const atrbvh_stage_output *o, void *user)
+{
+    captured *c = user;
+    size_t k;
+    for (k = 0; k < o->array_count; k++) {
+        const atrbvh_array *a = &o->arrays[k];
+        if (o->stage == ATRBVH_STAGE_OPTIMISE && o->round == 0) {
+            if (!strcmp(a->name, "left"))
+                c->left = copy_of(a, 4);
+            else if (!strcmp(a->name, "right"))
+                c->right = copy_of(a, 4);
+            else if (!strcmp(a->name, "count")) {
+                c->count = copy_of(a, 4);
+                c->nodes = a->rows;
+            } else if (!strcmp(a->name, "box"))
+                c->box = copy_of(a, 4);
+            else if (!strcmp(a->name, "cost"))
+                c->cost = copy_of(a, 8);
+        } else if (o->stage == ATRBVH_STAGE_COLLAPSE &&
+                   !strcmp(a->name, "collapse_size")) {
+            c->size = copy_of(a, 4);
+        }
+    }
+    return 0;
+}
+
+/* Node x's size decided from the captured costs, as a collapse stage that
+ * keeps nothing decides it (every node, also below a collapsed one). */
+static uint32_t decided_size(const captured *c, const atrbvh_cost_params *p,
+                             uint32_t x, uint32_t *out)
+{
+    const size_t inner = (c->nodes - 1) / 2;
+    uint32_t l, r, sl, sr;
+    int collapsed;
+    if (x >= inner)
+        return out[x] = 1u | SIZE_LEAF;
+    l = c->left[x];
+    r = c->right[x];
+    sl = decided_size(c, p, l, out);
+    sr = decided_size(c, p, r, out);
+    (void)atrbvh_node_cost(p, atrbvh_box_area(c->box[x]), c->count[x],
+                           c->cost[l], c->cost[r], &collapsed);
+    return out[x] = collapsed ? 1u | SIZE_LEAF
+                              : 1u + (sl & SIZE_MASK) + (sr & SIZE_MASK);
+}
+
+/* The collapse stage of an optimised build counts its sizes from the
+ * decisions the hierarchy made and the optimise stage kept through every
+ * refresh and write-back (lib/cpu/collapse.c): every node's must be the
+ * one decided from the optimised tree's costs.  Triangles, and boxes of
+ * a few coincident points (zero areas: ties between the leaf and the
+ * subtree cost, which keep the subtree); every treelet path (TRBVH, the
+ * ATRBVH lanes, its large treelets, the adaptive sizes), leaf limits and
+ * costs that collapse more or less, one and two threads. */
+START_TEST(optimised_decisions_are_the_costs)
+{
+    static const struct {
+        atrbvh_method method;
+        unsigned size, rounds, max_leaf;
+        double ct;
+    } cfg[] = {
+        {ATRBVH_METHOD_TRBVH, 7, 3, 8, 1.0},
+        {ATRBVH_METHOD_ATRBVH, 9, 2, 8, 1.0},
+        {ATRBVH_METHOD_ATRBVH, 48, 2, 8, 1.0},
+        {ATRBVH_METHOD_ATRBVH, ATRBVH_TREELET_AUTO, 4, 8, 1.0},
+        {ATRBVH_METHOD_ATRBVH, 9, 2, 0, 0.3},
+        {ATRBVH_METHOD_TRBVH, 5, 2, 2, 4.0},
+    };
+    const size_t n = 20000;
+    float *v = tu_random_triangles(n, 11, 1.0f, 0.0f);
+    float *b = malloc(n * 6 * sizeof *b);
+    size_t ci, gi, i;
+    int threads;
+    ck_assert(v && b);
+    for (i = 0; i < n; i++) {
+        /* 1400 places, each with points (a third: zero areas, ties) and
+         * small boxes */
+        const float x = (float)(i % 40), y = (float)(i % 7) * 0.5f,
+                    z = (float)(i % 5) * 0.25f,
+                    h = i % 3 == 0 ? 0.0f : 0.05f + 0.01f * (float)(i % 4);
+        b[6 * i] = x - h;
+        b[6 * i + 1] = y - h;
+        b[6 * i + 2] = z - h;
+        b[6 * i + 3] = x + h;
+        b[6 * i + 4] = y + h;
+        b[6 * i + 5] = z + h;
+    }
+    for (gi = 0; gi < 2; gi++) {
+        const atrbvh_geometry g =
+            gi == 0 ? atrbvh_geometry_triangles(v, 3 * n, NULL, n)
+                    : atrbvh_geometry_boxes(b, n);
+        for (ci = 0; ci < sizeof cfg / sizeof *cfg; ci++)
+            for (threads = 1; threads <= 2; threads++) {
+                atrbvh_build_options o;
+                atrbvh_cost_params p;
+                captured c;
+                atrbvh_bvh *bvh;
+                uint32_t *ref;
+                size_t k, collapsed = 0;
+                memset(&c, 0, sizeof c);
+                atrbvh_build_options_init(&o);
+                o.method = cfg[ci].method;
+                o.treelet_size = cfg[ci].size;
+                o.rounds = cfg[ci].rounds;
+                o.max_leaf_size = cfg[ci].max_leaf;
+                o.ct = cfg[ci].ct;
+                o.threads = threads;
+                o.capture = keep_stages;
+                o.capture_user = &c;
+                bvh = tu_build(&g, &o);
+                ck_assert(c.left && c.right && c.count && c.box && c.cost &&
+                          c.size);
+                ck_assert_uint_eq(c.nodes, 2 * n - 1);
+                p.ci = o.ci;
+                p.ct = o.ct;
+                p.collapse = 1;
+                p.max_leaf = o.max_leaf_size;
+                ref = malloc(c.nodes * sizeof *ref);
+                ck_assert(ref != NULL);
+                (void)decided_size(&c, &p, 0, ref);
+                for (k = 0; k < c.nodes; k++) {
+                    ck_assert_msg(ref[k] == c.size[k],
+                                  "geometry %u config %u threads %d node "
+                                  "%u: size %08x, decided %08x",
+                                  (unsigned)gi, (unsigned)ci, threads,
+                                  (unsigned)k, c.size[k], ref[k]);
+                    collapsed += k < c.nodes / 2 && (ref[k] & SIZE_LEAF) != 0;
+                }
+                /* (the decisions tested go both ways) */
+                ck_assert_uint_gt(collapsed, 0);
+                ck_assert_uint_lt(collapsed, c.nodes / 2);
+                free(ref);
+                free(c.left);
+                free(c.right);
+                free(c.count);
+                free(c.box);
+                free(c.cost);
+                free(c.size);
+                atrbvh_bvh_free(bvh);
+            }
+    }
+    free(b);
+    free(v);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("collapse");
@@ -178,6 +348,7 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, matches_exhaustive_search);
     tcase_add_test(tc, never_raises_sah);
+    tcase_add_test(tc, optimised_decisions_are_the_costs);
     suite_add_tcase(s, tc);
     return tu_run(s);
 }

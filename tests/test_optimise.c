@@ -759,6 +759,7 @@ START_TEST(formation_rule)
     t.count = count;
     t.box = box;
     t.cost = cost;
+    t.flat = NULL;
     t.n_internal = 4;
     ck_assert_uint_eq(atrbvh_treelet_form(&t, 0, 3, &tl), 3);
     /* slot 0 (node 1) and 1 (node 2) tie: slot 0 expands. */
@@ -1028,7 +1029,7 @@ static void rounds_case(atrbvh_method method, unsigned n, unsigned rounds,
     first = before = t.t.cost[0];
     for (r = 0; r < rounds; r++) {
         c = config(method, n, 1, n << r, &p, 1);
-        ck_assert_int_eq(atrbvh_i_optimise(&t.t, &c, NULL, NULL, &err), ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_i_optimise(&t.t, NULL, &c, NULL, NULL, &err), ATRBVH_OK);
         tree_check(&t, &orig, &p);
         ck_assert_msg(t.t.cost[0] <= before,
                       "round %u raised the cost %.17g -> %.17g", r, before,
@@ -1039,7 +1040,7 @@ static void rounds_case(atrbvh_method method, unsigned n, unsigned rounds,
     ck_assert_msg(before < 0.95 * first, "cost %.6g -> %.6g", first, before);
     tree_copy(&whole, &orig);
     c = config(method, n, rounds, n, &p, 2);
-    ck_assert_int_eq(atrbvh_i_optimise(&whole.t, &c, NULL, NULL, &err), ATRBVH_OK);
+    ck_assert_int_eq(atrbvh_i_optimise(&whole.t, NULL, &c, NULL, NULL, &err), ATRBVH_OK);
     ck_assert(tree_same(&whole, &t));
     tree_free(&orig);
     tree_free(&t);
@@ -1077,7 +1078,7 @@ static void threads_same(test_tree *orig, atrbvh_method method, unsigned n,
         test_tree *dst = threads == 1 ? &ref : &t;
         tree_copy(dst, orig);
         c = config(method, n, rounds, n, p, threads);
-        ck_assert_int_eq(atrbvh_i_optimise(&dst->t, &c, NULL, NULL, &err), ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_i_optimise(&dst->t, NULL, &c, NULL, NULL, &err), ATRBVH_OK);
         if (threads == 1) {
             tree_check(&ref, orig, p);
             ck_assert(ref.t.cost[0] < orig->t.cost[0]);
@@ -1143,7 +1144,7 @@ START_TEST(small_trees)
             tree_copy(&t, &orig);
             c = config(m ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_TRBVH, 3, 4,
                        3, &p, 2);
-            ck_assert_int_eq(atrbvh_i_optimise(&t.t, &c, NULL, NULL, &err), ATRBVH_OK);
+            ck_assert_int_eq(atrbvh_i_optimise(&t.t, NULL, &c, NULL, NULL, &err), ATRBVH_OK);
             if (n > 1)
                 tree_check(&t, &orig, &p);
             ck_assert(t.t.cost[0] <= orig.t.cost[0]);
@@ -1189,7 +1190,7 @@ START_TEST(nomem)
             live_allocs = 0;
             c = config(m ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_TRBVH, 7, 2,
                        7, &p, 2);
-            ck_assert_int_eq(atrbvh_i_optimise(&t.t, &c, NULL, NULL, &err),
+            ck_assert_int_eq(atrbvh_i_optimise(&t.t, NULL, &c, NULL, NULL, &err),
                              ATRBVH_ERR_NOMEM);
             ck_assert_int_eq(err.status, ATRBVH_ERR_NOMEM);
             ck_assert_int_eq(live_allocs, 0);

@@ -47,12 +47,16 @@ static void cpu_close(atrbvh_device *dev)
  *              gathered in place into the leaves; an LBVH reads
  *              them in place and writes none), costs 16 (none
  *              for an LBVH: its slot takes the collapse sizes),
- *              both into the slot of the keys once read          60     92
+ *              both into the slot of the keys once read; for a
+ *              tree to optimise the collapse decisions 2 (their
+ *              own slot, CPU_FLAT)                               60     94
  *   refit      (nothing left to compute; a caller's tree,
- *              set_tree, is refitted here) tree 28               60     92
- *   optimise   the same, per-thread treelet scratch               -     92
- *   collapse   costs recomputed bottom-up, sizes 8 into the
- *              cost slot                                         60     92
+ *              set_tree, is refitted here, without decisions:
+ *              92) tree 28                                       60     94
+ *   optimise   the same, per-thread treelet scratch               -     94
+ *   collapse   sizes 8 into the cost slot, counted from the
+ *              decisions, which are then freed (a caller's tree:
+ *              decided from recomputed costs)                    60     94
  *   layout     tree 28, the output; an LBVH's node boxes were
  *              released at the end of the collapse (the layout
  *              recomputes them), and its parent links (the
@@ -267,6 +271,19 @@ atrbvh_status atrbvh_i_cpu_tree_sizes(atrbvh_i_cpu_run *c,
     return ATRBVH_OK;
 }
 
+atrbvh_status atrbvh_i_cpu_tree_flags(atrbvh_i_cpu_run *c,
+                                      atrbvh_error *error)
+{
+    c->flat = atrbvh_i_scratch_get(c->scratch, CPU_FLAT,
+                                   2 * (size_t)c->tree.n - 1, 1);
+    if (!c->flat)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
+                             "cannot allocate the collapse decisions for "
+                             "%lu primitives",
+                             (unsigned long)c->tree.n);
+    return ATRBVH_OK;
+}
+
 void atrbvh_i_cpu_scratch_end(atrbvh_i_cpu_run *c)
 {
     unsigned k;
@@ -345,6 +362,22 @@ static atrbvh_status capture_refit(atrbvh_i_tree *dst,
     return ATRBVH_OK;
 }
 
+/* Every node's size from its kept collapse decision (flat) into size,
+ * also below a collapsed node, which the collapse stage does not visit
+ * (collapse.c's count_out): the stage's capture holds every node's, as
+ * the OpenCL collapse kernel's climb and a decided tree's do.  Returns
+ * the size of `node`. */
+static uint32_t all_sizes(const atrbvh_i_tree *t, const unsigned char *flat,
+                          uint32_t *size, uint32_t node)
+{
+    uint32_t l = 0, r = 0;
+    if (!atrbvh_i_is_leaf(t, node)) {
+        l = all_sizes(t, flat, size, t->left[node]);
+        r = all_sizes(t, flat, size, t->right[node]);
+    }
+    return size[node] = atrbvh_size_counted(flat[node], l, r);
+}
+
 static atrbvh_status cpu_capture(atrbvh_device *dev, atrbvh_i_run *run,
                                  atrbvh_stage stage, atrbvh_i_capture *cap,
                                  atrbvh_error *error)
@@ -379,8 +412,16 @@ static atrbvh_status cpu_capture(atrbvh_device *dev, atrbvh_i_run *run,
                            c->leaf_boxes_by_order) == ATRBVH_OK;
         break;
     case ATRBVH_STAGE_COLLAPSE:
-        ok = copy_out(&cap->collapse_size, c->size, 2 * n - 1,
-                      sizeof *c->size);
+        if (c->flat) {
+            cap->collapse_size = atrbvh_i_alloc_array(2 * n - 1,
+                                                      sizeof *c->size);
+            ok = cap->collapse_size != NULL;
+            if (ok)
+                (void)all_sizes(&c->tree, c->flat, cap->collapse_size, 0);
+        } else {
+            ok = copy_out(&cap->collapse_size, c->size, 2 * n - 1,
+                          sizeof *c->size);
+        }
         break;
     default:
         break;

@@ -15,7 +15,21 @@
  * tree; the same rule and arithmetic as decide() below); this stage then
  * only releases memory.
  *
- * Otherwise bottom-up in post-order: the "top" (the nodes of more than
+ * A tree from the hierarchy stage that the optimise stage restructured
+ * comes with every node's decision (c->flat): the hierarchy's pass made
+ * them with the costs, and every treelet refresh and write-back since
+ * kept them with the costs it wrote (shared/treelet.h's
+ * atrbvh_treelet_tree.flat), so only the sizes are left, counted from
+ * the root down to the collapsed nodes (count_out, no arithmetic; the
+ * nodes below a collapsed one are not visited, nor read by the layout).
+ * Measured against deciding, Intel host, docs/bench/abpair.c (a build is
+ * about 7% collapse): ATRBVH(9,2) builds 0.969 on dabrovic_sponza, 0.967
+ * on sibenik and 0.971 on the dragon at two threads.  tests/test_collapse
+ * checks every node's kept decision against the one decided from the
+ * optimised tree's costs.
+ *
+ * Otherwise (a caller's tree, set_tree) decided, bottom-up in post-order
+ * - and counted the same way: the "top" (the nodes of more than
  * `cut` primitives, cpu.h's atrbvh_i_frontier_cut) is cut
  * from the subtrees just below it, the frontier, listed left to right;
  * one parallel loop (dynamic, a subtree at a time) decides the frontier
@@ -45,6 +59,7 @@ typedef struct collapse_ctx {
     const atrbvh_i_tree *t;
     const atrbvh_cost_params *p;
     uint32_t *size; /* output nodes of the subtree | ATRBVH_SIZE_LEAF */
+    const unsigned char *flat; /* the decisions kept (count_out), or NULL */
     /* the frontier (top_decide): its roots left to right, their costs,
      * and the next one the top's walk takes */
     uint32_t cut;
@@ -87,6 +102,21 @@ static double decide(collapse_ctx *c, uint32_t node)
     return decided(c, node, cl, decide(c, t->right[node]));
 }
 
+/* With the decisions kept (an optimised tree: c->flat, optimise.c): the
+ * size of `node`'s subtree counted from them, no node below a collapsed
+ * one visited (nor its size set: the layout reads none of them). */
+static uint32_t count_out(collapse_ctx *c, uint32_t node)
+{
+    const atrbvh_i_tree *t = c->t;
+    const unsigned flat = c->flat[node];
+    uint32_t l = 0, r = 0;
+    if (!flat) {
+        l = count_out(c, t->left[node]);
+        r = count_out(c, t->right[node]);
+    }
+    return c->size[node] = atrbvh_size_counted(flat, l, r);
+}
+
 /* The frontier below `node` (a top node: more than c->cut primitives),
  * left to right, into c->list from *k; 0 when it does not fit in cap. */
 static int frontier(collapse_ctx *c, uint32_t node, size_t *k, size_t cap)
@@ -118,8 +148,25 @@ static double top_decide(collapse_ctx *c, uint32_t node)
     return decided(c, node, cl, top_decide(c, t->right[node]));
 }
 
+/* count_out over the top, the frontier's sizes already counted. */
+static uint32_t top_count(collapse_ctx *c, uint32_t node)
+{
+    const atrbvh_i_tree *t = c->t;
+    unsigned flat;
+    uint32_t l = 0, r = 0;
+    if (atrbvh_i_is_leaf(t, node) || t->count[node] <= c->cut)
+        return c->size[node];
+    flat = c->flat[node];
+    if (!flat) {
+        l = top_count(c, t->left[node]);
+        r = top_count(c, t->right[node]);
+    }
+    return c->size[node] = atrbvh_size_counted(flat, l, r);
+}
+
 /* Every node's size: the frontier on the threads, then the top; on one
- * thread when the tree is small or the frontier does not fit. */
+ * thread when the tree is small or the frontier does not fit.  With the
+ * decisions kept, counted (count_out), else decided (decide). */
 static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
                                 int threads, atrbvh_error *error)
 {
@@ -131,7 +178,10 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
     unsigned char *block;
     c->cut = atrbvh_i_frontier_cut(root_count, threads);
     if (threads < 2 || root_count < PARALLEL_MIN || c->cut < 1u) {
-        (void)decide(c, 0);
+        if (c->flat)
+            (void)count_out(c, 0);
+        else
+            (void)decide(c, 0);
         return ATRBVH_OK;
     }
     /* cap roots and their costs (cap <= 2^31: no overflow) */
@@ -145,7 +195,10 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
     c->cost = (double *)(void *)block;
     c->list = (uint32_t *)(void *)(block + cap * sizeof(double));
     if (!frontier(c, 0, &k, cap) || k < 2u) {
-        (void)decide(c, 0);
+        if (c->flat)
+            (void)count_out(c, 0);
+        else
+            (void)decide(c, 0);
         return ATRBVH_OK;
     }
 #ifdef _OPENMP
@@ -155,12 +208,19 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1) nowait
 #endif
-        for (i = 0; i < (int64_t)k; i++)
-            c->cost[i] = decide(c, c->list[i]);
+        for (i = 0; i < (int64_t)k; i++) {
+            if (c->flat)
+                (void)count_out(c, c->list[i]);
+            else
+                c->cost[i] = decide(c, c->list[i]);
+        }
         atrbvh_i_join_arrive(&join);
     }
     c->next = 0;
-    (void)top_decide(c, 0);
+    if (c->flat)
+        (void)top_count(c, 0);
+    else
+        (void)top_decide(c, 0);
     return ATRBVH_OK;
 }
 
@@ -180,11 +240,16 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
         x.t = &c->tree;
         x.p = &run->cfg->cost;
         x.size = c->size;
+        x.flat = c->flat;
         st = decide_all(&x, c->scratch, run->cfg->threads, error);
         if (st != ATRBVH_OK)
             return st;
     }
     run->node_count = c->size[0] & ATRBVH_SIZE_MASK;
+    if (c->flat && !run->captured) { /* (the capture reads them: layout) */
+        atrbvh_i_scratch_done(c->scratch, CPU_FLAT);
+        c->flat = NULL;
+    }
     if (!c->kept_ids && run->cfg->method != ATRBVH_METHOD_LBVH &&
         c->scratch->transient) {
         /* An optimised tree's internal boxes are read by the layout (a

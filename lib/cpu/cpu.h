@@ -83,8 +83,10 @@ enum {
     CPU_SIZE,      /* collapse: output nodes per subtree     */
     CPU_OPTIMISE,  /* treelet scratch, per thread            */
     CPU_WORKERS,   /* per-thread treelet counters            */
+    CPU_FLAT,      /* an optimised tree's collapse decisions */
     CPU_SLOTS
 };
+ATRBVH_STATIC_ASSERT(CPU_SLOTS <= ATRBVH_I_SCRATCH_LIB, cpu_slots_fit);
 
 /* One build on the CPU (run->state). */
 typedef struct atrbvh_i_cpu_run {
@@ -117,6 +119,11 @@ typedef struct atrbvh_i_cpu_run {
     uint32_t *order;    /* sort: build index of position p   */
     atrbvh_i_tree tree; /* hierarchy ... optimise            */
     uint32_t *size;     /* collapse                          */
+    /* hierarchy ... collapse: each node's collapse decision (1: emitted
+     * as a leaf when reached), kept exact by the optimise stage, from
+     * which the collapse stage only counts the sizes (collapse.c); NULL
+     * for an LBVH and a caller's tree (set_tree) */
+    unsigned char *flat;
     /* collapse: the sizes moved into the leaves' half of tree.box, whose
      * boxes the layout then recomputes (layout.c) */
     int sizes_in_leaf_boxes;
@@ -164,6 +171,10 @@ atrbvh_status atrbvh_i_cpu_tree_values(atrbvh_i_cpu_run *c, int costs,
 /* The collapse sizes of c->tree's nodes (c->size): the collapse stage's,
  * or an LBVH's refit, which computes them in its climb. */
 atrbvh_status atrbvh_i_cpu_tree_sizes(atrbvh_i_cpu_run *c,
+                                      atrbvh_error *error);
+/* The collapse decisions of c->tree's nodes (c->flat): a tree to be
+ * optimised, from the hierarchy stage's pass. */
+atrbvh_status atrbvh_i_cpu_tree_flags(atrbvh_i_cpu_run *c,
                                       atrbvh_error *error);
 /* The node box slot at 2n-1 boxes now, for a build planned as an LBVH
  * reading its leaf boxes in place (atrbvh_i_node_boxes) that will gather
@@ -275,8 +286,10 @@ void atrbvh_i_refit_sizes(atrbvh_i_tree *t, const atrbvh_box *prim_boxes,
                           int threads, uint32_t *size);
 /* TRBVH or ATRBVH treelet restructuring in place; per-thread scratch from
  * slot CPU_OPTIMISE of `scratch`.  Progress by round through `run` (may
- * be NULL). */
-atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
+ * be NULL).  `flat`: every node's collapse decision, kept exact (NULL:
+ * none kept, the collapse stage decides them). */
+atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, unsigned char *flat,
+                                const atrbvh_i_config *cfg,
                                 atrbvh_i_scratch *scratch, atrbvh_i_run *run,
                                 atrbvh_error *error);
 

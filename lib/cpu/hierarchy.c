@@ -100,7 +100,9 @@ ATRBVH_STATIC_ASSERT(ATRBVH_I_HIER_LEFTOVERS >=
 enum {
     TOPOLOGY, /* the topology only, deltas from the keys    */
     SIZES,    /* and boxes, collapse sizes (an LBVH)         */
-    COSTS     /* and boxes, costs (a tree to be optimised)   */
+    COSTS,    /* and boxes, costs                            */
+    FLAGS     /* and boxes, costs and collapse decisions (a
+                 tree to be optimised: optimise.c keeps them) */
 };
 
 typedef struct hier_ctx {
@@ -109,6 +111,7 @@ typedef struct hier_ctx {
     const uint64_t *keys;      /* TOPOLOGY: the sorted keys            */
     const atrbvh_cost_params *p; /* SIZES, COSTS                       */
     uint32_t *size;            /* SIZES: collapse sizes (2n-1)         */
+    unsigned char *flat;       /* FLAGS: collapse decisions (2n-1)     */
     /* SIZES, or NULL: leaf i's box is t->box[by_order[i]] (the primitive
      * boxes, never written over: no node box is written), and the
      * leftovers' subtree boxes go to left_box[b * 2 * ATRBVH_HIER_SIDE
@@ -178,6 +181,8 @@ static ALWAYS_INLINE void leaf(const hier_ctx *x, int mode, int64_t i,
     } else {
         t->cost[id] = out->cost;
     }
+    if (mode == FLAGS)
+        x->flat[id] = 1; /* (a leaf: one output leaf) */
 }
 
 /* Writes internal node s (its split) from its neighbours ps (-1: none)
@@ -209,12 +214,21 @@ static ALWAYS_INLINE void emit(const hier_ctx *x, int mode, int64_t s,
         r->box = b;
         r->cost = cost;
         r->size = size;
-    } else if (mode == COSTS) {
+    } else if (mode == COSTS || mode == FLAGS) {
         atrbvh_box b;
         double cost;
         uint32_t cnt;
-        atrbvh_refit_node(x->p, l->box, (uint32_t)(s - ps), l->cost, r->box,
-                          (uint32_t)(ns - s), r->cost, &b, &cnt, &cost);
+        if (mode == FLAGS) /* (the size's flag: the cost's choice) */
+            x->flat[id] = (unsigned char)(atrbvh_refit_node_size(
+                                              x->p, l->box, (uint32_t)(s - ps),
+                                              l->cost, 0u, r->box,
+                                              (uint32_t)(ns - s), r->cost, 0u,
+                                              &b, &cnt, &cost) >>
+                                          31);
+        else
+            atrbvh_refit_node(x->p, l->box, (uint32_t)(s - ps), l->cost,
+                              r->box, (uint32_t)(ns - s), r->cost, &b, &cnt,
+                              &cost);
         t->box[id] = b;
         t->cost[id] = cost;
         r->box = b;
@@ -394,7 +408,8 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
 }
 
 /* The topology, and with `p` the refit's values (into `size` when not
- * NULL, else into t->cost); with `order`, each leaf's primitive.
+ * NULL, else into t->cost, and the collapse decisions into `flat` when
+ * not NULL); with `order`, each leaf's primitive.
  * `ready`: the sort stage gathered the leaves and wrote the deltas
  * (sort.c's sort_leaves); `by_order` (with ready, size and order, no
  * ids): it wrote the deltas only, and leaf i's box is t->box[order[i]]
@@ -402,7 +417,8 @@ static ALWAYS_INLINE void pass(const hier_ctx *x, int mode, int blocks,
 static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                       int threads, const uint32_t *order,
                       const uint32_t *ids, const atrbvh_cost_params *p,
-                      uint32_t *size, int ready, int by_order)
+                      uint32_t *size, unsigned char *flat, int ready,
+                      int by_order)
 {
     const int64_t n = t->n;
     hier_ctx x;
@@ -412,6 +428,7 @@ static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
     x.keys = sorted_keys;
     x.p = p;
     x.size = size;
+    x.flat = flat;
     x.by_order = NULL;
     x.left_box = NULL;
     if (by_order) { /* (the sort's decision: sort.c, cpu.h) */
@@ -423,7 +440,7 @@ static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
         /* one leaf, the root (its box is primitive box 0, in place) */
         hier_sub one;
         if (p)
-            leaf(&x, size ? SIZES : COSTS, 0, &one);
+            leaf(&x, size ? SIZES : flat ? FLAGS : COSTS, 0, &one);
         else
             leaf(&x, TOPOLOGY, 0, &one);
         if (order)
@@ -434,11 +451,13 @@ static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
     blocks = atrbvh_i_blocks_for(threads, ATRBVH_HIER_BLOCKS);
     if ((int64_t)blocks > n - 1)
         blocks = (int)(n - 1);
-    /* (three calls: each inlined for its own mode) */
+    /* (four calls: each inlined for its own mode) */
     if (!p)
         pass(&x, TOPOLOGY, blocks, threads, order, ids, 0);
     else if (size)
         pass(&x, SIZES, blocks, threads, order, ids, ready);
+    else if (flat)
+        pass(&x, FLAGS, blocks, threads, order, ids, ready);
     else
         pass(&x, COSTS, blocks, threads, order, ids, ready);
 }
@@ -446,7 +465,7 @@ static void hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
 void atrbvh_i_hierarchy(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                         int threads)
 {
-    hierarchy(sorted_keys, t, threads, NULL, NULL, NULL, NULL, 0, 0);
+    hierarchy(sorted_keys, t, threads, NULL, NULL, NULL, NULL, NULL, 0, 0);
 }
 
 void atrbvh_i_hierarchy_refit(const uint64_t *sorted_keys, atrbvh_i_tree *t,
@@ -454,7 +473,7 @@ void atrbvh_i_hierarchy_refit(const uint64_t *sorted_keys, atrbvh_i_tree *t,
                               const atrbvh_cost_params *p, int threads,
                               uint32_t *size)
 {
-    hierarchy(sorted_keys, t, threads, order, NULL, p, size, 0, 0);
+    hierarchy(sorted_keys, t, threads, order, NULL, p, size, NULL, 0, 0);
 }
 
 /* The stage: the tree's arrays (kept for the later stages), the topology,
@@ -475,11 +494,13 @@ atrbvh_status atrbvh_i_cpu_hierarchy(atrbvh_device *dev, atrbvh_i_run *run,
         st = atrbvh_i_cpu_tree_values(c, !lbvh, error);
     if (st == ATRBVH_OK && lbvh)
         st = atrbvh_i_cpu_tree_sizes(c, error);
+    else if (st == ATRBVH_OK) /* (kept by the optimise stage) */
+        st = atrbvh_i_cpu_tree_flags(c, error);
     if (st != ATRBVH_OK)
         return st;
     hierarchy(c->keys, t, run->cfg->threads, c->order, c->ids,
-              &run->cfg->cost, lbvh ? c->size : NULL, c->leaves_ready,
-              c->leaf_boxes_by_order);
+              &run->cfg->cost, lbvh ? c->size : NULL, c->flat,
+              c->leaves_ready, c->leaf_boxes_by_order);
     c->leaves_ready = 0;
     c->refitted = 1;
     /* The keys and the sort's scratch are read no more. */

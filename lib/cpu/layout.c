@@ -494,6 +494,10 @@ atrbvh_status atrbvh_i_cpu_layout(atrbvh_device *dev, atrbvh_i_run *run,
     layout_ctx x;
     atrbvh_status st;
     (void)dev;
+    if (c->flat) { /* (kept for the collapse stage's capture) */
+        atrbvh_i_scratch_done(c->scratch, CPU_FLAT);
+        c->flat = NULL;
+    }
     x.t = &c->tree;
     x.size = c->size;
     x.nodes = run->nodes;

@@ -639,7 +639,8 @@ static unsigned opt_lanes(atrbvh_method method, unsigned n)
 /* Per-thread scratch layout, each part aligned to 64 bytes. */
 #define ALIGN64(x) (((x) + 63u) & ~(size_t)63u)
 
-atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
+atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, unsigned char *flat,
+                                const atrbvh_i_config *cfg,
                                 atrbvh_i_scratch *scratch, atrbvh_i_run *run,
                                 atrbvh_error *error)
 {
@@ -834,6 +835,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, const atrbvh_i_config *cfg,
     c.t.count = t->count;
     c.t.box = t->box;
     c.t.cost = t->cost;
+    c.t.flat = flat;
     c.t.n_internal = t->n - 1u;
     c.cost = &cfg->cost;
     c.method = cfg->method;
@@ -886,5 +888,6 @@ atrbvh_status atrbvh_i_cpu_optimise(atrbvh_device *dev, atrbvh_i_run *run,
 {
     atrbvh_i_cpu_run *c = run->state;
     (void)dev;
-    return atrbvh_i_optimise(&c->tree, run->cfg, c->scratch, run, error);
+    return atrbvh_i_optimise(&c->tree, c->flat, run->cfg, c->scratch, run,
+                             error);
 }

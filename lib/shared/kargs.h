@@ -89,7 +89,10 @@ typedef struct atrbvh_kargs_tree {
     atrbvh_u32 max_leaf;
     atrbvh_u32 has_ids;   /* hierarchy: 1 when kept ids map the leaves */
     atrbvh_u32 sizes;     /* hierarchy, refit: 1 for the collapse sizes
-                             too (LBVH) */
+                             too (LBVH); hierarchy 2 for the collapse
+                             decisions (a tree to optimise, which keeps
+                             them), collapse 2 for its sizes counted
+                             from them */
     atrbvh_u32 ranges;    /* layout: 1 when every subtree holds the leaves
                              of a range of sorted positions, in order (the
                              hierarchy's tree, not optimised) */
@@ -121,6 +124,8 @@ typedef struct atrbvh_kargs_optimise {
     atrbvh_u32 round;     /* from 0 (the skip marks)                      */
     atrbvh_u32 marks;     /* 1: skip marks (atrbvh_treelet_process_marked) */
     atrbvh_u32 walks;     /* 1: opt_round4 (several treelets an item)     */
+    atrbvh_u32 flags;     /* 1: the collapse decisions kept (treelet.h's
+                             atrbvh_treelet_tree.flat)                    */
 } atrbvh_kargs_optimise;
 
 /* intersect_closest, intersect_any (atrbvh_trav_scene's scalars) */

@@ -230,6 +230,17 @@ ATRBVH_FN atrbvh_u32 atrbvh_collapse_size(const atrbvh_cost_params *p,
     return 1u + (size_l & ATRBVH_SIZE_MASK) + (size_r & ATRBVH_SIZE_MASK);
 }
 
+/* The size of a node whose collapse decision was kept (flat: 1 when it is
+ * emitted as a leaf), from its children's: the collapse of an optimised
+ * tree, which keeps the decisions (treelet.h's atrbvh_treelet_tree.flat). */
+ATRBVH_FN atrbvh_u32 atrbvh_size_counted(unsigned flat, atrbvh_u32 size_l,
+                                         atrbvh_u32 size_r)
+{
+    if (flat)
+        return 1u | ATRBVH_SIZE_LEAF;
+    return 1u + (size_l & ATRBVH_SIZE_MASK) + (size_r & ATRBVH_SIZE_MASK);
+}
+
 /* The LBVH's refit and collapse in one climb: atrbvh_refit_node's box,
  * count and cost, and the node's collapse size from the same cost
  * decision (what atrbvh_collapse_size computes again from them).  The

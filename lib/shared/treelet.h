@@ -78,6 +78,12 @@ typedef struct atrbvh_treelet_tree {
     ATRBVH_SHARED_GLOBAL atrbvh_u32 *count;
     ATRBVH_SHARED_GLOBAL atrbvh_box *box;
     ATRBVH_SHARED_GLOBAL double *cost;
+    /* Each node's collapse decision, 1 when atrbvh_node_cost's choice for
+     * its cost is the collapsed one (a tree leaf: 1), kept exact like
+     * its cost by every refresh and write-back, so that the collapse
+     * stage only counts its sizes; NULL when the build keeps none (the
+     * collapse stage then decides from the costs). */
+    ATRBVH_SHARED_GLOBAL unsigned char *flat;
     atrbvh_u32 n_internal;
 } atrbvh_treelet_tree;
 
@@ -113,6 +119,9 @@ typedef struct atrbvh_treelet_topo {
     atrbvh_box box[ATRBVH_TREELET_MAX - 1];
     atrbvh_u32 count[ATRBVH_TREELET_MAX - 1];
     double cost[ATRBVH_TREELET_MAX - 1];
+    /* bit k: local node k collapses (atrbvh_node_cost's choice for its
+     * cost), for the collapse sizes of the write-back */
+    atrbvh_u32 flat;
 } atrbvh_treelet_topo;
 
 /* -------------------------------------------------------------- forming */
@@ -860,6 +869,8 @@ typedef long4 atrbvh_v4m;   /* a comparison's lanes: all ones or 0  */
 #define atrbvh_v4_select(a, b, m) select((a), (b), (m))
 #define atrbvh_v4_mor(a, b) ((a) | (b))
 #define atrbvh_v4_mand(a, b) ((a) & (b))
+#define atrbvh_v4_bits(m)                                                    \
+    ((atrbvh_u32)(((m).s0 & 1) | ((m).s1 & 2) | ((m).s2 & 4) | ((m).s3 & 8)))
 #define atrbvh_v4_mask(a, b, c, d)                                           \
     ((long4)(-(long)(a), -(long)(b), -(long)(c), -(long)(d)))
 #define atrbvh_v4_load(p) vload4(0, (p))
@@ -898,6 +909,7 @@ typedef __m256d atrbvh_v4m;
 #define atrbvh_v4_select(a, b, m) atrbvh_select4((a), (b), (m))
 #define atrbvh_v4_mor(a, b) _mm256_or_pd((a), (b))
 #define atrbvh_v4_mand(a, b) _mm256_and_pd((a), (b))
+#define atrbvh_v4_bits(m) ((atrbvh_u32)_mm256_movemask_pd(m))
 #define atrbvh_v4_mask(a, b, c, d)                                           \
     _mm256_castsi256_pd(_mm256_set_epi64x(-(long long)(d), -(long long)(c),  \
                                           -(long long)(b), -(long long)(a)))
@@ -1291,6 +1303,7 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
     atrbvh_u32 m, a, b, q = 0;
     double root_cost = 0.0;
 
+    topo->flat = 0;
     if (t) {
         /* What atrbvh_treelet_gather would copy, read in place. */
         for (a = 0; a < n; a++) {
@@ -1381,6 +1394,7 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
         topo->right[q] = code[i];
         root_cost = atrbvh_node_cost(p, area, count[j] + count[i], cost[j],
                                      cost[i], &collapsed);
+        topo->flat |= (atrbvh_u32)collapsed << q;
         atrbvh_soa_set(&soa, j, merged);
         cost[j] = root_cost;
         count[j] += count[i];
@@ -1604,6 +1618,8 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
             code[a][l] = a;
         base[a] = a * (a - 1u) / 2u;
     }
+    for (l = 0; l < 4u; l++)
+        topo[l]->flat = 0;
     /* the matrix row by row (the row's cluster first, as
      * atrbvh_agglomerate_at fills it), searched on the way */
     for (r = 1; r < n; r++) {
@@ -1617,7 +1633,7 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
     }
     for (m = n, q = 0;; m--, q++) {
         const atrbvh_u32 last = m - 1u;
-        atrbvh_u32 I[4], J[4];
+        atrbvh_u32 I[4], J[4], fbits;
         atrbvh_v4d iv, jv, binary, flat, res, far;
         atrbvh_v4m take;
         atrbvh_v4f mb[6];
@@ -1661,6 +1677,10 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
                                 cnt[3] <= lim);
         res = atrbvh_v4_select(binary, atrbvh_v4_min(flat, binary), take);
         atrbvh_v4_store(cost_of, res);
+        /* lane l's bit: collapsed, atrbvh_node_cost's choice (take, and
+         * VMINPD's flat < binary) */
+        fbits = atrbvh_v4_bits(
+            atrbvh_v4_mand(take, atrbvh_v4_lt(flat, binary)));
         /* each lane's merge into its topology, then its slots' costs,
          * counts and codes: slot j takes the merge, slot i the last
          * cluster (onto itself when i is the last slot) */
@@ -1674,6 +1694,7 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
             to->right[q] = code[i][l];
             to->count[q] = cnt[l];
             to->cost[q] = cost_of[l];
+            to->flat |= ((fbits >> l) & 1u) << q;
             to->box[q].min[0] = x0;
             to->box[q].min[1] = y0;
             to->box[q].min[2] = z0;
@@ -1787,6 +1808,7 @@ ATRBVH_FN double atrbvh_treelet_evaluate(const atrbvh_cost_params *p,
 {
     atrbvh_u32 k;
     atrbvh_treelet_preorder(n, topo);
+    topo->flat = 0;
     for (k = n - 1u; k-- > 0u;) {
         atrbvh_u32 node = topo->order[k];
         atrbvh_u32 l = topo->left[node], r = topo->right[node];
@@ -1802,6 +1824,7 @@ ATRBVH_FN double atrbvh_treelet_evaluate(const atrbvh_cost_params *p,
         topo->count[node] = nl + nr;
         topo->cost[node] = atrbvh_node_cost(p, atrbvh_box_area(b), nl + nr,
                                              cl, cr, &collapsed);
+        topo->flat |= (atrbvh_u32)collapsed << node;
     }
     return topo->cost[topo->root];
 }
@@ -1852,6 +1875,10 @@ ATRBVH_FN void atrbvh_treelet_write(const atrbvh_treelet_tree *t,
         t->count[id] = topo->count[k];
         t->cost[id] = topo->cost[k];
     }
+    /* the collapse decisions, the producer's (topo->flat) */
+    if (t->flat)
+        for (k = 0; k + 1u < n; k++)
+            t->flat[id_of[k]] = (unsigned char)((topo->flat >> k) & 1u);
 }
 
 /* Refreshes an internal node's cost from its children (box and count do
@@ -1860,10 +1887,13 @@ ATRBVH_FN void atrbvh_treelet_refresh(const atrbvh_treelet_tree *t,
                                       const atrbvh_cost_params *p,
                                       atrbvh_u32 node)
 {
+    const atrbvh_u32 l = t->left[node], r = t->right[node];
     int collapsed;
-    t->cost[node] = atrbvh_node_cost(p, atrbvh_box_area(t->box[node]),
-                                     t->count[node], t->cost[t->left[node]],
-                                     t->cost[t->right[node]], &collapsed);
+    t->cost[node] =
+        atrbvh_node_cost(p, atrbvh_box_area(t->box[node]), t->count[node],
+                         t->cost[l], t->cost[r], &collapsed);
+    if (t->flat)
+        t->flat[node] = (unsigned char)collapsed;
 }
 
 /* ------------------------------------------------------------ one treelet */
@@ -2551,7 +2581,8 @@ ATRBVH_FN double atrbvh_agg_cluster(const atrbvh_treelet_tree *t,
 
 /* atrbvh_treelet_preorder and atrbvh_treelet_write over the scratch
  * (root n-2, the agglomerative root). */
-ATRBVH_FN void atrbvh_agg_write(const atrbvh_treelet_tree *t, atrbvh_u32 n,
+ATRBVH_FN void atrbvh_agg_write(const atrbvh_treelet_tree *t,
+                                const atrbvh_cost_params *p, atrbvh_u32 n,
                                 const atrbvh_agg_scratch *s)
 {
     ATRBVH_GLOBAL atrbvh_u32 *stack = s->stack;
@@ -2592,6 +2623,17 @@ ATRBVH_FN void atrbvh_agg_write(const atrbvh_treelet_tree *t, atrbvh_u32 n,
         t->count[id] = s->tcount[k];
         t->cost[id] = s->tcost[k];
     }
+    /* the collapse decisions (t->flat kept), from the values just
+     * written: atrbvh_node_cost's choice for each node's cost */
+    if (t->flat)
+        for (k = 0; k + 1u < n; k++) {
+            const atrbvh_u32 id = id_of[k];
+            int collapsed;
+            (void)atrbvh_node_cost(p, atrbvh_box_area(t->box[id]),
+                                   t->count[id], t->cost[t->left[id]],
+                                   t->cost[t->right[id]], &collapsed);
+            t->flat[id] = (unsigned char)collapsed;
+        }
 }
 
 /* atrbvh_treelet_process for ATRBVH with every array in the scratch. */
@@ -2609,7 +2651,7 @@ ATRBVH_FN int atrbvh_agg_process_large(const atrbvh_treelet_tree *t,
     found = atrbvh_agg_cluster(t, p, m, s);
     if (!(found < t->cost[root]))
         return 0;
-    atrbvh_agg_write(t, m, s);
+    atrbvh_agg_write(t, p, m, s);
     return 1;
 }
 
