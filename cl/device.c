@@ -27,7 +27,7 @@ const char *const atrbvh_i_cl_kernel_names[K_COUNT] = {
     "sort_count",       "sort_scatter", "sort_buckets", "sort_vary",
     "hierarchy",
     "refit",            "opt_prepare",  "opt_round",     "opt_round4",
-    "collapse",
+    "collapse",         "collapse_count",
     "layout_top",       "layout",
     "intersect_closest", "intersect_any"};
 

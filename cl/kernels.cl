@@ -1120,16 +1120,14 @@ __kernel void opt_round4(__global uint *left, __global uint *right,
 
 /* ---------------------------------------------------------------- collapse */
 /* Bottom-up: output size of every subtree and the leaf decision
- * (atrbvh_collapse_size, the CPU's function), or with the decisions kept
- * (a.sizes 2: an optimised tree's, `flat`) the sizes counted from them
- * (shared/stages.h's atrbvh_size_counted, as the CPU's count_out). */
+ * (atrbvh_collapse_size, the CPU's function): a caller's tree (set_tree);
+ * an optimised tree's sizes are counted (collapse_count below). */
 __kernel void collapse(__global const atrbvh_box *box,
                        __global const uint *count,
                        __global const double *cost, __global const uint *left,
                        __global const uint *right,
                        __global const uint *parent, __global uint *size,
-                       __global const uchar *flat, __global uint *counter,
-                       atrbvh_kargs_tree a)
+                       __global uint *counter, atrbvh_kargs_tree a)
 {
     uint i = (uint)get_global_id(0), node;
     atrbvh_cost_params p = atrbvh_kargs_cost(a.ci, a.ct, a.collapse,
@@ -1147,14 +1145,120 @@ __kernel void collapse(__global const atrbvh_box *box,
         counter[up] = 0u; /* zero for the next pass */
         l = left[up];
         r = right[up];
-        if (a.sizes == 2u)
-            size[up] = atrbvh_size_counted(flat[up], load_u32_v(size, l),
-                                           load_u32_v(size, r));
-        else
-            size[up] = atrbvh_collapse_size(&p, box[up], count[up], cost[l],
-                                            cost[r], load_u32_v(size, l),
-                                            load_u32_v(size, r));
+        size[up] = atrbvh_collapse_size(&p, box[up], count[up], cost[l],
+                                        cost[r], load_u32_v(size, l),
+                                        load_u32_v(size, r));
         node = up;
+    }
+}
+
+/* With the decisions kept (an optimised tree from the hierarchy stage:
+ * `flat`, a byte a node, tree leaves 1): the sizes counted as the CPU's
+ * collapse counts them (lib/cpu/collapse.c's count_out), down to the
+ * collapsed nodes only.  The "top" is the internal nodes of more than
+ * `cut` primitives that do not collapse; the subtrees just below it (the
+ * frontier, in pre-order) go to the `items` work-items in turn (subtree
+ * j to item j mod items), each counted by a stackless post-order walk
+ * (parent links; any depth); the last item to finish (last_arrival)
+ * then counts the top the same way over the frontier's sizes.  Every
+ * item walks the top to find its subtrees: the host sizes the cut so
+ * that the top stays small (cl/stages.c).  Integer arithmetic only
+ * (atrbvh_size_counted, the CPU's): the sizes are the CPU's exactly. */
+static int count_top(__global const uint *count, __global const uchar *flat,
+                     uint x, uint first, uint cut)
+{
+    return x < first && count[x] > cut && !flat[x];
+}
+
+/* The sizes of the subtree of `root` (not a top node), every node of it
+ * above its collapsed ones. */
+static void count_subtree(__global const uint *left,
+                          __global const uint *right,
+                          __global const uint *parent,
+                          __global const uchar *flat, __global uint *size,
+                          uint root)
+{
+    uint cur = root;
+    for (;;) {
+        while (!flat[cur]) /* (tree leaves are flat) */
+            cur = left[cur];
+        size[cur] = 1u | ATRBVH_SIZE_LEAF;
+        for (;;) {
+            uint up;
+            if (cur == root)
+                return;
+            up = parent[cur];
+            if (left[up] == cur) {
+                cur = right[up];
+                break; /* down its right subtree */
+            }
+            size[up] = atrbvh_size_counted(0u, size[left[up]],
+                                           size[right[up]]);
+            cur = up;
+        }
+    }
+}
+
+__kernel void collapse_count(__global const uint *count,
+                             __global const uint *left,
+                             __global const uint *right,
+                             __global const uint *parent,
+                             __global const uchar *flat, __global uint *size,
+                             __global uint *sync, uint cut, uint items,
+                             atrbvh_kargs_tree a)
+{
+    const uint w = (uint)get_global_id(0), first = a.n - 1u;
+    uint cur = 0u, j = 0u;
+    if (w >= items)
+        return;
+    /* the frontier in pre-order: down the top's left spines, each
+     * frontier root met in turn */
+    if (count_top(count, flat, 0u, first, cut)) {
+        cur = left[0];
+        for (;;) {
+            while (count_top(count, flat, cur, first, cut))
+                cur = left[cur];
+            if (j++ % items == w)
+                count_subtree(left, right, parent, flat, size, cur);
+            /* up while a right child, then over to the right sibling */
+            for (;;) {
+                uint up = parent[cur];
+                if (left[up] == cur) {
+                    cur = right[up];
+                    break;
+                }
+                cur = up;
+                if (cur == 0u)
+                    break;
+            }
+            if (cur == 0u)
+                break;
+        }
+    } else if (w == 0u) {
+        count_subtree(left, right, parent, flat, size, 0u);
+    }
+    if (!last_arrival(sync, items))
+        return;
+    /* the top, over the frontier's sizes (other items' writes: volatile) */
+    if (!count_top(count, flat, 0u, first, cut))
+        return;
+    cur = 0u;
+    for (;;) {
+        while (count_top(count, flat, cur, first, cut))
+            cur = left[cur];
+        for (;;) {
+            uint up;
+            if (cur == 0u)
+                return;
+            up = parent[cur];
+            if (left[up] == cur) {
+                cur = right[up];
+                break;
+            }
+            size[up] = atrbvh_size_counted(0u, load_u32_v(size, left[up]),
+                                           load_u32_v(size, right[up]));
+            cur = up;
+        }
     }
 }
 

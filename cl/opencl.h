@@ -30,6 +30,9 @@
 #include <pthread.h>
 
 #define ATRBVH_CL_NO_INDEX ((uint64_t)-1)
+/* collapse_count's smallest cut: its frontier subtrees hold at least
+ * this many primitives (cl/stages.c, st_collapse) */
+#define ATRBVH_CL_COUNT_CUT_MIN 256u
 
 /* ------------------------------------------------------------- kernels */
 enum {
@@ -46,6 +49,7 @@ enum {
     K_OPT_ROUND,
     K_OPT_ROUND4,
     K_COLLAPSE,
+    K_COLLAPSE_COUNT,
     K_LAYOUT_TOP,
     K_LAYOUT,
     K_INTERSECT_CLOSEST,

@@ -721,18 +721,35 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
     CL_CHECK(atrbvh_i_cl_buffer(c, B_SIZE, nodes, 4, "subtree sizes", error));
     if (run->cfg->method != ATRBVH_METHOD_LBVH) {
         /* (an LBVH's refit computed the sizes: st_refit) */
-        if (!c->counters_zero)
-            CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4,
-                                      "node counters", error));
-        c->counters_zero = 1; /* the kernel leaves them zero */
-        /* the sizes counted from the kept decisions (a.sizes 2), else
-         * decided from the costs (a caller's tree) */
-        a.sizes = c->flags ? 2u : 0u;
-        CL_RUN(c, K_COLLAPSE, run->n, error, CL_BUF(B_BOX), CL_BUF(B_COUNT),
-               CL_BUF(B_COST), CL_BUF(B_LEFT), CL_BUF(B_RIGHT),
-               CL_BUF(B_PARENT), CL_BUF(B_SIZE),
-               CL_BUF(c->flags ? B_FLAT : B_SIZE), CL_BUF(B_COUNTER),
-               CL_VAL(a));
+        if (c->flags) {
+            /* An optimised tree from the hierarchy stage: the sizes
+             * counted from the decisions kept (B_FLAT), the subtrees
+             * below a top of about 4 per item shared by `items` items,
+             * then the top (kernels.cl's collapse_count) */
+            cl_uint items = c->compute_units * 8u, cut;
+            if (items > 256u)
+                items = 256u;
+            if (items > run->n)
+                items = run->n;
+            cut = run->n / (4u * items);
+            if (cut < ATRBVH_CL_COUNT_CUT_MIN)
+                cut = ATRBVH_CL_COUNT_CUT_MIN;
+            CL_CHECK(atrbvh_i_cl_sync(c, error));
+            CL_RUN(c, K_COLLAPSE_COUNT, items, error, CL_BUF(B_COUNT),
+                   CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT),
+                   CL_BUF(B_FLAT), CL_BUF(B_SIZE), CL_BUF(B_SYNC),
+                   CL_VAL(cut), CL_VAL(items), CL_VAL(a));
+        } else {
+            /* a caller's tree: decided from the costs, bottom-up */
+            if (!c->counters_zero)
+                CL_CHECK(atrbvh_i_cl_zero(c, B_COUNTER, nodes * 4,
+                                          "node counters", error));
+            c->counters_zero = 1; /* the kernel leaves them zero */
+            CL_RUN(c, K_COLLAPSE, run->n, error, CL_BUF(B_BOX),
+                   CL_BUF(B_COUNT), CL_BUF(B_COST), CL_BUF(B_LEFT),
+                   CL_BUF(B_RIGHT), CL_BUF(B_PARENT), CL_BUF(B_SIZE),
+                   CL_BUF(B_COUNTER), CL_VAL(a));
+        }
     }
     /* The layout's kernels first (they need nothing from the host) unless
      * they write the output in place, then
@@ -855,6 +872,39 @@ static atrbvh_status copy_out(atrbvh_cl_device *c, int slot, size_t n,
     return atrbvh_i_cl_download(c, slot, *dst, n * size, what, error);
 }
 
+/* The collapse stage's sizes of an optimised tree for its capture: every
+ * node's, from the kept decisions and the topology, on the host. */
+static atrbvh_status counted_sizes(atrbvh_cl_device *c,
+                                   const atrbvh_i_run *run,
+                                   atrbvh_i_capture *cap, atrbvh_error *error)
+{
+    const size_t nodes = tree_nodes(run), inner = run->n - 1u;
+    uint32_t *left = atrbvh_i_alloc_array(inner ? inner : 1, 4);
+    uint32_t *right = atrbvh_i_alloc_array(inner ? inner : 1, 4);
+    unsigned char *flat = atrbvh_i_alloc_array(nodes, 1);
+    atrbvh_status st = ATRBVH_OK;
+    if (!left || !right || !flat)
+        st = nomem(error);
+    if (st == ATRBVH_OK && inner > 0)
+        st = atrbvh_i_cl_download(c, B_LEFT, left, inner * 4, "left", error);
+    if (st == ATRBVH_OK && inner > 0)
+        st = atrbvh_i_cl_download(c, B_RIGHT, right, inner * 4, "right",
+                                  error);
+    if (st == ATRBVH_OK)
+        st = atrbvh_i_cl_download(c, B_FLAT, flat, nodes,
+                                  "collapse decisions", error);
+    if (st == ATRBVH_OK) {
+        cap->collapse_size =
+            atrbvh_i_sizes_counted(left, right, flat, run->n);
+        if (!cap->collapse_size)
+            st = nomem(error);
+    }
+    atrbvh_i_free(left);
+    atrbvh_i_free(right);
+    atrbvh_i_free(flat);
+    return st;
+}
+
 static atrbvh_status read_tree(atrbvh_cl_device *c, const atrbvh_i_run *run,
                                int values, atrbvh_i_tree *t,
                                atrbvh_error *error)
@@ -917,6 +967,9 @@ static atrbvh_status cl_capture(atrbvh_device *dev, atrbvh_i_run *run,
     case ATRBVH_STAGE_OPTIMISE:
         return read_tree(c, run, 1, &cap->optimise, error);
     case ATRBVH_STAGE_COLLAPSE:
+        if (c->flags) /* (collapse_count left those below a collapsed
+                       * node: every node's, from the decisions) */
+            return counted_sizes(c, run, cap, error);
         return copy_out(c, B_SIZE, tree_nodes(run), sizeof(uint32_t),
                         &cap->collapse_size, "subtree sizes", error);
     default:

@@ -257,6 +257,15 @@ void atrbvh_i_tree_free(atrbvh_i_tree *t);
  * has them); ATRBVH_ERR_NOMEM with dst empty on failure. */
 atrbvh_status atrbvh_i_tree_copy(atrbvh_i_tree *dst, const atrbvh_i_tree *src,
                                  int values);
+/* Every node's collapse size of a tree of n >= 1 leaves from every
+ * node's kept decision (flat, 2n-1 bytes: an optimised tree's, which the
+ * collapse stages count from, down to the collapsed nodes only), into a
+ * new array of 2n-1 (the library's allocator; NULL when out of memory):
+ * the collapse stage's capture, which holds every node's size, as a
+ * tree decided from its costs has them.  Children before parents (a
+ * breadth-first order backwards), no recursion. */
+uint32_t *atrbvh_i_sizes_counted(const uint32_t *left, const uint32_t *right,
+                                 const unsigned char *flat, uint32_t n);
 
 /* ---------------------------------------------------------- the backend */
 typedef struct atrbvh_i_backend atrbvh_i_backend;

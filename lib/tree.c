@@ -62,6 +62,36 @@ atrbvh_status atrbvh_i_tree_copy(atrbvh_i_tree *dst, const atrbvh_i_tree *src,
     return ATRBVH_OK;
 }
 
+uint32_t *atrbvh_i_sizes_counted(const uint32_t *left, const uint32_t *right,
+                                 const unsigned char *flat, uint32_t n)
+{
+    const size_t nodes = 2 * (size_t)n - 1;
+    uint32_t *size = atrbvh_i_alloc_array(nodes, sizeof *size);
+    uint32_t *queue = atrbvh_i_alloc_array(nodes, sizeof *queue);
+    size_t head = 0, tail = 0;
+    if (!size || !queue) {
+        atrbvh_i_free(size);
+        atrbvh_i_free(queue);
+        return NULL;
+    }
+    queue[tail++] = 0;
+    while (head < tail) { /* (every node once: the tree's) */
+        const uint32_t x = queue[head++];
+        if (x < n - 1) {
+            queue[tail++] = left[x];
+            queue[tail++] = right[x];
+        }
+    }
+    while (tail > 0) {
+        const uint32_t x = queue[--tail];
+        size[x] = x < n - 1 ? atrbvh_size_counted(flat[x], size[left[x]],
+                                                  size[right[x]])
+                            : 1u | ATRBVH_SIZE_LEAF;
+    }
+    atrbvh_i_free(queue);
+    return size;
+}
+
 void atrbvh_i_capture_free(atrbvh_i_capture *c)
 {
     atrbvh_i_free(c->prim_boxes);

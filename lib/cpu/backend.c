@@ -362,22 +362,6 @@ static atrbvh_status capture_refit(atrbvh_i_tree *dst,
     return ATRBVH_OK;
 }
 
-/* Every node's size from its kept collapse decision (flat) into size,
- * also below a collapsed node, which the collapse stage does not visit
- * (collapse.c's count_out): the stage's capture holds every node's, as
- * the OpenCL collapse kernel's climb and a decided tree's do.  Returns
- * the size of `node`. */
-static uint32_t all_sizes(const atrbvh_i_tree *t, const unsigned char *flat,
-                          uint32_t *size, uint32_t node)
-{
-    uint32_t l = 0, r = 0;
-    if (!atrbvh_i_is_leaf(t, node)) {
-        l = all_sizes(t, flat, size, t->left[node]);
-        r = all_sizes(t, flat, size, t->right[node]);
-    }
-    return size[node] = atrbvh_size_counted(flat[node], l, r);
-}
-
 static atrbvh_status cpu_capture(atrbvh_device *dev, atrbvh_i_run *run,
                                  atrbvh_stage stage, atrbvh_i_capture *cap,
                                  atrbvh_error *error)
@@ -413,11 +397,11 @@ static atrbvh_status cpu_capture(atrbvh_device *dev, atrbvh_i_run *run,
         break;
     case ATRBVH_STAGE_COLLAPSE:
         if (c->flat) {
-            cap->collapse_size = atrbvh_i_alloc_array(2 * n - 1,
-                                                      sizeof *c->size);
+            /* every node's (count_out leaves those below a collapsed
+             * one), from the decisions (kept for it: layout.c) */
+            cap->collapse_size = atrbvh_i_sizes_counted(
+                c->tree.left, c->tree.right, c->flat, run->n);
             ok = cap->collapse_size != NULL;
-            if (ok)
-                (void)all_sizes(&c->tree, c->flat, cap->collapse_size, 0);
         } else {
             ok = copy_out(&cap->collapse_size, c->size, 2 * n - 1,
                           sizeof *c->size);

@@ -26,7 +26,8 @@
  * about 7% collapse): ATRBVH(9,2) builds 0.969 on dabrovic_sponza, 0.967
  * on sibenik and 0.971 on the dragon at two threads.  tests/test_collapse
  * checks every node's kept decision against the one decided from the
- * optimised tree's costs.
+ * optimised tree's costs.  The OpenCL backend counts the same way
+ * (cl/kernels.cl's collapse_count).
  *
  * Otherwise (a caller's tree, set_tree) decided, bottom-up in post-order
  * - and counted the same way: the "top" (the nodes of more than

@@ -91,8 +91,7 @@ typedef struct atrbvh_kargs_tree {
     atrbvh_u32 sizes;     /* hierarchy, refit: 1 for the collapse sizes
                              too (LBVH); hierarchy 2 for the collapse
                              decisions (a tree to optimise, which keeps
-                             them), collapse 2 for its sizes counted
-                             from them */
+                             them: collapse_count counts its sizes) */
     atrbvh_u32 ranges;    /* layout: 1 when every subtree holds the leaves
                              of a range of sorted positions, in order (the
                              hierarchy's tree, not optimised) */
