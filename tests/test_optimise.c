@@ -705,6 +705,8 @@ START_TEST(atrbvh_lanes_are_scalar)
                                   "%.17g, scalar %.17g",
                                   model, n, trial, l, found[l], root);
                     ck_assert_uint_eq(topo[l].root, ref.root);
+                    /* the collapse decisions recorded, lane for lane */
+                    ck_assert_uint_eq(topo[l].flat, ref.flat);
                     for (q = 0; q + 1u < n; q++) {
                         ck_assert_msg(topo[l].left[q] == ref.left[q] &&
                                           topo[l].right[q] == ref.right[q],
