@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [13.7349332:109.090983]
-set xtics (20, 50, 100)
+set xrange [12.5982435:95.9691785]
+set xtics (20, 50)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 16.7701579,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 35.0115625,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 36.0921362,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 40.9615195,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 34.0492461,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 65.1098284,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 72.1628079,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 43.0796739,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 28.918199,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 67.7269594,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 51.4588592,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 19.6507105,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 52.1833046,38.1056054 left font ',8' noenhanced front
+set label 'LBVH' at 15.3204942,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 31.2450238,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 33.3269281,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 37.3964392,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 31.8260047,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 60.8595713,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 64.0138618,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 38.4240654,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 27.6329579,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 62.794251,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 47.9665701,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 18.1707329,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 44.8482134,36.836494 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.74356291:25.5100916]
+set xrange [2.74961851:28.3048539]
 set xtics (5, 10, 20)
 set yrange [63.7338549:116.665389]
 unset label
-set label 'LBVH' at 3.41160799,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 8.27991783,75.98974 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 5.73488502,74.8489989 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 8.51304927,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 8.06544777,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 14.2848174,72.4804197 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 16.3526802,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 13.1159472,67.3811972 left font ',8' noenhanced front
-set label 'embree_low' at 5.79337928,110.413633 left font ',8' noenhanced front
-set label 'embree_medium' at 14.0788293,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 9.17576893,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 2.80070054,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 10.8153126,71.690965 left font ',8' noenhanced front
+set label 'LBVH' at 3.59997827,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 7.40787918,77.3438024 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 7.52670884,73.4949364 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 9.98648617,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 7.45588832,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 10.7344996,71.1263572 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 17.7797215,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 12.7593498,67.3811972 left font ',8' noenhanced front
+set label 'embree_low' at 5.60264185,110.413633 left font ',8' noenhanced front
+set label 'embree_medium' at 13.000726,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 9.45369986,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 2.80952366,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 7.14193484,68.98284 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

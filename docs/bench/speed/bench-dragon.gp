@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [37.1726771:360.280654]
+set xrange [28.597259:282.687152]
 set xtics (50, 100, 200)
 set yrange [55.0033068:80.2279756]
 unset label
-set label 'LBVH' at 46.2662485,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 116.058044,62.7681885 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 87.3575518,63.1337865 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 85.8349304,61.8504211 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 97.4421096,60.8121596 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 132.384311,59.8198288 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 210.586681,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 126.644223,61.5759794 left font ',8' noenhanced front
-set label 'embree_low' at 73.6367661,77.248684 left font ',8' noenhanced front
-set label 'embree_medium' at 229.046794,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 155.457399,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 55.1721649,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 192.326314,61.4574418 left font ',8' noenhanced front
+set label 'LBVH' at 31.0058609,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 81.0801305,63.4134707 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 64.5986522,61.8432221 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 94.140608,62.4957033 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 77.6699373,60.8121596 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 108.145066,59.8198288 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 169.933607,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 121.597205,61.3999933 left font ',8' noenhanced front
+set label 'embree_low' at 56.5214991,77.248684 left font ',8' noenhanced front
+set label 'embree_medium' at 124.297187,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 179.011675,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 38.9829154,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 114.188601,62.7480062 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
