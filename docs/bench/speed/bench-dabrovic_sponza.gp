@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.74961851:28.3048539]
+set xrange [2.70469625:25.3989898]
 set xtics (5, 10, 20)
 set yrange [63.7338549:116.665389]
 unset label
-set label 'LBVH' at 3.59997827,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 7.40787918,77.3438024 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 7.52670884,73.4949364 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 9.98648617,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 7.45588832,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 10.7344996,71.1263572 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 17.7797215,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 12.7593498,67.3811972 left font ',8' noenhanced front
-set label 'embree_low' at 5.60264185,110.413633 left font ',8' noenhanced front
-set label 'embree_medium' at 13.000726,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 9.45369986,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 2.80952366,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 7.14193484,68.98284 left font ',8' noenhanced front
+set label 'LBVH' at 2.92719293,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 7.41277156,77.3438024 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 6.06194726,73.4949364 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 8.85378919,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 7.52068085,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 11.2949898,71.1263572 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 16.2493379,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 14.3155462,67.3811972 left font ',8' noenhanced front
+set label 'embree_low' at 5.77754859,110.413633 left font ',8' noenhanced front
+set label 'embree_medium' at 14.760633,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 10.5980076,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 3.74271515,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 7.6425357,68.98284 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
