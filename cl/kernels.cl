@@ -1165,24 +1165,28 @@ __kernel void collapse(__global const atrbvh_box *box,
  * that the top stays small (cl/stages.c).  Integer arithmetic only
  * (atrbvh_size_counted, the CPU's): the sizes are the CPU's exactly. */
 static int count_top(__global const uint *count, __global const uchar *flat,
-                     uint x, uint first, uint cut)
+                     uint x, uint cut)
 {
-    return x < first && count[x] > cut && !flat[x];
+    return !flat[x] && count[x] > cut; /* (tree leaves are flat) */
 }
 
-/* The sizes of the subtree of `root` (not a top node), every node of it
- * above its collapsed ones. */
-static void count_subtree(__global const uint *left,
-                          __global const uint *right,
-                          __global const uint *parent,
-                          __global const uchar *flat, __global uint *size,
-                          uint root)
+/* The sizes of the subtree of `root`, every node of it above its
+ * collapsed ones, by a stackless post-order walk; a node of at most
+ * `done` primitives that does not collapse was counted already (the
+ * frontier, for the top: `done` the cut; 0 for a frontier subtree), as
+ * the CPU's count_out.  Sizes counted by other items are read volatile. */
+static void count_walk(__global const uint *count, __global const uint *left,
+                       __global const uint *right,
+                       __global const uint *parent,
+                       __global const uchar *flat, __global uint *size,
+                       uint root, uint done)
 {
     uint cur = root;
     for (;;) {
-        while (!flat[cur]) /* (tree leaves are flat) */
+        while (count_top(count, flat, cur, done))
             cur = left[cur];
-        size[cur] = 1u | ATRBVH_SIZE_LEAF;
+        if (flat[cur])
+            size[cur] = 1u | ATRBVH_SIZE_LEAF;
         for (;;) {
             uint up;
             if (cur == root)
@@ -1192,8 +1196,8 @@ static void count_subtree(__global const uint *left,
                 cur = right[up];
                 break; /* down its right subtree */
             }
-            size[up] = atrbvh_size_counted(0u, size[left[up]],
-                                           size[right[up]]);
+            size[up] = atrbvh_size_counted(0u, load_u32_v(size, left[up]),
+                                           load_u32_v(size, right[up]));
             cur = up;
         }
     }
@@ -1204,62 +1208,42 @@ __kernel void collapse_count(__global const uint *count,
                              __global const uint *right,
                              __global const uint *parent,
                              __global const uchar *flat, __global uint *size,
-                             __global uint *sync, uint cut, uint items,
-                             atrbvh_kargs_tree a)
+                             __global uint *sync, uint cut, uint items)
 {
-    const uint w = (uint)get_global_id(0), first = a.n - 1u;
-    uint cur = 0u, j = 0u;
+    const uint w = (uint)get_global_id(0);
+    uint cur, j = 0u;
     if (w >= items)
         return;
     /* the frontier in pre-order: down the top's left spines, each
-     * frontier root met in turn */
-    if (count_top(count, flat, 0u, first, cut)) {
-        cur = left[0];
-        for (;;) {
-            while (count_top(count, flat, cur, first, cut))
-                cur = left[cur];
-            if (j++ % items == w)
-                count_subtree(left, right, parent, flat, size, cur);
-            /* up while a right child, then over to the right sibling */
-            for (;;) {
-                uint up = parent[cur];
-                if (left[up] == cur) {
-                    cur = right[up];
-                    break;
-                }
-                cur = up;
-                if (cur == 0u)
-                    break;
-            }
-            if (cur == 0u)
-                break;
-        }
-    } else if (w == 0u) {
-        count_subtree(left, right, parent, flat, size, 0u);
+     * frontier root met in turn (the root alone when it is no top node) */
+    if (!count_top(count, flat, 0u, cut)) {
+        if (w == 0u)
+            count_walk(count, left, right, parent, flat, size, 0u, 0u);
+        return;
     }
-    if (!last_arrival(sync, items))
-        return;
-    /* the top, over the frontier's sizes (other items' writes: volatile) */
-    if (!count_top(count, flat, 0u, first, cut))
-        return;
-    cur = 0u;
+    cur = left[0];
     for (;;) {
-        while (count_top(count, flat, cur, first, cut))
+        while (count_top(count, flat, cur, cut))
             cur = left[cur];
+        if (j++ % items == w)
+            count_walk(count, left, right, parent, flat, size, cur, 0u);
+        /* up while a right child, then over to the right sibling */
         for (;;) {
-            uint up;
-            if (cur == 0u)
-                return;
-            up = parent[cur];
+            uint up = parent[cur];
             if (left[up] == cur) {
                 cur = right[up];
                 break;
             }
-            size[up] = atrbvh_size_counted(0u, load_u32_v(size, left[up]),
-                                           load_u32_v(size, right[up]));
             cur = up;
+            if (cur == 0u)
+                break;
         }
+        if (cur == 0u)
+            break;
     }
+    /* the top, over the frontier's sizes, by the last item to finish */
+    if (last_arrival(sync, items))
+        count_walk(count, left, right, parent, flat, size, 0u, cut);
 }
 
 /* ------------------------------------------------------------------ layout */

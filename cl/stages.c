@@ -738,7 +738,7 @@ static atrbvh_status st_collapse(atrbvh_device *dev, atrbvh_i_run *run,
             CL_RUN(c, K_COLLAPSE_COUNT, items, error, CL_BUF(B_COUNT),
                    CL_BUF(B_LEFT), CL_BUF(B_RIGHT), CL_BUF(B_PARENT),
                    CL_BUF(B_FLAT), CL_BUF(B_SIZE), CL_BUF(B_SYNC),
-                   CL_VAL(cut), CL_VAL(items), CL_VAL(a));
+                   CL_VAL(cut), CL_VAL(items));
         } else {
             /* a caller's tree: decided from the costs, bottom-up */
             if (!c->counters_zero)

@@ -105,15 +105,20 @@ static double decide(collapse_ctx *c, uint32_t node)
 
 /* With the decisions kept (an optimised tree: c->flat, optimise.c): the
  * size of `node`'s subtree counted from them, no node below a collapsed
- * one visited (nor its size set: the layout reads none of them). */
-static uint32_t count_out(collapse_ctx *c, uint32_t node)
+ * one visited (nor its size set: the layout reads none of them; tree
+ * leaves are collapsed).  A node of at most `done` primitives that does
+ * not collapse was counted already (the frontier, for the top's count:
+ * `done` the cut; 0 otherwise). */
+static uint32_t count_out(collapse_ctx *c, uint32_t node, uint32_t done)
 {
     const atrbvh_i_tree *t = c->t;
     const unsigned flat = c->flat[node];
     uint32_t l = 0, r = 0;
     if (!flat) {
-        l = count_out(c, t->left[node]);
-        r = count_out(c, t->right[node]);
+        if (t->count[node] <= done)
+            return c->size[node];
+        l = count_out(c, t->left[node], done);
+        r = count_out(c, t->right[node], done);
     }
     return c->size[node] = atrbvh_size_counted(flat, l, r);
 }
@@ -149,22 +154,6 @@ static double top_decide(collapse_ctx *c, uint32_t node)
     return decided(c, node, cl, top_decide(c, t->right[node]));
 }
 
-/* count_out over the top, the frontier's sizes already counted. */
-static uint32_t top_count(collapse_ctx *c, uint32_t node)
-{
-    const atrbvh_i_tree *t = c->t;
-    unsigned flat;
-    uint32_t l = 0, r = 0;
-    if (atrbvh_i_is_leaf(t, node) || t->count[node] <= c->cut)
-        return c->size[node];
-    flat = c->flat[node];
-    if (!flat) {
-        l = top_count(c, t->left[node]);
-        r = top_count(c, t->right[node]);
-    }
-    return c->size[node] = atrbvh_size_counted(flat, l, r);
-}
-
 /* Every node's size: the frontier on the threads, then the top; on one
  * thread when the tree is small or the frontier does not fit.  With the
  * decisions kept, counted (count_out), else decided (decide). */
@@ -180,7 +169,7 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
     c->cut = atrbvh_i_frontier_cut(root_count, threads);
     if (threads < 2 || root_count < PARALLEL_MIN || c->cut < 1u) {
         if (c->flat)
-            (void)count_out(c, 0);
+            (void)count_out(c, 0, 0);
         else
             (void)decide(c, 0);
         return ATRBVH_OK;
@@ -197,7 +186,7 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
     c->list = (uint32_t *)(void *)(block + cap * sizeof(double));
     if (!frontier(c, 0, &k, cap) || k < 2u) {
         if (c->flat)
-            (void)count_out(c, 0);
+            (void)count_out(c, 0, 0);
         else
             (void)decide(c, 0);
         return ATRBVH_OK;
@@ -211,7 +200,7 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
 #endif
         for (i = 0; i < (int64_t)k; i++) {
             if (c->flat)
-                (void)count_out(c, c->list[i]);
+                (void)count_out(c, c->list[i], 0);
             else
                 c->cost[i] = decide(c, c->list[i]);
         }
@@ -219,7 +208,7 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
     }
     c->next = 0;
     if (c->flat)
-        (void)top_count(c, 0);
+        (void)count_out(c, 0, c->cut);
     else
         (void)top_decide(c, 0);
     return ATRBVH_OK;

@@ -109,7 +109,7 @@ typedef struct hier_ctx {
     atrbvh_i_tree *t;
     int64_t n;
     const uint64_t *keys;      /* TOPOLOGY: the sorted keys            */
-    const atrbvh_cost_params *p; /* SIZES, COSTS                       */
+    const atrbvh_cost_params *p; /* SIZES, COSTS, FLAGS                */
     uint32_t *size;            /* SIZES: collapse sizes (2n-1)         */
     unsigned char *flat;       /* FLAGS: collapse decisions (2n-1)     */
     /* SIZES, or NULL: leaf i's box is t->box[by_order[i]] (the primitive
