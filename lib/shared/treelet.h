@@ -864,6 +864,8 @@ typedef long4 atrbvh_v4m;   /* a comparison's lanes: all ones or 0  */
 #define atrbvh_v4_sub(a, b) ((a) - (b))
 #define atrbvh_v4_mul(a, b) ((a) * (b))
 #define atrbvh_v4_min(a, b) select((b), (a), (a) < (b))
+#define atrbvh_v4_max(a, b) select((b), (a), (a) > (b))
+#define atrbvh_v4_narrow(v) convert_float4(v)
 #define atrbvh_v4_lt(a, b) ((a) < (b))
 #define atrbvh_v4_eq(a, b) ((a) == (b))
 #define atrbvh_v4_select(a, b, m) select((a), (b), (m))
@@ -884,6 +886,17 @@ typedef uint4 atrbvh_v4u; /* four counts                          */
 #define atrbvh_v4_uset(a, b, c, d) ((uint4)((a), (b), (c), (d)))
 #define atrbvh_v4_ucvt(v) convert_double4(v)
 #define atrbvh_v4_le(a, b) ((a) <= (b))
+/* The six coordinate vectors of four boxes (pointers), lane l box pl. */
+#define ATRBVH_V4_BOXES(p0, p1, p2, p3, v)                                     \
+    do {                                                                       \
+        int c_;                                                                \
+        for (c_ = 0; c_ < 3; c_++) {                                           \
+            (v)[c_] = atrbvh_v4_fset((p0)->min[c_], (p1)->min[c_],             \
+                                     (p2)->min[c_], (p3)->min[c_]);            \
+            (v)[c_ + 3] = atrbvh_v4_fset((p0)->max[c_], (p1)->max[c_],         \
+                                         (p2)->max[c_], (p3)->max[c_]);        \
+        }                                                                      \
+    } while (0)
 #else
 typedef __m128 atrbvh_v4f;
 typedef __m256d atrbvh_v4d;
@@ -904,6 +917,8 @@ typedef __m256d atrbvh_v4m;
 #define atrbvh_v4_sub(a, b) _mm256_sub_pd((a), (b))
 #define atrbvh_v4_mul(a, b) _mm256_mul_pd((a), (b))
 #define atrbvh_v4_min(a, b) _mm256_min_pd((a), (b))
+#define atrbvh_v4_max(a, b) _mm256_max_pd((a), (b))
+#define atrbvh_v4_narrow(v) _mm256_cvtpd_ps(v)
 #define atrbvh_v4_lt(a, b) _mm256_cmp_pd((a), (b), _CMP_LT_OQ)
 #define atrbvh_v4_eq(a, b) _mm256_cmp_pd((a), (b), _CMP_EQ_OQ)
 #define atrbvh_v4_select(a, b, m) atrbvh_select4((a), (b), (m))
@@ -925,6 +940,36 @@ typedef __m128i atrbvh_v4u;
     _mm_set_epi32((int)(d), (int)(c), (int)(b), (int)(a))
 #define atrbvh_v4_ucvt(v) atrbvh_ucvt4(v)
 #define atrbvh_v4_le(a, b) _mm256_cmp_pd((a), (b), _CMP_LE_OQ)
+/* ATRBVH_V4_BOXES: the six coordinate vectors of four boxes by a
+ * transpose of their rows (min x, y, z, max x in one load, max y, z in
+ * another), where building each vector from four scalars took 24 loads
+ * and 18 inserts. */
+ATRBVH_V4_FN void atrbvh_v4_boxes(const atrbvh_box *p0, const atrbvh_box *p1,
+                                  const atrbvh_box *p2, const atrbvh_box *p3,
+                                  atrbvh_v4f v[6])
+{
+    __m128 r0 = _mm_loadu_ps(p0->min), r1 = _mm_loadu_ps(p1->min),
+           r2 = _mm_loadu_ps(p2->min), r3 = _mm_loadu_ps(p3->min);
+    const __m128 zero = _mm_setzero_ps();
+    const __m128 s0 = _mm_loadl_pi(zero, (const __m64 *)(const void *)
+                                             &p0->max[1]),
+                 s1 = _mm_loadl_pi(zero, (const __m64 *)(const void *)
+                                             &p1->max[1]),
+                 s2 = _mm_loadl_pi(zero, (const __m64 *)(const void *)
+                                             &p2->max[1]),
+                 s3 = _mm_loadl_pi(zero, (const __m64 *)(const void *)
+                                             &p3->max[1]);
+    const __m128 u01 = _mm_unpacklo_ps(s0, s1), u23 = _mm_unpacklo_ps(s2, s3);
+    _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+    v[0] = r0;
+    v[1] = r1;
+    v[2] = r2;
+    v[3] = r3;
+    v[4] = _mm_movelh_ps(u01, u23);
+    v[5] = _mm_movehl_ps(u23, u01);
+}
+#define ATRBVH_V4_BOXES(p0, p1, p2, p3, v)                                     \
+    atrbvh_v4_boxes((p0), (p1), (p2), (p3), (v))
 /* Four u32 as exact doubles (AVX converts signed ones only): x - 2^31 as
  * a signed integer, converted, plus 2^31, every step exact. */
 ATRBVH_V4_FN atrbvh_v4d atrbvh_ucvt4(atrbvh_v4u v)
@@ -937,20 +982,26 @@ ATRBVH_V4_FN atrbvh_v4d atrbvh_ucvt4(atrbvh_v4u v)
 
 /* atrbvh_box_area of four lanes' boxes, given by coordinate: its double
  * operations in its order, lane for lane. */
-ATRBVH_V4_FN atrbvh_v4d atrbvh_area4(atrbvh_v4f x0, atrbvh_v4f y0,
-                                     atrbvh_v4f z0, atrbvh_v4f x1,
-                                     atrbvh_v4f y1, atrbvh_v4f z1)
+ATRBVH_V4_FN atrbvh_v4d atrbvh_area4d(atrbvh_v4d x0, atrbvh_v4d y0,
+                                      atrbvh_v4d z0, atrbvh_v4d x1,
+                                      atrbvh_v4d y1, atrbvh_v4d z1)
 {
-    const atrbvh_v4d dx = atrbvh_v4_sub(atrbvh_v4_widen(x1),
-                                        atrbvh_v4_widen(x0)),
-                     dy = atrbvh_v4_sub(atrbvh_v4_widen(y1),
-                                        atrbvh_v4_widen(y0)),
-                     dz = atrbvh_v4_sub(atrbvh_v4_widen(z1),
-                                        atrbvh_v4_widen(z0));
+    const atrbvh_v4d dx = atrbvh_v4_sub(x1, x0), dy = atrbvh_v4_sub(y1, y0),
+                     dz = atrbvh_v4_sub(z1, z0);
     atrbvh_v4d t = atrbvh_v4_mul(dx, dy);
     t = atrbvh_v4_add(t, atrbvh_v4_mul(dy, dz));
     t = atrbvh_v4_add(t, atrbvh_v4_mul(dz, dx));
     return atrbvh_v4_mul(atrbvh_v4_set1(2.0), t);
+}
+
+/* The same of boxes given as floats (widened exactly). */
+ATRBVH_V4_FN atrbvh_v4d atrbvh_area4(atrbvh_v4f x0, atrbvh_v4f y0,
+                                     atrbvh_v4f z0, atrbvh_v4f x1,
+                                     atrbvh_v4f y1, atrbvh_v4f z1)
+{
+    return atrbvh_area4d(atrbvh_v4_widen(x0), atrbvh_v4_widen(y0),
+                         atrbvh_v4_widen(z0), atrbvh_v4_widen(x1),
+                         atrbvh_v4_widen(y1), atrbvh_v4_widen(z1));
 }
 
 /* atrbvh_trbvh_min on the four lanes (its enumeration, two running minima
@@ -1520,14 +1571,19 @@ ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
  * branches on a value and every loop's trip count depends on the step
  * only, the same in every treelet.
  *
- * The arithmetic is the scalar one's: the unions are VMINPS and VMAXPS
- * (OpenCL: the same selects, atrbvh_v4_fmin) with the scalar's first
+ * The arithmetic is the scalar one's: the clusters' boxes are kept
+ * widened to doubles (exact), and the unions are VMINPD and VMAXPD
+ * (OpenCL: the same selects, atrbvh_v4_min) with the scalar's first
  * operand (the row's cluster when the matrix is
  * filled, the merged cluster after a merge, slot j's in the merge: x < y
- * ? x : y lane for lane), the areas atrbvh_box_area's double operations
+ * ? x : y lane for lane), the widened unions of floats bit for bit
+ * (atrbvh_union_area4); the areas atrbvh_box_area's double operations
  * in its order, the merge's cost atrbvh_node_cost's (VMINPD of flat and
  * binary is `flat < binary ? flat : binary`, blended in where the count
- * may collapse).
+ * may collapse); the merged boxes narrowed back (exact) for the
+ * topologies.  Kept in floats, the boxes took six conversions per union
+ * (dabrovic_sponza's ATRBVH(9,2) at two threads: builds 0.975-0.989 of
+ * that, docs/bench/abpair.c).
  *
  * Scratch: dist4, 32-byte aligned, atrbvh_agglomerate4_doubles(n)
  * doubles: the four triangular matrices interleaved, entry k of lane l at
@@ -1539,25 +1595,27 @@ ATRBVH_FN atrbvh_u64 atrbvh_agglomerate4_doubles(atrbvh_u32 n)
     return 4u * ((atrbvh_u64)n * (n - 1u) / 2u);
 }
 
-/* The six coordinate vectors of one slot's four boxes. */
-ATRBVH_V4_FN void atrbvh_load_box4(float b[6][4], atrbvh_v4f v[6])
+/* The union areas of the four lanes' boxes q (the first operand) and b,
+ * both widened: VMINPD and VMAXPD of widened floats are the widened
+ * VMINPS and VMAXPS (the conversion is exact and keeps the order and
+ * the sign of zero, and both keep the second operand on equal values),
+ * so the areas are atrbvh_area4's of the float unions. */
+ATRBVH_V4_FN atrbvh_v4d atrbvh_union_area4(atrbvh_v4d q0, atrbvh_v4d q1,
+                                           atrbvh_v4d q2, atrbvh_v4d q3,
+                                           atrbvh_v4d q4, atrbvh_v4d q5,
+                                           double b[6][4])
 {
-    atrbvh_u32 c;
-    for (c = 0; c < 6u; c++)
-        v[c] = atrbvh_v4_fload(b[c]);
+    return atrbvh_area4d(atrbvh_v4_min(q0, atrbvh_v4_load(b[0])),
+                         atrbvh_v4_min(q1, atrbvh_v4_load(b[1])),
+                         atrbvh_v4_min(q2, atrbvh_v4_load(b[2])),
+                         atrbvh_v4_max(q3, atrbvh_v4_load(b[3])),
+                         atrbvh_v4_max(q4, atrbvh_v4_load(b[4])),
+                         atrbvh_v4_max(q5, atrbvh_v4_load(b[5])));
 }
-
-/* The union areas of the four lanes' boxes q (the first operand) and b. */
-ATRBVH_V4_FN atrbvh_v4d atrbvh_union_area4(const atrbvh_v4f q[6],
-                                                float bf[6][4])
-{
-    return atrbvh_area4(atrbvh_v4_fmin(q[0], atrbvh_v4_fload(bf[0])),
-                        atrbvh_v4_fmin(q[1], atrbvh_v4_fload(bf[1])),
-                        atrbvh_v4_fmin(q[2], atrbvh_v4_fload(bf[2])),
-                        atrbvh_v4_fmax(q[3], atrbvh_v4_fload(bf[3])),
-                        atrbvh_v4_fmax(q[4], atrbvh_v4_fload(bf[4])),
-                        atrbvh_v4_fmax(q[5], atrbvh_v4_fload(bf[5])));
-}
+/* (six vectors, not an array: GCC 12 copied an array of them through
+ * the stack in halves, and each reload waited for both stores) */
+#define ATRBVH_UNION_AREA4(q, b)                                               \
+    atrbvh_union_area4((q)[0], (q)[1], (q)[2], (q)[3], (q)[4], (q)[5], (b))
 
 /* One live entry of the search: v at pair code `at` (64 i + j) taken
  * where strictly lower than the lanes' minimum so far. */
@@ -1575,15 +1633,16 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
                     atrbvh_treelet_topo *const topo[4], double found[4])
 {
     /* per slot: the four lanes' cluster boxes (six coordinates of four
-     * lanes), costs, counts and codes; the merged boxes */
-    ATRBVH_V4_ALIGNED(16) float box[ATRBVH_TREELET_MAX][6][4];
+     * lanes, widened to doubles: no conversion per union), costs, counts
+     * and codes; the merged boxes (and as floats, for the topologies) */
+    ATRBVH_V4_ALIGNED(32) double box[ATRBVH_TREELET_MAX][6][4];
     ATRBVH_V4_ALIGNED(32) double area_of[ATRBVH_TREELET_MAX][4];
     ATRBVH_V4_ALIGNED(32) double pick[4], cost_of[4];
-    ATRBVH_V4_ALIGNED(16) float merged[6][4];
+    ATRBVH_V4_ALIGNED(32) double merged[6][4];
+    ATRBVH_V4_ALIGNED(16) float mergedf[6][4];
     double cost[ATRBVH_TREELET_MAX][4];
     atrbvh_u32 count[ATRBVH_TREELET_MAX][4], code[ATRBVH_TREELET_MAX][4];
     atrbvh_u32 base[ATRBVH_TREELET_MAX], cnt[4];
-    atrbvh_v4f row[6];
     atrbvh_v4m is_i[ATRBVH_TREELET_MAX], is_j[ATRBVH_TREELET_MAX];
     const atrbvh_u32 lim = !p->collapse          ? 0u
                            : p->max_leaf == 0u ? ATRBVH_U32_MAX
@@ -1596,16 +1655,11 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
     for (a = 0; a < n; a++) {
         const atrbvh_u32 n0 = tl[0]->leaf[a], n1 = tl[1]->leaf[a],
                          n2 = tl[2]->leaf[a], n3 = tl[3]->leaf[a];
-        const atrbvh_box b0 = t->box[n0], b1 = t->box[n1], b2 = t->box[n2],
-                         b3 = t->box[n3];
-        for (c = 0; c < 3u; c++) {
-            atrbvh_v4_fstore(box[a][c], atrbvh_v4_fset(b0.min[c], b1.min[c],
-                                                           b2.min[c],
-                                                           b3.min[c]));
-            atrbvh_v4_fstore(box[a][c + 3u],
-                               atrbvh_v4_fset(b0.max[c], b1.max[c],
-                                                b2.max[c], b3.max[c]));
-        }
+        atrbvh_v4f q4[6];
+        ATRBVH_V4_BOXES(&t->box[n0], &t->box[n1], &t->box[n2], &t->box[n3],
+                        q4);
+        for (c = 0; c < 6u; c++)
+            atrbvh_v4_store(box[a][c], atrbvh_v4_widen(q4[c]));
         cost[a][0] = t->cost[n0];
         cost[a][1] = t->cost[n1];
         cost[a][2] = t->cost[n2];
@@ -1624,9 +1678,15 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
      * atrbvh_agglomerate_at fills it), searched on the way */
     for (r = 1; r < n; r++) {
         atrbvh_v4d k = atrbvh_v4_set1((double)(64u * r));
-        atrbvh_load_box4(box[r], row);
+        const atrbvh_v4d r0 = atrbvh_v4_load(box[r][0]),
+                         r1 = atrbvh_v4_load(box[r][1]),
+                         r2 = atrbvh_v4_load(box[r][2]),
+                         r3 = atrbvh_v4_load(box[r][3]),
+                         r4 = atrbvh_v4_load(box[r][4]),
+                         r5 = atrbvh_v4_load(box[r][5]);
         for (c = 0; c < r; c++, k = atrbvh_v4_add(k, one)) {
-            const atrbvh_v4d v = atrbvh_union_area4(row, box[c]);
+            const atrbvh_v4d v =
+                atrbvh_union_area4(r0, r1, r2, r3, r4, r5, box[c]);
             atrbvh_v4_store(dist4 + 4u * (base[r] + c), v);
             ATRBVH_AGG4_SEEK(v, k, best, at);
         }
@@ -1636,7 +1696,7 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
         atrbvh_u32 I[4], J[4], fbits;
         atrbvh_v4d iv, jv, binary, flat, res, far;
         atrbvh_v4m take;
-        atrbvh_v4f mb[6];
+        atrbvh_v4d mb[6];
         /* each lane's pair: slot j's cluster (left) and slot i's */
         atrbvh_v4_store(pick, at);
         for (l = 0; l < 4u; l++) {
@@ -1649,14 +1709,15 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
         jv = atrbvh_v4_set((double)J[0], (double)J[1], (double)J[2],
                              (double)J[3]);
         for (c = 0; c < 6u; c++) {
-            const atrbvh_v4f x =
-                atrbvh_v4_fset(box[J[0]][c][0], box[J[1]][c][1],
-                                 box[J[2]][c][2], box[J[3]][c][3]);
-            const atrbvh_v4f y =
-                atrbvh_v4_fset(box[I[0]][c][0], box[I[1]][c][1],
-                                 box[I[2]][c][2], box[I[3]][c][3]);
-            mb[c] = c < 3u ? atrbvh_v4_fmin(x, y) : atrbvh_v4_fmax(x, y);
-            atrbvh_v4_fstore(merged[c], mb[c]);
+            const atrbvh_v4d x =
+                atrbvh_v4_set(box[J[0]][c][0], box[J[1]][c][1],
+                              box[J[2]][c][2], box[J[3]][c][3]);
+            const atrbvh_v4d y =
+                atrbvh_v4_set(box[I[0]][c][0], box[I[1]][c][1],
+                              box[I[2]][c][2], box[I[3]][c][3]);
+            mb[c] = c < 3u ? atrbvh_v4_min(x, y) : atrbvh_v4_max(x, y);
+            atrbvh_v4_store(merged[c], mb[c]);
+            atrbvh_v4_fstore(mergedf[c], atrbvh_v4_narrow(mb[c]));
         }
         /* the merges' costs, atrbvh_node_cost lane for lane: the pair's
          * distance (best) is the merged area */
@@ -1687,9 +1748,9 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
         for (l = 0; l < 4u; l++) {
             atrbvh_treelet_topo *to = topo[l];
             const atrbvh_u32 i = I[l], j = J[l];
-            const float x0 = merged[0][l], y0 = merged[1][l],
-                        z0 = merged[2][l], x1 = merged[3][l],
-                        y1 = merged[4][l], z1 = merged[5][l];
+            const float x0 = mergedf[0][l], y0 = mergedf[1][l],
+                        z0 = mergedf[2][l], x1 = mergedf[3][l],
+                        y1 = mergedf[4][l], z1 = mergedf[5][l];
             to->left[q] = code[j][l];
             to->right[q] = code[i][l];
             to->count[q] = cnt[l];
@@ -1716,13 +1777,13 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
          * atrbvh_agglomerate_at's atrbvh_union_areas), slot i's being
          * the last cluster's in its lanes, and each slot's masks: whether
          * it is the lane's slot i, slot j */
-        far = atrbvh_union_area4(mb, box[last]);
+        far = ATRBVH_UNION_AREA4(mb, box[last]);
         for (a = 0; a < last; a++) {
             const atrbvh_v4d av = atrbvh_v4_set1((double)a);
             is_i[a] = atrbvh_v4_eq(av, iv);
             is_j[a] = atrbvh_v4_eq(av, jv);
             atrbvh_v4_store(area_of[a],
-                            atrbvh_v4_select(atrbvh_union_area4(mb, box[a]),
+                            atrbvh_v4_select(ATRBVH_UNION_AREA4(mb, box[a]),
                                              far, is_i[a]));
         }
         /* the live entries of the next step rewritten, lane for lane:
@@ -1753,8 +1814,8 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
         /* the boxes: the merge into slot j, the last cluster into slot i
          * (j is neither; i may be the last slot) */
         for (l = 0; l < 4u; l++) {
-            float *bj = &box[J[l]][0][l], *bi = &box[I[l]][0][l];
-            const float *bl = &box[last][0][l];
+            double *bj = &box[J[l]][0][l], *bi = &box[I[l]][0][l];
+            const double *bl = &box[last][0][l];
             bj[0] = merged[0][l];
             bj[4] = merged[1][l];
             bj[8] = merged[2][l];
