@@ -1303,8 +1303,8 @@ __kernel void layout_top(__global const uint *count, __global const uint *left,
         while (!(size[cur] & ATRBVH_SIZE_LEAF) &&
                count[cur] > ATRBVH_CL_LAYOUT_CUT) {
             uint l = left[cur];
-            nodes[pos] = atrbvh_layout_node(box[cur], size[cur], count[cur],
-                                            pos, prim, size[l]);
+            atrbvh_layout_write(&nodes[pos], box[cur], size[cur], count[cur],
+                                pos, prim, size[l]);
             cur = l;
             pos += 1u;
         }
@@ -1339,13 +1339,13 @@ static void layout_subtree(__global const atrbvh_box *box,
         /* emit down the left spine to a leaf (a collapsed one too) */
         while (!((s = size[cur]) & ATRBVH_SIZE_LEAF)) {
             uint l = left[cur];
-            nodes[pos] = atrbvh_layout_node(box[cur], s, count[cur], pos,
-                                            prim, size[l]);
+            atrbvh_layout_write(&nodes[pos], box[cur], s, count[cur], pos,
+                                prim, size[l]);
             cur = l;
             pos += 1u;
         }
-        nodes[pos] = atrbvh_layout_node(box[cur], s, count[cur], pos, prim,
-                                        0u);
+        atrbvh_layout_write(&nodes[pos], box[cur], s, count[cur], pos, prim,
+                            0u);
         if (cur >= first) {
             prims[prim] = leaf_prim[cur - first];
         } else if (a.ranges) {

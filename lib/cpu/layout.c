@@ -235,7 +235,7 @@ static inline void range_leaf(layout_ctx *c, uint32_t node, uint32_t at,
         for (k = 1; k < cnt; k++)
             b = atrbvh_box_union(b, leaf_box(c, t->n - 1 + prim_at + k));
     }
-    c->nodes[at] = atrbvh_layout_node(b, c->size[node], cnt, at, prim_at, 0);
+    atrbvh_layout_write(&c->nodes[at], b, c->size[node], cnt, at, prim_at, 0);
 }
 
 /* Positions ahead of a node of emit_small whose tree entries are
@@ -354,8 +354,8 @@ static void emit(layout_ctx *c, uint32_t node, uint32_t at, uint32_t prim_at)
         b = gather(c, node, c->prims + prim_at);
         if (c->box)
             b = atrbvh_i_is_leaf(t, node) ? leaf_box(c, node) : c->box[node];
-        c->nodes[at] = atrbvh_layout_node(b, c->size[node], t->count[node], at,
-                                          prim_at, 0);
+        atrbvh_layout_write(&c->nodes[at], b, c->size[node], t->count[node],
+                            at, prim_at, 0);
         return;
     }
     emit(c, l, at + 1, prim_at);
@@ -387,8 +387,8 @@ static void emit_inner(layout_ctx *c, uint32_t node, uint32_t at,
         }
         b = atrbvh_box_union(bl, br);
     }
-    c->nodes[at] = atrbvh_layout_node(b, c->size[node], t->count[node], at,
-                                      prim_at, c->size[l]);
+    atrbvh_layout_write(&c->nodes[at], b, c->size[node], t->count[node], at,
+                        prim_at, c->size[l]);
 }
 
 /* A subtree to lay out: its root, output position, first primitive. */

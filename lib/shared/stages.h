@@ -285,28 +285,31 @@ ATRBVH_FN atrbvh_u32 atrbvh_layout_right_prim(atrbvh_u32 prim,
     return prim + count_left;
 }
 
-/* The output node at `pos` (atrbvh_node, depth-first): a leaf (size has
- * ATRBVH_SIZE_LEAF) holds primitives prim .. prim + count - 1; an internal
- * node's left child is the next node and its right child is at
- * atrbvh_layout_right_pos. */
-ATRBVH_FN atrbvh_node atrbvh_layout_node(atrbvh_box b, atrbvh_u32 size,
-                                         atrbvh_u32 count, atrbvh_u32 pos,
-                                         atrbvh_u32 prim, atrbvh_u32 size_left)
+/* Writes the output node at `pos` (atrbvh_node, depth-first) into *out:
+ * a leaf (size has ATRBVH_SIZE_LEAF) holds primitives prim .. prim +
+ * count - 1; an internal node's left child is the next node and its right
+ * child is at atrbvh_layout_right_pos.  Field by field into place: a node
+ * built in a local and copied out was reassembled by GCC 12 through the
+ * stack in pieces of other sizes than it was stored in, and each reload
+ * waited for the stores (perf, the CPU layout: half of emit()'s
+ * samples). */
+ATRBVH_FN void atrbvh_layout_write(ATRBVH_GLOBAL atrbvh_node *out,
+                                   atrbvh_box b, atrbvh_u32 size,
+                                   atrbvh_u32 count, atrbvh_u32 pos,
+                                   atrbvh_u32 prim, atrbvh_u32 size_left)
 {
-    atrbvh_node out;
     int k;
     for (k = 0; k < 3; k++) {
-        out.min[k] = b.min[k];
-        out.max[k] = b.max[k];
+        out->min[k] = b.min[k];
+        out->max[k] = b.max[k];
     }
     if (size & ATRBVH_SIZE_LEAF) {
-        out.index = prim;
-        out.count = count;
+        out->index = prim;
+        out->count = count;
     } else {
-        out.index = atrbvh_layout_right_pos(pos, size_left);
-        out.count = 0u;
+        out->index = atrbvh_layout_right_pos(pos, size_left);
+        out->count = 0u;
     }
-    return out;
 }
 
 #endif
