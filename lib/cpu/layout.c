@@ -60,28 +60,6 @@ typedef struct layout_ctx {
     atrbvh_u64 vstride, istride, bstride; /* in elements */
 } layout_ctx;
 
-/* The box of leaf `leaf` of the tree: stored, or its primitive's. */
-static inline atrbvh_box leaf_box(const layout_ctx *c, uint32_t leaf)
-{
-    const atrbvh_i_tree *t = c->t;
-    const atrbvh_geometry *g = c->g;
-    atrbvh_u64 prim;
-    atrbvh_box b;
-    atrbvh_u32 value;
-    if (c->leaf_boxes)
-        return c->box[leaf];
-    prim = t->leaf_prim[leaf - (t->n - 1)];
-    /* Valid: the bounds stage checked every primitive of the tree. */
-    if (g->type == ATRBVH_GEOMETRY_BOXES)
-        (void)atrbvh_prim_box_box(g->boxes, c->bstride, prim, &b);
-    else
-        (void)atrbvh_prim_box_triangle(g->vertices, c->vstride,
-                                       g->vertex_count, g->indices,
-                                       c->istride, g->indices != NULL, prim,
-                                       &b, &value);
-    return b;
-}
-
 /* Triangle `prim`'s box, known valid (the bounds stage checked every
  * primitive of the tree): atrbvh_prim_box_triangle's common case without
  * its checks, by the same comparisons in the same order - the same bits. */
@@ -119,6 +97,26 @@ static inline atrbvh_box triangle_box(const layout_ctx *c, atrbvh_u64 prim)
     out.min[2] = d[2] < lo ? d[2] : lo;
     out.max[2] = d[2] > hi ? d[2] : hi;
     return out;
+}
+
+/* The box of leaf `leaf` of the tree: stored, or its primitive's. */
+static inline atrbvh_box leaf_box(const layout_ctx *c, uint32_t leaf)
+{
+    const atrbvh_i_tree *t = c->t;
+    const atrbvh_geometry *g = c->g;
+    atrbvh_u64 prim;
+    atrbvh_box b;
+    if (c->leaf_boxes)
+        return c->box[leaf];
+    prim = t->leaf_prim[leaf - (t->n - 1)];
+    /* Valid: the bounds stage checked every primitive of the tree.  A
+     * triangle's by triangle_box, in registers: the checked function
+     * stored the box float by float, and its caller's reload of the
+     * box in wider pieces waited for those stores (perf, emit()). */
+    if (g->type != ATRBVH_GEOMETRY_BOXES)
+        return triangle_box(c, prim);
+    (void)atrbvh_prim_box_box(g->boxes, c->bstride, prim, &b);
+    return b;
 }
 
 /* Sorted positions ahead of the current one whose triangle is prefetched:

@@ -298,11 +298,12 @@ ATRBVH_FN void atrbvh_layout_write(ATRBVH_GLOBAL atrbvh_node *out,
                                    atrbvh_u32 count, atrbvh_u32 pos,
                                    atrbvh_u32 prim, atrbvh_u32 size_left)
 {
-    int k;
-    for (k = 0; k < 3; k++) {
-        out->min[k] = b.min[k];
-        out->max[k] = b.max[k];
-    }
+    out->min[0] = b.min[0];
+    out->min[1] = b.min[1];
+    out->min[2] = b.min[2];
+    out->max[0] = b.max[0];
+    out->max[1] = b.max[1];
+    out->max[2] = b.max[2];
     if (size & ATRBVH_SIZE_LEAF) {
         out->index = prim;
         out->count = count;
