@@ -22,7 +22,9 @@
  * connected top part of the crown; the "frontier" is the crown nodes just
  * below it, roots of disjoint subtrees.  One parallel loop (dynamic, a
  * chunk of neighbouring frontier subtrees at a time: FRONTIER_CHUNK) walks
- * the frontier subtrees; then the calling thread walks the top.  Each
+ * the frontier subtrees, and a top node is processed by the thread that
+ * completes the last of its subtrees (top_arrive; on one thread, the
+ * calling thread walks the top after the loop).  Each
  * walk follows a stackless serial post-order walk over the parent
  * pointers - the treelet root keeps its id and parent, so the walk's way
  * up stays valid, and a frontier root keeps its primitives, so the top
@@ -103,6 +105,15 @@ typedef struct opt_worker {
  * each at two threads, were 5% slower eight at a time). */
 #define FRONTIER_CHUNK 8u
 #define CHUNK_PRIMS 8192u
+/* The last TAIL_SUBTREES subtrees a thread of the frontier go
+ * TAIL_CHUNK at a time: the thread that runs out of chunks first takes
+ * the top's nodes as they become ready (top_arrive) and then waits for
+ * the other's last chunk, about half a chunk on average (0.2 ms of
+ * dabrovic_sponza's first ATRBVH(9,2) round at two threads with chunks
+ * of eight).  Builds 0.990-0.995 (docs/bench/abpair.c); before the
+ * arrivals, smaller last chunks gained nothing. */
+#define TAIL_SUBTREES 8u
+#define TAIL_CHUNK 2u
 
 /* Trees smaller than this are optimised on one thread. */
 #define PARALLEL_MIN 2048u
@@ -124,6 +135,10 @@ typedef struct walk_ctx {
      * treelets `lanes` at a time (walk_lanes), with each internal node's
      * height in the crown (hgt, saturating at 255); NULL otherwise. */
     unsigned char *hgt;
+    /* On threads: per internal node, the arrivals of the top (a byte,
+     * top_arrive); the same bytes as hgt where there are heights (those
+     * are written below a round's cut only, these above it). */
+    unsigned char *arr;
     unsigned lanes;
     /* ATRBVH in lanes, where the CPU has AVX: the agglomerations side by
      * side too (atrbvh_agglomerate4), not only the formations */
@@ -544,8 +559,73 @@ static void walk_frontier(walk_ctx *c, const uint32_t *roots, size_t count,
         walk_serial(c, roots[j], c->gamma);
 }
 
+/* The top by arrivals (threads, walk_round): each top node counts its
+ * crown children done (c->arr, from top_init's 2 - the number of crown
+ * children), and the thread that completes the last of them processes
+ * it (visit, in post-order's way: a node after its whole subtree) and
+ * goes on to its parent; a node whose other child is still being
+ * processed is left to the thread that finishes that one.  So the top
+ * is done on the threads as its subtrees complete, in the time the
+ * first thread done used to wait for the other, instead of on the
+ * calling thread after the loop (0.1 ms a round there, and the wait for
+ * the last chunk, 0.05-0.2 ms: dabrovic_sponza, ATRBVH(9,2), two
+ * threads).  The order changes nothing: a treelet is a pure function of
+ * its root's final subtree.  x keeps its id and parent when processed
+ * (a treelet root does), and its parent's children change only when the
+ * parent is processed, after both have arrived; the add is acquire and
+ * release, so the thread that processes a node sees the other child's
+ * subtree as its thread left it. */
+static void top_arrive(walk_ctx *c, uint32_t x)
+{
+    while (x != 0u) {
+        const uint32_t up = c->t.parent[x];
+        if (__atomic_add_fetch(&c->arr[up], (unsigned char)1u,
+                               __ATOMIC_ACQ_REL) < 2u)
+            return; /* its other crown child is not done yet */
+        visit(c, up);
+        x = up;
+    }
+}
+
+/* The arrival counts of the top (the internal nodes of at least `cut`
+ * primitives, the root among them), walked in pre-order as frontier()
+ * walks it: 2 less the node's crown children.  With cut >= 2 gamma every
+ * top node has one (a child of at least gamma), so every top node is
+ * reached by the arrivals from the frontier. */
+static void top_init(walk_ctx *c, uint32_t cut)
+{
+    const atrbvh_treelet_tree *t = &c->t;
+    uint32_t x = 0;
+    for (;;) {
+        const uint32_t l = t->left[x], r = t->right[x];
+        c->arr[x] = (unsigned char)(2 - in_crown(c, l) - in_crown(c, r));
+        if (at_least(t, l, cut)) {
+            x = l;
+            continue;
+        }
+        if (at_least(t, r, cut)) {
+            x = r;
+            continue;
+        }
+        /* up to the nearest ancestor whose right child is a top node not
+         * yet entered (entered from its left) */
+        for (;;) {
+            uint32_t parent;
+            if (x == 0)
+                return;
+            parent = t->parent[x];
+            if (t->left[parent] == x && at_least(t, t->right[parent], cut)) {
+                x = t->right[parent];
+                break;
+            }
+            x = parent;
+        }
+    }
+}
+
 /* One round over the crown: the frontier subtrees on the threads, then
- * the top on this thread; the whole crown on this thread when the tree is
+ * the top, by arrivals on the threads (top_arrive) or on this thread; the
+ * whole crown on this thread when the tree is
  * small, or its frontier does not fit. */
 static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
                        size_t pcap)
@@ -555,6 +635,7 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
     atrbvh_i_join join = {0};
     size_t k = 0;
     int64_t i, chunks;
+    int arrive;
     /* above gamma, so that every top node is a crown node (gamma is at
      * most the root's count: no overflow) */
     if (cut <= c->gamma)
@@ -577,7 +658,9 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
         for (j = 0; j < k; j++) {
             const uint32_t here = c->t.count[list[j]];
             if (in > 0u &&
-                (in == FRONTIER_CHUNK || prims + here > CHUNK_PRIMS)) {
+                (in == FRONTIER_CHUNK || prims + here > CHUNK_PRIMS ||
+                 (k - j <= TAIL_SUBTREES * (size_t)threads &&
+                  in >= TAIL_CHUNK))) {
                 in = 0;
                 prims = 0;
             }
@@ -587,6 +670,11 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
         }
         start[chunks] = (uint32_t)k;
     }
+    /* the top by arrivals on the threads where every top node has a crown
+     * child (cut >= 2 gamma: top_init) */
+    arrive = threads > 1 && c->arr && cut / 2u >= c->gamma;
+    if (arrive)
+        top_init(c, cut);
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads)
 #endif
@@ -594,14 +682,20 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1) nowait
 #endif
-        for (i = 0; i < chunks; i++)
-            walk_frontier(c, list + list[cap + (size_t)i],
-                          list[cap + (size_t)i + 1u] - list[cap + (size_t)i],
-                          pcap);
+        for (i = 0; i < chunks; i++) {
+            const uint32_t *roots = list + list[cap + (size_t)i];
+            const size_t count =
+                list[cap + (size_t)i + 1u] - list[cap + (size_t)i];
+            size_t j;
+            walk_frontier(c, roots, count, pcap);
+            for (j = 0; arrive && j < count; j++)
+                top_arrive(c, roots[j]);
+        }
         atrbvh_i_join_arrive(&join);
     }
-    /* the top: in lanes too (its few nodes of a height side by side) */
-    {
+    /* else the top: in lanes too (its few nodes of a height side by
+     * side) */
+    if (!arrive) {
         const uint32_t top = 0;
         if (!c->hgt || !walk_lanes(c, &top, 1u, cut, pcap))
             walk_serial(c, 0, cut);
@@ -752,11 +846,15 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, unsigned char *flat,
     /* Then the frontier list of a round (walk_round), 4-byte entries
      * after the marks' bytes, aligned. */
     cap = atrbvh_i_frontier_cap(threads);
+    /* the heights' bytes serve the top's arrivals too (threads) */
+    if (threads > 1)
+        hgt = (size_t)(t->n - 1u);
+    /* (the marks and hgt are each 0 or t->n - 1 bytes) */
     if (!atrbvh_i_mul_size((size_t)threads, stride, &total) ||
-        marks > ((size_t)-1 - total) / 3u)
+        (size_t)(t->n - 1u) > ((size_t)-1 - total) / 3u)
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
                              "optimise: scratch size overflows");
-    total += 2u * marks + hgt; /* hgt is 0 or marks */
+    total += 2u * marks + hgt; /* hgt is 0 or the marks' count */
     off_list = ALIGN64(total);
     /* the frontier's roots, then its chunks' starts (cap + 1) */
     if (off_list < total ||
@@ -823,7 +921,8 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, unsigned char *flat,
         memset(c.marks.chg, 0, 2u * marks);
     }
     /* the heights: each written before it is read (walk_lanes) */
-    c.hgt = hgt > 0u ? block + (size_t)threads * stride + 2u * marks : NULL;
+    c.arr = hgt > 0u ? block + (size_t)threads * stride + 2u * marks : NULL;
+    c.hgt = lanes > 1u ? c.arr : NULL;
     c.lanes = (agg4 || cfg->method == ATRBVH_METHOD_TRBVH) && lanes == 4u
                   ? FORM_MAX
                   : lanes;
