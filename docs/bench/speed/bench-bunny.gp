@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [4.30761191:39.0252063]
+set xrange [2.58312076:25.3216998]
 set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 4.65606644,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 11.574093,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 9.32052059,39.0414315 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 13.5180167,39.3432138 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 11.4147082,38.4286758 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 15.7324895,38.1317351 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 23.3128656,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 17.5985254,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 8.48935542,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 25.1450575,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 19.2245953,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 5.42954681,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 11.3299709,38.1169475 left font ',8' noenhanced front
+set label 'LBVH' at 3.21854998,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 6.3350991,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 4.9125522,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 7.05753236,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 5.94622112,38.4286758 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 8.2154863,38.1317351 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 12.823358,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 9.12919646,38.8799201 left font ',8' noenhanced front
+set label 'embree_low' at 7.03670101,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 16.0617461,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 11.7165888,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.35664846,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 9.05993558,39.3638605 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

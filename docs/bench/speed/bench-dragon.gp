@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [41.5346731:437.158354]
+set xrange [39.0716737:359.813444]
 set xtics (50, 100, 200)
 set yrange [55.0033068:80.2279756]
 unset label
-set label 'LBVH' at 52.1076625,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 119.230653,63.4134707 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 97.9062265,61.8432221 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 141.164323,62.4957033 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 113.478197,60.8121596 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 158.448613,59.8198288 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 250.506509,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 180.205262,62.0452756 left font ',8' noenhanced front
-set label 'embree_low' at 79.5430529,77.248684 left font ',8' noenhanced front
-set label 'embree_medium' at 273.388634,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 197.731039,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 65.0236971,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 207.730259,62.7480062 left font ',8' noenhanced front
+set label 'LBVH' at 48.3908604,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 102.125599,63.4134707 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 83.4926841,61.8432221 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 121.490037,62.4957033 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 101.436977,60.8121596 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 141.21023,59.8198288 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 209.650537,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 159.846733,62.0452756 left font ',8' noenhanced front
+set label 'embree_low' at 87.4320073,77.248684 left font ',8' noenhanced front
+set label 'embree_medium' at 231.093778,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 175.09765,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 63.8802652,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 163.822349,62.7480062 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
