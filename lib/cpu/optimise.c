@@ -659,7 +659,7 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
             const uint32_t here = c->t.count[list[j]];
             if (in > 0u &&
                 (in == FRONTIER_CHUNK || prims + here > CHUNK_PRIMS ||
-                 (k - j <= TAIL_SUBTREES * (size_t)threads &&
+                 (threads > 1 && k - j <= TAIL_SUBTREES * (size_t)threads &&
                   in >= TAIL_CHUNK))) {
                 in = 0;
                 prims = 0;
@@ -854,7 +854,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, unsigned char *flat,
         (size_t)(t->n - 1u) > ((size_t)-1 - total) / 3u)
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, (uint64_t)-1,
                              "optimise: scratch size overflows");
-    total += 2u * marks + hgt; /* hgt is 0 or the marks' count */
+    total += 2u * marks + hgt;
     off_list = ALIGN64(total);
     /* the frontier's roots, then its chunks' starts (cap + 1) */
     if (off_list < total ||
