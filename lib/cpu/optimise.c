@@ -502,9 +502,12 @@ static int walk_lanes(walk_ctx *c, const uint32_t *roots, size_t count,
 /* The frontier of the top (the internal nodes of at least `cut`
  * primitives, the root among them): the crown nodes below `cut` whose
  * parent is in the top, into out[0 ..], in pre-order of the top.  Returns
- * their number, or cap + 1 when they do not fit. */
+ * their number, or cap + 1 when they do not fit.  With `arr`, each top
+ * node's arrival count too (top_arrive): 2 less its crown children; with
+ * cut >= 2 gamma every top node has one (a child of at least gamma), so
+ * every top node is reached by the arrivals from the frontier. */
 static size_t frontier(const walk_ctx *c, uint32_t cut, uint32_t *out,
-                       size_t cap)
+                       size_t cap, unsigned char *arr)
 {
     const atrbvh_treelet_tree *t = &c->t;
     size_t k = 0;
@@ -512,6 +515,8 @@ static size_t frontier(const walk_ctx *c, uint32_t cut, uint32_t *out,
     for (;;) {
         const uint32_t l = t->left[x], r = t->right[x];
         const int top_l = at_least(t, l, cut), top_r = at_least(t, r, cut);
+        if (arr)
+            arr[x] = (unsigned char)(2 - in_crown(c, l) - in_crown(c, r));
         if (!top_l && in_crown(c, l)) {
             if (k == cap)
                 return cap + 1;
@@ -560,7 +565,7 @@ static void walk_frontier(walk_ctx *c, const uint32_t *roots, size_t count,
 }
 
 /* The top by arrivals (threads, walk_round): each top node counts its
- * crown children done (c->arr, from top_init's 2 - the number of crown
+ * crown children done (c->arr, from frontier()'s 2 - the number of crown
  * children), and the thread that completes the last of them processes
  * it (visit, in post-order's way: a node after its whole subtree) and
  * goes on to its parent; a node whose other child is still being
@@ -587,42 +592,6 @@ static void top_arrive(walk_ctx *c, uint32_t x)
     }
 }
 
-/* The arrival counts of the top (the internal nodes of at least `cut`
- * primitives, the root among them), walked in pre-order as frontier()
- * walks it: 2 less the node's crown children.  With cut >= 2 gamma every
- * top node has one (a child of at least gamma), so every top node is
- * reached by the arrivals from the frontier. */
-static void top_init(walk_ctx *c, uint32_t cut)
-{
-    const atrbvh_treelet_tree *t = &c->t;
-    uint32_t x = 0;
-    for (;;) {
-        const uint32_t l = t->left[x], r = t->right[x];
-        c->arr[x] = (unsigned char)(2 - in_crown(c, l) - in_crown(c, r));
-        if (at_least(t, l, cut)) {
-            x = l;
-            continue;
-        }
-        if (at_least(t, r, cut)) {
-            x = r;
-            continue;
-        }
-        /* up to the nearest ancestor whose right child is a top node not
-         * yet entered (entered from its left) */
-        for (;;) {
-            uint32_t parent;
-            if (x == 0)
-                return;
-            parent = t->parent[x];
-            if (t->left[parent] == x && at_least(t, t->right[parent], cut)) {
-                x = t->right[parent];
-                break;
-            }
-            x = parent;
-        }
-    }
-}
-
 /* One round over the crown: the frontier subtrees on the threads, then
  * the top, by arrivals on the threads (top_arrive) or on this thread; the
  * whole crown on this thread when the tree is
@@ -640,11 +609,14 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
      * most the root's count: no overflow) */
     if (cut <= c->gamma)
         cut = c->gamma + 1u;
+    /* the top by arrivals on the threads where every top node has a crown
+     * child (cut >= 2 gamma: frontier()) */
+    arrive = threads > 1 && c->arr && cut / 2u >= c->gamma;
     /* (one thread too when treelets go in pairs: the pairs are formed
      * within the frontier subtrees) */
     if ((threads > 1 || c->hgt) && root_count >= PARALLEL_MIN &&
         root_count >= cut)
-        k = frontier(c, cut, list, cap);
+        k = frontier(c, cut, list, cap, arrive ? c->arr : NULL);
     if (k < 2u || k > cap) {
         walk_serial(c, 0, c->gamma);
         return;
@@ -670,11 +642,6 @@ static void walk_round(walk_ctx *c, int threads, uint32_t *list, size_t cap,
         }
         start[chunks] = (uint32_t)k;
     }
-    /* the top by arrivals on the threads where every top node has a crown
-     * child (cut >= 2 gamma: top_init) */
-    arrive = threads > 1 && c->arr && cut / 2u >= c->gamma;
-    if (arrive)
-        top_init(c, cut);
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads)
 #endif
