@@ -94,6 +94,10 @@ typedef struct atrbvh_i_scratch {
     unsigned char home[ATRBVH_I_SCRATCH_SLOTS]; /* role -> slot + 1; 0: own */
     uint32_t live;  /* roles got and not done, this build                 */
     int transient; /* a build without a handle: nothing to keep for */
+    /* a CPU LBVH's output nodes per 1024 primitives, its last build's
+     * (0: none yet): the size of the node box slot that the next one's
+     * output takes (lib/cpu/backend.c, collapse.c) */
+    uint32_t lbvh_nodes_per_1024;
 } atrbvh_i_scratch;
 /* At least count * size bytes for role `slot` (contents undefined; those
  * of an earlier role of a reserved slot stay when it is large enough);
@@ -108,6 +112,11 @@ void atrbvh_i_scratch_done(atrbvh_i_scratch *s, unsigned slot);
 /* The slot of role `slot` freed now, also on a device handle (keeping it
  * would raise the next stages' peak), its reserve dropped. */
 void atrbvh_i_scratch_release(atrbvh_i_scratch *s, unsigned slot);
+/* The block of role `slot` handed to the caller, who then owns it
+ * (atrbvh_i_free), with its size in *bytes; the slot is left empty as by
+ * scratch_release.  NULL (and 0) when the slot holds nothing. */
+void *atrbvh_i_scratch_take(atrbvh_i_scratch *s, unsigned slot,
+                            size_t *bytes);
 /* A build's plan: every role in its own slot, no reserve, nothing live;
  * then role `role` in the slot of role `slot`, and slot `slot` at least
  * `bytes` when allocated (0 on overflow: no reserve). */
@@ -210,6 +219,13 @@ struct atrbvh_i_run {
     double morton_lo[3], morton_scale[3];
     /* collapse: output nodes (the root's ATRBVH_SIZE_MASK part). */
     uint32_t node_count;
+    /* collapse: a block of out_block_bytes (at least node_count nodes)
+     * that the output's nodes take instead of a new allocation, its pages
+     * already touched by the build (a CPU LBVH's node box slot, which the
+     * layout does not read); else NULL.  The backend's end frees it when
+     * the output did not take it. */
+    void *out_block;
+    size_t out_block_bytes;
     /* pipeline, after collapse: the output; layout fills nodes and
      * prim_indices (node_count and n entries). */
     atrbvh_node *nodes;

@@ -8,14 +8,20 @@
 
 #include <string.h>
 
-atrbvh_bvh *atrbvh_i_bvh_alloc(size_t node_count, size_t prim_count)
+atrbvh_bvh *atrbvh_i_bvh_alloc_in(size_t node_count, size_t prim_count,
+                                  void **block, size_t bytes)
 {
     atrbvh_bvh *b = atrbvh_i_malloc(sizeof *b);
     if (!b)
         return NULL;
     memset(b, 0, sizeof *b);
     if (node_count) {
-        b->nodes = atrbvh_i_alloc_array(node_count, sizeof *b->nodes);
+        if (block && *block && node_count <= bytes / sizeof *b->nodes) {
+            b->nodes = *block;
+            *block = NULL;
+        } else {
+            b->nodes = atrbvh_i_alloc_array(node_count, sizeof *b->nodes);
+        }
         b->prim_indices = atrbvh_i_alloc_array(prim_count, sizeof *b->prim_indices);
         if (!b->nodes || !b->prim_indices) {
             atrbvh_bvh_free(b);
@@ -25,6 +31,11 @@ atrbvh_bvh *atrbvh_i_bvh_alloc(size_t node_count, size_t prim_count)
         b->prim_count = prim_count;
     }
     return b;
+}
+
+atrbvh_bvh *atrbvh_i_bvh_alloc(size_t node_count, size_t prim_count)
+{
+    return atrbvh_i_bvh_alloc_in(node_count, prim_count, NULL, 0);
 }
 
 /* The statistics with the SAH already summed (atrbvh_sah's value). */

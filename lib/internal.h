@@ -212,6 +212,11 @@ void atrbvh_i_sah_sum_with(const atrbvh_node *nodes, size_t m, int vector,
 
 /* Allocates an empty BVH object with room for the arrays. */
 atrbvh_bvh *atrbvh_i_bvh_alloc(size_t node_count, size_t prim_count);
+/* The same, its nodes in *block (of the library's allocator, `bytes`
+ * long) when that holds node_count nodes: the object then owns it and
+ * *block is set to NULL; otherwise *block is left to the caller. */
+atrbvh_bvh *atrbvh_i_bvh_alloc_in(size_t node_count, size_t prim_count,
+                                  void **block, size_t bytes);
 /* Fills stats.nodes, leaves, primitives, max_depth, max_leaf_primitives and
  * sah (with stats.ci/ct) from the node array; fails on an invalid array or
  * when scratch cannot be allocated. */

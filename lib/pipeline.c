@@ -252,7 +252,9 @@ static atrbvh_status run_stages(atrbvh_device *dev, atrbvh_i_run *run,
         t = atrbvh_i_now_ms();
         if (stage == ATRBVH_STAGE_LAYOUT) {
             /* The output object, sized by the collapse stage. */
-            bvh = atrbvh_i_bvh_alloc(run->node_count, run->n);
+            bvh = atrbvh_i_bvh_alloc_in(run->node_count, run->n,
+                                        &run->out_block,
+                                        run->out_block_bytes);
             if (!bvh) {
                 st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                                    "cannot allocate the output (%lu nodes)",

@@ -185,6 +185,23 @@ void atrbvh_i_scratch_release(atrbvh_i_scratch *s, unsigned slot)
         free_slot(s, home_of(s, slot));
 }
 
+void *atrbvh_i_scratch_take(atrbvh_i_scratch *s, unsigned slot,
+                            size_t *bytes)
+{
+    unsigned k;
+    void *p;
+    *bytes = 0;
+    if (slot >= ATRBVH_I_SCRATCH_SLOTS)
+        return NULL;
+    k = home_of(s, slot);
+    p = s->ptr[k];
+    if (p)
+        *bytes = s->bytes[k];
+    s->ptr[k] = NULL; /* free_slot then frees nothing */
+    free_slot(s, k);
+    return p;
+}
+
 void atrbvh_i_scratch_plan_reset(atrbvh_i_scratch *s)
 {
     memset(s->home, 0, sizeof s->home);

@@ -218,8 +218,9 @@ static void sized_free(void *p)
  * (lib/cpu/backend.c) these were about 150 and 200 bytes per triangle, 4
  * and 5 times the output, and a handle kept 148; before an LBVH read its
  * leaf boxes in place (lib/cpu/hierarchy.c) its node box slot held 2n-1
- * boxes, 84 bytes per triangle and more at the peak (now 63-70 without a
- * handle, 71-78 on one, 1.7-2.05 times the output). */
+ * boxes, 84 bytes per triangle and more at the peak (now 68-70 without a
+ * handle, whose node box slot has room for the output's nodes, 71-78 on
+ * one, 1.7-2.05 times the output). */
 START_TEST(peak_memory_lbvh)
 {
     /* _i: 0 sphere, 1 city, 2 terrain */

@@ -218,17 +218,16 @@ START_TEST(strings_and_version)
 }
 END_TEST
 
-/* Fails allocation k for k = 0, 1, 2, ... until the build succeeds; every
- * failure must be ATRBVH_ERR_NOMEM with nothing left allocated.  `leaf`:
- * 0 no collapse, 1 collapse, 2 collapse with at most 3 per leaf.  On a
- * backend this build does not have (ATRBVH_ERR_UNSUPPORTED before any
- * allocation) there is nothing to test. */
-static void fail_each_allocation_on(atrbvh_backend backend, atrbvh_method m,
-                                    int skip, int threads, int leaf)
+/* Fails allocation k for k = 0, 1, 2, ... until the build of g succeeds;
+ * every failure must be ATRBVH_ERR_NOMEM with nothing left allocated.
+ * `leaf`: 0 no collapse, 1 collapse, 2 collapse with at most 3 per leaf,
+ * 3 at most 8.  On a backend this build does not have
+ * (ATRBVH_ERR_UNSUPPORTED before any allocation) there is nothing to
+ * test. */
+static void fail_each_allocation_in(atrbvh_backend backend, atrbvh_method m,
+                                    int skip, int threads, int leaf,
+                                    const atrbvh_geometry *g)
 {
-    enum { T = 3000 };
-    float *v = tu_random_triangles(T, 11, 1.0f, 0.0f);
-    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * T, NULL, T);
     atrbvh_build_options o;
     long k;
     atrbvh_build_options_init(&o);
@@ -237,16 +236,14 @@ static void fail_each_allocation_on(atrbvh_backend backend, atrbvh_method m,
     o.threads = threads;
     o.backend = backend;
     o.collapse = leaf != 0;
-    o.max_leaf_size = leaf == 2 ? 3 : 0;
-    if (skip)
-        v[9 * 17] = NAN;
+    o.max_leaf_size = leaf == 2 ? 3 : leaf == 3 ? 8 : 0;
     atrbvh_set_allocator(tu_count_malloc, tu_count_free);
     for (k = 0;; k++) {
         atrbvh_bvh *b = NULL;
         atrbvh_error e;
         atrbvh_status s;
         tu_count_reset(k);
-        s = atrbvh_build(&g, &o, &b, &e);
+        s = atrbvh_build(g, &o, &b, &e);
         tu_alloc.countdown = -1;
         if (s == ATRBVH_ERR_UNSUPPORTED && backend != ATRBVH_BACKEND_CPU &&
             k == 0 && tu_opencl_may_skip(s)) {
@@ -255,7 +252,7 @@ static void fail_each_allocation_on(atrbvh_backend backend, atrbvh_method m,
         }
         if (s == ATRBVH_OK) {
             char msg[256];
-            ck_assert_msg(tu_check_bvh(b, &g, msg, sizeof msg), "%s", msg);
+            ck_assert_msg(tu_check_bvh(b, g, msg, sizeof msg), "%s", msg);
             atrbvh_bvh_free(b);
             ck_assert_int_eq(tu_alloc.outstanding, 0);
             break;
@@ -271,6 +268,18 @@ static void fail_each_allocation_on(atrbvh_backend backend, atrbvh_method m,
     if (backend == ATRBVH_BACKEND_CPU)
         ck_assert_int_gt(k, 5); /* the loop really failed several */
     atrbvh_set_allocator(NULL, NULL);
+}
+
+/* The same over 3000 random triangles, one of them NaN with skip. */
+static void fail_each_allocation_on(atrbvh_backend backend, atrbvh_method m,
+                                    int skip, int threads, int leaf)
+{
+    enum { T = 3000 };
+    float *v = tu_random_triangles(T, 11, 1.0f, 0.0f);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * T, NULL, T);
+    if (skip)
+        v[9 * 17] = NAN;
+    fail_each_allocation_in(backend, m, skip, threads, leaf, &g);
     free(v);
 }
 
@@ -285,6 +294,21 @@ START_TEST(allocation_failure)
     fail_each_allocation(ATRBVH_METHOD_LBVH, 1, 2);
     fail_each_allocation(ATRBVH_METHOD_TRBVH, 0, 2);
     fail_each_allocation(ATRBVH_METHOD_ATRBVH, 0, 3);
+    {
+        /* An LBVH of 3073 primitives or more reads its leaf boxes in
+         * place; with max leaf 8 the output's nodes of this sphere (0.96
+         * per triangle) then take the node box slot (cpu/collapse.c). */
+        scene sc;
+        atrbvh_geometry g;
+        char err[256];
+        ck_assert_msg(scene_builtin("sphere", 20000, &sc, err, sizeof err) ==
+                          0,
+                      "%s", err);
+        g = scene_geometry(&sc);
+        fail_each_allocation_in(ATRBVH_BACKEND_CPU, ATRBVH_METHOD_LBVH, 0, 2,
+                                3, &g);
+        scene_free(&sc);
+    }
 }
 END_TEST
 

@@ -59,7 +59,9 @@ static void cpu_close(atrbvh_device *dev)
  *              decided from recomputed costs)                    60     94
  *   layout     tree 28, the output; an LBVH's node boxes were
  *              released at the end of the collapse (the layout
- *              recomputes them), and its parent links (the
+ *              recomputes them; when in place, the slot's block
+ *              became the output's nodes: collapse.c, below), and
+ *              its parent links (the
  *              hierarchy's tree needs none, layout.c) on a
  *              transient scratch, and its sizes are in the cost
  *              slot 8; an optimised tree's sizes moved into the
@@ -84,7 +86,16 @@ static void cpu_close(atrbvh_device *dev)
  * with max leaf 8; 71-78 on a handle, which keeps the parent links: 8
  * more); it was 84 and more at the hierarchy, where the slot held 2n-1
  * boxes, as it still does for kept ids, a caller's tree
- * (atrbvh_i_cpu_all_node_boxes) and fewer primitives (+24). */
+ * (atrbvh_i_cpu_all_node_boxes) and fewer primitives (+24).
+ *
+ * That LBVH's node box slot is allocated with room for its output's
+ * nodes, 17n/16 of them or the handle's last LBVH's count per primitive
+ * and a sixteenth (34 bytes per primitive for most scenes, of which the
+ * bounds stage writes 24), and the output's nodes take its block when they
+ * fill seven eighths of it or more (collapse.c): the layout then writes
+ * into pages the build already touched, not fresh ones the system must
+ * zero.  The peak is the same but for what the block has to spare, a few
+ * bytes per primitive (70.8 -> 72.0 on the builtin sphere). */
 static void plan(atrbvh_i_scratch *s, size_t n, atrbvh_method method,
                  int kept_ids)
 {
@@ -97,9 +108,28 @@ static void plan(atrbvh_i_scratch *s, size_t n, atrbvh_method method,
     atrbvh_i_scratch_share(s, CPU_TMP_ORDER, CPU_LEFT);
     /* 2n-1 fits in size_t whenever n boxes did (the geometry's check).
      * An LBVH reading its leaf boxes in place: n + 3072 (cpu.h). */
-    atrbvh_i_scratch_reserve(
-        s, CPU_BOX, n ? atrbvh_i_node_boxes(method, n, kept_ids) : nodes,
-        sizeof(atrbvh_box));
+    if (n && atrbvh_i_lbvh_in_place(method, n, kept_ids)) {
+        /* Its block becomes the output's nodes (collapse.c): room for as
+         * many per primitive as the handle's last LBVH output had (and
+         * what the count's rounding dropped), else n (most scenes need
+         * 0.9n to n with max leaf 8), as boxes (4 per 3 nodes) when that
+         * is more than the slot needs. */
+        const uint64_t per = s->lbvh_nodes_per_1024
+                                 ? s->lbvh_nodes_per_1024 + 1u
+                                 : 1024u;
+        uint64_t want = (uint64_t)n * per / 1024;
+        size_t boxes = atrbvh_i_node_boxes(method, n, kept_ids);
+        if (want > 2 * (uint64_t)n - 1)
+            want = 2 * (uint64_t)n - 1;
+        want += (want + 2) / 3;
+        if (want > boxes && want <= SIZE_MAX)
+            boxes = (size_t)want;
+        atrbvh_i_scratch_reserve(s, CPU_BOX, boxes, sizeof(atrbvh_box));
+    } else {
+        atrbvh_i_scratch_reserve(
+            s, CPU_BOX, n ? atrbvh_i_node_boxes(method, n, kept_ids) : nodes,
+            sizeof(atrbvh_box));
+    }
     /* An LBVH keeps no costs: the slot takes the keys, then the sizes. */
     if (method == ATRBVH_METHOD_LBVH)
         atrbvh_i_scratch_reserve(s, CPU_COST, n ? n : 1, sizeof(uint64_t));
@@ -127,6 +157,8 @@ static void cpu_end(atrbvh_device *dev, atrbvh_i_run *run)
     (void)dev;
     if (c) /* (a build that stopped between morton and sort) */
         atrbvh_i_free(c->msd_counts);
+    atrbvh_i_free(run->out_block); /* (the output did not take it) */
+    run->out_block = NULL;
     atrbvh_i_free(run->state);
     run->state = NULL;
 }

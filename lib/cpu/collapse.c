@@ -214,6 +214,28 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
     return ATRBVH_OK;
 }
 
+/* An LBVH reading its leaf boxes in place reads its node box slot no more
+ * (the layout recomputes the boxes): the slot's block becomes the output's
+ * nodes when it holds them with at most an eighth to spare, its first n
+ * boxes' pages already touched by the bounds stage.  A new block for the
+ * output would be fresh pages, which the system zeroes as they are first
+ * written: at 10^7 triangles the layout took a fifth longer so.  The
+ * slot's size for the next build is learned here (backend.c). */
+static void take_box_slot(atrbvh_i_cpu_run *c, atrbvh_i_run *run)
+{
+    size_t bytes;
+    void *block = atrbvh_i_scratch_take(c->scratch, CPU_BOX, &bytes);
+    const size_t need = (size_t)run->node_count * sizeof(atrbvh_node);
+    c->scratch->lbvh_nodes_per_1024 =
+        (uint32_t)((uint64_t)run->node_count * 1024 / run->n);
+    if (block && need <= bytes && bytes - need <= bytes / 8) {
+        run->out_block = block;
+        run->out_block_bytes = bytes;
+    } else {
+        atrbvh_i_free(block);
+    }
+}
+
 atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
                                     atrbvh_error *error)
 {
@@ -255,7 +277,10 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
         atrbvh_i_scratch_release(c->scratch, CPU_SIZE);
     } else if (!c->kept_ids && run->cfg->method == ATRBVH_METHOD_LBVH) {
         /* the layout recomputes the boxes (layout.c says when it can) */
-        atrbvh_i_scratch_release(c->scratch, CPU_BOX);
+        if (c->leaf_boxes_by_order)
+            take_box_slot(c, run);
+        else
+            atrbvh_i_scratch_release(c->scratch, CPU_BOX);
         c->tree.box = NULL;
     }
     if (c->ranges && run->cfg->method == ATRBVH_METHOD_LBVH &&
