@@ -14,6 +14,7 @@
  *       [THREADS]]]]
  *
  * Defaults: atrbvh, the method's default size and rounds (0), 1 thread.
+ * STAGETIMES_DEVICE=opencl (or another device spec) times that device.
  * Two untimed builds first.  The minimum is the figure to compare on a
  * shared host whose speed drifts (docs/benchmarks.md, "The machine").
  */
@@ -60,7 +61,10 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s: %s\n", argv[1], why);
         return 1;
     }
-    if (atrbvh_device_open("cpu", &dev, &e) != ATRBVH_OK) {
+    if (atrbvh_device_open(getenv("STAGETIMES_DEVICE")
+                               ? getenv("STAGETIMES_DEVICE")
+                               : "cpu",
+                           &dev, &e) != ATRBVH_OK) {
         fprintf(stderr, "%s\n", e.text);
         return 1;
     }

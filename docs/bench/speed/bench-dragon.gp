@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [39.0716737:359.813444]
+set xrange [36.2460583:325.421245]
 set xtics (50, 100, 200)
 set yrange [55.0033068:80.2279756]
 unset label
-set label 'LBVH' at 48.3908604,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 102.125599,63.4134707 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 83.4926841,61.8432221 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 121.490037,62.4957033 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 101.436977,60.8121596 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 141.21023,59.8198288 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 209.650537,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 159.846733,62.0452756 left font ',8' noenhanced front
-set label 'embree_low' at 87.4320073,77.248684 left font ',8' noenhanced front
-set label 'embree_medium' at 231.093778,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 175.09765,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 63.8802652,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 163.822349,62.7480062 left font ',8' noenhanced front
+set label 'LBVH' at 45.5595851,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 101.683581,62.7681885 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 71.2342049,62.4885043 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 83.6213978,61.2051388 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 110.247356,61.4574418 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 118.037176,60.465111 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 192.2384,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 159.897389,59.4641467 left font ',8' noenhanced front
+set label 'embree_low' at 63.1623911,77.248684 left font ',8' noenhanced front
+set label 'embree_medium' at 210.066347,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 153.335119,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 36.9889428,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 161.500406,61.4574418 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
