@@ -89,13 +89,14 @@ static void cpu_close(atrbvh_device *dev)
  * (atrbvh_i_cpu_all_node_boxes) and fewer primitives (+24).
  *
  * That LBVH's node box slot is allocated with room for its output's
- * nodes, 17n/16 of them or the handle's last LBVH's count per primitive
- * and a sixteenth (34 bytes per primitive for most scenes, of which the
- * bounds stage writes 24), and the output's nodes take its block when they
- * fill seven eighths of it or more (collapse.c): the layout then writes
- * into pages the build already touched, not fresh ones the system must
- * zero.  The peak is the same but for what the block has to spare, a few
- * bytes per primitive (70.8 -> 72.0 on the builtin sphere). */
+ * nodes, n of them or as many per primitive as the handle's last LBVH
+ * made (32 bytes per primitive for most scenes, of which the bounds stage
+ * writes 24), and the output's nodes take its block when they fill seven
+ * eighths of it or more (collapse.c): the layout then writes into pages
+ * the build already touched, not fresh ones the system must zero.  On a
+ * handle's repeated builds the peak is the same; a first build's, or one
+ * without a handle, is larger by what the block has to spare (1-5 bytes
+ * per primitive: test_device's scenes). */
 static void plan(atrbvh_i_scratch *s, size_t n, atrbvh_method method,
                  int kept_ids)
 {

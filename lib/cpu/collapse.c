@@ -219,7 +219,7 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
  * nodes when it holds them with at most an eighth to spare, its first n
  * boxes' pages already touched by the bounds stage.  A new block for the
  * output would be fresh pages, which the system zeroes as they are first
- * written: at 10^7 triangles the layout took a fifth longer so.  The
+ * written: at 10^7 triangles the layout took up to a fifth longer so.  The
  * slot's size for the next build is learned here (backend.c). */
 static void take_box_slot(atrbvh_i_cpu_run *c, atrbvh_i_run *run)
 {
