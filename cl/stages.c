@@ -625,8 +625,16 @@ static atrbvh_status st_optimise(atrbvh_device *dev, atrbvh_i_run *run,
     /* the collapse decisions kept (B_FLAT; B_MARKS stands in) */
     a.flags = c->flags;
     scratch_layout(cfg, &a);
-    /* Enough persistent workers to fill the device, scratch bounded. */
-    workers_max = c->compute_units * 64u;
+    /* Enough persistent workers to fill the device, scratch bounded.  On
+     * a CPU device (a.walks) 16 a compute unit: each item then walks the
+     * starts of a range of nodes four times as long (presumably its four
+     * lanes stay full longer: a short range soon leaves fewer than four
+     * walks to batch; and its treelets are those of one region of the
+     * tree).
+     * PoCL, 2 compute units, optimise kernel time against 64 a unit:
+     * ATRBVH(9,2) bunny 0.70-0.88, sibenik 0.86, dragon 0.91; TRBVH(7,3)
+     * sibenik 0.93, dragon 0.87-0.99; 8 or 4 a unit were no better. */
+    workers_max = c->compute_units * (a.walks ? 16u : 64u);
     if (workers_max > 4096u)
         workers_max = 4096u;
     while (workers_max > 1u &&
