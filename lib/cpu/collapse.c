@@ -223,12 +223,14 @@ static atrbvh_status decide_all(collapse_ctx *c, atrbvh_i_scratch *scratch,
  * slot's size for the next build is learned here (backend.c). */
 static void take_box_slot(atrbvh_i_cpu_run *c, atrbvh_i_run *run)
 {
-    size_t bytes;
+    size_t bytes, need;
     void *block = atrbvh_i_scratch_take(c->scratch, CPU_BOX, &bytes);
-    const size_t need = (size_t)run->node_count * sizeof(atrbvh_node);
+    const int fits =
+        atrbvh_i_mul_size(run->node_count, sizeof(atrbvh_node), &need) &&
+        need <= bytes;
     c->scratch->lbvh_nodes_per_1024 =
         (uint32_t)((uint64_t)run->node_count * 1024 / run->n);
-    if (block && need <= bytes && bytes - need <= bytes / 8) {
+    if (block && fits && bytes - need <= bytes / 8) {
         run->out_block = block;
         run->out_block_bytes = bytes;
     } else {
