@@ -107,6 +107,62 @@ START_TEST(reuse_allocates_no_scratch)
 }
 END_TEST
 
+/* An LBVH that reads its leaf boxes in place hands its node box slot's
+ * block to the output as its nodes (lib/cpu/collapse.c): the output then
+ * owns it and the handle does not.  Three builds on one handle, all kept,
+ * of the sphere moved by 0, 4 and 8 along x (the same tree shape, other
+ * boxes), each the tree a build without a handle gives, also after the
+ * later builds (which would have written their boxes into an earlier
+ * output left in the handle's slot) and after the handle is closed
+ * (which would have freed it). */
+START_TEST(lbvh_outputs_own_their_nodes)
+{
+    scene sc;
+    char err[256], msg[256];
+    atrbvh_geometry g;
+    atrbvh_build_options o;
+    atrbvh_device *d;
+    atrbvh_error e;
+    atrbvh_bvh *ref[3], *out[3];
+    float *moved[3];
+    size_t i;
+    int k, j;
+    ck_assert_int_eq(scene_builtin("sphere", 20000, &sc, err, sizeof err), 0);
+    atrbvh_build_options_init(&o);
+    o.method = ATRBVH_METHOD_LBVH;
+    o.max_leaf_size = 8;
+    o.threads = 2;
+    for (k = 0; k < 3; k++) {
+        moved[k] = malloc(sc.vertex_count * 3 * sizeof *moved[k]);
+        ck_assert_ptr_nonnull(moved[k]);
+        for (i = 0; i < sc.vertex_count * 3; i++)
+            moved[k][i] = sc.vertices[i] + (i % 3 == 0 ? 4.0f * (float)k : 0.0f);
+        g = atrbvh_geometry_triangles(moved[k], sc.vertex_count, sc.indices,
+                                      sc.triangle_count);
+        ref[k] = tu_build(&g, &o);
+    }
+    ck_assert_int_eq(atrbvh_device_open("cpu", &d, &e), ATRBVH_OK);
+    o.device = d;
+    for (k = 0; k < 3; k++) {
+        g = atrbvh_geometry_triangles(moved[k], sc.vertex_count, sc.indices,
+                                      sc.triangle_count);
+        ck_assert_int_eq(atrbvh_build(&g, &o, &out[k], &e), ATRBVH_OK);
+        for (j = 0; j <= k; j++)
+            ck_assert_msg(tu_same_bvh(ref[j], out[j], msg, sizeof msg),
+                          "build %d after build %d: %s", j, k, msg);
+    }
+    atrbvh_device_close(d);
+    for (k = 0; k < 3; k++) {
+        ck_assert_msg(tu_same_bvh(ref[k], out[k], msg, sizeof msg),
+                      "build %d after the close: %s", k, msg);
+        atrbvh_bvh_free(out[k]);
+        atrbvh_bvh_free(ref[k]);
+        free(moved[k]);
+    }
+    scene_free(&sc);
+}
+END_TEST
+
 /* Every allocation of open, build, build (larger), close fails in turn:
  * each failure is ATRBVH_ERR_NOMEM, and nothing leaks once the handle is
  * closed. */
@@ -708,6 +764,7 @@ static Suite *suite(void)
     tcase_set_timeout(t, 600);
     tcase_add_test(t, open_specs);
     tcase_add_test(t, reuse_allocates_no_scratch);
+    tcase_add_test(t, lbvh_outputs_own_their_nodes);
     tcase_add_loop_test(t, allocation_failure_open_build_close, 0, 2);
     tcase_add_loop_test(t, peak_memory_lbvh, 0, 3);
     tcase_add_loop_test(t, allocation_failure_lbvh_and_invalid, 0, 2);
