@@ -101,6 +101,7 @@ static void plan(atrbvh_i_scratch *s, size_t n, atrbvh_method method,
                  int kept_ids)
 {
     const size_t nodes = n ? 2 * n - 1 : 1;
+    size_t boxes = n ? atrbvh_i_node_boxes(method, n, kept_ids) : nodes;
     atrbvh_i_scratch_plan_reset(s);
     atrbvh_i_scratch_share(s, CPU_BOXES, CPU_BOX);
     atrbvh_i_scratch_share(s, CPU_KEYS, CPU_COST);
@@ -114,23 +115,18 @@ static void plan(atrbvh_i_scratch *s, size_t n, atrbvh_method method,
          * many per primitive as the handle's last LBVH output had (and
          * what the count's rounding dropped), else n (most scenes need
          * 0.9n to n with max leaf 8), as boxes (4 per 3 nodes) when that
-         * is more than the slot needs. */
+         * is more than the slot needs (at most 2n - 1 nodes). */
         const uint64_t per = s->lbvh_nodes_per_1024
                                  ? s->lbvh_nodes_per_1024 + 1u
                                  : 1024u;
         uint64_t want = (uint64_t)n * per / 1024;
-        size_t boxes = atrbvh_i_node_boxes(method, n, kept_ids);
-        if (want > 2 * (uint64_t)n - 1)
-            want = 2 * (uint64_t)n - 1;
+        if (want > nodes)
+            want = nodes;
         want += (want + 2) / 3;
         if (want > boxes && want <= SIZE_MAX)
             boxes = (size_t)want;
-        atrbvh_i_scratch_reserve(s, CPU_BOX, boxes, sizeof(atrbvh_box));
-    } else {
-        atrbvh_i_scratch_reserve(
-            s, CPU_BOX, n ? atrbvh_i_node_boxes(method, n, kept_ids) : nodes,
-            sizeof(atrbvh_box));
     }
+    atrbvh_i_scratch_reserve(s, CPU_BOX, boxes, sizeof(atrbvh_box));
     /* An LBVH keeps no costs: the slot takes the keys, then the sizes. */
     if (method == ATRBVH_METHOD_LBVH)
         atrbvh_i_scratch_reserve(s, CPU_COST, n ? n : 1, sizeof(uint64_t));
