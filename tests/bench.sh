@@ -253,7 +253,9 @@ fi
 
 # scaling study: each size's median of --repeat timed builds (builds of
 # milliseconds: never the one-build rule of the slow sizes), which the
-# --builds log lists after the size's warm-up
+# --builds log lists after every size's warm-up, in turns across the
+# sizes (turn k of every size before turn k+1 of any), each right after
+# an untimed build of its size
 run 0 bench --scaling builtin:sphere --sizes 1000,3000,9000 --configs lbvh \
     --repeat 2 --csv "$T/s.csv" --builds "$T/sb.csv" && grep -q 'N^' "$T/out" ||
     fail "scaling: no fitted exponent: $(cat "$T/out")"
@@ -268,10 +270,18 @@ for r in rows:
     assert float(r["peak_bytes_per_triangle"]) > 0
     assert r["repeat"] == "2", r["repeat"]
     mine = [(b["kind"], b["turn"]) for b in log if b["triangles"] == r["triangles"]]
-    assert mine == [("warmup", ""), ("timed", "0"), ("timed", "1")], mine
+    assert mine == [("warmup", ""), ("untimed", ""), ("timed", "0"),
+                    ("untimed", ""), ("timed", "1")], mine
     t = sorted(float(b["build_ms"]) for b in log
                if b["triangles"] == r["triangles"] and b["kind"] == "timed")
     assert abs((t[0] + t[1]) / 2 - float(r["build_ms"])) <= 1e-9 * t[1], (t, r["build_ms"])
+seq = [(int(b["seq"]), b["kind"], b["turn"], b["triangles"]) for b in log]
+assert [s for s, _, _, _ in seq] == sorted(s for s, _, _, _ in seq), seq
+last_warmup = max(s for s, k, _, _ in seq if k == "warmup")
+timed = [(s, int(t), n) for s, k, t, n in seq if k == "timed"]
+assert all(s > last_warmup for s, _, _ in timed), seq
+assert [t for _, t, _ in timed] == sorted(t for _, t, _ in timed), timed
+assert [n for _, t, n in timed if t == 0] == [r["triangles"] for r in rows], timed
 PY
 
 # the scaling table has a header naming its columns

@@ -176,11 +176,83 @@ static void print_fit(const bench_args *a, scaling_series *sr)
     free(ys);
 }
 
+/* One configuration at every size: each size's scene made and its device
+ * opened with the warm-up build (its first: the scratch, so the peak
+ * counts it; measured from the bytes held before it, not the other
+ * sizes'), then the timed builds in turns - turn k builds each size once,
+ * smallest first, each right after an untimed build of the same size -
+ * so that a drift of the machine's speed during the minute falls on every
+ * size alike, as the speed section's turns do for the configurations.
+ * Measured one size after another, the fitted exponent moved with the
+ * host (the LBVH on the sphere, 10^5 to 10^7: N^0.98 to N^1.11 in five
+ * runs of one hour, 6 December, docs/benchmarks.md).  A size whose
+ * warm-up took over SCALING_SINGLE_MS is timed in the first turn only.
+ * All sizes are held at once: about the largest size's memory again. */
+static int time_sizes(const bench_args *a, const char *spec,
+                      const scene *base, const config *c, scaling_series *sr,
+                      FILE *csv)
+{
+    const int n = a->nsizes;
+    scene_data *sd = calloc((size_t)n, sizeof *sd);
+    bench_cfg *cf = calloc((size_t)n, sizeof *cf);
+    int si, made = 0, opened = 0, rc = 0;
+    unsigned k;
+    if (!sd || !cf) {
+        cli_error("out of memory");
+        free(sd);
+        free(cf);
+        return -1;
+    }
+    for (si = 0; si < n && rc == 0; si++) {
+        if (scaled_scene(spec, base, a->sizes[si], &sd[si].sc,
+                         &sr->copies[si]) != 0) {
+            rc = -1;
+            break;
+        }
+        made++;
+        sd[si].g = scene_geometry(&sd[si].sc);
+        /* (the warm-up also pays for faulting in memory the system
+         * handed out fresh, 0.3-2.6 ns per byte on a VM that returns
+         * freed memory to its host: docs/stages.md; untimed) */
+        if (bench_cfg_open(&cf[si], a, &sd[si], spec, c, NULL, 0, a->repeat,
+                           1, 0, &sr->rows[si]) != 0)
+            rc = -1;
+        opened++;
+        /* (the warm-up's stats: cfg_build keeps them for the library) */
+        if (rc == 0 && cf[si].st.build_ms > SCALING_SINGLE_MS)
+            cf[si].repeat = 1;
+    }
+    for (k = 0; k < a->repeat && rc == 0; k++)
+        for (si = 0; si < n && rc == 0; si++)
+            if (k < cf[si].repeat && bench_cfg_time(&cf[si], k, 1) != 0)
+                rc = -1;
+    for (si = 0; si < n && rc == 0; si++) {
+        row *w = &sr->rows[si];
+        if (bench_cfg_finish(&cf[si]) != 0) {
+            rc = -1;
+            break;
+        }
+        config_label(c, w->treelet, w->rounds, sr->label, sizeof sr->label);
+        table_scaling_row(stdout, spec, sr->label, w, sr->copies[si]);
+        fflush(stdout);
+        if (csv)
+            csv_scaling_row(csv, spec, w, sr->copies[si]);
+        sr->n++;
+    }
+    for (si = 0; si < opened; si++)
+        bench_cfg_close(&cf[si]);
+    for (si = 0; si < made; si++)
+        bench_free_scene(&sd[si]);
+    free(sd);
+    free(cf);
+    return rc;
+}
+
 int bench_scaling(bench_args *a, FILE *csv)
 {
     const char *defaults[] = {"builtin:sphere", "builtin:city"};
     const char **bases = a->nscenes ? a->scenes : defaults;
-    int nb = a->nscenes ? a->nscenes : 2, b, ci, si, rc = CLI_OK, nser = 0;
+    int nb = a->nscenes ? a->nscenes : 2, b, ci, rc = CLI_OK, nser = 0;
     scaling_series *series =
         calloc((size_t)nb * (size_t)a->nconfigs, sizeof *series);
     if (!series) {
@@ -189,7 +261,8 @@ int bench_scaling(bench_args *a, FILE *csv)
     }
     table_header(stdout, a);
     printf("# scaling: median of %u run%s after one warm-up build (one run "
-           "when the warm-up took over %.0f ms)\n",
+           "when the warm-up took over %.0f ms), the sizes in turns, each "
+           "timed build right after an untimed one\n",
            a->repeat, a->repeat == 1 ? "" : "s", SCALING_SINGLE_MS);
     table_scaling_header(stdout);
     if (csv)
@@ -218,38 +291,9 @@ int bench_scaling(bench_args *a, FILE *csv)
                 rc = CLI_FAIL;
                 break;
             }
-            for (si = 0; si < a->nsizes; si++) {
-                scene_data sd;
-                row *w = &sr->rows[sr->n];
-                memset(&sd, 0, sizeof sd);
-                if (scaled_scene(bases[b], &base, a->sizes[si], &sd.sc,
-                                 &sr->copies[sr->n]) != 0) {
-                    rc = CLI_FAIL;
-                    break;
-                }
-                sd.g = scene_geometry(&sd.sc);
-                /* Every size is timed the same way, after a warm-up
-                 * build: the first build of a process also pays for
-                 * faulting in memory the system handed out fresh (on a
-                 * VM that returns freed memory to its host, 0.3-2.6 ns
-                 * per byte here: docs/stages.md), which would grow the
-                 * time of the largest sizes only. */
-                if (bench_run_config(a, &sd, bases[b], c, NULL, 0,
-                                     a->repeat, 1, 0, SCALING_SINGLE_MS,
-                                     w) != 0) {
-                    bench_free_scene(&sd);
-                    rc = CLI_FAIL;
-                    break;
-                }
-                bench_free_scene(&sd);
-                config_label(c, w->treelet, w->rounds, sr->label,
-                             sizeof sr->label);
-                table_scaling_row(stdout, bases[b], sr->label, w,
-                                  sr->copies[sr->n]);
-                fflush(stdout);
-                if (csv)
-                    csv_scaling_row(csv, bases[b], w, sr->copies[sr->n]);
-                sr->n++;
+            if (time_sizes(a, bases[b], &base, c, sr, csv) != 0) {
+                rc = CLI_FAIL;
+                break;
             }
             if (rc != CLI_OK || sr->n == 0)
                 break;
