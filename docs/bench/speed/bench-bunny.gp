@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.42048574:23.3351806]
+set xrange [2.81783708:27.2277297]
 set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 2.62203288,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 5.95066421,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 4.72760306,39.0414315 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 6.78414042,39.3432138 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 5.61335887,38.4286758 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 7.95217847,38.1317351 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 12.4573582,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 8.73894125,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 5.41558816,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 14.8509696,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 11.2431028,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 3.33161312,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 5.57934143,38.1169475 left font ',8' noenhanced front
+set label 'LBVH' at 3.50613792,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 7.15893236,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 8.0736397,39.3531597 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 6.11235276,39.0314856 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 7.04264996,38.4286758 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 12.5451001,38.4434634 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 17.3204136,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.2695237,38.8799201 left font ',8' noenhanced front
+set label 'embree_low' at 6.36421086,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 11.2037242,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 16.4639575,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.07946919,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 9.29354958,38.1169475 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

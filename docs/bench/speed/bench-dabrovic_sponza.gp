@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.17220048:22.1197226]
+set xrange [2.60516671:24.211953]
 set xtics (5, 10, 20)
 set yrange [63.7338549:116.665389]
 unset label
-set label 'LBVH' at 2.35762403,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 5.99788511,77.3438024 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 4.81572605,73.4949364 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 7.26756497,74.0727154 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 5.92928356,71.690965 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 9.20773344,71.1263572 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 13.9246006,70.0410864 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 10.2162831,67.3811972 left font ',8' noenhanced front
-set label 'embree_low' at 4.98574617,110.413633 left font ',8' noenhanced front
-set label 'embree_medium' at 8.09416864,77.7503047 left font ',8' noenhanced front
-set label 'embree_high' at 11.2682058,77.7503047 left font ',8' noenhanced front
-set label 'LBVH/cl' at 3.04801288,103.086451 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 6.83543806,69.9676127 left font ',8' noenhanced front
+set label 'LBVH' at 3.39983076,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 7.09301786,75.98974 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 5.20264188,74.8489989 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 8.09331434,74.0727154 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 6.52774122,71.690965 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 9.75567517,71.1263572 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 15.5219825,70.0410864 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.2161676,67.3811972 left font ',8' noenhanced front
+set label 'embree_low' at 5.44393233,110.413633 left font ',8' noenhanced front
+set label 'embree_medium' at 8.91122185,77.7503047 left font ',8' noenhanced front
+set label 'embree_high' at 12.6614479,77.7503047 left font ',8' noenhanced front
+set label 'LBVH/cl' at 2.6594106,103.086451 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 6.3538602,68.98284 left font ',8' noenhanced front
 plot 'bench-dabrovic_sponza.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dabrovic_sponza.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

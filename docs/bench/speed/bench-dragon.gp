@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [28.6960299:291.698417]
+set xrange [33.8205494:343.884178]
 set xtics (50, 100, 200)
 set yrange [55.0033068:80.2279756]
 unset label
-set label 'LBVH' at 31.1436399,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 78.9258995,63.4134707 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 63.7032765,61.8432221 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 92.2004962,62.4957033 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 78.7608594,60.8121596 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 104.832809,59.8198288 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 161.472383,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 113.154445,61.3999933 left font ',8' noenhanced front
-set label 'embree_low' at 62.7774798,77.248684 left font ',8' noenhanced front
-set label 'embree_medium' at 183.691985,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 137.702341,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 40.5255192,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 76.4685118,60.1668773 left font ',8' noenhanced front
+set label 'LBVH' at 36.705608,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 86.6512654,63.4134707 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 72.1092012,61.8432221 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 104.127653,62.4957033 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 89.7245491,60.8121596 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 115.54034,59.8198288 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 179.813105,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 132.526879,61.3999933 left font ',8' noenhanced front
+set label 'embree_low' at 64.2550142,77.248684 left font ',8' noenhanced front
+set label 'embree_medium' at 216.543196,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 151.782257,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 46.0982581,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 128.743052,62.7480062 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.45757452:24.5538315]
+set xrange [2.90716849:24.8548919]
 set xtics (5, 10, 20)
 set yrange [48.0282344:83.2612717]
 unset label
-set label 'LBVH' at 2.66556659,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 6.62285339,56.2198439 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 5.30817858,53.8367768 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 8.17810933,54.157298 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 9.30145882,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 14.551217,50.7535261 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 15.5156878,52.3325777 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 8.23722863,51.3573403 left font ',8' noenhanced front
-set label 'embree_low' at 5.39574496,79.0998893 left font ',8' noenhanced front
-set label 'embree_medium' at 13.5546201,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 10.2686727,54.6804169 left font ',8' noenhanced front
-set label 'LBVH/cl' at 3.30821587,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 6.37652978,52.9793966 left font ',8' noenhanced front
+set label 'LBVH' at 3.13591655,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 8.31150002,56.2198439 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 8.83709104,54.7380871 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 6.69877569,54.157298 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 7.4537948,52.9793966 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 14.4286891,50.7535261 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 16.1509786,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 9.35157164,51.3573403 left font ',8' noenhanced front
+set label 'embree_low' at 6.03597785,79.0998893 left font ',8' noenhanced front
+set label 'embree_medium' at 10.9145017,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 16.2016387,54.6804169 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.00370094,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 9.85324488,52.9793966 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
