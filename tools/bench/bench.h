@@ -117,16 +117,9 @@ int bench_load_scene(const char *spec, scene_data *sd);
 void bench_free_scene(scene_data *sd);
 int bench_lib_build(const scene_data *sd, const atrbvh_build_options *o,
                     atrbvh_bvh **out, const char *spec);
-/* One configuration on one scene: `repeat` timed builds, or one when
- * once_above_ms > 0 and the warm-up build took longer.  0, or -1 after
- * an error line (an OpenCL configuration without an OpenCL device is an
- * error). */
-int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
-                     const config *c, embree_ctx *emb, int do_rays,
-                     unsigned repeat, int warmup, int binary,
-                     double once_above_ms, row *r);
-/* The same in steps, so that the timed builds of several configurations
- * can take turns (sweep.c): open (the device, the warm-up build), time
+/* One configuration on one scene in steps, so that the timed builds of
+ * several configurations or sizes can take turns (sweep.c, scaling.c):
+ * open (the device, the warm-up build), time
  * build k (0 .. repeat-1; warm: right after one more untimed build, so
  * that it finds the caches as a build repeated back to back does),
  * finish (the row: medians, the binary SAH, rays), close (always, also

@@ -437,28 +437,6 @@ void bench_cfg_close(bench_cfg *b)
     b->tot = b->stg = b->use = NULL;
 }
 
-int bench_run_config(const bench_args *a, scene_data *sd, const char *spec,
-                     const config *c, embree_ctx *emb, int do_rays,
-                     unsigned repeat, int warmup, int binary,
-                     double once_above_ms, row *r)
-{
-    bench_cfg b;
-    unsigned k;
-    int rc = bench_cfg_open(&b, a, sd, spec, c, emb, do_rays, repeat, warmup,
-                            binary, r);
-    /* (the warm-up's stats: cfg_build keeps them for the library) */
-    if (rc == 0 && warmup && once_above_ms > 0.0 && !c->embree &&
-        b.st.build_ms > once_above_ms)
-        b.repeat = repeat = 1;
-    for (k = 0; rc == 0 && k < repeat; k++)
-        rc = bench_cfg_time(&b, k, 0);
-    if (rc == 0)
-        rc = bench_cfg_finish(&b);
-    bench_cfg_close(&b);
-    return rc;
-}
-
-
 int bench_load_scene(const char *spec, scene_data *sd)
 {
     char err[512];
