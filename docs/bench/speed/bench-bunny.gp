@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.81783708:27.2277297]
+set xrange [3.7500955:31.501833]
 set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 3.50613792,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 7.15893236,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 8.0736397,39.3531597 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 6.11235276,39.0314856 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 7.04264996,38.4286758 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 12.5451001,38.4434634 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 17.3204136,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 11.2695237,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 6.36421086,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 11.2037242,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 16.4639575,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 4.07946919,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 9.29354958,38.1169475 left font ',8' noenhanced front
+set label 'LBVH' at 4.04265489,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 9.33864566,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 7.5473608,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 10.8132204,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 9.13832182,38.4286758 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 12.3365847,38.1317351 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 18.7576129,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 13.5646785,38.8799201 left font ',8' noenhanced front
+set label 'embree_low' at 8.12552558,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 15.096196,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 20.606685,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.65866062,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 9.2540458,38.1169475 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

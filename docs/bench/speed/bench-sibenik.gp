@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.90716849:24.8548919]
+set xrange [3.21776382:34.7647523]
 set xtics (5, 10, 20)
 set yrange [48.0282344:83.2612717]
 unset label
-set label 'LBVH' at 3.13591655,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 8.31150002,56.2198439 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 8.83709104,54.7380871 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 6.69877569,54.157298 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 7.4537948,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 14.4286891,50.7535261 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 16.1509786,52.3325777 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 9.35157164,51.3573403 left font ',8' noenhanced front
-set label 'embree_low' at 6.03597785,79.0998893 left font ',8' noenhanced front
-set label 'embree_medium' at 10.9145017,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 16.2016387,54.6804169 left font ',8' noenhanced front
-set label 'LBVH/cl' at 4.00370094,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 9.85324488,52.9793966 left font ',8' noenhanced front
+set label 'LBVH' at 3.49974267,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 8.14639848,56.2198439 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 7.17969745,53.8367768 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 10.3770151,54.157298 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 8.883799,52.0780864 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 16.9550876,50.7535261 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 21.627979,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 11.4398224,51.3573403 left font ',8' noenhanced front
+set label 'embree_low' at 7.35611284,79.0998893 left font ',8' noenhanced front
+set label 'embree_medium' at 18.9337263,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 13.959416,54.6804169 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.48711499,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 13.8120839,52.9793966 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
