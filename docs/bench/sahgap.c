@@ -70,6 +70,19 @@ double cli_now_ms(void)
     return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
 }
 
+/* The options of every atrbvh build here: the method, `size` leaves a
+ * treelet, the rounds, leaves of at most MAX_LEAF by SAH. */
+static void options_for(atrbvh_build_options *o, unsigned size, int threads)
+{
+    atrbvh_build_options_init(o);
+    o->method = tl_method;
+    o->treelet_size = size;
+    o->rounds = tl_rounds;
+    o->collapse = 1;
+    o->max_leaf_size = MAX_LEAF;
+    o->threads = threads;
+}
+
 static double area(const atrbvh_node *n)
 {
     const double dx = (double)n->max[0] - (double)n->min[0];
@@ -178,16 +191,11 @@ static double rebuilt_cost(hybrid *h, uint32_t i)
         atrbvh_build_options o;
         atrbvh_bvh *b;
         atrbvh_error e;
-        atrbvh_build_options_init(&o);
-        o.method = tl_method;
         /* a set of fewer primitives than the treelet size is one
          * treelet of them all (else no treelet would form: a treelet
          * root needs that many) */
-        o.treelet_size = k >= tl_size ? tl_size : k > 3 ? (unsigned)k : 3u;
-        o.rounds = tl_rounds;
-        o.collapse = 1;
-        o.max_leaf_size = MAX_LEAF;
-        o.threads = 1;
+        options_for(&o, k >= tl_size ? tl_size : k > 3 ? (unsigned)k : 3u,
+                    1);
         if (atrbvh_build(&g, &o, &b, &e) != ATRBVH_OK) {
             cli_error("subtree build: %s", e.text);
             h->failed = 1;
@@ -250,13 +258,7 @@ int main(int argc, char **argv)
         return 1;
     }
     g = scene_geometry(&sc);
-    atrbvh_build_options_init(&o);
-    o.method = tl_method;
-    o.treelet_size = tl_size;
-    o.rounds = tl_rounds;
-    o.collapse = 1;
-    o.max_leaf_size = MAX_LEAF;
-    o.threads = 2;
+    options_for(&o, tl_size, 2);
     if (atrbvh_build(&g, &o, &ours, &e) != ATRBVH_OK) {
         fprintf(stderr, "%s\n", e.text);
         return 1;
