@@ -94,10 +94,6 @@ typedef struct atrbvh_i_scratch {
     unsigned char home[ATRBVH_I_SCRATCH_SLOTS]; /* role -> slot + 1; 0: own */
     uint32_t live;  /* roles got and not done, this build                 */
     int transient; /* a build without a handle: nothing to keep for */
-    /* a CPU LBVH's output nodes per 1024 primitives, its last build's
-     * (0: none yet): the size of the node box slot that the next one's
-     * output takes (lib/cpu/backend.c, collapse.c) */
-    uint32_t lbvh_nodes_per_1024;
 } atrbvh_i_scratch;
 /* At least count * size bytes for role `slot` (contents undefined; those
  * of an earlier role of a reserved slot stay when it is large enough);

@@ -163,6 +163,62 @@ START_TEST(lbvh_outputs_own_their_nodes)
 }
 END_TEST
 
+/* A handle learns how many nodes its LBVH outputs have per primitive
+ * (lib/cpu/backend.c's plan).  With leaves of up to 8 primitives an
+ * output has about n nodes; with leaves of one, 2n - 1.  After a build of
+ * the first kind, a handle's node box slot has room for n nodes, so the
+ * next build, of the second kind, allocates its output's nodes apart;
+ * from then on the slot has room for 2n - 1 and the output takes its
+ * block: one allocation fewer, some 32 bytes per primitive less.  Each
+ * tree is the one a build without a handle gives. */
+START_TEST(lbvh_handle_learns_node_count)
+{
+    scene sc;
+    char err[256], msg[256];
+    atrbvh_geometry g;
+    atrbvh_build_options o;
+    atrbvh_device *d;
+    atrbvh_error e;
+    atrbvh_bvh *ref, *b;
+    long allocs[4];
+    size_t bytes[4];
+    int k;
+    ck_assert_int_eq(scene_builtin("sphere", 20000, &sc, err, sizeof err), 0);
+    g = scene_geometry(&sc);
+    atrbvh_build_options_init(&o);
+    o.method = ATRBVH_METHOD_LBVH;
+    o.max_leaf_size = 1;
+    o.threads = 2;
+    ref = tu_build(&g, &o);
+    ck_assert_int_eq(atrbvh_device_open("cpu", &d, &e), ATRBVH_OK);
+    o.device = d;
+    for (k = 0; k < 4; k++) {
+        o.max_leaf_size = k ? 1 : 8;
+        atrbvh_set_allocator(tu_count_malloc, tu_count_free);
+        tu_count_reset(-1);
+        ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_OK);
+        atrbvh_set_allocator(NULL, NULL);
+        allocs[k] = tu_alloc.allocations;
+        bytes[k] = tu_alloc.total_bytes;
+        if (k)
+            ck_assert_msg(tu_same_bvh(ref, b, msg, sizeof msg),
+                          "build %d: %s", k, msg);
+        atrbvh_bvh_free(b);
+    }
+    atrbvh_device_close(d);
+    ck_assert_msg(allocs[2] == allocs[1] - 1 && allocs[3] == allocs[2],
+                  "allocations per build %ld, %ld, %ld", allocs[1],
+                  allocs[2], allocs[3]);
+    ck_assert_msg(bytes[2] + 16 * (size_t)sc.triangle_count <= bytes[1] &&
+                      bytes[3] == bytes[2],
+                  "bytes allocated per build %lu, %lu, %lu",
+                  (unsigned long)bytes[1], (unsigned long)bytes[2],
+                  (unsigned long)bytes[3]);
+    atrbvh_bvh_free(ref);
+    scene_free(&sc);
+}
+END_TEST
+
 /* Every allocation of open, build, build (larger), close fails in turn:
  * each failure is ATRBVH_ERR_NOMEM, and nothing leaks once the handle is
  * closed. */
@@ -765,6 +821,7 @@ static Suite *suite(void)
     tcase_add_test(t, open_specs);
     tcase_add_test(t, reuse_allocates_no_scratch);
     tcase_add_test(t, lbvh_outputs_own_their_nodes);
+    tcase_add_test(t, lbvh_handle_learns_node_count);
     tcase_add_loop_test(t, allocation_failure_open_build_close, 0, 2);
     tcase_add_loop_test(t, peak_memory_lbvh, 0, 3);
     tcase_add_loop_test(t, allocation_failure_lbvh_and_invalid, 0, 2);

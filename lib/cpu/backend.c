@@ -14,17 +14,25 @@
 static atrbvh_status cpu_open(atrbvh_device *dev, const char *spec,
                               atrbvh_error *error)
 {
+    atrbvh_i_cpu_device *d;
     if (spec && *spec)
         return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
                              "the CPU device takes no name (got \"%s\")",
                              spec);
+    d = atrbvh_i_malloc(sizeof *d);
+    if (!d)
+        return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
+                             "cannot allocate the CPU device's state");
+    memset(d, 0, sizeof *d);
+    dev->impl = d;
     strcpy(dev->name, "cpu");
     return ATRBVH_OK;
 }
 
 static void cpu_close(atrbvh_device *dev)
 {
-    (void)dev;
+    atrbvh_i_free(dev->impl);
+    dev->impl = NULL;
 }
 
 /* The memory plan of a build of up to n primitives, in bytes per
@@ -97,8 +105,8 @@ static void cpu_close(atrbvh_device *dev)
  * handle's repeated builds the peak is the same; a first build's, or one
  * without a handle, is larger by what the block has to spare (1-5 bytes
  * per primitive: test_device's scenes). */
-static void plan(atrbvh_i_scratch *s, size_t n, atrbvh_method method,
-                 int kept_ids)
+static void plan(atrbvh_i_scratch *s, const atrbvh_i_cpu_device *d,
+                 size_t n, atrbvh_method method, int kept_ids)
 {
     const size_t nodes = n ? 2 * n - 1 : 1;
     size_t boxes = n ? atrbvh_i_node_boxes(method, n, kept_ids) : nodes;
@@ -116,8 +124,8 @@ static void plan(atrbvh_i_scratch *s, size_t n, atrbvh_method method,
          * what the count's rounding dropped), else n (most scenes need
          * 0.9n to n with max leaf 8), as boxes (4 per 3 nodes) when that
          * is more than the slot needs (at most 2n - 1 nodes). */
-        const uint64_t per = s->lbvh_nodes_per_1024
-                                 ? s->lbvh_nodes_per_1024 + 1u
+        const uint64_t per = d && d->lbvh_nodes_per_1024
+                                 ? d->lbvh_nodes_per_1024 + 1u
                                  : 1024u;
         uint64_t want = (uint64_t)n * per / 1024;
         if (want > nodes)
@@ -143,8 +151,10 @@ static atrbvh_status cpu_begin(atrbvh_device *dev, atrbvh_i_run *run,
                              "cannot allocate the build state");
     memset(c, 0, sizeof *c);
     c->scratch = &dev->scratch;
+    c->device = dev->impl;
     run->state = c;
-    plan(c->scratch, run->in.g->primitive_count, run->cfg->method, 0);
+    plan(c->scratch, c->device, run->in.g->primitive_count,
+         run->cfg->method, 0);
     return ATRBVH_OK;
 }
 
@@ -194,7 +204,7 @@ static atrbvh_status cpu_set_prims(atrbvh_device *dev, atrbvh_i_run *run,
          * c->boxes points into it (a slot growing later would move the
          * boxes under that pointer).  The references are copied below
          * from the pipeline's own array. */
-        plan(c->scratch, run->n, run->cfg->method, ids != NULL);
+        plan(c->scratch, c->device, run->n, run->cfg->method, ids != NULL);
         if (!atrbvh_i_scratch_get(c->scratch, CPU_BOX, 2 * (size_t)run->n - 1,
                                   sizeof(atrbvh_box)))
             return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,

@@ -228,8 +228,9 @@ static void take_box_slot(atrbvh_i_cpu_run *c, atrbvh_i_run *run)
     const int fits =
         atrbvh_i_mul_size(run->node_count, sizeof(atrbvh_node), &need) &&
         need <= bytes;
-    c->scratch->lbvh_nodes_per_1024 =
-        (uint32_t)((uint64_t)run->node_count * 1024 / run->n);
+    if (c->device)
+        c->device->lbvh_nodes_per_1024 =
+            (uint32_t)((uint64_t)run->node_count * 1024 / run->n);
     if (block && fits && bytes - need <= bytes / 8) {
         run->out_block = block;
         run->out_block_bytes = bytes;

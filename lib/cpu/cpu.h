@@ -88,9 +88,19 @@ enum {
 };
 ATRBVH_STATIC_ASSERT(CPU_SLOTS <= ATRBVH_I_SCRATCH_LIB, cpu_slots_fit);
 
+/* The CPU backend's part of a device handle (dev->impl; NULL on the
+ * temporary device of a build without a handle, which keeps nothing). */
+typedef struct atrbvh_i_cpu_device {
+    /* an LBVH's output nodes per 1024 primitives, the handle's last
+     * LBVH's (0: none yet): the size of the node box slot that the next
+     * one's output takes (backend.c's plan, collapse.c) */
+    uint32_t lbvh_nodes_per_1024;
+} atrbvh_i_cpu_device;
+
 /* One build on the CPU (run->state). */
 typedef struct atrbvh_i_cpu_run {
     atrbvh_i_scratch *scratch;
+    atrbvh_i_cpu_device *device; /* NULL: a temporary device */
     atrbvh_box *boxes;  /* bounds (or set_prims)             */
     uint32_t *ids;      /* NULL: every input primitive kept  */
     int kept_ids; /* set_prims gave ids (skip_invalid, split): a leaf's
