@@ -920,8 +920,9 @@ static void opt_item(__global uint *left, __global uint *right,
             (__global uint *)(base + a->off_lanes +
                               (l - 1u) * (a->off_dist - a->off_split));
     }
-    /* ATRBVH: the distances, and above 32 leaves the treelet's arrays,
-     * laid out for the largest size (the host sized them alike). */
+    /* ATRBVH: the distances and the agglomeration's arrays, laid out
+     * for the largest size (the host sized them alike; TRBVH: none, the
+     * pointers unused). */
     atrbvh_agg_layout(base + a->off_dist,
                       a->treelet_size == ATRBVH_TREELET_AUTO
                           ? (uint)ATRBVH_AUTO_MAX
@@ -985,7 +986,7 @@ __kernel void opt_round(__global uint *left, __global uint *right,
                     a.treelet_size == ATRBVH_TREELET_AUTO
                         ? atrbvh_treelet_auto_size(v.t.count[x], a.gamma)
                         : a.treelet_size,
-                    (int)a.agglomerative, v.s, v.agg.dist, v.m, a.round);
+                    (int)a.agglomerative, v.s, &v.agg, v.m, a.round);
             else
                 r = atrbvh_atrbvh_process(&v.t, &v.p, x, a.treelet_size,
                                           a.gamma, v.s, &v.agg);
@@ -1090,7 +1091,7 @@ __kernel void opt_round4(__global uint *left, __global uint *right,
             atrbvh_trbvh_ready(&v.t, &v.p, a.treelet_size, ready, root, tl,
                                lv, v.lane, v.dist4, r);
         else if (ready > 0u) /* (one alone: atrbvh_atrbvh_keep) */
-            atrbvh_agglomerate_side(&v.t, &v.p, ready, root, tl, v.agg.dist,
+            atrbvh_agglomerate_side(&v.t, &v.p, ready, root, tl, &v.agg,
                                     v.dist4, r);
         for (l = 0u; l < ready; l++) {
             atrbvh_treelet_marks_done(v.m, &tl[l], root[l], r[l], a.round);

@@ -553,8 +553,8 @@ static atrbvh_status st_refit(atrbvh_device *dev, atrbvh_i_run *run,
 
 /* ------------------------------------------------------------- optimise */
 /* Per-worker scratch: the TRBVH subset tables (2^n entries) or the
- * ATRBVH distance matrix (n(n-1)/2) and, above 32 leaves, the treelet's
- * arrays (atrbvh_agg_layout, as the kernel carves them; for
+ * ATRBVH distance matrix (n(n-1)/2) and the agglomeration's arrays
+ * (atrbvh_agg_layout, as the kernel carves them; for
  * ATRBVH_TREELET_AUTO the rule's largest size), each 64-byte aligned;
  * for opt_round4 (a->walks) then the four lanes' interleaved matrices or
  * tables (off_dist4) and TRBVH's lanes 1-3's splits (off_lanes, each

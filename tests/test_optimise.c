@@ -573,9 +573,52 @@ static void naive_greedy(const atrbvh_cost_params *p, unsigned n,
     }
 }
 
+/* A worker's ATRBVH scratch for treelets of up to ATRBVH_TREELET_MAX
+ * leaves, laid out as the drivers lay it out (atrbvh_agg_layout), 64-byte
+ * aligned. */
+static atrbvh_agg_scratch agg_scratch(void)
+{
+    static unsigned char block[65536 + 64];
+    unsigned char *base =
+        (unsigned char *)(((uintptr_t)block + 63u) & ~(uintptr_t)63u);
+    atrbvh_agg_scratch s;
+    ck_assert_uint_le(atrbvh_agg_layout(NULL, ATRBVH_TREELET_MAX, NULL),
+                      65536);
+    atrbvh_agg_layout(base, ATRBVH_TREELET_MAX, &s);
+    return s;
+}
+
+/* The agglomeration of gathered leaves: a tree of just those leaves
+ * (nodes 0 .. n-1, as the agglomeration reads them) and a treelet of
+ * them in slot order. */
+static double agglomerate_leaves(const atrbvh_cost_params *p, unsigned n,
+                                 const atrbvh_treelet_leaves *lv,
+                                 const atrbvh_agg_scratch *s,
+                                 atrbvh_treelet_topo *topo)
+{
+    static atrbvh_box box[ATRBVH_TREELET_MAX];
+    static double cost[ATRBVH_TREELET_MAX];
+    static atrbvh_u32 count[ATRBVH_TREELET_MAX];
+    atrbvh_treelet_tree t;
+    atrbvh_treelet tl;
+    unsigned a;
+    memset(&t, 0, sizeof t);
+    t.box = box;
+    t.cost = cost;
+    t.count = count;
+    tl.n = n;
+    for (a = 0; a < n; a++) {
+        box[a] = lv->box[a];
+        cost[a] = lv->cost[a];
+        count[a] = lv->count[a];
+        tl.leaf[a] = a;
+    }
+    return atrbvh_agglomerate_at(p, &t, &tl, s, topo);
+}
+
 START_TEST(atrbvh_is_naive_greedy)
 {
-    static double dist[ATRBVH_TREELET_MAX * (ATRBVH_TREELET_MAX - 1) / 2];
+    const atrbvh_agg_scratch agg = agg_scratch();
     rng r;
     unsigned n, trial;
     int model, ties = 0;
@@ -592,10 +635,10 @@ START_TEST(atrbvh_is_naive_greedy)
                 int mode = (int)(trial % 5u);
                 random_leaves(&r, n, mode, &p, &lv);
                 atrbvh_treelet_topo merged;
-                root = atrbvh_agglomerate(&p, n, &lv, dist, &topo);
+                root = agglomerate_leaves(&p, n, &lv, &agg, &topo);
                 check_topology(n, &topo);
                 ck_assert_uint_eq(topo.root, n - 2);
-                /* agglomerate leaves each merge's box, count and cost
+                /* the agglomeration leaves each merge's box, count and cost
                  * (atrbvh_treelet_process skips evaluate on that
                  * promise): bit for bit what evaluate computes. */
                 merged = topo;
@@ -642,8 +685,8 @@ START_TEST(atrbvh_lanes_are_scalar)
     static atrbvh_box box[4 * M];
     static double cost[4 * M];
     static atrbvh_u32 count[4 * M];
-    static double dist[M * (M - 1) / 2];
     static double dist4[4 * M * (M - 1) / 2 + 4];
+    const atrbvh_agg_scratch agg = agg_scratch();
     /* 32-byte aligned, as the driver's scratch */
     double *d4 = (double *)(void *)(((uintptr_t)dist4 + 31u) & ~(uintptr_t)31u);
     atrbvh_treelet_tree t;
@@ -699,7 +742,7 @@ START_TEST(atrbvh_lanes_are_scalar)
                 }
                 atrbvh_agglomerate4(&p, n, &t, in, d4, out, found);
                 for (l = 0; l < 4u; l++) {
-                    root = atrbvh_agglomerate_at(&p, n, &t, in[l], 0, dist, &ref);
+                    root = atrbvh_agglomerate_at(&p, &t, in[l], &agg, &ref);
                     ck_assert_msg(memcmp(&found[l], &root, sizeof root) == 0,
                                   "model %d n %u trial %u lane %u: root cost "
                                   "%.17g, scalar %.17g",

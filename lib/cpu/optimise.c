@@ -62,10 +62,10 @@ typedef struct opt_worker {
     atrbvh_trbvh_scratch lane[4];
     double *pack;
     uint32_t *list, *order;
-    atrbvh_agg_scratch agg;     /* ATRBVH above 32 leaves or adaptive:
-                                   distances (= dist) and the treelet's
-                                   arrays, atrbvh_agg_layout            */
-    double *dist;               /* n(n-1)/2 distances (ATRBVH)          */
+    atrbvh_agg_scratch agg;     /* ATRBVH: the distances and the
+                                   agglomeration's arrays (and above 32
+                                   leaves the treelet's),
+                                   atrbvh_agg_layout                    */
     double *dist4;              /* ATRBVH in lanes: four interleaved
                                    matrices (atrbvh_agglomerate4)       */
     uint64_t treelets;          /* treelets processed                   */
@@ -236,7 +236,7 @@ static void process(walk_ctx *c, uint32_t node, unsigned n)
      * atrbvh_treelet_process_marked, which the OpenCL kernel calls too. */
     applied = atrbvh_treelet_process_marked(
         &c->t, c->cost, node, n, c->method == ATRBVH_METHOD_ATRBVH, w->trbvh,
-        w->dist, c->marks, (atrbvh_u32)c->round);
+        &w->agg, c->marks, (atrbvh_u32)c->round);
     if (applied == ATRBVH_TREELET_SKIPPED) {
         w->skipped++;
     } else {
@@ -345,7 +345,7 @@ static void lane_agg(walk_ctx *c, opt_worker *w, unsigned ready,
 {
     int applied[4];
     unsigned l;
-    atrbvh_agglomerate_side(&c->t, c->cost, ready, root, tl, w->dist,
+    atrbvh_agglomerate_side(&c->t, c->cost, ready, root, tl, &w->agg,
                             w->dist4, applied);
     for (l = 0; l < ready; l++)
         lane_done(c, w, root[l], &tl[l], applied[l]);
@@ -400,7 +400,7 @@ static void lane_batch(walk_ctx *c, opt_worker *w, unsigned ready,
             lane_done(c, w, root[l], &tl[l],
                       tl[l].n >= 3u ? atrbvh_atrbvh_keep(&c->t, c->cost,
                                                          root[l], &tl[l],
-                                                         w->dist)
+                                                         &w->agg)
                                     : 0);
         }
         return;
@@ -752,9 +752,9 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, unsigned char *flat,
         return ATRBVH_OK;
 
     /* Scratch: TRBVH 2^n boxes, costs, counts, splits; ATRBVH the
-     * n(n-1)/2 distances and, above 32 leaves, the treelet's arrays
-     * (atrbvh_agg_layout, sized from the largest size used: 84 KiB at
-     * 128, 17 KiB at 48; `pairs` counts it in doubles, a multiple of 8).
+     * n(n-1)/2 distances and the agglomeration's arrays (atrbvh_agg_layout,
+     * sized from the largest size used: 84 KiB at 128, 17 KiB at 48, 2.9
+     * KiB at 9; `pairs` counts it in doubles, a multiple of 8).
      * Sizes are small but checked anyway. */
     if (cfg->method == ATRBVH_METHOD_TRBVH)
         subsets = (size_t)1 << n;
@@ -860,7 +860,6 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, unsigned char *flat,
         workers[k].trbvh.cost = (double *)(void *)(base + off_cost);
         workers[k].trbvh.count = (uint32_t *)(void *)(base + off_count);
         workers[k].trbvh.split = (uint32_t *)(void *)(base + off_split);
-        workers[k].dist = (double *)(void *)(base + off_dist);
         workers[k].lane[0] = workers[k].trbvh;
         for (l = 1; lane_size > 0u && l < 4u; l++) {
             unsigned char *at = base + lane1 + (l - 1u) * lane_size;

@@ -4,8 +4,8 @@
  *
  * Same rules as shared/arith.h: no libc, no VLAs, no recursion, fixed-size
  * private arrays sized by the compile-time maxima below, everything larger
- * (the 2^n subset tables of TRBVH, the distance matrix of ATRBVH) passed in
- * as scratch by pointer.
+ * (the 2^n subset tables of TRBVH, the distance matrix and clusters of
+ * ATRBVH) passed in as scratch by pointer.
  *
  * A treelet (Karras & Aila 2013, section 4) is a root R plus n-1 internal
  * nodes below it whose n children outside the set are the "treelet leaves"
@@ -18,7 +18,7 @@
  *   atrbvh_treelet_gather    - copy their box, count, cost (TRBVH; ATRBVH
  *                              reads them in place)
  *   atrbvh_trbvh_dp          - TRBVH: optimal topology by subset DP
- *   atrbvh_agglomerate       - ATRBVH: greedy agglomerative topology
+ *   atrbvh_agg_cluster       - ATRBVH: greedy agglomerative topology
  *   atrbvh_treelet_evaluate  - exact boxes, counts, costs of a topology
  *   atrbvh_treelet_write     - write it back, reusing the internal ids
  *
@@ -40,10 +40,11 @@
  * private array sizes below, the CPU and OpenCL optimise stages).
  * Largest treelet of each optimiser: TRBVH needs 2^n subset entries of
  * scratch and O(3^n) work per treelet; ATRBVH keeps one cluster per leaf
- * and n(n-1)/2 distances.  ATRBVH_TREELET_MAX is the private arrays'
- * size: TRBVH and ATRBVH up to it use them, larger ATRBVH treelets (up to
- * ATRBVH_ATRBVH_MAX) keep their arrays in scratch (section "ATRBVH, any
- * size" at the end). */
+ * and n(n-1)/2 distances.  ATRBVH_TREELET_MAX is the size of the private
+ * arrays of a formed treelet and its topology: TRBVH and ATRBVH up to it
+ * use them, larger ATRBVH treelets (up to ATRBVH_ATRBVH_MAX) keep those in
+ * scratch too (section "ATRBVH, any size" at the end).  ATRBVH's
+ * agglomeration works in scratch at every size (atrbvh_agg_cluster). */
 #define ATRBVH_TREELET_MAX 32
 #define ATRBVH_TRBVH_MAX 10
 #define ATRBVH_TRBVH_MIN 3
@@ -1214,61 +1215,132 @@ ATRBVH_FN void atrbvh_row_min(ATRBVH_GLOBAL const double *dist, atrbvh_u32 r,
     *c = bc;
 }
 
-/* The cluster boxes of atrbvh_agglomerate as six coordinate arrays (min
- * x, y, z, max x, y, z), padded so that a kernel may read
- * ATRBVH_SOA_PAD - 1 lanes past the last slot. */
+/* The worker scratch of ATRBVH, every array of a treelet's agglomeration
+ * (and, above ATRBVH_TREELET_MAX leaves, of its formation and write-back)
+ * in one place: private arrays of a work-item could hold neither a
+ * 128-leaf treelet's 8128 distances nor, in OpenCL C 1.2 (no generic
+ * address space), be passed where the scratch is, so the one
+ * agglomeration below works in the scratch at every size.  `w` is the row
+ * stride of the six coordinate rows of `soa` (padded so that a kernel may
+ * read ATRBVH_SOA_PAD - 1 lanes past the last slot). */
 #define ATRBVH_SOA_PAD 4
-typedef struct atrbvh_box_soa {
-    float c[6][ATRBVH_TREELET_MAX + ATRBVH_SOA_PAD];
-} atrbvh_box_soa;
+typedef struct atrbvh_agg_scratch {
+    ATRBVH_GLOBAL double *dist;      /* n(n-1)/2                          */
+    ATRBVH_GLOBAL atrbvh_u32 *leaf;  /* n: the treelet leaves, slot order */
+    ATRBVH_GLOBAL atrbvh_u32 *internal; /* n: [0] root, expansion order   */
+    ATRBVH_GLOBAL double *area;      /* n: formation areas                */
+    ATRBVH_GLOBAL atrbvh_box *box;   /* n: the clusters                   */
+    ATRBVH_GLOBAL double *cost;
+    ATRBVH_GLOBAL atrbvh_u32 *count;
+    ATRBVH_GLOBAL atrbvh_u32 *code;
+    ATRBVH_GLOBAL double *rmin;      /* n: row minima and their columns   */
+    ATRBVH_GLOBAL atrbvh_u32 *rcol;
+    ATRBVH_GLOBAL float *soa;        /* 6 rows of w floats                */
+    ATRBVH_GLOBAL double *area_of;   /* w                                 */
+    ATRBVH_GLOBAL atrbvh_u32 *left;  /* n: the merges (as _topo)          */
+    ATRBVH_GLOBAL atrbvh_u32 *right;
+    ATRBVH_GLOBAL atrbvh_u32 *order;
+    ATRBVH_GLOBAL atrbvh_box *tbox;
+    ATRBVH_GLOBAL atrbvh_u32 *tcount;
+    ATRBVH_GLOBAL double *tcost;
+    ATRBVH_GLOBAL atrbvh_u32 *flat;  /* n: 1 where merge q collapses      */
+    ATRBVH_GLOBAL atrbvh_u32 *ids;   /* n: write-back                     */
+    ATRBVH_GLOBAL atrbvh_u32 *id_of;
+    ATRBVH_GLOBAL atrbvh_u32 *stack; /* n: pre-order walk                 */
+    atrbvh_u32 w;
+} atrbvh_agg_scratch;
 
-ATRBVH_FN void atrbvh_soa_set(atrbvh_box_soa *s, atrbvh_u32 k, atrbvh_box b)
+ATRBVH_FN atrbvh_u64 atrbvh_agg_align(atrbvh_u64 x)
 {
-    s->c[0][k] = b.min[0];
-    s->c[1][k] = b.min[1];
-    s->c[2][k] = b.min[2];
-    s->c[3][k] = b.max[0];
-    s->c[4][k] = b.max[1];
-    s->c[5][k] = b.max[2];
+    return (x + 63u) & ~(atrbvh_u64)63u;
 }
 
-ATRBVH_FN atrbvh_box atrbvh_soa_get(const atrbvh_box_soa *s, atrbvh_u32 k)
+/* Lays the scratch for treelets of at most n leaves out from `base`
+ * (64-byte aligned; may be 0 to only size it) and returns its bytes: the
+ * distances first, then the other arrays.  The host sizes with it, the
+ * kernel and the CPU driver carve with it. */
+ATRBVH_FN atrbvh_u64 atrbvh_agg_layout(ATRBVH_GLOBAL unsigned char *base,
+                                       atrbvh_u32 n, atrbvh_agg_scratch *s)
 {
-    atrbvh_box b;
-    b.min[0] = s->c[0][k];
-    b.min[1] = s->c[1][k];
-    b.min[2] = s->c[2][k];
-    b.max[0] = s->c[3][k];
-    b.max[1] = s->c[4][k];
-    b.max[2] = s->c[5][k];
-    return b;
+    atrbvh_u64 o, n8 = (atrbvh_u64)n, w = n8 + ATRBVH_SOA_PAD;
+    o = atrbvh_agg_align(n8 * (n8 - 1u) / 2u * 8u);
+    if (s) {
+        s->dist = (ATRBVH_GLOBAL double *)(base);
+        s->w = (atrbvh_u32)w;
+    }
+#define ATRBVH_AGG_PART(field, type, entries)                                 \
+    do {                                                                      \
+        if (s)                                                                \
+            s->field = (ATRBVH_GLOBAL type *)(base + o);                      \
+        o += atrbvh_agg_align((entries) * sizeof(type));                      \
+    } while (0)
+    ATRBVH_AGG_PART(leaf, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(internal, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(area, double, n8);
+    ATRBVH_AGG_PART(box, atrbvh_box, n8);
+    ATRBVH_AGG_PART(cost, double, n8);
+    ATRBVH_AGG_PART(count, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(code, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(rmin, double, n8);
+    ATRBVH_AGG_PART(rcol, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(soa, float, 6u * w);
+    ATRBVH_AGG_PART(area_of, double, w);
+    ATRBVH_AGG_PART(left, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(right, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(order, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(tbox, atrbvh_box, n8);
+    ATRBVH_AGG_PART(tcount, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(tcost, double, n8);
+    ATRBVH_AGG_PART(flat, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(ids, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(id_of, atrbvh_u32, n8);
+    ATRBVH_AGG_PART(stack, atrbvh_u32, n8);
+#undef ATRBVH_AGG_PART
+    return o;
+}
+
+ATRBVH_FN void atrbvh_agg_soa_set(const atrbvh_agg_scratch *s, atrbvh_u32 k,
+                                  atrbvh_box b)
+{
+    ATRBVH_GLOBAL float *c = s->soa;
+    atrbvh_u32 w = s->w;
+    c[k] = b.min[0];
+    c[w + k] = b.min[1];
+    c[2u * w + k] = b.min[2];
+    c[3u * w + k] = b.max[0];
+    c[4u * w + k] = b.max[1];
+    c[5u * w + k] = b.max[2];
 }
 
 /* out[a] = atrbvh_box_area(atrbvh_box_union(q, box of slot a)) for a in
- * lo .. hi-1, q the first union operand; out needs ATRBVH_SOA_PAD - 1
- * entries of room past hi.  On x86 CPUs four at a time with SSE2 (the
- * upper pair of the last four skipped when not wanted): MINPS
- * and MAXPS are q < b ? q : b and q > b ? q : b, lane for lane the scalar
+ * lo .. hi-1, q the first union operand, over the scratch's coordinate
+ * rows; out needs ATRBVH_SOA_PAD - 1 entries of room past hi.  On x86
+ * CPUs four at a time with SSE2 (the upper pair of the last four skipped
+ * when not wanted, so at most one entry past hi is written): MINPS and
+ * MAXPS are q < b ? q : b and q > b ? q : b, lane for lane the scalar
  * expressions, and the double arithmetic is the same IEEE operations in
  * the same order, so the bits are the same as the scalar loop's (which
  * OpenCL runs). */
 #if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
 #include <emmintrin.h>
-ATRBVH_FN void atrbvh_union_areas(const atrbvh_box_soa *s, atrbvh_box q,
-                                  atrbvh_u32 lo, atrbvh_u32 hi, double *out)
+ATRBVH_FN void atrbvh_agg_union_areas(const atrbvh_agg_scratch *s,
+                                      atrbvh_box q, atrbvh_u32 lo,
+                                      atrbvh_u32 hi, double *out)
 {
     const __m128 q0 = _mm_set1_ps(q.min[0]), q1 = _mm_set1_ps(q.min[1]),
                  q2 = _mm_set1_ps(q.min[2]), q3 = _mm_set1_ps(q.max[0]),
                  q4 = _mm_set1_ps(q.max[1]), q5 = _mm_set1_ps(q.max[2]);
     const __m128d two = _mm_set1_pd(2.0);
+    const float *c0 = s->soa, *c1 = c0 + s->w, *c2 = c1 + s->w,
+                *c3 = c2 + s->w, *c4 = c3 + s->w, *c5 = c4 + s->w;
     atrbvh_u32 a;
     for (a = lo; a < hi; a += 4u) {
-        const __m128 x0 = _mm_min_ps(q0, _mm_loadu_ps(&s->c[0][a]));
-        const __m128 y0 = _mm_min_ps(q1, _mm_loadu_ps(&s->c[1][a]));
-        const __m128 z0 = _mm_min_ps(q2, _mm_loadu_ps(&s->c[2][a]));
-        const __m128 x1 = _mm_max_ps(q3, _mm_loadu_ps(&s->c[3][a]));
-        const __m128 y1 = _mm_max_ps(q4, _mm_loadu_ps(&s->c[4][a]));
-        const __m128 z1 = _mm_max_ps(q5, _mm_loadu_ps(&s->c[5][a]));
+        const __m128 x0 = _mm_min_ps(q0, _mm_loadu_ps(c0 + a));
+        const __m128 y0 = _mm_min_ps(q1, _mm_loadu_ps(c1 + a));
+        const __m128 z0 = _mm_min_ps(q2, _mm_loadu_ps(c2 + a));
+        const __m128 x1 = _mm_max_ps(q3, _mm_loadu_ps(c3 + a));
+        const __m128 y1 = _mm_max_ps(q4, _mm_loadu_ps(c4 + a));
+        const __m128 z1 = _mm_max_ps(q5, _mm_loadu_ps(c5 + a));
         __m128d dx = _mm_sub_pd(_mm_cvtps_pd(x1), _mm_cvtps_pd(x0));
         __m128d dy = _mm_sub_pd(_mm_cvtps_pd(y1), _mm_cvtps_pd(y0));
         __m128d dz = _mm_sub_pd(_mm_cvtps_pd(z1), _mm_cvtps_pd(z0));
@@ -1292,18 +1364,20 @@ ATRBVH_FN void atrbvh_union_areas(const atrbvh_box_soa *s, atrbvh_box q,
     }
 }
 #else
-ATRBVH_FN void atrbvh_union_areas(const atrbvh_box_soa *s, atrbvh_box q,
-                                  atrbvh_u32 lo, atrbvh_u32 hi, double *out)
+ATRBVH_FN void atrbvh_agg_union_areas(const atrbvh_agg_scratch *s,
+                                      atrbvh_box q, atrbvh_u32 lo,
+                                      atrbvh_u32 hi, ATRBVH_GLOBAL double *out)
 {
-    atrbvh_u32 a;
+    ATRBVH_GLOBAL const float *c = s->soa;
+    atrbvh_u32 a, w = s->w;
     for (a = lo; a < hi; a++) {
         atrbvh_box b;
-        b.min[0] = q.min[0] < s->c[0][a] ? q.min[0] : s->c[0][a];
-        b.min[1] = q.min[1] < s->c[1][a] ? q.min[1] : s->c[1][a];
-        b.min[2] = q.min[2] < s->c[2][a] ? q.min[2] : s->c[2][a];
-        b.max[0] = q.max[0] > s->c[3][a] ? q.max[0] : s->c[3][a];
-        b.max[1] = q.max[1] > s->c[4][a] ? q.max[1] : s->c[4][a];
-        b.max[2] = q.max[2] > s->c[5][a] ? q.max[2] : s->c[5][a];
+        b.min[0] = q.min[0] < c[a] ? q.min[0] : c[a];
+        b.min[1] = q.min[1] < c[w + a] ? q.min[1] : c[w + a];
+        b.min[2] = q.min[2] < c[2u * w + a] ? q.min[2] : c[2u * w + a];
+        b.max[0] = q.max[0] > c[3u * w + a] ? q.max[0] : c[3u * w + a];
+        b.max[1] = q.max[1] > c[4u * w + a] ? q.max[1] : c[4u * w + a];
+        b.max[2] = q.max[2] > c[5u * w + a] ? q.max[2] : c[5u * w + a];
         out[a] = atrbvh_box_area(b);
     }
 }
@@ -1311,12 +1385,13 @@ ATRBVH_FN void atrbvh_union_areas(const atrbvh_box_soa *s, atrbvh_box q,
 
 /* ATRBVH (Domingues & Pedrini 2015, "Bounding Volume Hierarchy
  * Optimization through Agglomerative Treelet Restructuring", HPG 2015,
- * Algorithm 1): greedy agglomerative clustering of the n treelet leaves.
- * The distance of two clusters is the surface area (double) of their union
- * box; distances are cached in a triangular matrix `dist` (n(n-1)/2
- * entries of scratch) and updated after each merge, the cache of Gu et
- * al. 2013 ("Efficient BVH Construction via Approximate Agglomerative
- * Clustering", HPG 2013).
+ * Algorithm 1): greedy agglomerative clustering of the n treelet leaves
+ * s->leaf[0 .. n-1] (their box, cost and count read from the tree), any
+ * n from 3 to ATRBVH_ATRBVH_MAX, in the scratch `s`.  The distance of two
+ * clusters is the surface area (double) of their union box; distances are
+ * cached in a triangular matrix s->dist and updated after each merge, the
+ * cache of Gu et al. 2013 ("Efficient BVH Construction via Approximate
+ * Agglomerative Clustering", HPG 2013).
  *
  * Slots and ties, precisely: the m live clusters sit in slots 0..m-1,
  * initially slot k = treelet leaf k.  Each step merges the pair (i, j),
@@ -1324,60 +1399,48 @@ ATRBVH_FN void atrbvh_union_areas(const atrbvh_box_soa *s, atrbvh_box q,
  * among equal minima (strict < in a linear scan).  The merged cluster
  * takes slot j with left child = the cluster of slot j, right child = that
  * of slot i; the cluster of the last slot m-1 moves into slot i (nothing
- * moves when i = m-1).  Merge q (0-based) is local internal node q; its
- * cost is atrbvh_node_cost over the two clusters (left first).  The last
- * merge is the root.  Returns the root's cost.  The leaves come from
- * the tree in place (t->box/cost/count of tl->leaf[a]) when t is not
- * null, else from lv (atrbvh_agglomerate: gathered by
- * atrbvh_treelet_gather); the values, hence the result, are the same.
+ * moves when i = m-1).  Merge q (0-based) is local internal node q, with
+ * its children's codes in s->left[q], s->right[q] (c < n: leaf c, else
+ * merge c - n) and in s->tbox, s->tcount, s->tcost exactly what
+ * atrbvh_treelet_evaluate computes for local node q (the same union of
+ * the same children, left first); s->flat[q] is 1 where its cost is the
+ * collapse term (atrbvh_node_cost's choice).  The last merge, n - 2, is
+ * the root.  Returns the root's cost.
  *
  * The minimum search keeps each row's minimum (and its lowest column) and
  * updates them incrementally after a merge, so a step costs O(m) plus a
  * rescan of the few rows whose minimum was in a changed column, instead of
  * an O(m^2) scan; the pair chosen is exactly the lowest-linear-index
  * minimum of the full scan (the test compares with a naive scan). */
-ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
-                                       atrbvh_u32 n,
-                                       const atrbvh_treelet_tree *t,
-                                       const atrbvh_treelet *tl,
-                                       const atrbvh_treelet_leaves *lv,
-                                       ATRBVH_GLOBAL double *dist,
-                                       atrbvh_treelet_topo *topo)
+ATRBVH_FN double atrbvh_agg_cluster(const atrbvh_treelet_tree *t,
+                                    const atrbvh_cost_params *p, atrbvh_u32 n,
+                                    const atrbvh_agg_scratch *s)
 {
-    double cost[ATRBVH_TREELET_MAX];
-    atrbvh_u32 count[ATRBVH_TREELET_MAX];
-    atrbvh_u32 code[ATRBVH_TREELET_MAX];
-    double rmin[ATRBVH_TREELET_MAX];     /* row minimum, rows 1..m-1   */
-    atrbvh_u32 rcol[ATRBVH_TREELET_MAX]; /* its column (lowest if tied) */
-    atrbvh_box_soa soa;                  /* the cluster boxes         */
-    double area_of[ATRBVH_TREELET_MAX + ATRBVH_SOA_PAD];
+    ATRBVH_GLOBAL double *dist = s->dist;
+    ATRBVH_GLOBAL atrbvh_box *box = s->box;
+    ATRBVH_GLOBAL double *cost = s->cost;
+    ATRBVH_GLOBAL atrbvh_u32 *count = s->count;
+    ATRBVH_GLOBAL atrbvh_u32 *code = s->code;
+    ATRBVH_GLOBAL double *rmin = s->rmin;
+    ATRBVH_GLOBAL atrbvh_u32 *rcol = s->rcol;
+    ATRBVH_GLOBAL double *area_of = s->area_of;
     atrbvh_u32 m, a, b, q = 0;
     double root_cost = 0.0;
 
-    topo->flat = 0;
-    if (t) {
-        /* What atrbvh_treelet_gather would copy, read in place. */
-        for (a = 0; a < n; a++) {
-            atrbvh_u32 node = tl->leaf[a];
-            atrbvh_soa_set(&soa, a, t->box[node]);
-            cost[a] = t->cost[node];
-            count[a] = t->count[node];
-            code[a] = a;
-        }
-    } else {
-        for (a = 0; a < n; a++) {
-            atrbvh_soa_set(&soa, a, lv->box[a]);
-            cost[a] = lv->cost[a];
-            count[a] = lv->count[a];
-            code[a] = a;
-        }
+    for (a = 0; a < n; a++) {
+        const atrbvh_u32 node = s->leaf[a];
+        box[a] = t->box[node];
+        atrbvh_agg_soa_set(s, a, box[a]);
+        cost[a] = t->cost[node];
+        count[a] = t->count[node];
+        code[a] = a;
     }
     /* Lanes read past the end, never used: any finite value.  Every
      * union_areas call below has hi <= n-1, and the SSE2 loop reads
-     * lanes in fours from 0, so up to lane (n+2)/4*4 - 1 (none past the
-     * slots for n = 9, 16, 32); the scalar loop reads none. */
-    for (a = n; a < ((n + 2u) & ~3u); a++)
-        atrbvh_soa_set(&soa, a, atrbvh_soa_get(&soa, 0));
+     * lanes in fours from 0, so up to lane (n+2)/4*4 - 1; the scalar
+     * loop reads none. */
+    for (a = n; a < n + ATRBVH_SOA_PAD; a++)
+        atrbvh_agg_soa_set(s, a, box[0]);
     /* The matrix row by row, each row's minimum found on the way (strict
      * <: the lowest column among equals, as atrbvh_row_min). */
     for (a = 1; a < n; a++) {
@@ -1389,7 +1452,7 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
          * past it, the next row's first, which that row then writes; the
          * last row (nothing after it) goes through area_of. */
         if (a + 1u < n) {
-            atrbvh_union_areas(&soa, atrbvh_soa_get(&soa, a), 0, a, row);
+            atrbvh_agg_union_areas(s, box[a], 0, a, row);
             bv = row[0];
             for (b = 1; b < a; b++) {
                 const double d = row[b];
@@ -1401,23 +1464,21 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
             continue;
         }
 #endif
-        atrbvh_union_areas(&soa, atrbvh_soa_get(&soa, a), 0, a, area_of);
+        atrbvh_agg_union_areas(s, box[a], 0, a, area_of);
         bv = area_of[0];
         row[0] = bv;
         for (b = 1; b < a; b++) {
-            double d = area_of[b];
+            const double d = area_of[b];
             row[b] = d;
-            if (d < bv) {
-                bv = d;
-                bc = b;
-            }
+            bc = d < bv ? b : bc;
+            bv = bv < d ? bv : d;
         }
         rmin[a] = bv;
         rcol[a] = bc;
     }
     for (m = n; m > 1; m--) {
         atrbvh_u32 i = 1, j, last = m - 1u, r;
-        double best = rmin[1], area;
+        double best = rmin[1];
         atrbvh_box merged;
         ATRBVH_GLOBAL double *jrow;
         int collapsed;
@@ -1433,29 +1494,25 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
             best = best < v ? best : v;
         }
         j = rcol[i];
-        merged = atrbvh_box_union(atrbvh_soa_get(&soa, j),
-                                  atrbvh_soa_get(&soa, i));
-        /* The merged area is the pair's distance, already computed: the
-         * union may have been taken in the other operand order, which
-         * changes a coordinate (MINSS/MAXSS or ?:) only in the sign of a
-         * zero, hence the area only in the sign of a zero, which no
-         * comparison below or in the callers distinguishes. */
-        area = best;
-        topo->left[q] = code[j];
-        topo->right[q] = code[i];
-        root_cost = atrbvh_node_cost(p, area, count[j] + count[i], cost[j],
+        merged = atrbvh_box_union(box[j], box[i]);
+        /* The merged area is the pair's distance (best), already
+         * computed: the union may have been taken in the other operand
+         * order, which changes a coordinate (MINSS/MAXSS or ?:) only in
+         * the sign of a zero, hence the area only in the sign of a zero,
+         * which no comparison below or in the callers distinguishes. */
+        s->left[q] = code[j];
+        s->right[q] = code[i];
+        root_cost = atrbvh_node_cost(p, best, count[j] + count[i], cost[j],
                                      cost[i], &collapsed);
-        topo->flat |= (atrbvh_u32)collapsed << q;
-        atrbvh_soa_set(&soa, j, merged);
+        s->flat[q] = (atrbvh_u32)collapsed;
+        box[j] = merged;
+        atrbvh_agg_soa_set(s, j, merged);
         cost[j] = root_cost;
         count[j] += count[i];
         code[j] = n + q;
-        /* The merge's box, count and cost: exactly what
-         * atrbvh_treelet_evaluate computes for local node q (the same
-         * union of the same children, left first). */
-        topo->box[q] = merged;
-        topo->count[q] = count[j];
-        topo->cost[q] = root_cost;
+        s->tbox[q] = merged;
+        s->tcount[q] = count[j];
+        s->tcost[q] = root_cost;
         q++;
         if (last == 1u)
             break;
@@ -1464,7 +1521,8 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
         if (i != last) {
             ATRBVH_GLOBAL double *irow = dist + i * (i - 1u) / 2u;
             ATRBVH_GLOBAL double *lrow = dist + last * (last - 1u) / 2u;
-            atrbvh_soa_set(&soa, i, atrbvh_soa_get(&soa, last));
+            box[i] = box[last];
+            atrbvh_agg_soa_set(s, i, box[i]);
             cost[i] = cost[last];
             count[i] = count[last];
             code[i] = code[last];
@@ -1488,7 +1546,7 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
          * column (the value may have grown), else a changed entry can only
          * take over the minimum (lower column first among equals).  Rows
          * below j hold neither column. */
-        atrbvh_union_areas(&soa, merged, 0, last, area_of);
+        atrbvh_agg_union_areas(s, merged, 0, last, area_of);
         jrow = dist + j * (j - 1u) / 2u;
         /* Row j is area_of[0 .. j-1] and changes no more in this merge:
          * its minimum (atrbvh_row_min's, strict <) on the way (a plain
@@ -1514,7 +1572,11 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
             jrow += r;
             row[j] = v;
             if (r == i || rcol[r] == j || (r > i && rcol[r] == i)) {
-                atrbvh_row_min(dist, r, &rmin[r], &rcol[r]);
+                double rv;
+                atrbvh_u32 rc;
+                atrbvh_row_min(dist, r, &rv, &rc);
+                rmin[r] = rv;
+                rcol[r] = rc;
             } else {
                 if (v < rmin[r] || (v == rmin[r] && j < rcol[r])) {
                     rmin[r] = v;
@@ -1530,18 +1592,37 @@ ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
             }
         }
     }
-    topo->root = n - 2u;
     return root_cost;
 }
 
-/* The agglomeration over gathered leaves (atrbvh_treelet_gather). */
-ATRBVH_FN double atrbvh_agglomerate(const atrbvh_cost_params *p,
-                                    atrbvh_u32 n,
-                                    const atrbvh_treelet_leaves *lv,
-                                    ATRBVH_GLOBAL double *dist,
-                                    atrbvh_treelet_topo *topo)
+/* The agglomeration of a treelet of up to ATRBVH_TREELET_MAX leaves
+ * formed into *tl (at least 3): atrbvh_agg_cluster in the scratch `s`,
+ * its merges copied into *topo (boxes, counts, costs, the collapse bits in
+ * topo->flat; root n - 2), where atrbvh_treelet_write and the lanes'
+ * atrbvh_agglomerate4 keep theirs.  Returns the root merge's cost. */
+ATRBVH_FN double atrbvh_agglomerate_at(const atrbvh_cost_params *p,
+                                       const atrbvh_treelet_tree *t,
+                                       const atrbvh_treelet *tl,
+                                       const atrbvh_agg_scratch *s,
+                                       atrbvh_treelet_topo *topo)
 {
-    return atrbvh_agglomerate_at(p, n, 0, 0, lv, dist, topo);
+    const atrbvh_u32 n = tl->n;
+    atrbvh_u32 a, q;
+    double found;
+    for (a = 0; a < n; a++)
+        s->leaf[a] = tl->leaf[a];
+    found = atrbvh_agg_cluster(t, p, n, s);
+    topo->flat = 0;
+    for (q = 0; q + 1u < n; q++) {
+        topo->left[q] = s->left[q];
+        topo->right[q] = s->right[q];
+        topo->box[q] = s->tbox[q];
+        topo->count[q] = s->tcount[q];
+        topo->cost[q] = s->tcost[q];
+        topo->flat |= s->flat[q] << q;
+    }
+    topo->root = n - 2u;
+    return found;
 }
 
 #ifdef ATRBVH_LANES4
@@ -1774,7 +1855,7 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
             break;
         }
         /* the distances to the merged clusters (the merged box first, as
-         * atrbvh_agglomerate_at's atrbvh_union_areas), slot i's being
+         * atrbvh_agg_cluster's atrbvh_agg_union_areas), slot i's being
          * the last cluster's in its lanes, and each slot's masks: whether
          * it is the lane's slot i, slot j */
         far = ATRBVH_UNION_AREA4(mb, box[last]);
@@ -2028,15 +2109,15 @@ ATRBVH_FN int atrbvh_atrbvh_apply(const atrbvh_treelet_tree *t,
 
 /* The end of an ATRBVH treelet of up to ATRBVH_TREELET_MAX leaves, formed
  * into *tl (at least 3 leaves): the agglomerative clustering of its
- * leaves, read from the tree in place (no gather), then
- * atrbvh_atrbvh_apply.  Returns 1 when written back. */
+ * leaves, read from the tree in place (no gather), in the scratch `agg`,
+ * then atrbvh_atrbvh_apply.  Returns 1 when written back. */
 ATRBVH_FN int atrbvh_atrbvh_keep(const atrbvh_treelet_tree *t,
                                  const atrbvh_cost_params *p, atrbvh_u32 root,
                                  const atrbvh_treelet *tl,
-                                 ATRBVH_GLOBAL double *dist)
+                                 const atrbvh_agg_scratch *agg)
 {
     atrbvh_treelet_topo topo;
-    const double found = atrbvh_agglomerate_at(p, tl->n, t, tl, 0, dist, &topo);
+    const double found = atrbvh_agglomerate_at(p, t, tl, agg, &topo);
     return atrbvh_atrbvh_apply(t, root, tl, &topo, found);
 }
 
@@ -2049,13 +2130,14 @@ ATRBVH_FN int atrbvh_atrbvh_keep(const atrbvh_treelet_tree *t,
  * atrbvh_atrbvh_keep does it; then each one's write-back when cheaper
  * (applied[l] 1).  No treelet reads what another writes back.  The CPU's
  * walk_lanes (lib/cpu/optimise.c, with AVX) and the opt_round4 kernel
- * call this; dist is one treelet's matrix, dist4 the four lanes'. */
+ * call this; agg is one treelet's scratch, dist4 the four lanes'
+ * matrices. */
 ATRBVH_FN void atrbvh_agglomerate_side(const atrbvh_treelet_tree *t,
                                        const atrbvh_cost_params *p,
                                        atrbvh_u32 ready,
                                        const atrbvh_u32 *root,
                                        const atrbvh_treelet *tl,
-                                       ATRBVH_GLOBAL double *dist,
+                                       const atrbvh_agg_scratch *agg,
                                        ATRBVH_GLOBAL double *dist4,
                                        int *applied)
 {
@@ -2085,7 +2167,7 @@ ATRBVH_FN void atrbvh_agglomerate_side(const atrbvh_treelet_tree *t,
             applied[l] = atrbvh_atrbvh_apply(t, root[l], &tl[l], &topo[l],
                                              found[lane[l]]);
         else if (tl[l].n >= 3u)
-            applied[l] = atrbvh_atrbvh_keep(t, p, root[l], &tl[l], dist);
+            applied[l] = atrbvh_atrbvh_keep(t, p, root[l], &tl[l], agg);
     }
 }
 #endif
@@ -2096,7 +2178,7 @@ ATRBVH_FN void atrbvh_agglomerate_side(const atrbvh_treelet_tree *t,
  * clustering when `agglomerative`), and writes it back when it is
  * strictly cheaper.  Returns 1 when written back.  The CPU driver
  * (optimise.c) and the OpenCL kernel (cl/kernels.cl) both call this; only
- * the scratch (`s` for TRBVH, `dist` for ATRBVH) and the walk differ.
+ * the scratch (`s` for TRBVH, `agg` for ATRBVH) and the walk differ.
  * The formed treelet is left in *tl (its internal ids are the ones a
  * write-back reuses). */
 /* The rest of a treelet once it is formed into *tl (its root refreshed):
@@ -2107,7 +2189,7 @@ ATRBVH_FN int atrbvh_treelet_finish(const atrbvh_treelet_tree *t,
                                     const atrbvh_cost_params *p,
                                     atrbvh_u32 root, int agglomerative,
                                     atrbvh_trbvh_scratch s,
-                                    ATRBVH_GLOBAL double *dist,
+                                    const atrbvh_agg_scratch *agg,
                                     const atrbvh_treelet *tl)
 {
     atrbvh_treelet_leaves lv;
@@ -2119,7 +2201,7 @@ ATRBVH_FN int atrbvh_treelet_finish(const atrbvh_treelet_tree *t,
         found = atrbvh_trbvh_costs(p, tl->n, &lv, s);
         return atrbvh_trbvh_keep(t, p, root, tl, &lv, s, found);
     }
-    return atrbvh_atrbvh_keep(t, p, root, tl, dist);
+    return atrbvh_atrbvh_keep(t, p, root, tl, agg);
 }
 
 /* The TRBVH DP of `ready` (1 to 4) formed treelets whose subtrees are
@@ -2190,11 +2272,11 @@ ATRBVH_FN int atrbvh_treelet_process_tl(const atrbvh_treelet_tree *t,
                                         atrbvh_u32 root, atrbvh_u32 n,
                                         int agglomerative,
                                         atrbvh_trbvh_scratch s,
-                                        ATRBVH_GLOBAL double *dist,
+                                        const atrbvh_agg_scratch *agg,
                                         atrbvh_treelet *tl)
 {
     (void)atrbvh_treelet_begin(t, p, root, n, tl);
-    return atrbvh_treelet_finish(t, p, root, agglomerative, s, dist, tl);
+    return atrbvh_treelet_finish(t, p, root, agglomerative, s, agg, tl);
 }
 
 ATRBVH_FN int atrbvh_treelet_process(const atrbvh_treelet_tree *t,
@@ -2202,10 +2284,10 @@ ATRBVH_FN int atrbvh_treelet_process(const atrbvh_treelet_tree *t,
                                      atrbvh_u32 root, atrbvh_u32 n,
                                      int agglomerative,
                                      atrbvh_trbvh_scratch s,
-                                     ATRBVH_GLOBAL double *dist)
+                                     const atrbvh_agg_scratch *agg)
 {
     atrbvh_treelet tl;
-    return atrbvh_treelet_process_tl(t, p, root, n, agglomerative, s, dist,
+    return atrbvh_treelet_process_tl(t, p, root, n, agglomerative, s, agg,
                                      &tl);
 }
 
@@ -2286,7 +2368,7 @@ ATRBVH_FN int atrbvh_treelet_process_marked(const atrbvh_treelet_tree *t,
                                             atrbvh_u32 root, atrbvh_u32 n,
                                             int agglomerative,
                                             atrbvh_trbvh_scratch s,
-                                            ATRBVH_GLOBAL double *dist,
+                                            const atrbvh_agg_scratch *agg,
                                             atrbvh_treelet_marks m,
                                             atrbvh_u32 round)
 {
@@ -2294,7 +2376,7 @@ ATRBVH_FN int atrbvh_treelet_process_marked(const atrbvh_treelet_tree *t,
     int applied;
     if (atrbvh_treelet_marks_skip(t, m, root))
         return ATRBVH_TREELET_SKIPPED;
-    applied = atrbvh_treelet_process_tl(t, p, root, n, agglomerative, s, dist,
+    applied = atrbvh_treelet_process_tl(t, p, root, n, agglomerative, s, agg,
                                         &tl);
     atrbvh_treelet_marks_done(m, &tl, root, applied, round);
     return applied;
@@ -2302,94 +2384,16 @@ ATRBVH_FN int atrbvh_treelet_process_marked(const atrbvh_treelet_tree *t,
 
 /* ------------------------------------------------- ATRBVH, any size */
 /* Treelets of more than ATRBVH_TREELET_MAX leaves (up to ATRBVH_ATRBVH_MAX)
- * and the adaptive size.  The functions above keep their private arrays
- * of ATRBVH_TREELET_MAX entries (the fast path, unchanged for n <= 32);
- * a larger treelet keeps every per-treelet array in the worker's scratch,
- * sized from the largest size the build asks for (atrbvh_agg_scratch_bytes):
- * a 128-leaf treelet needs 8128 distances and about 20 KiB besides, which
- * no private array of a work-item should hold.  The arithmetic is the same
- * as atrbvh_treelet_form, atrbvh_agglomerate, atrbvh_treelet_preorder and
- * atrbvh_treelet_write step for step (same operations, same order, same
- * ties), so for a size both paths accept they give the same tree (the
- * tests compare them). */
-
-/* The worker scratch of ATRBVH: the distance matrix first (the only part
- * the fixed-size path uses, at the offset it always had), then, when the
- * largest size exceeds ATRBVH_TREELET_MAX, the arrays of the large path.
- * `w` is the row stride of the six coordinate rows of `soa`. */
-typedef struct atrbvh_agg_scratch {
-    ATRBVH_GLOBAL double *dist;      /* n(n-1)/2                          */
-    ATRBVH_GLOBAL atrbvh_u32 *leaf;  /* n: the treelet leaves, slot order */
-    ATRBVH_GLOBAL atrbvh_u32 *internal; /* n: [0] root, expansion order   */
-    ATRBVH_GLOBAL double *area;      /* n: formation areas                */
-    ATRBVH_GLOBAL atrbvh_box *box;   /* n: the clusters                   */
-    ATRBVH_GLOBAL double *cost;
-    ATRBVH_GLOBAL atrbvh_u32 *count;
-    ATRBVH_GLOBAL atrbvh_u32 *code;
-    ATRBVH_GLOBAL double *rmin;      /* n: row minima and their columns   */
-    ATRBVH_GLOBAL atrbvh_u32 *rcol;
-    ATRBVH_GLOBAL float *soa;        /* 6 rows of w floats                */
-    ATRBVH_GLOBAL double *area_of;   /* w                                 */
-    ATRBVH_GLOBAL atrbvh_u32 *left;  /* n: the topology (as _topo)        */
-    ATRBVH_GLOBAL atrbvh_u32 *right;
-    ATRBVH_GLOBAL atrbvh_u32 *order;
-    ATRBVH_GLOBAL atrbvh_box *tbox;
-    ATRBVH_GLOBAL atrbvh_u32 *tcount;
-    ATRBVH_GLOBAL double *tcost;
-    ATRBVH_GLOBAL atrbvh_u32 *ids;   /* n: write-back                     */
-    ATRBVH_GLOBAL atrbvh_u32 *id_of;
-    ATRBVH_GLOBAL atrbvh_u32 *stack; /* n: pre-order walk                 */
-    atrbvh_u32 w;
-} atrbvh_agg_scratch;
-
-ATRBVH_FN atrbvh_u64 atrbvh_agg_align(atrbvh_u64 x)
-{
-    return (x + 63u) & ~(atrbvh_u64)63u;
-}
-
-/* Lays the scratch for treelets of at most n leaves out from `base`
- * (64-byte aligned; may be 0 to only size it) and returns its bytes.  The
- * host sizes with it, the kernel and the CPU driver carve with it. */
-ATRBVH_FN atrbvh_u64 atrbvh_agg_layout(ATRBVH_GLOBAL unsigned char *base,
-                                       atrbvh_u32 n, atrbvh_agg_scratch *s)
-{
-    atrbvh_u64 o, n8 = (atrbvh_u64)n, w = n8 + ATRBVH_SOA_PAD;
-    o = atrbvh_agg_align(n8 * (n8 - 1u) / 2u * 8u);
-    if (s) {
-        s->dist = (ATRBVH_GLOBAL double *)(base);
-        s->w = (atrbvh_u32)w;
-    }
-    if (n <= ATRBVH_TREELET_MAX)
-        return o;
-#define ATRBVH_AGG_PART(field, type, entries)                                 \
-    do {                                                                      \
-        if (s)                                                                \
-            s->field = (ATRBVH_GLOBAL type *)(base + o);                      \
-        o += atrbvh_agg_align((entries) * sizeof(type));                      \
-    } while (0)
-    ATRBVH_AGG_PART(leaf, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(internal, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(area, double, n8);
-    ATRBVH_AGG_PART(box, atrbvh_box, n8);
-    ATRBVH_AGG_PART(cost, double, n8);
-    ATRBVH_AGG_PART(count, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(code, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(rmin, double, n8);
-    ATRBVH_AGG_PART(rcol, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(soa, float, 6u * w);
-    ATRBVH_AGG_PART(area_of, double, w);
-    ATRBVH_AGG_PART(left, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(right, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(order, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(tbox, atrbvh_box, n8);
-    ATRBVH_AGG_PART(tcount, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(tcost, double, n8);
-    ATRBVH_AGG_PART(ids, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(id_of, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(stack, atrbvh_u32, n8);
-#undef ATRBVH_AGG_PART
-    return o;
-}
+ * and the adaptive size.  The formation and write-back above keep the
+ * treelet and its topology in private arrays of ATRBVH_TREELET_MAX
+ * entries; a larger treelet keeps those in the worker's scratch too
+ * (atrbvh_agg_layout, sized from the largest size the build asks for: a
+ * 128-leaf treelet needs 8128 distances and about 20 KiB besides, which
+ * no private array of a work-item should hold).  Its agglomeration is
+ * the same atrbvh_agg_cluster; its formation and write-back are
+ * atrbvh_treelet_form, atrbvh_treelet_preorder and atrbvh_treelet_write
+ * step for step (same operations, same order, same ties), so for a size
+ * both paths accept they give the same tree (the tests compare them). */
 
 /* atrbvh_treelet_form into the scratch. */
 ATRBVH_FN atrbvh_u32 atrbvh_agg_form(const atrbvh_treelet_tree *t,
@@ -2431,219 +2435,9 @@ ATRBVH_FN atrbvh_u32 atrbvh_agg_form(const atrbvh_treelet_tree *t,
     return m;
 }
 
-ATRBVH_FN void atrbvh_agg_soa_set(const atrbvh_agg_scratch *s, atrbvh_u32 k,
-                                  atrbvh_box b)
-{
-    ATRBVH_GLOBAL float *c = s->soa;
-    atrbvh_u32 w = s->w;
-    c[k] = b.min[0];
-    c[w + k] = b.min[1];
-    c[2u * w + k] = b.min[2];
-    c[3u * w + k] = b.max[0];
-    c[4u * w + k] = b.max[1];
-    c[5u * w + k] = b.max[2];
-}
-
-/* atrbvh_union_areas over the scratch's coordinate rows. */
-#if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
-ATRBVH_FN void atrbvh_agg_union_areas(const atrbvh_agg_scratch *s,
-                                      atrbvh_box q, atrbvh_u32 lo,
-                                      atrbvh_u32 hi, double *out)
-{
-    const __m128 q0 = _mm_set1_ps(q.min[0]), q1 = _mm_set1_ps(q.min[1]),
-                 q2 = _mm_set1_ps(q.min[2]), q3 = _mm_set1_ps(q.max[0]),
-                 q4 = _mm_set1_ps(q.max[1]), q5 = _mm_set1_ps(q.max[2]);
-    const __m128d two = _mm_set1_pd(2.0);
-    const float *c0 = s->soa, *c1 = c0 + s->w, *c2 = c1 + s->w,
-                *c3 = c2 + s->w, *c4 = c3 + s->w, *c5 = c4 + s->w;
-    atrbvh_u32 a;
-    for (a = lo; a < hi; a += 4u) {
-        const __m128 x0 = _mm_min_ps(q0, _mm_loadu_ps(c0 + a));
-        const __m128 y0 = _mm_min_ps(q1, _mm_loadu_ps(c1 + a));
-        const __m128 z0 = _mm_min_ps(q2, _mm_loadu_ps(c2 + a));
-        const __m128 x1 = _mm_max_ps(q3, _mm_loadu_ps(c3 + a));
-        const __m128 y1 = _mm_max_ps(q4, _mm_loadu_ps(c4 + a));
-        const __m128 z1 = _mm_max_ps(q5, _mm_loadu_ps(c5 + a));
-        __m128d dx = _mm_sub_pd(_mm_cvtps_pd(x1), _mm_cvtps_pd(x0));
-        __m128d dy = _mm_sub_pd(_mm_cvtps_pd(y1), _mm_cvtps_pd(y0));
-        __m128d dz = _mm_sub_pd(_mm_cvtps_pd(z1), _mm_cvtps_pd(z0));
-        __m128d t = _mm_mul_pd(dx, dy);
-        t = _mm_add_pd(t, _mm_mul_pd(dy, dz));
-        t = _mm_add_pd(t, _mm_mul_pd(dz, dx));
-        _mm_storeu_pd(out + a, _mm_mul_pd(two, t));
-        /* The upper two lanes only when one of them is wanted. */
-        if (hi - a <= 2u)
-            break;
-        dx = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(x1, x1)),
-                        _mm_cvtps_pd(_mm_movehl_ps(x0, x0)));
-        dy = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(y1, y1)),
-                        _mm_cvtps_pd(_mm_movehl_ps(y0, y0)));
-        dz = _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(z1, z1)),
-                        _mm_cvtps_pd(_mm_movehl_ps(z0, z0)));
-        t = _mm_mul_pd(dx, dy);
-        t = _mm_add_pd(t, _mm_mul_pd(dy, dz));
-        t = _mm_add_pd(t, _mm_mul_pd(dz, dx));
-        _mm_storeu_pd(out + a + 2, _mm_mul_pd(two, t));
-    }
-}
-#else
-ATRBVH_FN void atrbvh_agg_union_areas(const atrbvh_agg_scratch *s,
-                                      atrbvh_box q, atrbvh_u32 lo,
-                                      atrbvh_u32 hi, ATRBVH_GLOBAL double *out)
-{
-    ATRBVH_GLOBAL const float *c = s->soa;
-    atrbvh_u32 a, w = s->w;
-    for (a = lo; a < hi; a++) {
-        atrbvh_box b;
-        b.min[0] = q.min[0] < c[a] ? q.min[0] : c[a];
-        b.min[1] = q.min[1] < c[w + a] ? q.min[1] : c[w + a];
-        b.min[2] = q.min[2] < c[2u * w + a] ? q.min[2] : c[2u * w + a];
-        b.max[0] = q.max[0] > c[3u * w + a] ? q.max[0] : c[3u * w + a];
-        b.max[1] = q.max[1] > c[4u * w + a] ? q.max[1] : c[4u * w + a];
-        b.max[2] = q.max[2] > c[5u * w + a] ? q.max[2] : c[5u * w + a];
-        out[a] = atrbvh_box_area(b);
-    }
-}
-#endif
-
-/* atrbvh_agglomerate over the scratch, the m formed leaves read from the
- * tree (what atrbvh_treelet_gather copies).  Fills s->left/right/tbox/
- * tcount/tcost (local node q = merge q, root n-2); returns the root's
- * cost.  Comments on the steps: atrbvh_agglomerate. */
-ATRBVH_FN double atrbvh_agg_cluster(const atrbvh_treelet_tree *t,
-                                    const atrbvh_cost_params *p, atrbvh_u32 n,
-                                    const atrbvh_agg_scratch *s)
-{
-    ATRBVH_GLOBAL double *dist = s->dist;
-    ATRBVH_GLOBAL atrbvh_box *box = s->box;
-    ATRBVH_GLOBAL double *cost = s->cost;
-    ATRBVH_GLOBAL atrbvh_u32 *count = s->count;
-    ATRBVH_GLOBAL atrbvh_u32 *code = s->code;
-    ATRBVH_GLOBAL double *rmin = s->rmin;
-    ATRBVH_GLOBAL atrbvh_u32 *rcol = s->rcol;
-    ATRBVH_GLOBAL double *area_of = s->area_of;
-    atrbvh_u32 m, a, b, q = 0;
-    double root_cost = 0.0;
-
-    for (a = 0; a < n; a++) {
-        atrbvh_u32 node = s->leaf[a];
-        box[a] = t->box[node];
-        atrbvh_agg_soa_set(s, a, box[a]);
-        cost[a] = t->cost[node];
-        count[a] = t->count[node];
-        code[a] = a;
-    }
-    for (a = n; a < n + ATRBVH_SOA_PAD; a++)
-        atrbvh_agg_soa_set(s, a, box[0]);
-    for (a = 1; a < n; a++) {
-        ATRBVH_GLOBAL double *row = dist + a * (a - 1u) / 2u;
-        double bv;
-        atrbvh_u32 bc = 0;
-        atrbvh_agg_union_areas(s, box[a], 0, a, area_of);
-        bv = area_of[0];
-        row[0] = bv;
-        for (b = 1; b < a; b++) {
-            double d = area_of[b];
-            row[b] = d;
-            if (d < bv) {
-                bv = d;
-                bc = b;
-            }
-        }
-        rmin[a] = bv;
-        rcol[a] = bc;
-    }
-    for (m = n; m > 1; m--) {
-        atrbvh_u32 i = 1, j, last = m - 1u, r;
-        double best = rmin[1], area;
-        atrbvh_box merged;
-        ATRBVH_GLOBAL double *jrow;
-        int collapsed;
-        for (r = 2; r < m; r++) {
-            if (rmin[r] < best) {
-                best = rmin[r];
-                i = r;
-            }
-        }
-        j = rcol[i];
-        merged = atrbvh_box_union(box[j], box[i]);
-        /* The merged area is the pair's distance, already computed: the
-         * union may have been taken in the other operand order, which
-         * changes a coordinate (MINSS/MAXSS or ?:) only in the sign of a
-         * zero, hence the area only in the sign of a zero, which no
-         * comparison below or in the callers distinguishes. */
-        area = best;
-        s->left[q] = code[j];
-        s->right[q] = code[i];
-        root_cost = atrbvh_node_cost(p, area, count[j] + count[i], cost[j],
-                                     cost[i], &collapsed);
-        box[j] = merged;
-        atrbvh_agg_soa_set(s, j, merged);
-        cost[j] = root_cost;
-        count[j] += count[i];
-        code[j] = n + q;
-        s->tbox[q] = merged;
-        s->tcount[q] = count[j];
-        s->tcost[q] = root_cost;
-        q++;
-        if (last == 1u)
-            break;
-        if (i != last) {
-            ATRBVH_GLOBAL double *irow = dist + i * (i - 1u) / 2u;
-            ATRBVH_GLOBAL double *lrow = dist + last * (last - 1u) / 2u;
-            box[i] = box[last];
-            atrbvh_agg_soa_set(s, i, box[i]);
-            cost[i] = cost[last];
-            count[i] = count[last];
-            code[i] = code[last];
-            for (a = 0; a < i; a++)
-                irow[a] = lrow[a];
-            for (a = i + 1u; a < last; a++)
-                dist[a * (a - 1u) / 2u + i] = lrow[a];
-        }
-        atrbvh_agg_union_areas(s, merged, 0, last, area_of);
-        jrow = dist + j * (j - 1u) / 2u;
-        for (a = 0; a < j; a++)
-            jrow[a] = area_of[a];
-        for (r = j + 1u; r < last; r++) {
-            ATRBVH_GLOBAL double *row = dist + r * (r - 1u) / 2u;
-            double v = area_of[r];
-            row[j] = v;
-            if (r == i || rcol[r] == j || (r > i && rcol[r] == i)) {
-                double rv;
-                atrbvh_u32 rc;
-                atrbvh_row_min(dist, r, &rv, &rc);
-                rmin[r] = rv;
-                rcol[r] = rc;
-            } else {
-                if (v < rmin[r] || (v == rmin[r] && j < rcol[r])) {
-                    rmin[r] = v;
-                    rcol[r] = j;
-                }
-                if (r > i) {
-                    v = row[i];
-                    if (v < rmin[r] || (v == rmin[r] && i < rcol[r])) {
-                        rmin[r] = v;
-                        rcol[r] = i;
-                    }
-                }
-            }
-        }
-        if (j > 0u) {
-            double rv;
-            atrbvh_u32 rc;
-            atrbvh_row_min(dist, j, &rv, &rc);
-            rmin[j] = rv;
-            rcol[j] = rc;
-        }
-    }
-    return root_cost;
-}
-
 /* atrbvh_treelet_preorder and atrbvh_treelet_write over the scratch
  * (root n-2, the agglomerative root). */
-ATRBVH_FN void atrbvh_agg_write(const atrbvh_treelet_tree *t,
-                                const atrbvh_cost_params *p, atrbvh_u32 n,
+ATRBVH_FN void atrbvh_agg_write(const atrbvh_treelet_tree *t, atrbvh_u32 n,
                                 const atrbvh_agg_scratch *s)
 {
     ATRBVH_GLOBAL atrbvh_u32 *stack = s->stack;
@@ -2684,17 +2478,10 @@ ATRBVH_FN void atrbvh_agg_write(const atrbvh_treelet_tree *t,
         t->count[id] = s->tcount[k];
         t->cost[id] = s->tcost[k];
     }
-    /* the collapse decisions (t->flat kept), from the values just
-     * written: atrbvh_node_cost's choice for each node's cost */
+    /* the collapse decisions (t->flat kept), the agglomeration's */
     if (t->flat)
-        for (k = 0; k + 1u < n; k++) {
-            const atrbvh_u32 id = id_of[k];
-            int collapsed;
-            (void)atrbvh_node_cost(p, atrbvh_box_area(t->box[id]),
-                                   t->count[id], t->cost[t->left[id]],
-                                   t->cost[t->right[id]], &collapsed);
-            t->flat[id] = (unsigned char)collapsed;
-        }
+        for (k = 0; k + 1u < n; k++)
+            t->flat[id_of[k]] = (unsigned char)s->flat[k];
 }
 
 /* atrbvh_treelet_process for ATRBVH with every array in the scratch. */
@@ -2712,7 +2499,7 @@ ATRBVH_FN int atrbvh_agg_process_large(const atrbvh_treelet_tree *t,
     found = atrbvh_agg_cluster(t, p, m, s);
     if (!(found < t->cost[root]))
         return 0;
-    atrbvh_agg_write(t, p, m, s);
+    atrbvh_agg_write(t, m, s);
     return 1;
 }
 
@@ -2759,7 +2546,7 @@ ATRBVH_FN int atrbvh_atrbvh_process(const atrbvh_treelet_tree *t,
     if (n == ATRBVH_TREELET_AUTO)
         n = atrbvh_treelet_auto_size(t->count[root], gamma);
     if (n <= ATRBVH_TREELET_MAX)
-        return atrbvh_treelet_process(t, p, root, n, 1, none, s->dist);
+        return atrbvh_treelet_process(t, p, root, n, 1, none, s);
     return atrbvh_agg_process_large(t, p, root, n, s);
 }
 
