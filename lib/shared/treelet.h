@@ -280,13 +280,44 @@ ATRBVH_FN void atrbvh_trbvh_subset_leaf(atrbvh_trbvh_mask plane,
  * k), rest first as atrbvh_box_union, area(S) as atrbvh_box_area, N(S) =
  * N(rest) + N(leaf k).  Entry 0 (the empty set, never a subset of the
  * DP) holds leaf k's own box and count 0 for the duration, so rest = 0
- * gives S = {k} by the same formula.  Writes entries bit .. 2*bit-1. */
+ * gives S = {k} by the same formula.  Writes entries bit .. 2*bit-1.
+ * Here one subset at a time: OpenCL, CPUs without SSE2, and bit < 4. */
+ATRBVH_FN void atrbvh_trbvh_subsets1(atrbvh_u32 n, atrbvh_u32 k,
+                                     const atrbvh_treelet_leaves *lv,
+                                     atrbvh_trbvh_scratch s)
+{
+    const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k,
+                            plane = (atrbvh_trbvh_mask)1 << n;
+    ATRBVH_GLOBAL float *c0 = s.box, *c1 = c0 + plane, *c2 = c1 + plane,
+                        *c3 = c2 + plane, *c4 = c3 + plane, *c5 = c4 + plane;
+    const atrbvh_box b = lv->box[k];
+    atrbvh_trbvh_mask r;
+    atrbvh_trbvh_subset_leaf(plane, b, s);
+    for (r = 0; r < bit; r++) {
+        atrbvh_box u;
+        u.min[0] = c0[r] < b.min[0] ? c0[r] : b.min[0];
+        u.min[1] = c1[r] < b.min[1] ? c1[r] : b.min[1];
+        u.min[2] = c2[r] < b.min[2] ? c2[r] : b.min[2];
+        u.max[0] = c3[r] > b.max[0] ? c3[r] : b.max[0];
+        u.max[1] = c4[r] > b.max[1] ? c4[r] : b.max[1];
+        u.max[2] = c5[r] > b.max[2] ? c5[r] : b.max[2];
+        c0[bit + r] = u.min[0];
+        c1[bit + r] = u.min[1];
+        c2[bit + r] = u.min[2];
+        c3[bit + r] = u.max[0];
+        c4[bit + r] = u.max[1];
+        c5[bit + r] = u.max[2];
+        s.cost[bit + r] = atrbvh_box_area(u);
+        s.count[bit + r] = s.count[r] + lv->count[k];
+    }
+}
+
 #if !defined(__OPENCL_VERSION__) && defined(__SSE2__)
 #include <emmintrin.h>
 /* Four subsets at a time with SSE2 (bit >= 4): MINPS/MAXPS are a < b ? a :
  * b and a > b ? a : b lane for lane, and the double arithmetic is the
- * scalar one's IEEE operations in the same order, so every bit equals the
- * scalar loop's (which OpenCL and other CPUs run). */
+ * scalar one's IEEE operations in the same order, so every bit equals
+ * atrbvh_trbvh_subsets1's (which OpenCL and other CPUs run). */
 ATRBVH_FN void atrbvh_trbvh_subsets(atrbvh_u32 n, atrbvh_u32 k,
                                     const atrbvh_treelet_leaves *lv,
                                     atrbvh_trbvh_scratch s)
@@ -297,27 +328,11 @@ ATRBVH_FN void atrbvh_trbvh_subsets(atrbvh_u32 n, atrbvh_u32 k,
           *c4 = c3 + plane, *c5 = c4 + plane;
     const atrbvh_box b = lv->box[k];
     atrbvh_trbvh_mask r;
-    atrbvh_trbvh_subset_leaf(plane, b, s);
     if (bit < 4u) {
-        for (r = 0; r < bit; r++) {
-            atrbvh_box u;
-            u.min[0] = c0[r] < b.min[0] ? c0[r] : b.min[0];
-            u.min[1] = c1[r] < b.min[1] ? c1[r] : b.min[1];
-            u.min[2] = c2[r] < b.min[2] ? c2[r] : b.min[2];
-            u.max[0] = c3[r] > b.max[0] ? c3[r] : b.max[0];
-            u.max[1] = c4[r] > b.max[1] ? c4[r] : b.max[1];
-            u.max[2] = c5[r] > b.max[2] ? c5[r] : b.max[2];
-            c0[bit + r] = u.min[0];
-            c1[bit + r] = u.min[1];
-            c2[bit + r] = u.min[2];
-            c3[bit + r] = u.max[0];
-            c4[bit + r] = u.max[1];
-            c5[bit + r] = u.max[2];
-            s.cost[bit + r] = atrbvh_box_area(u);
-            s.count[bit + r] = s.count[r] + lv->count[k];
-        }
+        atrbvh_trbvh_subsets1(n, k, lv, s);
         return;
     }
+    atrbvh_trbvh_subset_leaf(plane, b, s);
     {
         const __m128 q0 = _mm_set1_ps(b.min[0]), q1 = _mm_set1_ps(b.min[1]),
                      q2 = _mm_set1_ps(b.min[2]), q3 = _mm_set1_ps(b.max[0]),
@@ -369,30 +384,7 @@ ATRBVH_FN void atrbvh_trbvh_subsets(atrbvh_u32 n, atrbvh_u32 k,
                                     const atrbvh_treelet_leaves *lv,
                                     atrbvh_trbvh_scratch s)
 {
-    const atrbvh_trbvh_mask bit = (atrbvh_trbvh_mask)1 << k,
-                            plane = (atrbvh_trbvh_mask)1 << n;
-    ATRBVH_GLOBAL float *c0 = s.box, *c1 = c0 + plane, *c2 = c1 + plane,
-                        *c3 = c2 + plane, *c4 = c3 + plane, *c5 = c4 + plane;
-    const atrbvh_box b = lv->box[k];
-    atrbvh_trbvh_mask r;
-    atrbvh_trbvh_subset_leaf(plane, b, s);
-    for (r = 0; r < bit; r++) {
-        atrbvh_box u;
-        u.min[0] = c0[r] < b.min[0] ? c0[r] : b.min[0];
-        u.min[1] = c1[r] < b.min[1] ? c1[r] : b.min[1];
-        u.min[2] = c2[r] < b.min[2] ? c2[r] : b.min[2];
-        u.max[0] = c3[r] > b.max[0] ? c3[r] : b.max[0];
-        u.max[1] = c4[r] > b.max[1] ? c4[r] : b.max[1];
-        u.max[2] = c5[r] > b.max[2] ? c5[r] : b.max[2];
-        c0[bit + r] = u.min[0];
-        c1[bit + r] = u.min[1];
-        c2[bit + r] = u.min[2];
-        c3[bit + r] = u.max[0];
-        c4[bit + r] = u.max[1];
-        c5[bit + r] = u.max[2];
-        s.cost[bit + r] = atrbvh_box_area(u);
-        s.count[bit + r] = s.count[r] + lv->count[k];
-    }
+    atrbvh_trbvh_subsets1(n, k, lv, s);
 }
 #endif
 
