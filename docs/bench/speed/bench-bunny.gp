@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.6401338:26.9426662]
+set xrange [2.84020646:28.1537205]
 set xtics (5, 10, 20)
 set yrange [35.7194127:47.9051528]
 unset label
-set label 'LBVH' at 3.30235963,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 6.4764251,39.738987 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 5.05432287,39.0414315 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 7.69500568,39.3432138 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 6.21011155,38.4286758 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 8.79001581,38.1317351 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 13.657544,38.4283721 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 9.80771489,38.8799201 left font ',8' noenhanced front
-set label 'embree_low' at 5.99832194,46.4658922 left font ',8' noenhanced front
-set label 'embree_medium' at 16.9534156,36.8708212 left font ',8' noenhanced front
-set label 'embree_high' at 12.6259537,36.8708212 left font ',8' noenhanced front
-set label 'LBVH/cl' at 3.83247007,43.368649 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 6.44723678,38.1169475 left font ',8' noenhanced front
+set label 'LBVH' at 3.54267711,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 7.40116006,39.738987 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 5.80144579,39.0414315 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 8.32024501,39.3432138 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 7.18188656,38.4286758 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 9.55980912,38.1317351 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 14.9318771,38.4283721 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 10.7451254,38.8799201 left font ',8' noenhanced front
+set label 'embree_low' at 6.50111795,46.4658922 left font ',8' noenhanced front
+set label 'embree_medium' at 17.8184912,36.8708212 left font ',8' noenhanced front
+set label 'embree_high' at 12.3090534,36.8708212 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.16425198,43.368649 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 6.95186435,38.1169475 left font ',8' noenhanced front
 plot 'bench-bunny.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-bunny.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'

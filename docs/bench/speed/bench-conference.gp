@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [14.8180745:113.0602]
+set xrange [16.0400205:129.976319]
 set xtics (20, 50, 100)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 18.0227737,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 34.3682751,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 35.3474341,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 40.5806198,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 34.7464328,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 64.0238516,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 75.3898987,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 40.8228898,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 31.5713473,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 53.941725,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 73.1755035,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 21.964489,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 54.947165,38.1056054 left font ',8' noenhanced front
+set label 'LBVH' at 19.6224607,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 35.7543803,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 37.826364,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 42.7256461,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 36.446606,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 67.2875765,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 74.0500833,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 46.7106361,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 34.9548204,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 56.7890504,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 85.63561,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 24.3123229,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 47.2973559,38.4517267 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
