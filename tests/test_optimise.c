@@ -588,6 +588,86 @@ static atrbvh_agg_scratch agg_scratch(void)
     return s;
 }
 
+/* atrbvh_agg_layout: the size it returns (which the CPU driver and the
+ * OpenCL host allocate per worker) holds every array it carves (which the
+ * kernel and the driver write), each 64-byte aligned and apart from the
+ * others; the formation's and write-back's arrays are there above
+ * ATRBVH_TREELET_MAX leaves (atrbvh_agg_process_large writes them) and
+ * null up to it (the private path keeps them). */
+START_TEST(agg_layout_fits)
+{
+    static unsigned char block[131072 + 64];
+    static const atrbvh_u32 sizes[] = {3, 9, 16, 31, 32, 33, 48, 128};
+    unsigned char *base =
+        (unsigned char *)(((uintptr_t)block + 63u) & ~(uintptr_t)63u);
+    unsigned i, a, b;
+    for (i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
+        const atrbvh_u32 n = sizes[i];
+        const size_t total = (size_t)atrbvh_agg_layout(NULL, n, NULL);
+        const int large = n > ATRBVH_TREELET_MAX;
+        atrbvh_agg_scratch s;
+        struct {
+            const void *p;
+            size_t bytes;
+        } part[23];
+        unsigned np = 0;
+        ck_assert_uint_le(total, sizeof block - 64u);
+        memset(&s, 0xA5, sizeof s);
+        ck_assert_uint_eq(atrbvh_agg_layout(base, n, &s), total);
+        ck_assert_uint_eq(s.w, n + ATRBVH_SOA_PAD);
+#define PART(f, entries)                                                      \
+    do {                                                                      \
+        part[np].p = (const void *)s.f;                                       \
+        part[np++].bytes = (size_t)(entries) * sizeof s.f[0];                 \
+    } while (0)
+        PART(dist, n * (n - 1u) / 2u);
+        PART(leaf, n);
+        PART(box, n);
+        PART(cost, n);
+        PART(count, n);
+        PART(code, n);
+        PART(rmin, n);
+        PART(rcol, n);
+        PART(soa, 6u * s.w);
+        PART(area_of, s.w);
+        PART(left, n);
+        PART(right, n);
+        PART(tbox, n);
+        PART(tcount, n);
+        PART(tcost, n);
+        PART(flat, n);
+        if (large) {
+            PART(internal, n);
+            PART(area, n);
+            PART(order, n);
+            PART(ids, n);
+            PART(id_of, n);
+            PART(stack, n);
+        } else {
+            ck_assert_ptr_null(s.internal);
+            ck_assert_ptr_null(s.area);
+            ck_assert_ptr_null(s.order);
+            ck_assert_ptr_null(s.ids);
+            ck_assert_ptr_null(s.id_of);
+            ck_assert_ptr_null(s.stack);
+        }
+#undef PART
+        for (a = 0; a < np; a++) {
+            const unsigned char *p = (const unsigned char *)part[a].p;
+            ck_assert_ptr_nonnull(p);
+            ck_assert_uint_eq((uintptr_t)p % 64u, 0);
+            ck_assert(p >= base && p + part[a].bytes <= base + total);
+            for (b = 0; b < a; b++) {
+                const unsigned char *q = (const unsigned char *)part[b].p;
+                ck_assert_msg(p + part[a].bytes <= q ||
+                                  q + part[b].bytes <= p,
+                              "n %u: parts %u and %u overlap", n, a, b);
+            }
+        }
+    }
+}
+END_TEST
+
 /* The agglomeration of gathered leaves: a tree of just those leaves
  * (nodes 0 .. n-1, as the agglomeration reads them) and a treelet of
  * them in slot order. */
@@ -1436,6 +1516,7 @@ static Suite *optimise_suite(void)
     tcase_add_test(tc, trbvh_is_optimal);
     tcase_add_test(tc, trbvh_large_n);
     tcase_add_test(tc, trbvh_matches_plain_dp);
+    tcase_add_test(tc, agg_layout_fits);
     tcase_add_test(tc, atrbvh_is_naive_greedy);
 #ifdef ATRBVH_AGG_QUADS
     tcase_add_test(tc, atrbvh_lanes_are_scalar);

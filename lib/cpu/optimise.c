@@ -753,7 +753,7 @@ atrbvh_status atrbvh_i_optimise(atrbvh_i_tree *t, unsigned char *flat,
 
     /* Scratch: TRBVH 2^n boxes, costs, counts, splits; ATRBVH the
      * n(n-1)/2 distances and the agglomeration's arrays (atrbvh_agg_layout,
-     * sized from the largest size used: 84 KiB at 128, 17 KiB at 48, 2.6
+     * sized from the largest size used: 84 KiB at 128, 17 KiB at 48, 2.1
      * KiB at 9; `pairs` counts it in doubles, a multiple of 8).
      * Sizes are small but checked anyway. */
     if (cfg->method == ATRBVH_METHOD_TRBVH)

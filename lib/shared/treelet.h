@@ -1219,8 +1219,6 @@ ATRBVH_FN void atrbvh_row_min(ATRBVH_GLOBAL const double *dist, atrbvh_u32 r,
 typedef struct atrbvh_agg_scratch {
     ATRBVH_GLOBAL double *dist;      /* n(n-1)/2                          */
     ATRBVH_GLOBAL atrbvh_u32 *leaf;  /* n: the treelet leaves, slot order */
-    ATRBVH_GLOBAL atrbvh_u32 *internal; /* n: [0] root, expansion order   */
-    ATRBVH_GLOBAL double *area;      /* n: formation areas                */
     ATRBVH_GLOBAL atrbvh_box *box;   /* n: the clusters                   */
     ATRBVH_GLOBAL double *cost;
     ATRBVH_GLOBAL atrbvh_u32 *count;
@@ -1231,11 +1229,15 @@ typedef struct atrbvh_agg_scratch {
     ATRBVH_GLOBAL double *area_of;   /* w                                 */
     ATRBVH_GLOBAL atrbvh_u32 *left;  /* n: the merges (as _topo)          */
     ATRBVH_GLOBAL atrbvh_u32 *right;
-    ATRBVH_GLOBAL atrbvh_u32 *order;
     ATRBVH_GLOBAL atrbvh_box *tbox;
     ATRBVH_GLOBAL atrbvh_u32 *tcount;
     ATRBVH_GLOBAL double *tcost;
     ATRBVH_GLOBAL atrbvh_u32 *flat;  /* n: 1 where merge q collapses      */
+    /* above ATRBVH_TREELET_MAX leaves only (null up to it): the
+     * formation and the write-back */
+    ATRBVH_GLOBAL atrbvh_u32 *internal; /* n: [0] root, expansion order   */
+    ATRBVH_GLOBAL double *area;      /* n: formation areas                */
+    ATRBVH_GLOBAL atrbvh_u32 *order; /* n: the merges in pre-order        */
     ATRBVH_GLOBAL atrbvh_u32 *ids;   /* n: write-back                     */
     ATRBVH_GLOBAL atrbvh_u32 *id_of;
     ATRBVH_GLOBAL atrbvh_u32 *stack; /* n: pre-order walk                 */
@@ -1249,8 +1251,11 @@ ATRBVH_FN atrbvh_u64 atrbvh_agg_align(atrbvh_u64 x)
 
 /* Lays the scratch for treelets of at most n leaves out from `base`
  * (64-byte aligned; may be 0 to only size it) and returns its bytes: the
- * distances first, then the other arrays.  The host sizes with it, the
- * kernel and the CPU driver carve with it. */
+ * distances first, then the agglomeration's arrays, then, only when n is
+ * above ATRBVH_TREELET_MAX, those of the formation and write-back in the
+ * scratch (atrbvh_agg_process_large; null otherwise: treelets up to
+ * ATRBVH_TREELET_MAX leaves keep them in private arrays).  The host
+ * sizes with it, the kernel and the CPU driver carve with it. */
 ATRBVH_FN atrbvh_u64 atrbvh_agg_layout(ATRBVH_GLOBAL unsigned char *base,
                                        atrbvh_u32 n, atrbvh_agg_scratch *s)
 {
@@ -1267,8 +1272,6 @@ ATRBVH_FN atrbvh_u64 atrbvh_agg_layout(ATRBVH_GLOBAL unsigned char *base,
         o += atrbvh_agg_align((entries) * sizeof(type));                      \
     } while (0)
     ATRBVH_AGG_PART(leaf, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(internal, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(area, double, n8);
     ATRBVH_AGG_PART(box, atrbvh_box, n8);
     ATRBVH_AGG_PART(cost, double, n8);
     ATRBVH_AGG_PART(count, atrbvh_u32, n8);
@@ -1279,14 +1282,25 @@ ATRBVH_FN atrbvh_u64 atrbvh_agg_layout(ATRBVH_GLOBAL unsigned char *base,
     ATRBVH_AGG_PART(area_of, double, w);
     ATRBVH_AGG_PART(left, atrbvh_u32, n8);
     ATRBVH_AGG_PART(right, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(order, atrbvh_u32, n8);
     ATRBVH_AGG_PART(tbox, atrbvh_box, n8);
     ATRBVH_AGG_PART(tcount, atrbvh_u32, n8);
     ATRBVH_AGG_PART(tcost, double, n8);
     ATRBVH_AGG_PART(flat, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(ids, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(id_of, atrbvh_u32, n8);
-    ATRBVH_AGG_PART(stack, atrbvh_u32, n8);
+    if (n8 > ATRBVH_TREELET_MAX) {
+        ATRBVH_AGG_PART(internal, atrbvh_u32, n8);
+        ATRBVH_AGG_PART(area, double, n8);
+        ATRBVH_AGG_PART(order, atrbvh_u32, n8);
+        ATRBVH_AGG_PART(ids, atrbvh_u32, n8);
+        ATRBVH_AGG_PART(id_of, atrbvh_u32, n8);
+        ATRBVH_AGG_PART(stack, atrbvh_u32, n8);
+    } else if (s) {
+        s->internal = (ATRBVH_GLOBAL atrbvh_u32 *)0;
+        s->area = (ATRBVH_GLOBAL double *)0;
+        s->order = (ATRBVH_GLOBAL atrbvh_u32 *)0;
+        s->ids = (ATRBVH_GLOBAL atrbvh_u32 *)0;
+        s->id_of = (ATRBVH_GLOBAL atrbvh_u32 *)0;
+        s->stack = (ATRBVH_GLOBAL atrbvh_u32 *)0;
+    }
 #undef ATRBVH_AGG_PART
     return o;
 }
