@@ -11,21 +11,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [30.3233527:776.996214]
+set xrange [26.7371264:666.403723]
 set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 41.4475289,70.0126652 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 288.246796,59.6986683 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 192.118243,62.1027229 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 161.237487,59.4901949 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 270.972182,61.7556733 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 333.172442,61.3224781 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 406.911374,60.5233863 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 142.447515,60.7547111 left font ',8' noenhanced front
-set label 'embree_low' at 67.427899,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 300.42946,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 201.817335,57.38674 left font ',8' noenhanced front
+set label 'LBVH' at 36.448372,70.0126652 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 174.490214,61.8104975 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 108.618805,62.1027229 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 87.1682529,60.135476 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 128.351574,59.6438441 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 177.970613,59.3866347 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 240.312128,60.5233863 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 84.1336923,59.4641489 left font ',8' noenhanced front
+set label 'embree_low' at 75.9572851,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 350.92575,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 219.081321,57.38674 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -45,21 +45,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [30.3233527:776.996214]
+set xrange [26.7371264:666.403723]
 set xtics (50, 100, 200, 500)
-set yrange [5.21293492:7.61558535]
+set yrange [4.42280876:6.41607859]
 unset label
-set label 'LBVH' at 41.4475289,6.12611666 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 343.365771,6.59948037 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 193.7651,6.53289412 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 244.131533,6.35405076 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 268.669123,6.6984648 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 333.172442,6.40586659 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 406.911374,6.51852986 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 230.136534,5.98709313 left font ',8' noenhanced front
-set label 'embree_low' at 67.427899,5.43995701 left font ',8' noenhanced front
-set label 'embree_medium' at 300.42946,6.81271067 left font ',8' noenhanced front
-set label 'embree_high' at 299.633478,7.33180774 left font ',8' noenhanced front
+set label 'LBVH' at 36.448372,5.77322838 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 174.490214,6.16051624 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 109.541919,6.18065302 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 130.407842,6.01733491 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 158.324895,6.10559279 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 177.970613,5.84267585 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 240.312128,5.08895911 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 135.370207,5.70533813 left font ',8' noenhanced front
+set label 'embree_low' at 75.9572851,4.61114922 left font ',8' noenhanced front
+set label 'embree_medium' at 350.92575,6.13508421 left font ',8' noenhanced front
+set label 'embree_high' at 321.438192,6.04269773 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 0 using 2:4 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:4 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -78,21 +78,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [30.3233527:776.996214]
+set xrange [26.7371264:666.403723]
 set xtics (50, 100, 200, 500)
 set yrange [46.0340343:63.6489318]
 unset label
-set label 'LBVH' at 41.4475289,56.5806094 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 346.309138,50.3496993 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 130.50997,51.3385083 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 246.224254,52.2072513 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 178.964483,50.6183954 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 333.172442,50.9341362 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 403.452934,51.800621 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 143.66859,51.9117243 left font ',8' noenhanced front
-set label 'embree_low' at 67.427899,61.5684321 left font ',8' noenhanced front
-set label 'embree_medium' at 300.42946,47.6984341 left font ',8' noenhanced front
-set label 'embree_high' at 201.817335,47.6984341 left font ',8' noenhanced front
+set label 'LBVH' at 36.448372,56.5806094 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 174.490214,50.3496993 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 74.0308772,51.3385083 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 131.516133,52.2072513 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 104.936969,50.6183954 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 176.470848,50.9341362 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 238.287009,51.800621 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 84.8487154,51.9117243 left font ',8' noenhanced front
+set label 'embree_low' at 75.9572851,61.5684321 left font ',8' noenhanced front
+set label 'embree_medium' at 350.92575,47.6984341 left font ',8' noenhanced front
+set label 'embree_high' at 219.081321,47.6984341 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 set terminal svg size 900,600 dynamic font 'sans,10'
@@ -112,21 +112,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [30.3233527:776.996214]
+set xrange [26.7371264:666.403723]
 set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 41.4475289,70.0126652 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 288.246796,59.6986683 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 192.118243,62.1027229 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 161.237487,59.4901949 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 270.972182,61.7556733 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 333.172442,61.3224781 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 406.911374,60.5233863 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 142.447515,60.7547111 left font ',8' noenhanced front
-set label 'embree_low' at 67.427899,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 300.42946,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 201.817335,57.38674 left font ',8' noenhanced front
+set label 'LBVH' at 36.448372,70.0126652 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 174.490214,61.8104975 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 108.618805,62.1027229 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 87.1682529,60.135476 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 128.351574,59.6438441 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 177.970613,59.3866347 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 240.312128,60.5233863 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 84.1336923,59.4641489 left font ',8' noenhanced front
+set label 'embree_low' at 75.9572851,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 350.92575,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 219.081321,57.38674 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -139,21 +139,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [30.3233527:776.996214]
+set xrange [26.7371264:666.403723]
 set xtics (50, 100, 200, 500)
 set yrange [46.0340343:63.6489318]
 unset label
-set label 'LBVH' at 41.4475289,56.5806094 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 346.309138,50.3496993 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 130.50997,51.3385083 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 246.224254,52.2072513 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 178.964483,50.6183954 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 333.172442,50.9341362 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 403.452934,51.800621 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 143.66859,51.9117243 left font ',8' noenhanced front
-set label 'embree_low' at 67.427899,61.5684321 left font ',8' noenhanced front
-set label 'embree_medium' at 300.42946,47.6984341 left font ',8' noenhanced front
-set label 'embree_high' at 201.817335,47.6984341 left font ',8' noenhanced front
+set label 'LBVH' at 36.448372,56.5806094 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 174.490214,50.3496993 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 74.0308772,51.3385083 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 131.516133,52.2072513 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 104.936969,50.6183954 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 176.470848,50.9341362 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 238.287009,51.800621 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 84.8487154,51.9117243 left font ',8' noenhanced front
+set label 'embree_low' at 75.9572851,61.5684321 left font ',8' noenhanced front
+set label 'embree_medium' at 350.92575,47.6984341 left font ',8' noenhanced front
+set label 'embree_high' at 219.081321,47.6984341 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot
@@ -171,21 +171,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [30.3233527:776.996214]
+set xrange [26.7371264:666.403723]
 set xtics (50, 100, 200, 500)
 set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 41.4475289,70.0126652 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 288.246796,59.6986683 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 192.118243,62.1027229 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 161.237487,59.4901949 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 270.972182,61.7556733 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 333.172442,61.3224781 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 406.911374,60.5233863 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 142.447515,60.7547111 left font ',8' noenhanced front
-set label 'embree_low' at 67.427899,77.2486504 left font ',8' noenhanced front
-set label 'embree_medium' at 300.42946,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 201.817335,57.38674 left font ',8' noenhanced front
+set label 'LBVH' at 36.448372,70.0126652 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 174.490214,61.8104975 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 108.618805,62.1027229 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 87.1682529,60.135476 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 128.351574,59.6438441 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 177.970613,59.3866347 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 240.312128,60.5233863 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 84.1336923,59.4641489 left font ',8' noenhanced front
+set label 'embree_low' at 75.9572851,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 350.92575,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 219.081321,57.38674 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
@@ -198,21 +198,21 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [30.3233527:776.996214]
+set xrange [26.7371264:666.403723]
 set xtics (50, 100, 200, 500)
 set yrange [46.0340343:63.6489318]
 unset label
-set label 'LBVH' at 41.4475289,56.5806094 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 346.309138,50.3496993 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 130.50997,51.3385083 left font ',8' noenhanced front
-set label 'ATRBVH(16,2)' at 246.224254,52.2072513 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 178.964483,50.6183954 left font ',8' noenhanced front
-set label 'ATRBVH(24,3)' at 333.172442,50.9341362 left font ',8' noenhanced front
-set label 'ATRBVH(32,6)' at 403.452934,51.800621 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 143.66859,51.9117243 left font ',8' noenhanced front
-set label 'embree_low' at 67.427899,61.5684321 left font ',8' noenhanced front
-set label 'embree_medium' at 300.42946,47.6984341 left font ',8' noenhanced front
-set label 'embree_high' at 201.817335,47.6984341 left font ',8' noenhanced front
+set label 'LBVH' at 36.448372,56.5806094 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 174.490214,50.3496993 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 74.0308772,51.3385083 left font ',8' noenhanced front
+set label 'ATRBVH(16,2)' at 131.516133,52.2072513 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 104.936969,50.6183954 left font ',8' noenhanced front
+set label 'ATRBVH(24,3)' at 176.470848,50.9341362 left font ',8' noenhanced front
+set label 'ATRBVH(32,6)' at 238.287009,51.800621 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 84.8487154,51.9117243 left font ',8' noenhanced front
+set label 'embree_low' at 75.9572851,61.5684321 left font ',8' noenhanced front
+set label 'embree_medium' at 350.92575,47.6984341 left font ',8' noenhanced front
+set label 'embree_high' at 219.081321,47.6984341 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 0 using 2:5 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:5 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree tree, our traverser'
 unset multiplot

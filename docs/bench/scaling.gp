@@ -10,10 +10,10 @@ set title 'Build time against triangle count (log-log; each line a base scene an
 set ylabel 'build time, ms (median)'
 set logscale y
 set key top left
-plot 'scaling.dat' index 0 using 1:2 with linespoints lw 2 title 'builtin:sphere LBVH: ~N^0.92 from 1e5' noenhanced, \
-  'scaling.dat' index 1 using 1:2 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): ~N^0.98 from 1e5' noenhanced, \
-  'scaling.dat' index 2 using 1:2 with linespoints lw 2 title 'bunny.ply LBVH: ~N^1.02 from 1e5' noenhanced, \
-  'scaling.dat' index 3 using 1:2 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): ~N^1.02 from 1e5' noenhanced
+plot 'scaling.dat' index 0 using 1:2 with linespoints lw 2 title 'builtin:sphere LBVH: ~N^1.04 from 1e5' noenhanced, \
+  'scaling.dat' index 1 using 1:2 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): ~N^1.01 from 1e5' noenhanced, \
+  'scaling.dat' index 2 using 1:2 with linespoints lw 2 title 'bunny.ply LBVH: ~N^0.92 from 1e5' noenhanced, \
+  'scaling.dat' index 3 using 1:2 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): ~N^1.08 from 1e5' noenhanced
 set terminal svg size 900,600 dynamic font 'sans,10'
 set output 'scaling.svg'.outsuffix
 replot
@@ -71,7 +71,7 @@ set xlabel 'triangles'
 set grid
 set logscale x
 set format x '10^%L'
-set title 'Build time of each stage against triangle count (log-log): /work/shared/scenes/bunny.ply, LBVH' noenhanced
+set title 'Build time of each stage against triangle count (log-log): ../shared/scenes/bunny.ply, LBVH' noenhanced
 set ylabel 'stage time, ms (median)'
 set logscale y
 set key top left
@@ -94,7 +94,7 @@ set xlabel 'triangles'
 set grid
 set logscale x
 set format x '10^%L'
-set title 'Build time of each stage against triangle count (log-log): /work/shared/scenes/bunny.ply, ATRBVH(9,2)' noenhanced
+set title 'Build time of each stage against triangle count (log-log): ../shared/scenes/bunny.ply, ATRBVH(9,2)' noenhanced
 set ylabel 'stage time, ms (median)'
 set logscale y
 set key top left
@@ -121,10 +121,10 @@ set title 'Peak library memory during the build, bytes per triangle (each line a
 set ylabel 'bytes per triangle'
 set yrange [0:*]
 set key top right
-plot 'scaling.dat' index 0 using 1:11 with linespoints lw 2 title 'builtin:sphere LBVH: ~N^0.92 from 1e5' noenhanced, \
-  'scaling.dat' index 1 using 1:11 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): ~N^0.98 from 1e5' noenhanced, \
-  'scaling.dat' index 2 using 1:11 with linespoints lw 2 title 'bunny.ply LBVH: ~N^1.02 from 1e5' noenhanced, \
-  'scaling.dat' index 3 using 1:11 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): ~N^1.02 from 1e5' noenhanced
+plot 'scaling.dat' index 0 using 1:11 with linespoints lw 2 title 'builtin:sphere LBVH: ~N^1.04 from 1e5' noenhanced, \
+  'scaling.dat' index 1 using 1:11 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): ~N^1.01 from 1e5' noenhanced, \
+  'scaling.dat' index 2 using 1:11 with linespoints lw 2 title 'bunny.ply LBVH: ~N^0.92 from 1e5' noenhanced, \
+  'scaling.dat' index 3 using 1:11 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): ~N^1.08 from 1e5' noenhanced
 set terminal svg size 900,600 dynamic font 'sans,10'
 set output 'scaling-memory.svg'.outsuffix
 replot

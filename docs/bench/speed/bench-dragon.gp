@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [32.626693:379.61427]
-set xtics (50, 100, 200)
-set yrange [55.0033068:80.2279756]
+set xrange [31.9590756:607.934729]
+set xtics (50, 100, 200, 500)
+set yrange [55.0033108:80.2279369]
 unset label
-set label 'LBVH' at 41.329394,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 91.192174,63.4134707 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 69.212476,61.8432221 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 104.146966,62.4957033 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 84.7258372,60.8121596 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 113.262789,59.8198288 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 184.06894,60.5199352 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 137.159241,61.3999933 left font ',8' noenhanced front
-set label 'embree_low' at 70.1434005,77.248684 left font ',8' noenhanced front
-set label 'embree_medium' at 232.70243,57.38674 left font ',8' noenhanced front
-set label 'embree_high' at 151.603155,57.38674 left font ',8' noenhanced front
-set label 'LBVH/cl' at 48.1708347,70.0126652 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 85.9207646,60.1668773 left font ',8' noenhanced front
+set label 'LBVH' at 42.609659,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 99.229608,62.7681885 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 65.9891557,62.4885043 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 80.9090251,60.5598588 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 76.4946103,61.4574418 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 104.960852,59.8198299 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 181.276196,60.5199352 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 133.409176,62.0452734 left font ',8' noenhanced front
+set label 'embree_low' at 65.9006338,77.2486504 left font ',8' noenhanced front
+set label 'embree_medium' at 337.861994,57.38674 left font ',8' noenhanced front
+set label 'embree_high' at 228.225081,57.38674 left font ',8' noenhanced front
+set label 'LBVH/cl' at 32.8412415,70.0126652 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 140.246447,62.7480041 left font ',8' noenhanced front
 plot 'bench-dragon.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-dragon.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
