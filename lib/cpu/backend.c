@@ -61,7 +61,9 @@ static void cpu_close(atrbvh_device *dev)
  *   refit      (nothing left to compute; a caller's tree,
  *              set_tree, is refitted here, without decisions:
  *              92) tree 28                                       60     94
- *   optimise   the same, per-thread treelet scratch               -     94
+ *   optimise   the same, per-thread treelet scratch, marks and
+ *              lists (about 5; a transient scratch frees them
+ *              when the stage ends)                               -     99
  *   collapse   sizes 8 into the cost slot, counted from the
  *              decisions, which are then freed (a caller's tree:
  *              decided from recomputed costs)                    60     94

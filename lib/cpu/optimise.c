@@ -952,7 +952,16 @@ atrbvh_status atrbvh_i_cpu_optimise(atrbvh_device *dev, atrbvh_i_run *run,
                                     atrbvh_error *error)
 {
     atrbvh_i_cpu_run *c = run->state;
+    atrbvh_status st;
     (void)dev;
-    return atrbvh_i_optimise(&c->tree, c->flat, run->cfg, c->scratch, run,
-                             error);
+    st = atrbvh_i_optimise(&c->tree, c->flat, run->cfg, c->scratch, run,
+                           error);
+    /* Its treelet scratch, marks and lists (about 5 bytes per primitive)
+     * are not needed after it: a transient scratch frees them here, so
+     * that they are not live at the layout, the build's peak (the
+     * collapse and the layout take a small block of the slot for their
+     * frontiers); a handle keeps them for its next build. */
+    atrbvh_i_scratch_done(c->scratch, CPU_OPTIMISE);
+    atrbvh_i_scratch_done(c->scratch, CPU_WORKERS);
+    return st;
 }
