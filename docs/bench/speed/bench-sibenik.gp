@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [2.55675657:41.2714068]
+set xrange [3.13007781:47.6499245]
 set xtics (5, 10, 20)
 set yrange [48.0282379:83.2612389]
 unset label
-set label 'LBVH' at 3.392966,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 7.28823741,55.3185336 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 4.87693723,54.7380871 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 8.75641033,54.157298 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 6.47720012,52.9793966 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 13.8366319,50.753527 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 14.2619322,52.3325777 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 8.35874741,51.3573403 left font ',8' noenhanced front
-set label 'embree_low' at 5.72959309,79.0998609 left font ',8' noenhanced front
-set label 'embree_medium' at 15.9133754,54.6804169 left font ',8' noenhanced front
-set label 'embree_high' at 23.7001594,54.6804169 left font ',8' noenhanced front
-set label 'LBVH/cl' at 2.62334629,67.05137 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 11.6148205,53.880706 left font ',8' noenhanced front
+set label 'LBVH' at 3.44582735,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 9.25510821,56.219843 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 7.22147427,53.8367777 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 11.8275027,54.157298 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 9.27681626,52.0780873 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 19.0868908,50.753527 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 21.4193963,52.3325777 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 10.9326761,50.456031 left font ',8' noenhanced front
+set label 'embree_low' at 6.9566006,79.0998609 left font ',8' noenhanced front
+set label 'embree_medium' at 27.6051419,54.6804169 left font ',8' noenhanced front
+set label 'embree_high' at 19.8683132,54.6804169 left font ',8' noenhanced front
+set label 'LBVH/cl' at 4.29258426,67.05137 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 13.4991185,52.9793966 left font ',8' noenhanced front
 plot 'bench-sibenik.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-sibenik.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
