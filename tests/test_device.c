@@ -394,7 +394,7 @@ END_TEST
  * layout's frontier lists: the optimise stage's treelet scratch, marks and
  * lists (about 5 bytes per triangle) are freed when it ends (lib/cpu/
  * optimise.c), the cost slot at the collapse.  (They stayed to the end of
- * the build until 6 December: 113-119 bytes per triangle at the peak on
+ * the build until 6 December: 114-119 bytes per triangle at the peak on
  * the sphere, bunny and dragon, now 109-113.) */
 START_TEST(peak_memory_optimised)
 {
