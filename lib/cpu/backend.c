@@ -76,7 +76,10 @@ static void cpu_close(atrbvh_device *dev)
  *              transient scratch, and its sizes are in the cost
  *              slot 8; an optimised tree's sizes moved into the
  *              leaves' half of the node boxes and the cost slot
- *              was freed (on a handle it stays: 92+out)      28+out 76+out
+ *              was freed (on a handle it stays: 92+out), and
+ *              on a transient scratch its parent links too when
+ *              its collapsed leaves are small (cpu.h's
+ *              ATRBVH_I_GATHER_MAX: max leaf 1 to 64)       28+out 68+out
  *
  * Roles never live together share a slot, so what a device handle keeps
  * between builds is not more than the peak: the slots an LBVH's layout

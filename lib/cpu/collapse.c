@@ -292,6 +292,16 @@ atrbvh_status atrbvh_i_cpu_collapse(atrbvh_device *dev, atrbvh_i_run *run,
          * (cpu.h's ranges) */
         atrbvh_i_scratch_release(c->scratch, CPU_PARENT);
         c->tree.parent = NULL;
+    } else if (c->scratch->transient && !run->captured &&
+               (!run->cfg->cost.collapse ||
+                (run->cfg->cost.max_leaf >= 1u &&
+                 run->cfg->cost.max_leaf <= ATRBVH_I_GATHER_MAX))) {
+        /* Nor any other tree's whose collapsed leaves are that small:
+         * the layout finds a leaf's primitives by the counts (layout.c;
+         * a handle keeps the links for the tree's next use, a capture
+         * reads them) */
+        atrbvh_i_scratch_release(c->scratch, CPU_PARENT);
+        c->tree.parent = NULL;
     }
     return ATRBVH_OK;
 }

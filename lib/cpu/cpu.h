@@ -147,6 +147,15 @@ typedef struct atrbvh_i_cpu_run {
     int refitted;
 } atrbvh_i_cpu_run;
 
+/* The most primitives of a collapsed leaf whose primitives the layout
+ * finds without the parent links (layout.c's gather: each from the top by
+ * the counts, so a leaf of c primitives costs at most c(c-1) steps).  A
+ * build without a handle whose collapsed leaves are held to at most this
+ * many (max_leaf 1 to 64, or no collapse) releases an optimised tree's
+ * parent links after the collapse (collapse.c): 8 bytes per primitive
+ * fewer at the layout, the peak. */
+#define ATRBVH_I_GATHER_MAX 64u
+
 /* Whether an LBVH of n primitives reads its leaf boxes in place
  * (leaf_boxes_by_order): the method LBVH, no kept ids, at least
  * ATRBVH_I_HIER_BY_ORDER_MIN primitives. */
