@@ -322,6 +322,15 @@ static void sized_free(void *p)
     free(h);
 }
 
+/* The output's bytes: its node and primitive index arrays. */
+static double output_bytes(const atrbvh_bvh *b)
+{
+    size_t nodes, prims;
+    atrbvh_bvh_nodes(b, &nodes);
+    atrbvh_bvh_primitive_indices(b, &prims);
+    return (double)nodes * sizeof(atrbvh_node) + (double)prims * 4;
+}
+
 /* The LBVH of a built-in scene (max leaf 8, as `atrbvh bench` builds it)
  * holds at its peak at most 80 bytes per triangle and 2.2 times the
  * output (node and index arrays), without a handle, on a handle's first
@@ -357,15 +366,13 @@ START_TEST(peak_memory_lbvh)
     ck_assert_int_eq(atrbvh_device_open("cpu", &d, &e), ATRBVH_OK);
     for (k = 0; k < 3; k++) { /* no handle, first and second on one */
         const double tris = (double)sc.triangle_count;
-        size_t before = held, nodes, prims;
+        size_t before = held;
         double out_bytes, build_peak, kept;
         atrbvh_bvh *b = NULL;
         o.device = k ? d : NULL;
         peak = held;
         ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_OK);
-        atrbvh_bvh_nodes(b, &nodes);
-        atrbvh_bvh_primitive_indices(b, &prims);
-        out_bytes = (double)nodes * sizeof(atrbvh_node) + (double)prims * 4;
+        out_bytes = output_bytes(b);
         /* from before the handle's first build: its scratch counts */
         build_peak = (double)(peak - base);
         kept = (double)held - (double)before - out_bytes;
@@ -421,7 +428,7 @@ START_TEST(peak_memory_optimised)
     tu_alloc.outstanding = 0;
     for (k = 0; k < sizeof cfg / sizeof cfg[0]; k++) {
         const double tris = (double)sc.triangle_count;
-        size_t before = held, nodes, prims;
+        size_t before = held;
         double out_bytes, build_peak, tree_boxes;
         atrbvh_bvh *b = NULL;
         atrbvh_build_options_init(&o);
@@ -432,9 +439,7 @@ START_TEST(peak_memory_optimised)
         o.threads = 2;
         peak = held;
         ck_assert_int_eq(atrbvh_build(&g, &o, &b, &e), ATRBVH_OK);
-        atrbvh_bvh_nodes(b, &nodes);
-        atrbvh_bvh_primitive_indices(b, &prims);
-        out_bytes = (double)nodes * sizeof(atrbvh_node) + (double)prims * 4;
+        out_bytes = output_bytes(b);
         build_peak = (double)(peak - before);
         tree_boxes = 68.0 * tris;
         ck_assert_msg(build_peak <= tree_boxes + out_bytes + 65536.0,

@@ -1259,8 +1259,9 @@ ATRBVH_FN atrbvh_u64 atrbvh_agg_align(atrbvh_u64 x)
 ATRBVH_FN atrbvh_u64 atrbvh_agg_layout(ATRBVH_GLOBAL unsigned char *base,
                                        atrbvh_u32 n, atrbvh_agg_scratch *s)
 {
-    atrbvh_u64 o, n8 = (atrbvh_u64)n, w = n8 + ATRBVH_SOA_PAD;
-    o = atrbvh_agg_align(n8 * (n8 - 1u) / 2u * 8u);
+    const atrbvh_u64 n8 = (atrbvh_u64)n, w = n8 + ATRBVH_SOA_PAD;
+    const atrbvh_u64 large = n8 > ATRBVH_TREELET_MAX ? n8 : 0u;
+    atrbvh_u64 o = atrbvh_agg_align(n8 * (n8 - 1u) / 2u * 8u);
     if (s) {
         s->dist = (ATRBVH_GLOBAL double *)(base);
         s->w = (atrbvh_u32)w;
@@ -1268,7 +1269,8 @@ ATRBVH_FN atrbvh_u64 atrbvh_agg_layout(ATRBVH_GLOBAL unsigned char *base,
 #define ATRBVH_AGG_PART(field, type, entries)                                 \
     do {                                                                      \
         if (s)                                                                \
-            s->field = (ATRBVH_GLOBAL type *)(base + o);                      \
+            s->field = (entries) > 0u ? (ATRBVH_GLOBAL type *)(base + o)      \
+                                 : (ATRBVH_GLOBAL type *)0;                   \
         o += atrbvh_agg_align((entries) * sizeof(type));                      \
     } while (0)
     ATRBVH_AGG_PART(leaf, atrbvh_u32, n8);
@@ -1286,21 +1288,13 @@ ATRBVH_FN atrbvh_u64 atrbvh_agg_layout(ATRBVH_GLOBAL unsigned char *base,
     ATRBVH_AGG_PART(tcount, atrbvh_u32, n8);
     ATRBVH_AGG_PART(tcost, double, n8);
     ATRBVH_AGG_PART(flat, atrbvh_u32, n8);
-    if (n8 > ATRBVH_TREELET_MAX) {
-        ATRBVH_AGG_PART(internal, atrbvh_u32, n8);
-        ATRBVH_AGG_PART(area, double, n8);
-        ATRBVH_AGG_PART(order, atrbvh_u32, n8);
-        ATRBVH_AGG_PART(ids, atrbvh_u32, n8);
-        ATRBVH_AGG_PART(id_of, atrbvh_u32, n8);
-        ATRBVH_AGG_PART(stack, atrbvh_u32, n8);
-    } else if (s) {
-        s->internal = (ATRBVH_GLOBAL atrbvh_u32 *)0;
-        s->area = (ATRBVH_GLOBAL double *)0;
-        s->order = (ATRBVH_GLOBAL atrbvh_u32 *)0;
-        s->ids = (ATRBVH_GLOBAL atrbvh_u32 *)0;
-        s->id_of = (ATRBVH_GLOBAL atrbvh_u32 *)0;
-        s->stack = (ATRBVH_GLOBAL atrbvh_u32 *)0;
-    }
+    /* (no entries, a null pointer: up to ATRBVH_TREELET_MAX) */
+    ATRBVH_AGG_PART(internal, atrbvh_u32, large);
+    ATRBVH_AGG_PART(area, double, large);
+    ATRBVH_AGG_PART(order, atrbvh_u32, large);
+    ATRBVH_AGG_PART(ids, atrbvh_u32, large);
+    ATRBVH_AGG_PART(id_of, atrbvh_u32, large);
+    ATRBVH_AGG_PART(stack, atrbvh_u32, large);
 #undef ATRBVH_AGG_PART
     return o;
 }
