@@ -507,8 +507,8 @@ atrbvh_status atrbvh_reoptimise(atrbvh_bvh *bvh,
     st = reopt_run(a.dev, bvh, &in, &req.cfg, &out, error);
     if (st == ATRBVH_OK) {
         /* Into the tree: its arrays when large enough, else new ones. */
-        size_t cap = bvh->node_capacity > bvh->node_count
-                         ? bvh->node_capacity
+        size_t cap = bvh->node_bytes / sizeof *bvh->nodes > bvh->node_count
+                         ? bvh->node_bytes / sizeof *bvh->nodes
                          : bvh->node_count;
         if (cap < NODES_MOST(bvh)) {
             /* Once per tree: room for the largest tree (2n - 1 nodes),
@@ -523,15 +523,16 @@ atrbvh_status atrbvh_reoptimise(atrbvh_bvh *bvh,
             } else {
                 atrbvh_i_free(bvh->nodes);
                 bvh->nodes = nodes;
-                cap = most;
+                bvh->node_bytes = most * sizeof *nodes;
             }
         }
         if (st == ATRBVH_OK) {
             memcpy(bvh->nodes, out.nodes, out.node_count * sizeof *out.nodes);
             memcpy(bvh->prim_indices, out.prim_indices,
                    out.prim_count * sizeof *out.prim_indices);
+            if (!bvh->node_bytes) /* (the allocation, whatever the count) */
+                bvh->node_bytes = bvh->node_count * sizeof *bvh->nodes;
             bvh->node_count = out.node_count;
-            bvh->node_capacity = cap;
             bvh->stats = out.stats; /* measured (reopt_run) */
             bvh->stats_pending = 0;
             bvh->stats.method = req.cfg.method;

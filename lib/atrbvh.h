@@ -338,6 +338,23 @@ ATRBVH_API atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
                                       const atrbvh_build_options *options,
                                       atrbvh_bvh **out, atrbvh_error *error);
 
+/* atrbvh_build into the memory of *bvh, a BVH the caller is done with
+ * (NULL: a plain build), for a caller that builds again and again (a
+ * frame at a time, as an Embree user rebuilds into one BVH object).  Its
+ * node and index arrays are reused where they are large enough (the
+ * build's own arrays, then the output's; atrbvh_rebuild(3)), so that the
+ * build writes into memory already in use rather than new pages, which
+ * the system zeroes as they are first written; the tree is the one
+ * atrbvh_build makes, to the bit.  The old BVH is freed whatever the
+ * call returns, and must not be used once it is called: on success *bvh
+ * is the new BVH, on failure NULL.  If the geometry lies in the old BVH's
+ * arrays (boxes read from its nodes), they are not reused and are freed
+ * after the build. */
+ATRBVH_API atrbvh_status atrbvh_rebuild(const atrbvh_geometry *geometry,
+                                        const atrbvh_build_options *options,
+                                        atrbvh_bvh **bvh,
+                                        atrbvh_error *error);
+
 ATRBVH_API void atrbvh_bvh_free(atrbvh_bvh *bvh);
 
 ATRBVH_API const atrbvh_node *atrbvh_bvh_nodes(const atrbvh_bvh *bvh,

@@ -113,6 +113,13 @@ void atrbvh_i_scratch_release(atrbvh_i_scratch *s, unsigned slot);
  * scratch_release.  NULL (and 0) when the slot holds nothing. */
 void *atrbvh_i_scratch_take(atrbvh_i_scratch *s, unsigned slot,
                             size_t *bytes);
+/* The reverse: block p, `bytes` long and of the library's allocator,
+ * becomes the block of role `slot`'s slot, which then owns it, when the
+ * slot is reserved, p holds its reserve, the slot's own block does not
+ * (it is freed) and no role in it is live; returns 1 then, else 0 (p is
+ * left to the caller). */
+int atrbvh_i_scratch_adopt(atrbvh_i_scratch *s, unsigned slot, void *p,
+                           size_t bytes);
 /* A build's plan: every role in its own slot, no reserve, nothing live;
  * then role `role` in the slot of role `slot`, and slot `slot` at least
  * `bytes` when allocated (0 on overflow: no reserve). */
@@ -222,6 +229,16 @@ struct atrbvh_i_run {
      * the output did not take it. */
     void *out_block;
     size_t out_block_bytes;
+    /* atrbvh_rebuild: the old tree's node array (recycled_node_bytes
+     * long) and index array, the library's now, or NULL.  The backend's
+     * begin may take the node block (into its scratch, or to free it: the
+     * CPU's, lest it raise the peak of the stages before the output) and
+     * set it NULL; the pipeline gives the output what is left when large
+     * enough, and frees the rest when the build ends. */
+    void *recycled_nodes;
+    size_t recycled_node_bytes;
+    void *recycled_indices;
+    size_t recycled_index_bytes;
     /* pipeline, after collapse: the output; layout fills nodes and
      * prim_indices (node_count and n entries). */
     atrbvh_node *nodes;

@@ -8,21 +8,50 @@
 
 #include <string.h>
 
-atrbvh_bvh *atrbvh_i_bvh_alloc_in(size_t node_count, size_t prim_count,
-                                  void **block, size_t bytes)
+/* Whether *block (bytes long) holds count entries of `size` bytes. */
+static int holds(void *const *block, size_t bytes, size_t count, size_t size)
 {
+    return block && *block && count <= bytes / size;
+}
+
+/* *block for `count` entries of `size` bytes when it holds them (*block
+ * then NULL, its size into *taken), else a new array (*taken 0). */
+static void *take_or_alloc(void **block, size_t bytes, size_t count,
+                           size_t size, size_t *taken)
+{
+    void *p;
+    *taken = 0;
+    if (holds(block, bytes, count, size)) {
+        p = *block;
+        *block = NULL;
+        *taken = bytes;
+        return p;
+    }
+    return atrbvh_i_alloc_array(count, size);
+}
+
+atrbvh_bvh *atrbvh_i_bvh_alloc_in(size_t node_count, size_t prim_count,
+                                  const atrbvh_i_blocks *blocks)
+{
+    static const atrbvh_i_blocks none;
     atrbvh_bvh *b = atrbvh_i_malloc(sizeof *b);
     if (!b)
         return NULL;
     memset(b, 0, sizeof *b);
+    if (!blocks)
+        blocks = &none;
     if (node_count) {
-        if (block && *block && node_count <= bytes / sizeof *b->nodes) {
-            b->nodes = *block;
-            *block = NULL;
-        } else {
-            b->nodes = atrbvh_i_alloc_array(node_count, sizeof *b->nodes);
+        void **nb = blocks->nodes;
+        size_t nbytes = blocks->node_bytes, unused;
+        if (!holds(nb, nbytes, node_count, sizeof *b->nodes)) {
+            nb = blocks->nodes2;
+            nbytes = blocks->node_bytes2;
         }
-        b->prim_indices = atrbvh_i_alloc_array(prim_count, sizeof *b->prim_indices);
+        b->nodes = take_or_alloc(nb, nbytes, node_count, sizeof *b->nodes,
+                                 &b->node_bytes);
+        b->prim_indices = take_or_alloc(blocks->indices, blocks->index_bytes,
+                                        prim_count, sizeof *b->prim_indices,
+                                        &unused);
         if (!b->nodes || !b->prim_indices) {
             atrbvh_bvh_free(b);
             return NULL;
@@ -35,7 +64,7 @@ atrbvh_bvh *atrbvh_i_bvh_alloc_in(size_t node_count, size_t prim_count,
 
 atrbvh_bvh *atrbvh_i_bvh_alloc(size_t node_count, size_t prim_count)
 {
-    return atrbvh_i_bvh_alloc_in(node_count, prim_count, NULL, 0);
+    return atrbvh_i_bvh_alloc_in(node_count, prim_count, NULL);
 }
 
 /* The statistics with the SAH already summed (atrbvh_sah's value). */

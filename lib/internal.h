@@ -109,8 +109,9 @@ struct atrbvh_bvh {
     atrbvh_stats stats;
     double stage_ms[ATRBVH_STAGE_COUNT];
     struct atrbvh_i_device_info *device; /* NULL unless built by OpenCL */
-    size_t node_capacity; /* nodes' allocation when above node_count
-                             (atrbvh_reoptimise reuses it); 0: node_count */
+    size_t node_bytes;    /* the node array's allocation in bytes, when
+                             above node_count's (atrbvh_reoptimise and
+                             atrbvh_rebuild reuse it); 0: node_count's */
     size_t split_prims;   /* a split tree (its leaves may share a
                              primitive): the distinct primitives it
                              references; 0: every primitive once       */
@@ -212,11 +213,18 @@ void atrbvh_i_sah_sum_with(const atrbvh_node *nodes, size_t m, int vector,
 
 /* Allocates an empty BVH object with room for the arrays. */
 atrbvh_bvh *atrbvh_i_bvh_alloc(size_t node_count, size_t prim_count);
-/* The same, its nodes in *block (of the library's allocator, `bytes`
- * long) when that holds node_count nodes: the object then owns it and
- * *block is set to NULL; otherwise *block is left to the caller. */
+/* Blocks (of the library's allocator) an output may take instead of new
+ * allocations: its nodes the first of `nodes` and `nodes2` that holds
+ * them, its primitive indices `indices` when it holds them.  A block
+ * taken is set to NULL (the object owns it); the others stay the
+ * caller's.  Any pointer may be NULL. */
+typedef struct atrbvh_i_blocks {
+    void **nodes, **nodes2, **indices;
+    size_t node_bytes, node_bytes2, index_bytes;
+} atrbvh_i_blocks;
+/* The same, in `blocks` where they hold the arrays (NULL: none). */
 atrbvh_bvh *atrbvh_i_bvh_alloc_in(size_t node_count, size_t prim_count,
-                                  void **block, size_t bytes);
+                                  const atrbvh_i_blocks *blocks);
 /* Fills stats.nodes, leaves, primitives, max_depth, max_leaf_primitives and
  * sah (with stats.ci/ct) from the node array; fails on an invalid array or
  * when scratch cannot be allocated. */

@@ -251,10 +251,16 @@ static atrbvh_status run_stages(atrbvh_device *dev, atrbvh_i_run *run,
         }
         t = atrbvh_i_now_ms();
         if (stage == ATRBVH_STAGE_LAYOUT) {
-            /* The output object, sized by the collapse stage. */
-            bvh = atrbvh_i_bvh_alloc_in(run->node_count, run->n,
-                                        &run->out_block,
-                                        run->out_block_bytes);
+            /* The output object, sized by the collapse stage, in blocks
+             * the build has already touched where they hold it. */
+            atrbvh_i_blocks blocks;
+            blocks.nodes = &run->out_block;
+            blocks.node_bytes = run->out_block_bytes;
+            blocks.nodes2 = &run->recycled_nodes;
+            blocks.node_bytes2 = run->recycled_node_bytes;
+            blocks.indices = &run->recycled_indices;
+            blocks.index_bytes = run->recycled_index_bytes;
+            bvh = atrbvh_i_bvh_alloc_in(run->node_count, run->n, &blocks);
             if (!bvh) {
                 st = atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, NO_INDEX,
                                    "cannot allocate the output (%lu nodes)",
@@ -316,10 +322,59 @@ static atrbvh_status run_stages(atrbvh_device *dev, atrbvh_i_run *run,
     return ATRBVH_OK;
 }
 
-atrbvh_status atrbvh_i_build_run(const atrbvh_geometry *geometry,
-                                 const atrbvh_build_options *options,
-                                 atrbvh_bvh **out, atrbvh_i_capture *cap,
-                                 atrbvh_error *error)
+/* Whether the n bytes at p and the m bytes at q share one. */
+static int bytes_meet(const void *p, size_t n, const void *q, size_t m)
+{
+    const uintptr_t a = (uintptr_t)p, b = (uintptr_t)q;
+    return p && q && n && m && a < b + m && b < a + n;
+}
+
+/* Whether the caller's arrays that the build reads (the geometry, past
+ * its checks: no sum below overflows) share a byte with the m at q. */
+static int input_meets(const atrbvh_i_input *in, const void *q, size_t m)
+{
+    const atrbvh_geometry *g = in->g;
+    const size_t n = g->primitive_count;
+    if (g->type == ATRBVH_GEOMETRY_BOXES)
+        return bytes_meet(g->boxes, (n - 1) * in->bstride + 6 * sizeof(float),
+                          q, m);
+    return bytes_meet(g->vertices,
+                      (g->vertex_count - 1) * in->vstride + 3 * sizeof(float),
+                      q, m) ||
+           (g->indices &&
+            bytes_meet(g->indices,
+                       (n - 1) * in->istride + 3 * sizeof(uint32_t), q, m));
+}
+
+/* atrbvh_rebuild: the old tree's arrays into the run for reuse, the rest
+ * of it freed at once; NULL then.  When the input lies in those arrays
+ * the old tree is returned whole, to be freed after the build. */
+static atrbvh_bvh *recycle(atrbvh_i_run *run, atrbvh_bvh *old)
+{
+    const size_t node_bytes = old->node_bytes > old->node_count *
+                                                    sizeof *old->nodes
+                                  ? old->node_bytes
+                                  : old->node_count * sizeof *old->nodes,
+                 index_bytes = old->prim_count * sizeof *old->prim_indices;
+    if (input_meets(&run->in, old->nodes, node_bytes) ||
+        input_meets(&run->in, old->prim_indices, index_bytes))
+        return old;
+    run->recycled_nodes = old->nodes;
+    run->recycled_node_bytes = old->nodes ? node_bytes : 0;
+    run->recycled_indices = old->prim_indices;
+    run->recycled_index_bytes = old->prim_indices ? index_bytes : 0;
+    old->nodes = NULL;
+    old->prim_indices = NULL;
+    atrbvh_bvh_free(old);
+    return NULL;
+}
+
+/* A build; `old` (may be NULL) is atrbvh_rebuild's, freed on every
+ * path. */
+static atrbvh_status build_run(const atrbvh_geometry *geometry,
+                               const atrbvh_build_options *options,
+                               atrbvh_bvh **out, atrbvh_bvh *old,
+                               atrbvh_i_capture *cap, atrbvh_error *error)
 {
     atrbvh_i_request req;
     atrbvh_i_run run;
@@ -328,19 +383,16 @@ atrbvh_status atrbvh_i_build_run(const atrbvh_geometry *geometry,
     atrbvh_status st;
     double t0 = atrbvh_i_now_ms();
 
-    atrbvh_i_clear_error(error);
-    if (!out)
-        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
-                             "the output pointer is NULL");
-    *out = NULL;
+    memset(&run, 0, sizeof run);
     st = atrbvh_i_resolve_options(options, &req, error);
     if (st != ATRBVH_OK)
-        return st;
-    memset(&run, 0, sizeof run);
+        goto done;
     run.cfg = &req.cfg;
     st = atrbvh_i_check_geometry(geometry, &run.in, error);
     if (st != ATRBVH_OK)
-        return st;
+        goto done;
+    if (old)
+        old = recycle(&run, old);
     memset(&prog, 0, sizeof prog);
     prog.fn = req.progress;
     prog.user = req.progress_user;
@@ -354,11 +406,12 @@ atrbvh_status atrbvh_i_build_run(const atrbvh_geometry *geometry,
         st = atrbvh_i_device_open_backend(&atrbvh_i_cl_backend,
                                           req.opencl_device, &dev, error);
         if (st != ATRBVH_OK)
-            return st;
+            goto done;
 #else
-        return atrbvh_i_fail(error, ATRBVH_ERR_UNSUPPORTED, NO_INDEX,
-                             "this build of atrbvh has no OpenCL backend "
-                             "(configure --enable-opencl)");
+        st = atrbvh_i_fail(error, ATRBVH_ERR_UNSUPPORTED, NO_INDEX,
+                           "this build of atrbvh has no OpenCL backend "
+                           "(configure --enable-opencl)");
+        goto done;
 #endif
     } else if (!dev) {
         atrbvh_i_device_cpu_temp(&temp);
@@ -376,7 +429,24 @@ atrbvh_status atrbvh_i_build_run(const atrbvh_geometry *geometry,
     atrbvh_i_device_unlock(dev);
     if (dev != req.device)
         atrbvh_device_close(dev); /* a temporary one */
+done:
+    atrbvh_i_free(run.recycled_nodes); /* (what the build did not take) */
+    atrbvh_i_free(run.recycled_indices);
+    atrbvh_bvh_free(old);
     return st;
+}
+
+atrbvh_status atrbvh_i_build_run(const atrbvh_geometry *geometry,
+                                 const atrbvh_build_options *options,
+                                 atrbvh_bvh **out, atrbvh_i_capture *cap,
+                                 atrbvh_error *error)
+{
+    atrbvh_i_clear_error(error);
+    if (!out)
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
+                             "the output pointer is NULL");
+    *out = NULL;
+    return build_run(geometry, options, out, NULL, cap, error);
 }
 
 atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
@@ -384,4 +454,18 @@ atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
                            atrbvh_bvh **out, atrbvh_error *error)
 {
     return atrbvh_i_build_run(geometry, options, out, NULL, error);
+}
+
+atrbvh_status atrbvh_rebuild(const atrbvh_geometry *geometry,
+                             const atrbvh_build_options *options,
+                             atrbvh_bvh **bvh, atrbvh_error *error)
+{
+    atrbvh_bvh *old;
+    atrbvh_i_clear_error(error);
+    if (!bvh)
+        return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT, NO_INDEX,
+                             "the BVH pointer is NULL");
+    old = *bvh;
+    *bvh = NULL;
+    return build_run(geometry, options, bvh, old, NULL, error);
 }

@@ -202,6 +202,25 @@ void *atrbvh_i_scratch_take(atrbvh_i_scratch *s, unsigned slot,
     return p;
 }
 
+int atrbvh_i_scratch_adopt(atrbvh_i_scratch *s, unsigned slot, void *p,
+                           size_t bytes)
+{
+    unsigned k, r;
+    if (slot >= ATRBVH_I_SCRATCH_SLOTS || !p)
+        return 0;
+    k = home_of(s, slot);
+    if (!s->reserve[k] || bytes < s->reserve[k] ||
+        (s->ptr[k] && s->bytes[k] >= s->reserve[k]))
+        return 0;
+    for (r = 0; r < ATRBVH_I_SCRATCH_SLOTS; r++)
+        if (((s->live >> r) & 1u) && home_of(s, r) == k)
+            return 0;
+    atrbvh_i_free(s->ptr[k]);
+    s->ptr[k] = p;
+    s->bytes[k] = bytes;
+    return 1;
+}
+
 void atrbvh_i_scratch_plan_reset(atrbvh_i_scratch *s)
 {
     memset(s->home, 0, sizeof s->home);

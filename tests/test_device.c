@@ -306,6 +306,8 @@ static void *sized_malloc(size_t n)
         return NULL;
     h->size = n;
     tu_alloc.outstanding++;
+    tu_alloc.allocations++;
+    tu_alloc.total_bytes += n;
     held += n;
     if (held > peak)
         peak = held;
@@ -561,6 +563,221 @@ START_TEST(allocation_failure_lbvh_and_invalid)
     }
     ck_assert_int_gt(k, 20);
     atrbvh_set_allocator(NULL, NULL);
+    free(v1);
+    free(v2);
+}
+END_TEST
+
+/* ------------------------------------------------------------ rebuild */
+/* atrbvh_rebuild gives the tree atrbvh_build gives, frame after frame (the
+ * sphere moved by 0, 4, 8 and 12 along x), and needs fewer new bytes: its
+ * primitive indices go in the old tree's index array, and an LBVH's nodes
+ * in the old tree's node array, through the node box slot that the bounds
+ * stage writes (lib/cpu/backend.c's begin, collapse.c).  Each frame is
+ * built twice on its own handle (or twice without one): freed then built,
+ * and rebuilt into the last frame's tree; the second allocates at least
+ * those arrays' bytes less.  Without a handle its peak, above what was
+ * held before less the old tree, is at most the old index array above the
+ * first's: an optimised tree's node boxes need more than the old nodes,
+ * which are freed at once, not held to the output. */
+START_TEST(rebuild_same_tree_fewer_bytes)
+{
+    /* _i: 0 LBVH without a handle, 1 on one, 2 ATRBVH(9,2) without, 3 on
+     * one */
+    const int lbvh = _i < 2, handle = _i % 2;
+    scene sc;
+    char err[256], msg[256];
+    atrbvh_geometry g;
+    atrbvh_build_options o;
+    atrbvh_device *d[2] = {NULL, NULL};
+    atrbvh_error e;
+    atrbvh_bvh *plain = NULL, *re = NULL;
+    float *moved;
+    size_t i, re_tree = 0; /* what `re` holds (without a handle) */
+    int k;
+    ck_assert_int_eq(scene_builtin("sphere", 20000, &sc, err, sizeof err), 0);
+    moved = malloc(sc.vertex_count * 3 * sizeof *moved);
+    ck_assert_ptr_nonnull(moved);
+    atrbvh_build_options_init(&o);
+    o.method = lbvh ? ATRBVH_METHOD_LBVH : ATRBVH_METHOD_ATRBVH;
+    o.max_leaf_size = 8;
+    o.threads = 2;
+    atrbvh_set_allocator(sized_malloc, sized_free);
+    tu_alloc.outstanding = 0;
+    if (handle) {
+        ck_assert_int_eq(atrbvh_device_open("cpu", &d[0], &e), ATRBVH_OK);
+        ck_assert_int_eq(atrbvh_device_open("cpu", &d[1], &e), ATRBVH_OK);
+    }
+    for (k = 0; k < 4; k++) {
+        size_t plain_bytes, re_bytes, nodes, prims, reused, before;
+        size_t plain_peak, re_peak;
+        atrbvh_bvh *ref;
+        for (i = 0; i < sc.vertex_count * 3; i++)
+            moved[i] = sc.vertices[i] + (i % 3 == 0 ? 4.0f * (float)k : 0.0f);
+        g = atrbvh_geometry_triangles(moved, sc.vertex_count, sc.indices,
+                                      sc.triangle_count);
+        o.device = NULL;
+        ref = tu_build(&g, &o);
+        /* what the last frame's tree will give back */
+        atrbvh_bvh_nodes(re, &nodes);
+        atrbvh_bvh_primitive_indices(re, &prims);
+        reused = prims * sizeof(uint32_t) +
+                 (lbvh ? nodes * sizeof(atrbvh_node) : 0);
+        atrbvh_bvh_free(plain);
+        tu_alloc.total_bytes = 0;
+        o.device = d[0];
+        before = held;
+        peak = held;
+        ck_assert_int_eq(atrbvh_build(&g, &o, &plain, &e), ATRBVH_OK);
+        plain_bytes = tu_alloc.total_bytes;
+        plain_peak = peak - before;
+        tu_alloc.total_bytes = 0;
+        o.device = d[1];
+        before = held - re_tree;
+        peak = held;
+        ck_assert_int_eq(atrbvh_rebuild(&g, &o, &re, &e), ATRBVH_OK);
+        re_bytes = tu_alloc.total_bytes;
+        re_peak = peak - before;
+        re_tree = held - before;
+        ck_assert_msg(tu_same_bvh(ref, plain, msg, sizeof msg),
+                      "frame %d, built: %s", k, msg);
+        ck_assert_msg(tu_same_bvh(ref, re, msg, sizeof msg),
+                      "frame %d, rebuilt: %s", k, msg);
+        ck_assert_msg(re_bytes + reused <= plain_bytes,
+                      "frame %d: built with %lu bytes, rebuilt with %lu, "
+                      "the old tree's arrays that were to be reused %lu",
+                      k, (unsigned long)plain_bytes, (unsigned long)re_bytes,
+                      (unsigned long)reused);
+        if (!handle)
+            ck_assert_msg(re_peak <= plain_peak + prims * sizeof(uint32_t),
+                          "frame %d: peak %lu bytes built, %lu rebuilt", k,
+                          (unsigned long)plain_peak, (unsigned long)re_peak);
+        atrbvh_bvh_free(ref);
+    }
+    atrbvh_bvh_free(plain);
+    atrbvh_bvh_free(re);
+    atrbvh_device_close(d[0]);
+    atrbvh_device_close(d[1]);
+    atrbvh_set_allocator(NULL, NULL);
+    ck_assert_int_eq(tu_alloc.outstanding, 0);
+    free(moved);
+    scene_free(&sc);
+}
+END_TEST
+
+/* Boxes read from the old tree's own nodes (a BVH over a BVH's nodes):
+ * its arrays are not reused while the build reads them, and the tree is
+ * the one built from a copy of those boxes, for an LBVH (whose node box
+ * slot would take them) and an ATRBVH. */
+START_TEST(rebuild_reads_old_nodes)
+{
+    float *v;
+    atrbvh_geometry g = soup(&v, T, 21), gb;
+    atrbvh_build_options o;
+    atrbvh_error e;
+    atrbvh_bvh *old, *ref;
+    const atrbvh_node *nodes;
+    atrbvh_node *copy;
+    size_t count;
+    char msg[256];
+    atrbvh_build_options_init(&o);
+    o.method = _i ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_LBVH;
+    o.max_leaf_size = 1;
+    o.threads = 2;
+    old = tu_build(&g, &o);
+    nodes = atrbvh_bvh_nodes(old, &count);
+    copy = malloc(count * sizeof *copy);
+    ck_assert_ptr_nonnull(copy);
+    memcpy(copy, nodes, count * sizeof *copy);
+    gb = atrbvh_geometry_boxes(copy[0].min, count);
+    gb.box_stride = sizeof *copy;
+    ref = tu_build(&gb, &o);
+    gb.boxes = nodes[0].min;
+    ck_assert_int_eq(atrbvh_rebuild(&gb, &o, &old, &e), ATRBVH_OK);
+    ck_assert_msg(tu_same_bvh(ref, old, msg, sizeof msg), "%s", msg);
+    atrbvh_bvh_free(old);
+    atrbvh_bvh_free(ref);
+    free(copy);
+    free(v);
+}
+END_TEST
+
+/* atrbvh_rebuild frees the old tree whatever it returns: after bad
+ * arguments (an option out of range, invalid geometry) *bvh is NULL and
+ * nothing leaks; a NULL BVH pointer is an error; *bvh NULL is a plain
+ * build.  Then every allocation of rebuilds into a tree of other sizes,
+ * with and without a handle, fails in turn: ATRBVH_ERR_NOMEM each time,
+ * *bvh NULL, and nothing leaks. */
+START_TEST(rebuild_frees_old_on_failure)
+{
+    float *v1, *v2;
+    atrbvh_geometry g1 = soup(&v1, 700, 13), g2 = soup(&v2, 2500, 14), bad;
+    atrbvh_build_options o;
+    atrbvh_error e;
+    atrbvh_bvh *b = NULL, *ref;
+    char msg[256];
+    long k;
+    int done = 0;
+    atrbvh_build_options_init(&o);
+    o.method = _i ? ATRBVH_METHOD_ATRBVH : ATRBVH_METHOD_LBVH;
+    o.max_leaf_size = 8;
+    o.threads = 2;
+    ref = tu_build(&g2, &o);
+    ck_assert_int_eq(atrbvh_rebuild(&g2, &o, NULL, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    atrbvh_set_allocator(sized_malloc, sized_free);
+    tu_alloc.outstanding = 0;
+    ck_assert_int_eq(atrbvh_rebuild(&g1, &o, &b, &e), ATRBVH_OK);
+    o.threads = -1;
+    ck_assert_int_eq(atrbvh_rebuild(&g1, &o, &b, &e),
+                     ATRBVH_ERR_INVALID_ARGUMENT);
+    ck_assert_ptr_null(b);
+    ck_assert_int_eq(tu_alloc.outstanding, 0);
+    o.threads = 2;
+    ck_assert_int_eq(atrbvh_rebuild(&g1, &o, &b, &e), ATRBVH_OK);
+    bad = g1;
+    bad.primitive_count = 0;
+    ck_assert_int_eq(atrbvh_rebuild(&bad, &o, &b, &e),
+                     ATRBVH_ERR_NO_PRIMITIVES);
+    ck_assert_ptr_null(b);
+    ck_assert_int_eq(tu_alloc.outstanding, 0);
+    for (k = 0; !done; k++) {
+        atrbvh_device *d = NULL;
+        atrbvh_status st;
+        tu_count_reset(k);
+        o.device = NULL;
+        st = atrbvh_device_open("cpu", &d, &e);
+        if (st == ATRBVH_OK)
+            st = atrbvh_rebuild(&g1, &o, &b, &e);
+        if (st == ATRBVH_OK)
+            st = atrbvh_rebuild(&g2, &o, &b, &e);
+        if (st == ATRBVH_OK) {
+            o.device = d;
+            st = atrbvh_rebuild(&g2, &o, &b, &e);
+            if (st == ATRBVH_OK)
+                st = atrbvh_rebuild(&g1, &o, &b, &e);
+            if (st == ATRBVH_OK)
+                st = atrbvh_rebuild(&g2, &o, &b, &e);
+        }
+        if (st == ATRBVH_OK) {
+            done = 1;
+            ck_assert_msg(tu_same_bvh(ref, b, msg, sizeof msg), "%s", msg);
+        } else {
+            ck_assert_msg(st == ATRBVH_ERR_NOMEM, "allocation %ld: %s", k,
+                          atrbvh_strerror(st));
+            ck_assert_ptr_null(b);
+        }
+        atrbvh_bvh_free(b);
+        b = NULL;
+        atrbvh_device_close(d);
+        tu_alloc.countdown = -1;
+        ck_assert_msg(tu_alloc.outstanding == 0,
+                      "allocation %ld: %ld blocks leaked", k,
+                      tu_alloc.outstanding);
+    }
+    ck_assert_int_gt(k, 20);
+    atrbvh_set_allocator(NULL, NULL);
+    atrbvh_bvh_free(ref);
     free(v1);
     free(v2);
 }
@@ -944,6 +1161,9 @@ static Suite *suite(void)
     tcase_add_loop_test(t, peak_memory_optimised, 0, 3);
     tcase_add_test(t, large_leaves_gathered_alike);
     tcase_add_loop_test(t, allocation_failure_lbvh_and_invalid, 0, 2);
+    tcase_add_loop_test(t, rebuild_same_tree_fewer_bytes, 0, 4);
+    tcase_add_loop_test(t, rebuild_reads_old_nodes, 0, 2);
+    tcase_add_loop_test(t, rebuild_frees_old_on_failure, 0, 2);
     tcase_add_test(t, threads_own_and_shared_devices);
     tcase_add_loop_test(t, progress_monotone_to_one, 0, 2);
     tcase_add_test(t, cancel_everywhere);

@@ -540,6 +540,71 @@ START_TEST(device_handle)
 }
 END_TEST
 
+/* atrbvh_rebuild on an OpenCL handle: the tree the CPU builds, in rounds
+ * of 3000, 3000, 700 and 3001 triangles (the same twice, then from a
+ * larger old tree and a smaller one).  When the old tree is of the same
+ * triangles, its node and index arrays become the new one's (the host
+ * side of an OpenCL build holds nothing of the primitive count before the
+ * output, so the nodes wait for it: lib/pipeline.c), and the rebuild
+ * allocates at least their bytes less than a build on a second handle
+ * after freeing its last tree. */
+START_TEST(rebuild_on_device)
+{
+    static const unsigned sizes[] = {3000, 3000, 700, 3001};
+    atrbvh_device *dev[2] = {NULL, NULL};
+    atrbvh_bvh *plain = NULL, *re = NULL;
+    atrbvh_build_options o;
+    atrbvh_error e;
+    char msg[256];
+    unsigned round;
+    REQUIRE_DEVICE();
+    ck_assert_int_eq(atrbvh_device_open("opencl", &dev[0], &e), ATRBVH_OK);
+    ck_assert_int_eq(atrbvh_device_open("opencl", &dev[1], &e), ATRBVH_OK);
+    for (round = 0; round < 8; round++) {
+        const unsigned n = sizes[round % 4];
+        float *v = tu_random_triangles(n, 40 + n, 4.0f, -2.0f);
+        atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * n, NULL, n);
+        atrbvh_bvh *ref;
+        size_t plain_bytes, re_bytes, nodes = 0, prims = 0, reused = 0;
+        atrbvh_build_options_init(&o);
+        o.method = round < 4 ? ATRBVH_METHOD_LBVH : ATRBVH_METHOD_ATRBVH;
+        o.max_leaf_size = 8;
+        ref = tu_build(&g, &o);
+        atrbvh_bvh_nodes(re, &nodes);
+        atrbvh_bvh_primitive_indices(re, &prims);
+        if (prims == n) /* (the same triangles: as many nodes) */
+            reused = nodes * sizeof(atrbvh_node) + prims * sizeof(uint32_t);
+        atrbvh_set_allocator(tu_count_malloc, tu_count_free);
+        atrbvh_bvh_free(plain);
+        tu_count_reset(-1);
+        o.device = dev[0];
+        ck_assert_int_eq(atrbvh_build(&g, &o, &plain, &e), ATRBVH_OK);
+        plain_bytes = tu_alloc.total_bytes;
+        tu_count_reset(-1);
+        o.device = dev[1];
+        ck_assert_int_eq(atrbvh_rebuild(&g, &o, &re, &e), ATRBVH_OK);
+        re_bytes = tu_alloc.total_bytes;
+        atrbvh_set_allocator(NULL, NULL);
+        ck_assert_msg(atrbvh_compare(ref, plain, &e) == 0 &&
+                          tu_same_bvh(ref, re, msg, sizeof msg),
+                      "round %u: %s %s", round, e.text, msg);
+        ck_assert_msg(re_bytes + reused <= plain_bytes,
+                      "round %u: built with %lu bytes, rebuilt with %lu, "
+                      "the old tree's arrays %lu",
+                      round, (unsigned long)plain_bytes,
+                      (unsigned long)re_bytes, (unsigned long)reused);
+        atrbvh_bvh_free(ref);
+        free(v);
+    }
+    atrbvh_set_allocator(tu_count_malloc, tu_count_free);
+    atrbvh_bvh_free(plain);
+    atrbvh_bvh_free(re);
+    atrbvh_set_allocator(NULL, NULL);
+    atrbvh_device_close(dev[0]);
+    atrbvh_device_close(dev[1]);
+}
+END_TEST
+
 START_TEST(kernel_times_and_device)
 {
     float *v = tu_random_triangles(2000, 5, 1.0f, 0.0f);
@@ -1066,6 +1131,7 @@ static Suite *opencl_suite(void)
     tcase_add_test(tc, sort_failure_is_an_error);
     tcase_add_test(tc, device_handle);
     tcase_add_test(tc, kernel_times_and_device);
+    tcase_add_test(tc, rebuild_on_device);
     tcase_add_test(tc, lbvh_refit_takes_the_collapse);
     tcase_add_test(tc, device_sort_splits_big_buckets);
     tcase_add_test(tc, hierarchy_refits_in_its_pass);

@@ -268,12 +268,9 @@ static atrbvh_status step(policy *q, unsigned frame,
     atrbvh_status s = ATRBVH_OK;
     double t0 = cli_now_ms();
     if (frame == 0 || q->kind == P_REBUILD) {
-        atrbvh_bvh *b = NULL;
-        s = atrbvh_build(g, o, &b, e);
-        if (s == ATRBVH_OK) {
-            atrbvh_bvh_free(q->bvh);
-            q->bvh = b;
-        }
+        /* into the last frame's tree (a failure frees it and ends the
+         * run) */
+        s = atrbvh_rebuild(g, o, &q->bvh, e);
         q->action[frame] = frame == 0 ? 0 : 3;
     } else if (q->kind == P_REOPT) {
         /* atrbvh_reoptimise refits (its refit stage) at the new
@@ -288,13 +285,9 @@ static atrbvh_status step(policy *q, unsigned frame,
         if (s == ATRBVH_OK && q->kind == P_AUTO) {
             atrbvh_bvh_stats(q->bvh, &st);
             if (st.sah_built > 0 && st.sah > drift * st.sah_built) {
-                atrbvh_bvh *b = NULL;
-                s = atrbvh_build(g, o, &b, e);
-                if (s == ATRBVH_OK) {
-                    atrbvh_bvh_free(q->bvh);
-                    q->bvh = b;
+                s = atrbvh_rebuild(g, o, &q->bvh, e);
+                if (s == ATRBVH_OK)
                     q->rebuilds++;
-                }
                 q->action[frame] = 3;
             }
         }

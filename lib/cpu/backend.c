@@ -160,6 +160,17 @@ static atrbvh_status cpu_begin(atrbvh_device *dev, atrbvh_i_run *run,
     run->state = c;
     plan(c->scratch, c->device, run->in.g->primitive_count,
          run->cfg->method, 0);
+    if (run->recycled_nodes) {
+        /* atrbvh_rebuild: the old tree's nodes become the node box slot
+         * when they hold its reserve (an LBVH of the same scene's: the
+         * block then goes on to the new output, collapse.c), else they
+         * go now: held to the output, they would raise the peak of the
+         * stages before it (the plan above) by their size */
+        if (!atrbvh_i_scratch_adopt(c->scratch, CPU_BOX, run->recycled_nodes,
+                                    run->recycled_node_bytes))
+            atrbvh_i_free(run->recycled_nodes);
+        run->recycled_nodes = NULL;
+    }
     return ATRBVH_OK;
 }
 

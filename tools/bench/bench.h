@@ -82,6 +82,7 @@ typedef struct bench_args {
     const char *csv, *plot, *builds;
     bench_log *log; /* the --builds file (main.c) */
     int scaling;
+    int fresh; /* --fresh: free the last tree, then build (no rebuild) */
     size_t sizes[MAX_SIZES];
     int nsizes;
     camera_view view; /* --eye, --look-at, --fov */
@@ -115,8 +116,9 @@ const char *bench_backend_name(atrbvh_backend b);
 double bench_median(double *v, size_t n);
 int bench_load_scene(const char *spec, scene_data *sd);
 void bench_free_scene(scene_data *sd);
+/* atrbvh_build, or with `rebuild` atrbvh_rebuild into *out. */
 int bench_lib_build(const scene_data *sd, const atrbvh_build_options *o,
-                    atrbvh_bvh **out, const char *spec);
+                    atrbvh_bvh **out, const char *spec, int rebuild);
 /* One configuration on one scene in steps, so that the timed builds of
  * several configurations or sizes can take turns (sweep.c, scaling.c):
  * open (the device, the warm-up build), time

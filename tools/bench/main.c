@@ -247,7 +247,7 @@ static int on_quality(const char *cmd, const cli_opt *o, const char *v,
     return 0;
 }
 
-#define BENCH_OPTS (25 + RAYS_CAMERA_OPTS)
+#define BENCH_OPTS (26 + RAYS_CAMERA_OPTS)
 static void bench_opts(bench_cl *b, cli_opt *table)
 {
     bench_args *a = &b->a;
@@ -310,6 +310,10 @@ static void bench_opts(bench_cl *b, cli_opt *table)
          .help = "AO and diffuse rays per primary hit (default 2)"},
         {.name = "--no-rays", .kind = CLI_OPT_FLAG, .dest = &b->no_rays,
          .flag_value = 1, .help = "builds only"},
+        {.name = "--fresh", .kind = CLI_OPT_FLAG, .dest = &a->fresh,
+         .flag_value = 1,
+         .help = "free the last tree before each build\n"
+                 "(default: atrbvh_rebuild into it)"},
         {.name = "--csv", .kind = CLI_OPT_STRING, .arg = "FILE",
          .dest = &a->csv,
          .help = "one row per configuration (columns: atrbvh(1))"},

@@ -38,12 +38,13 @@ static size_t bvh_bytes(const atrbvh_stats *s)
 }
 
 int bench_lib_build(const scene_data *sd, const atrbvh_build_options *o,
-                     atrbvh_bvh **out, const char *spec)
+                     atrbvh_bvh **out, const char *spec, int rebuild)
 {
     atrbvh_error e;
     atrbvh_status st;
     memset(&e, 0, sizeof e);
-    st = atrbvh_build(&sd->g, o, out, &e);
+    st = rebuild ? atrbvh_rebuild(&sd->g, o, out, &e)
+                 : atrbvh_build(&sd->g, o, out, &e);
     if (st != ATRBVH_OK) {
         *out = NULL;
         cli_error("%s: %s", spec, e.text[0] ? e.text : atrbvh_strerror(st));
@@ -229,8 +230,10 @@ static int cfg_build(bench_cfg *b, int k)
 {
     row *r = b->r;
     int s;
-    atrbvh_bvh_free(b->bvh);
-    b->bvh = NULL;
+    if (b->c->embree || b->a->fresh) {
+        atrbvh_bvh_free(b->bvh);
+        b->bvh = NULL;
+    }
     if (b->c->embree) {
         embree_build_result res;
         /* The warm-up with Embree's memory monitor (a callback on every
@@ -255,7 +258,13 @@ static int cfg_build(bench_cfg *b, int k)
         memtrack_reset_peak();
         w0 = clock_ms(CLOCK_MONOTONIC);
         c0 = clock_ms(CLOCK_PROCESS_CPUTIME_ID);
-        if (bench_lib_build(b->sd, &b->o, &b->bvh, b->spec) != 0)
+        /* (into the last build's tree unless --fresh: as a program that
+         * builds frame after frame does; Embree's BVH object is kept
+         * alike.  Its peak above what was held before, the old tree
+         * included, is lower than the first build's, which makes the
+         * row's peak.) */
+        if (bench_lib_build(b->sd, &b->o, &b->bvh, b->spec, !b->a->fresh) !=
+            0)
             return -1;
         peak = memtrack_peak() - before;
         cpu = clock_ms(CLOCK_PROCESS_CPUTIME_ID) - c0;
@@ -371,7 +380,7 @@ int bench_cfg_finish(bench_cfg *b)
             atrbvh_build_options o = b->o;
             o.collapse = 0;
             o.max_leaf_size = 0;
-            if (bench_lib_build(b->sd, &o, &bin, b->spec) != 0)
+            if (bench_lib_build(b->sd, &o, &bin, b->spec, 0) != 0)
                 return -1;
             atrbvh_bvh_stats(bin, &bs);
             log_build(b, -3, &bs, bs.build_ms);

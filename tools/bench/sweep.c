@@ -55,7 +55,7 @@ int bench_sweep(bench_args *a, FILE *csv)
             atrbvh_bvh *lb = NULL;
             atrbvh_build_options o = a->base;
             o.method = ATRBVH_METHOD_LBVH;
-            if (bench_lib_build(&sd, &o, &lb, a->scenes[si]) != 0 ||
+            if (bench_lib_build(&sd, &o, &lb, a->scenes[si], 0) != 0 ||
                 ray_set_make(&sd.sc, lb, (unsigned)a->width,
                              (unsigned)a->height, (unsigned)a->viewpoints,
                              (unsigned)a->spp, a->base.threads, &a->view,

@@ -85,6 +85,9 @@ void table_header(FILE *f, const bench_args *a)
             atrbvh_version_string(), threads, threads == 1 ? "" : "s",
             a->base.max_leaf_size, a->base.ci, a->base.ct, a->repeat,
             a->repeat == 1 ? "" : "s");
+    fprintf(f, "# atrbvh: %s\n",
+            a->fresh ? "each build after the last tree is freed (--fresh)"
+                     : "each build into the last one's tree (atrbvh_rebuild)");
     if (embree_available())
         fprintf(f, "# Embree %s: rtcBuildBVH (binary, same leaf limit and "
                    "costs) traced by our traverser; own rtcIntersect1 "
