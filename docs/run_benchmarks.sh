@@ -88,11 +88,19 @@ for part in "$@"; do
             echo "OMP_WAIT_POLICY: $OMP_WAIT_POLICY"
             echo "POCL_AFFINITY: $POCL_AFFINITY"
             echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
-            echo "command: sh docs/run_benchmarks.sh speed"
+            echo "command: ${ATRBVH_BENCH_FRESH:+ATRBVH_BENCH_FRESH=1 }sh docs/run_benchmarks.sh speed"
+            if [ -n "${ATRBVH_BENCH_FRESH:-}" ]; then
+                echo "atrbvh builds: fresh (each after the last tree is freed, --fresh)"
+            else
+                echo "atrbvh builds: rebuild (each into the last tree, atrbvh_rebuild)"
+            fi
         } >"$OUT/speed-machine.txt"
         mkdir -p "$OUT/speed"
+        # ATRBVH_BENCH_FRESH=1: every atrbvh build after freeing the last
+        # tree (the bench's --fresh, as all runs before 7 December did)
+        FRESH=${ATRBVH_BENCH_FRESH:+--fresh}
         # shellcheck disable=SC2086
-        "$TOOL" bench $SCENES --no-rays --repeat 5 --threads 2 \
+        "$TOOL" bench $SCENES --no-rays --repeat 5 --threads 2 $FRESH \
             --configs lbvh,atrbvh:7:1,atrbvh:9:1,atrbvh:6:2,atrbvh:9:2,atrbvh:16:3,trbvh:7:3,fast,balanced,high,embree,lbvh@opencl,atrbvh:9:2@opencl \
             --csv "$OUT/speed.csv" --builds "$OUT/speed-builds.csv" \
             --plot "$OUT/speed" >"$OUT/speed.txt"
@@ -100,8 +108,9 @@ for part in "$@"; do
         if [ -x "$ALONE" ]; then
             for s in $SCENES; do "$ALONE" "$s" 2 5; done >"$OUT/embree-alone.txt"
         fi
+        # shellcheck disable=SC2086
         "$TOOL" bench --scaling builtin:sphere --configs lbvh --threads 2 \
-            --repeat 3 --sizes 100000,1000000,3000000,10000000 \
+            $FRESH --repeat 3 --sizes 100000,1000000,3000000,10000000 \
             --csv "$OUT/speed-scaling.csv" >"$OUT/speed-scaling.txt"
         {
             echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -7,8 +7,10 @@ For each run, in the order of their dates, this counts the scenes where
 each goal of issue 11 was met (the ratios of medians, as the generated
 speed section computes them, speed_tables.py) and the worst ratio, and
 rewrites the part of DOC between <!-- BEGIN RUNS --> and <!-- END RUNS -->
-with that table (with the host's steal time over the run and
-POCL_AFFINITY where the machine file has them) and a line per host.  Nothing is typed in by hand.
+with that table (with the host's steal time over the run, POCL_AFFINITY
+and how atrbvh's builds were made - into the last tree, `rebuild`, or
+after freeing it, `fresh`, as every run before 7 December - where the
+machine file has them) and a line per host.  Nothing is typed in by hand.
 """
 import os
 import sys
@@ -73,9 +75,10 @@ def main():
         runs.append((m.get("date", ""), name, m,
                      run_cells(load(os.path.join(runs_dir, f)))))
     runs.sort()
-    L = ["| run | date | host | load before | steal | POCL_AFFINITY | " +
+    L = ["| run | date | host | load before | steal | POCL_AFFINITY | "
+         "builds | " +
          " | ".join(g[0] for g in GOALS) + " | every cell |",
-         "|---|---|---|---|---:|---|" + "---:|" * len(GOALS) + "---|"]
+         "|---|---|---|---|---:|---|---|" + "---:|" * len(GOALS) + "---|"]
     hosts = {}
     for date, name, m, cells in runs:
         host = m.get("cpu", "?").split(",")[0]
@@ -84,9 +87,11 @@ def main():
         every = all(met == tot for met, tot, _ in cells if tot)
         # "steal during the run: 0.9% of the CPU time (...)" -> 0.9%
         steal = m.get("steal during the run", "-").split(" ")[0]
-        L.append("| %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        # runs before 7 December built every tree after freeing the last
+        builds = m.get("atrbvh builds", "fresh").split(" ")[0]
+        L.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             name, date, host, m.get("load before", "?"), steal,
-            m.get("POCL_AFFINITY", "-"), " | ".join(row),
+            m.get("POCL_AFFINITY", "-"), builds, " | ".join(row),
             "yes" if every else "no"))
         h = hosts.setdefault(host, [0, 0, [[0, 0] for _ in GOALS]])
         h[0] += 1

@@ -184,6 +184,24 @@ else
 fi
 checks=$((checks + 1))
 
+# Rebuilding (the default) and --fresh: the header says which, and the
+# rows' trees are the same (SAH, nodes, leaves, peak: the first build's)
+run 0 bench "$SCENE" --repeat 3 --no-rays --configs lbvh,atrbvh:9:2 \
+    --csv "$T/re.csv" && { [ "$(hdr 'atrbvh: each build into the last')" -eq 1 ] ||
+    fail "bench header does not say it rebuilds"; }
+run 0 bench "$SCENE" --repeat 3 --no-rays --configs lbvh,atrbvh:9:2 --fresh \
+    --csv "$T/fr.csv" && { [ "$(hdr 'atrbvh: each build after the last tree is freed')" -eq 1 ] ||
+    fail "bench --fresh header does not say so"; }
+python3 - "$T/re.csv" "$T/fr.csv" <<'PY' || fail "bench: --fresh and rebuilding differ"
+import csv, sys
+keys = ("sah", "nodes", "leaves", "peak_bytes")
+a, b = ([{k: r[k] for k in ("method", "treelet_size") + keys}
+         for r in csv.DictReader(open(f)) if r["method"] in ("lbvh", "atrbvh")]
+        for f in sys.argv[1:])
+assert len(a) == 2 and a == b, (a, b)
+PY
+checks=$((checks + 1))
+
 # --methods x --treelet x --rounds, no rays
 run 0 bench "$SCENE" --repeat 1 --no-rays --methods atrbvh,lbvh --treelet 5,7 \
     --rounds 1,2 --csv "$T/m.csv" &&

@@ -120,7 +120,7 @@ RUNS=$T/runs
 mkdir -p "$RUNS" || exit 99
 for r in b a; do cp "$OUT/speed.csv" "$RUNS/$r-speed.csv" || exit 99; done
 cp "$OUT/speed.csv" "$RUNS/lone-speed.csv" || exit 99
-printf 'date: 2026-01-02 00:00 UTC\ncpu: Test CPU, 2 cores\nload before: 1 2 3\nPOCL_AFFINITY: 1\nsteal during the run: 2.5%% of the CPU time (5 of 200 ticks)\n' >"$RUNS/a-machine.txt"
+printf 'date: 2026-01-02 00:00 UTC\ncpu: Test CPU, 2 cores\nload before: 1 2 3\nPOCL_AFFINITY: 1\nsteal during the run: 2.5%% of the CPU time (5 of 200 ticks)\natrbvh builds: rebuild (each into the last tree, atrbvh_rebuild)\n' >"$RUNS/a-machine.txt"
 printf 'date: 2026-01-01 00:00 UTC\ncpu: Test CPU, 2 cores\nload before: 0 0 0\n' >"$RUNS/b-machine.txt"
 printf '# before\n<!-- BEGIN RUNS -->\nold text\n<!-- END RUNS -->\n# after\n' >"$T/runs.md"
 checks=$((checks + 1))
@@ -143,9 +143,11 @@ every = "yes" if all(a / b <= g for a, b, g in want) else "no"
 lines = [l for l in text.splitlines() if l.startswith("| a |") or l.startswith("| b |")]
 assert [l.split("|")[1].strip() for l in lines] == ["b", "a"], lines  # by date
 assert "lone" not in text, "a CSV without its machine file was counted"
-for l, load, steal, pin in zip(lines, ["0 0 0", "1 2 3"], ["-", "2.5%"], ["-", "1"]):
+# (a run without the builds line freed its last tree first: "fresh")
+for l, load, steal, pin, builds in zip(lines, ["0 0 0", "1 2 3"], ["-", "2.5%"],
+                                       ["-", "1"], ["fresh", "rebuild"]):
     got = [c.strip() for c in l.strip("|").split("|")]
-    assert got[2:] == ["Test CPU", load, steal, pin] + cells + [every], (got, cells)
+    assert got[2:] == ["Test CPU", load, steal, pin, builds] + cells + [every], (got, cells)
 host = [l for l in text.splitlines() if l.startswith("* **Test CPU**")]
 assert host and ("2 runs, %d with every cell met" % (2 if every == "yes" else 0)) in host[0], host
 assert "LBVH / low %d of 2" % (2 * (want[0][0] / want[0][1] <= 0.8)) in host[0], host

@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [13.4697072:211.689315]
-set xtics (20, 50, 100, 200)
+set xrange [10.1477585:197.447547]
+set xtics (20, 50, 100)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 14.8451578,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 40.1972386,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 44.2370371,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 48.9946937,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 34.7687804,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 72.633957,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 80.0264375,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 45.0359992,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 31.4835091,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 122.213189,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 85.0227923,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 19.7423701,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 56.5188802,36.836494 left font ',8' noenhanced front
+set label 'LBVH' at 11.2686065,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 29.3913602,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 30.8757079,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 35.4602556,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 27.359587,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 53.7015964,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 62.0449839,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 31.2302474,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 24.5433742,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 109.238567,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 75.9653378,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 13.8328233,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 39.0397968,36.836494 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
