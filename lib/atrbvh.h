@@ -342,7 +342,7 @@ ATRBVH_API atrbvh_status atrbvh_build(const atrbvh_geometry *geometry,
  * (NULL: a plain build), for a caller that builds again and again (a
  * frame at a time, as an Embree user rebuilds into one BVH object).  Its
  * node and index arrays are reused where they are large enough (the
- * build's own arrays, then the output's; atrbvh_rebuild(3)), so that the
+ * build's own arrays or the output's; atrbvh_rebuild(3)), so that the
  * build writes into memory already in use rather than new pages, which
  * the system zeroes as they are first written; the tree is the one
  * atrbvh_build makes, to the bit.  The old BVH is freed whatever the

@@ -573,7 +573,8 @@ END_TEST
  * sphere moved by 0, 4, 8 and 12 along x), and needs fewer new bytes: its
  * primitive indices go in the old tree's index array, and an LBVH's nodes
  * in the old tree's node array, through the node box slot that the bounds
- * stage writes (lib/cpu/backend.c's begin, collapse.c).  Each frame is
+ * stage writes (lib/cpu/backend.c's begin, collapse.c), as do an
+ * optimised tree's on a handle (straight to the output).  Each frame is
  * built twice on its own handle (or twice without one): freed then built,
  * and rebuilt into the last frame's tree; the second allocates at least
  * those arrays' bytes less.  Without a handle its peak, above what was
@@ -622,7 +623,7 @@ START_TEST(rebuild_same_tree_fewer_bytes)
         atrbvh_bvh_nodes(re, &nodes);
         atrbvh_bvh_primitive_indices(re, &prims);
         reused = prims * sizeof(uint32_t) +
-                 (lbvh ? nodes * sizeof(atrbvh_node) : 0);
+                 (lbvh || handle ? nodes * sizeof(atrbvh_node) : 0);
         atrbvh_bvh_free(plain);
         tu_alloc.total_bytes = 0;
         o.device = d[0];

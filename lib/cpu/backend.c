@@ -163,13 +163,21 @@ static atrbvh_status cpu_begin(atrbvh_device *dev, atrbvh_i_run *run,
     if (run->recycled_nodes) {
         /* atrbvh_rebuild: the old tree's nodes become the node box slot
          * when they hold its reserve (an LBVH of the same scene's: the
-         * block then goes on to the new output, collapse.c), else they
-         * go now: held to the output, they would raise the peak of the
-         * stages before it (the plan above) by their size */
-        if (!atrbvh_i_scratch_adopt(c->scratch, CPU_BOX, run->recycled_nodes,
-                                    run->recycled_node_bytes))
+         * block then goes on to the new output, collapse.c).  Else, on a
+         * handle, an optimised tree's output may take them (the pipeline):
+         * its layout holds the handle's slots, about as much as the
+         * stages before it (the plan above), so holding them that long
+         * hardly raises the peak; otherwise they go now, as held to the
+         * output they would raise the peak of those stages by their
+         * size. */
+        if (atrbvh_i_scratch_adopt(c->scratch, CPU_BOX, run->recycled_nodes,
+                                   run->recycled_node_bytes))
+            run->recycled_nodes = NULL;
+        else if (c->scratch->transient ||
+                 run->cfg->method == ATRBVH_METHOD_LBVH) {
             atrbvh_i_free(run->recycled_nodes);
-        run->recycled_nodes = NULL;
+            run->recycled_nodes = NULL;
+        }
     }
     return ATRBVH_OK;
 }
