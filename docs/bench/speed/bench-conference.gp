@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [10.1477585:197.447547]
-set xtics (20, 50, 100)
+set xrange [10.6016421:263.522052]
+set xtics (20, 50, 100, 200)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 11.2686065,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 29.3913602,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 30.8757079,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 35.4602556,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 27.359587,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 53.7015964,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 62.0449839,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 31.2302474,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 24.5433742,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 109.238567,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 75.9653378,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 13.8328233,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 39.0397968,36.836494 left font ',8' noenhanced front
+set label 'LBVH' at 14.4485066,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 32.6981951,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 33.0104806,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 38.3970259,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 28.6101016,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 58.18962,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 69.0088149,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 33.7679317,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 27.596901,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 138.667186,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 93.865515,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 17.9168713,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 51.4212784,39.3747167 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
