@@ -74,6 +74,11 @@ int main(void)
     if (atrbvh_compare(bvh, copy, &err) != 0)
         return fail("compare", &err);
     atrbvh_free(data);
+    /* the same tree again, rebuilt into the loaded copy's memory */
+    if (atrbvh_rebuild(&g, &o, &copy, &err) != ATRBVH_OK)
+        return fail("rebuild", &err);
+    if (atrbvh_compare(bvh, copy, &err) != 0)
+        return fail("compare after rebuild", &err);
     atrbvh_bvh_free(copy);
 
     printf("consumer: libatrbvh %s, %zu triangles, %zu nodes, SAH %.3f, "
