@@ -507,9 +507,7 @@ atrbvh_status atrbvh_reoptimise(atrbvh_bvh *bvh,
     st = reopt_run(a.dev, bvh, &in, &req.cfg, &out, error);
     if (st == ATRBVH_OK) {
         /* Into the tree: its arrays when large enough, else new ones. */
-        size_t cap = bvh->node_bytes / sizeof *bvh->nodes > bvh->node_count
-                         ? bvh->node_bytes / sizeof *bvh->nodes
-                         : bvh->node_count;
+        const size_t cap = bvh->node_bytes / sizeof *bvh->nodes;
         if (cap < NODES_MOST(bvh)) {
             /* Once per tree: room for the largest tree (2n - 1 nodes),
              * so that later frames never allocate, whatever their node
@@ -530,8 +528,6 @@ atrbvh_status atrbvh_reoptimise(atrbvh_bvh *bvh,
             memcpy(bvh->nodes, out.nodes, out.node_count * sizeof *out.nodes);
             memcpy(bvh->prim_indices, out.prim_indices,
                    out.prim_count * sizeof *out.prim_indices);
-            if (!bvh->node_bytes) /* (the allocation, whatever the count) */
-                bvh->node_bytes = bvh->node_count * sizeof *bvh->nodes;
             bvh->node_count = out.node_count;
             bvh->stats = out.stats; /* measured (reopt_run) */
             bvh->stats_pending = 0;

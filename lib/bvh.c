@@ -15,19 +15,20 @@ static int holds(void *const *block, size_t bytes, size_t count, size_t size)
 }
 
 /* *block for `count` entries of `size` bytes when it holds them (*block
- * then NULL, its size into *taken), else a new array (*taken 0). */
+ * then NULL), else a new array; its bytes into *got (0 on failure). */
 static void *take_or_alloc(void **block, size_t bytes, size_t count,
-                           size_t size, size_t *taken)
+                           size_t size, size_t *got)
 {
     void *p;
-    *taken = 0;
     if (holds(block, bytes, count, size)) {
         p = *block;
         *block = NULL;
-        *taken = bytes;
+        *got = bytes;
         return p;
     }
-    return atrbvh_i_alloc_array(count, size);
+    p = atrbvh_i_alloc_array(count, size);
+    *got = p ? count * size : 0; /* (alloc_array checked the product) */
+    return p;
 }
 
 atrbvh_bvh *atrbvh_i_bvh_alloc_in(size_t node_count, size_t prim_count,

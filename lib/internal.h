@@ -109,9 +109,9 @@ struct atrbvh_bvh {
     atrbvh_stats stats;
     double stage_ms[ATRBVH_STAGE_COUNT];
     struct atrbvh_i_device_info *device; /* NULL unless built by OpenCL */
-    size_t node_bytes;    /* the node array's allocation in bytes, when
-                             above node_count's (atrbvh_reoptimise and
-                             atrbvh_rebuild reuse it); 0: node_count's */
+    size_t node_bytes;    /* the node array's allocation in bytes, at
+                             least node_count's (atrbvh_reoptimise and
+                             atrbvh_rebuild reuse it)                  */
     size_t split_prims;   /* a split tree (its leaves may share a
                              primitive): the distinct primitives it
                              references; 0: every primitive once       */

@@ -351,11 +351,8 @@ static int input_meets(const atrbvh_i_input *in, const void *q, size_t m)
  * the old tree is returned whole, to be freed after the build. */
 static atrbvh_bvh *recycle(atrbvh_i_run *run, atrbvh_bvh *old)
 {
-    /* (no product overflows: each array was allocated that large) */
-    const size_t node_bytes = old->node_bytes > old->node_count *
-                                                    sizeof *old->nodes
-                                  ? old->node_bytes
-                                  : old->node_count * sizeof *old->nodes,
+    /* (no overflow: the index array was allocated that large) */
+    const size_t node_bytes = old->node_bytes,
                  index_bytes = old->prim_count * sizeof *old->prim_indices;
     if (input_meets(&run->in, old->nodes, node_bytes) ||
         input_meets(&run->in, old->prim_indices, index_bytes))

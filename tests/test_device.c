@@ -23,6 +23,14 @@ static atrbvh_geometry soup(float **v, size_t n, uint64_t seed)
     return atrbvh_geometry_triangles(*v, 3 * n, NULL, n);
 }
 
+/* The scene's vertices into dst (3 floats each), moved by dx along x. */
+static void move_along_x(float *dst, const scene *sc, float dx)
+{
+    size_t i;
+    for (i = 0; i < sc->vertex_count * 3; i++)
+        dst[i] = sc->vertices[i] + (i % 3 == 0 ? dx : 0.0f);
+}
+
 START_TEST(open_specs)
 {
     atrbvh_device *d = NULL;
@@ -125,7 +133,6 @@ START_TEST(lbvh_outputs_own_their_nodes)
     atrbvh_error e;
     atrbvh_bvh *ref[3], *out[3];
     float *moved[3];
-    size_t i;
     int k, j;
     ck_assert_int_eq(scene_builtin("sphere", 20000, &sc, err, sizeof err), 0);
     atrbvh_build_options_init(&o);
@@ -135,8 +142,7 @@ START_TEST(lbvh_outputs_own_their_nodes)
     for (k = 0; k < 3; k++) {
         moved[k] = malloc(sc.vertex_count * 3 * sizeof *moved[k]);
         ck_assert_ptr_nonnull(moved[k]);
-        for (i = 0; i < sc.vertex_count * 3; i++)
-            moved[k][i] = sc.vertices[i] + (i % 3 == 0 ? 4.0f * (float)k : 0.0f);
+        move_along_x(moved[k], &sc, 4.0f * (float)k);
         g = atrbvh_geometry_triangles(moved[k], sc.vertex_count, sc.indices,
                                       sc.triangle_count);
         ref[k] = tu_build(&g, &o);
@@ -594,7 +600,7 @@ START_TEST(rebuild_same_tree_fewer_bytes)
     atrbvh_error e;
     atrbvh_bvh *plain = NULL, *re = NULL;
     float *moved;
-    size_t i, re_tree = 0; /* what `re` holds (without a handle) */
+    size_t re_tree = 0; /* what `re` holds (without a handle) */
     int k;
     ck_assert_int_eq(scene_builtin("sphere", 20000, &sc, err, sizeof err), 0);
     moved = malloc(sc.vertex_count * 3 * sizeof *moved);
@@ -613,8 +619,7 @@ START_TEST(rebuild_same_tree_fewer_bytes)
         size_t plain_bytes, re_bytes, nodes, prims, reused, before;
         size_t plain_peak, re_peak;
         atrbvh_bvh *ref;
-        for (i = 0; i < sc.vertex_count * 3; i++)
-            moved[i] = sc.vertices[i] + (i % 3 == 0 ? 4.0f * (float)k : 0.0f);
+        move_along_x(moved, &sc, 4.0f * (float)k);
         g = atrbvh_geometry_triangles(moved, sc.vertex_count, sc.indices,
                                       sc.triangle_count);
         o.device = NULL;
