@@ -483,6 +483,54 @@ START_TEST(in_place_and_copied_agree)
 }
 END_TEST
 
+/* The program text (cl/source.c): shared/treelet_arrays.inc, which
+ * shared/treelet.h includes twice (its private and scratch instances),
+ * stands in the text twice, each time where treelet.h includes it and
+ * nowhere else, followed by a #line that names treelet.h's next line; no
+ * include line is left.  The line numbers are checked against the text
+ * itself: treelet.h's lines before each insertion, counted from its
+ * #line, must be the ones the #line after it skips. */
+START_TEST(program_text_takes_inc_where_included)
+{
+    static const char inc[] = "#line 1 \"treelet_arrays.inc\"\n";
+    static const char head[] = "#line 1 \"treelet.h\"\n";
+    char *src = atrbvh_i_cl_source();
+    const char *p, *from;
+    unsigned long next = 1, lines, back;
+    int sites = 0;
+    ck_assert_ptr_nonnull(src);
+    for (p = src; *p; p = strchr(p, '\n') ? strchr(p, '\n') + 1 : p + strlen(p))
+        ck_assert_msg(strncmp(p, "#include \"", 10) != 0,
+                      "an include line is left in the program text");
+    from = strstr(src, head);
+    ck_assert_ptr_nonnull(from);
+    from += sizeof head - 1;
+    while ((p = strstr(from, inc)) != NULL) {
+        const char *q = from;
+        sites++;
+        /* treelet.h's lines before this site, from the last #line */
+        for (lines = 0; q < p; q++)
+            lines += *q == '\n';
+        /* the include line itself is replaced: the #line after the
+         * inserted text names the line after it */
+        q = strstr(p + sizeof inc - 1, "#line ");
+        ck_assert_ptr_nonnull(q);
+        ck_assert_int_eq(sscanf(q, "#line %lu \"treelet.h\"", &back), 1);
+        ck_assert_uint_eq(back, next + lines + 1);
+        /* the inserted text is the template's */
+        ck_assert(strstr(p, "ATRBVH_TA_FN(atrbvh_topo_write)") < q);
+        next = back;
+        from = strchr(q, '\n') + 1;
+    }
+    ck_assert_int_eq(sites, 2);
+    /* and nowhere else (not at its own place in the file list) */
+    for (sites = 0, p = src; (p = strstr(p, inc)) != NULL; p++)
+        sites++;
+    ck_assert_int_eq(sites, 2);
+    atrbvh_i_free(src);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("clreuse");
@@ -492,6 +540,7 @@ int main(void)
     tcase_add_test(tc, several_treelets_an_item_on_a_cpu_device);
     tcase_add_test(tc, launches_and_waits_per_build);
     tcase_add_test(tc, in_place_and_copied_agree);
+    tcase_add_test(tc, program_text_takes_inc_where_included);
     tcase_set_timeout(tc, 300);
     suite_add_tcase(s, tc);
     return tu_run(s);

@@ -641,14 +641,14 @@ START_TEST(agg_layout_fits)
             PART(area, n);
             PART(order, n);
             PART(ids, n);
-            PART(id_of, n);
+            PART(node_of, 2u * n);
             PART(stack, n);
         } else {
             ck_assert_ptr_null(s.internal);
             ck_assert_ptr_null(s.area);
             ck_assert_ptr_null(s.order);
             ck_assert_ptr_null(s.ids);
-            ck_assert_ptr_null(s.id_of);
+            ck_assert_ptr_null(s.node_of);
             ck_assert_ptr_null(s.stack);
         }
 #undef PART

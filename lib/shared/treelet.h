@@ -22,6 +22,11 @@
  *   atrbvh_treelet_evaluate  - exact boxes, counts, costs of a topology
  *   atrbvh_treelet_write     - write it back, reusing the internal ids
  *
+ * The formation steps, the pre-order and the write-back are written once
+ * in shared/treelet_arrays.inc, included twice below: over the private
+ * arrays of a treelet of up to ATRBVH_TREELET_MAX leaves, and over the
+ * worker's scratch for larger ATRBVH treelets.
+ *
  * A topology is n-1 local internal nodes; local node k has children
  * left[k], right[k] given as codes: c < n is treelet leaf c, c >= n is
  * local internal node c - n.  `root` is the local root.
@@ -156,18 +161,6 @@ typedef struct atrbvh_treelet_topo {
 #else
 #define ATRBVH_TREELET_PREFETCH(t, x) ((void)0)
 #endif
-ATRBVH_FN void atrbvh_treelet_form_first(const atrbvh_treelet_tree *t,
-                                         atrbvh_u32 root, atrbvh_treelet *tl)
-{
-    tl->internal[0] = root;
-    tl->leaf[0] = t->left[root];
-    tl->leaf[1] = t->right[root];
-    ATRBVH_TREELET_PREFETCH(t, tl->leaf[0]);
-    ATRBVH_TREELET_PREFETCH(t, tl->leaf[1]);
-    tl->pend = 0; /* slots 0 and 1 wait for the first step */
-    tl->n = 2;
-}
-
 /* A slot's area for the formation: its node's box area, or -1 for a slot
  * that is not an internal BVH node (areas are never negative, so "the
  * first expandable slot, then strictly larger" is one strict > against a
@@ -178,34 +171,58 @@ ATRBVH_FN double atrbvh_treelet_slot_area(const atrbvh_treelet_tree *t,
     return x < t->n_internal ? atrbvh_box_area(t->box[x]) : -1.0;
 }
 
-ATRBVH_FN int atrbvh_treelet_form_next(const atrbvh_treelet_tree *t,
-                                       atrbvh_treelet *tl, double *area)
+/* The formation, pre-order and write-back over private arrays (the _p
+ * functions: atrbvh_treelet, atrbvh_treelet_topo) and over the scratch
+ * (the _g functions, section "ATRBVH, any size"): one text,
+ * shared/treelet_arrays.inc, for the two address spaces. */
+#ifdef __OPENCL_VERSION__
+#define ATRBVH_TA __private
+#else
+#define ATRBVH_TA
+#endif
+/* These and the private path's wrappers below inlined on the CPU: GCC
+ * otherwise folds the two identical C instances into one function, calls
+ * it out of line and keeps the wrappers out of line too (+1.5%
+ * instructions in ATRBVH(9,2)'s optimise stage on sibenik, callgrind),
+ * where the code they replace was inlined. */
+#if !defined(__OPENCL_VERSION__) && (defined(__GNUC__) || defined(__clang__))
+#define ATRBVH_TREELET_INLINE static inline __attribute__((always_inline))
+#else
+#define ATRBVH_TREELET_INLINE ATRBVH_FN
+#endif
+#define ATRBVH_TA_FN(f) f##_p
+#define ATRBVH_TA_FLAT(flat, k) (((flat)[0] >> (k)) & 1u)
+#include "treelet_arrays.inc"
+#undef ATRBVH_TA
+#undef ATRBVH_TA_FN
+#undef ATRBVH_TA_FLAT
+#define ATRBVH_TA ATRBVH_GLOBAL
+#define ATRBVH_TA_FN(f) f##_g
+#define ATRBVH_TA_FLAT(flat, k) ((flat)[k])
+#include "treelet_arrays.inc"
+#undef ATRBVH_TA
+#undef ATRBVH_TA_FN
+#undef ATRBVH_TA_FLAT
+
+ATRBVH_TREELET_INLINE void
+atrbvh_treelet_form_first(const atrbvh_treelet_tree *t, atrbvh_u32 root,
+                          atrbvh_treelet *tl)
 {
-    const atrbvh_u32 m = tl->n;
-    atrbvh_u32 best = ATRBVH_U32_MAX, node, child, k;
-    double best_area = -0.5;
-    /* the last step's two slots */
-    area[tl->pend] = atrbvh_treelet_slot_area(t, tl->leaf[tl->pend]);
-    area[m - 1u] = atrbvh_treelet_slot_area(t, tl->leaf[m - 1u]);
-    /* best moves on strict >; the maximum in place (MAXSD; equal areas
-     * have equal bits: never -0 nor NaN). */
-    for (k = 0; k < m; k++) {
-        const double a = area[k];
-        best = a > best_area ? k : best;
-        best_area = best_area > a ? best_area : a;
-    }
+    atrbvh_form_first_p(t, root, tl->leaf, tl->internal);
+    tl->pend = 0; /* slots 0 and 1 wait for the first step */
+    tl->n = 2;
+}
+
+ATRBVH_TREELET_INLINE int
+atrbvh_treelet_form_next(const atrbvh_treelet_tree *t, atrbvh_treelet *tl,
+                         double *area)
+{
+    const atrbvh_u32 best =
+        atrbvh_form_step_p(t, tl->n, tl->pend, tl->leaf, tl->internal, area);
     if (best == ATRBVH_U32_MAX)
         return 0;
-    node = tl->leaf[best];
-    tl->internal[m - 1] = node;
-    child = t->left[node];
-    tl->leaf[best] = child;
-    ATRBVH_TREELET_PREFETCH(t, child);
-    child = t->right[node];
-    tl->leaf[m] = child;
-    ATRBVH_TREELET_PREFETCH(t, child);
     tl->pend = best;
-    tl->n = m + 1u;
+    tl->n++;
     return 1;
 }
 
@@ -1239,7 +1256,7 @@ typedef struct atrbvh_agg_scratch {
     ATRBVH_GLOBAL double *area;      /* n: formation areas                */
     ATRBVH_GLOBAL atrbvh_u32 *order; /* n: the merges in pre-order        */
     ATRBVH_GLOBAL atrbvh_u32 *ids;   /* n: write-back                     */
-    ATRBVH_GLOBAL atrbvh_u32 *id_of;
+    ATRBVH_GLOBAL atrbvh_u32 *node_of; /* 2n                              */
     ATRBVH_GLOBAL atrbvh_u32 *stack; /* n: pre-order walk                 */
     atrbvh_u32 w;
 } atrbvh_agg_scratch;
@@ -1293,7 +1310,7 @@ ATRBVH_FN atrbvh_u64 atrbvh_agg_layout(ATRBVH_GLOBAL unsigned char *base,
     ATRBVH_AGG_PART(area, double, large);
     ATRBVH_AGG_PART(order, atrbvh_u32, large);
     ATRBVH_AGG_PART(ids, atrbvh_u32, large);
-    ATRBVH_AGG_PART(id_of, atrbvh_u32, large);
+    ATRBVH_AGG_PART(node_of, atrbvh_u32, 2u * large);
     ATRBVH_AGG_PART(stack, atrbvh_u32, large);
 #undef ATRBVH_AGG_PART
     return o;
@@ -1918,26 +1935,14 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
 #endif
 
 /* ------------------------------------------------------ evaluate, write */
-/* Fills topo->order: the local nodes in pre-order from the root (explicit
- * stack), left subtree first.  A child is pushed by writing it on top
- * and moving the top only when it is a local node: no branch on the
- * topology (they mispredicted; the stack never holds more than n - 1,
- * so the write past the top stays inside it). */
-ATRBVH_FN void atrbvh_treelet_preorder(atrbvh_u32 n, atrbvh_treelet_topo *topo)
+/* Fills topo->order: the local nodes in pre-order from the root, left
+ * subtree first (atrbvh_topo_preorder). */
+ATRBVH_TREELET_INLINE void atrbvh_treelet_preorder(atrbvh_u32 n,
+                                                   atrbvh_treelet_topo *topo)
 {
     atrbvh_u32 stack[ATRBVH_TREELET_MAX];
-    atrbvh_u32 sp = 0, q = 0;
-    stack[sp++] = topo->root;
-    while (sp > 0) {
-        const atrbvh_u32 node = stack[--sp];
-        const atrbvh_u32 l = topo->left[node], r = topo->right[node];
-        topo->order[q++] = node;
-        /* Right pushed first so the left subtree comes first. */
-        stack[sp] = r - n;
-        sp += r >= n ? 1u : 0u;
-        stack[sp] = l - n;
-        sp += l >= n ? 1u : 0u;
-    }
+    atrbvh_topo_preorder_p(n, topo->root, topo->left, topo->right, topo->order,
+                           stack);
 }
 
 /* Fills topo->order (pre-order from the root, explicit stack) and, bottom
@@ -1971,56 +1976,18 @@ ATRBVH_FN double atrbvh_treelet_evaluate(const atrbvh_cost_params *p,
     return topo->cost[topo->root];
 }
 
-/* Writes an evaluated topology back into the tree.  Internal ids are
- * reused: the treelet root keeps its id (so nothing above it changes);
- * the other n-2 ids, sorted ascending, go to the other local nodes in
- * pre-order.  The numbering is therefore a pure function of the treelet.
- * Children, parents of the children, boxes, counts and costs are written;
- * the root's parent is left alone. */
-ATRBVH_FN void atrbvh_treelet_write(const atrbvh_treelet_tree *t,
-                                    const atrbvh_treelet *tl,
-                                    const atrbvh_treelet_topo *topo)
+/* Writes an evaluated topology back into the tree (atrbvh_topo_write:
+ * the root keeps its id, the other ids go in ascending order to the
+ * local nodes in pre-order). */
+ATRBVH_TREELET_INLINE void
+atrbvh_treelet_write(const atrbvh_treelet_tree *t, const atrbvh_treelet *tl,
+                     const atrbvh_treelet_topo *topo)
 {
     atrbvh_u32 ids[ATRBVH_TREELET_MAX - 1];
-    /* the node of each local code: leaves 0 .. n-1, then the internal
-     * nodes (id_of), so that a child's node is one load, not a branch on
-     * whether the child is a leaf, which was mispredicted (cachegrind) */
     atrbvh_u32 node_of[2u * ATRBVH_TREELET_MAX - 1u];
-    const atrbvh_u32 n = tl->n;
-    atrbvh_u32 *const id_of = node_of + n;
-    atrbvh_u32 k, q;
-    for (k = 0; k < n; k++)
-        node_of[k] = tl->leaf[k];
-    /* internal[1..n-2] in ascending order: each id goes to its rank, the
-     * number of smaller ones (the ids are distinct), counted without a
-     * branch (an insertion sort's comparisons mispredicted: 40% of this
-     * function's time, ATRBVH(9,2) on dabrovic_sponza) */
-    for (k = 1; k + 1u < n; k++) {
-        const atrbvh_u32 v = tl->internal[k];
-        atrbvh_u32 rank = 0;
-        for (q = 1; q + 1u < n; q++)
-            rank += tl->internal[q] < v ? 1u : 0u;
-        ids[rank] = v;
-    }
-    id_of[topo->order[0]] = tl->internal[0];
-    for (k = 1; k + 1u < n; k++)
-        id_of[topo->order[k]] = ids[k - 1u];
-    for (k = 0; k + 1u < n; k++) {
-        atrbvh_u32 id = id_of[k];
-        atrbvh_u32 l = topo->left[k], r = topo->right[k];
-        atrbvh_u32 lid = node_of[l], rid = node_of[r];
-        t->left[id] = lid;
-        t->right[id] = rid;
-        t->parent[lid] = id;
-        t->parent[rid] = id;
-        t->box[id] = topo->box[k];
-        t->count[id] = topo->count[k];
-        t->cost[id] = topo->cost[k];
-    }
-    /* the collapse decisions, the producer's (topo->flat) */
-    if (t->flat)
-        for (k = 0; k + 1u < n; k++)
-            t->flat[id_of[k]] = (unsigned char)((topo->flat >> k) & 1u);
+    atrbvh_topo_write_p(t, tl->n, tl->leaf, tl->internal, topo->order,
+                        topo->left, topo->right, topo->box, topo->count,
+                        topo->cost, &topo->flat, ids, node_of);
 }
 
 /* Refreshes an internal node's cost from its children (box and count do
@@ -2390,46 +2357,22 @@ ATRBVH_FN int atrbvh_treelet_process_marked(const atrbvh_treelet_tree *t,
  * (atrbvh_agg_layout, sized from the largest size the build asks for: a
  * 128-leaf treelet needs 8128 distances and about 20 KiB besides, which
  * no private array of a work-item should hold).  Its agglomeration is
- * the same atrbvh_agg_cluster; its formation and write-back are
- * atrbvh_treelet_form, atrbvh_treelet_preorder and atrbvh_treelet_write
- * step for step (same operations, same order, same ties), so for a size
- * both paths accept they give the same tree (the tests compare them). */
+ * the same atrbvh_agg_cluster; its formation, pre-order and write-back
+ * are the scratch's instance of shared/treelet_arrays.inc (the _g
+ * functions), the text of the private path's, so for a size both paths
+ * accept they give the same tree (the tests compare them). */
 
 /* atrbvh_treelet_form into the scratch. */
 ATRBVH_FN atrbvh_u32 atrbvh_agg_form(const atrbvh_treelet_tree *t,
                                      atrbvh_u32 root, atrbvh_u32 n,
                                      const atrbvh_agg_scratch *s)
 {
-    ATRBVH_GLOBAL double *area = s->area;
-    atrbvh_u32 m = 2, k;
-    s->internal[0] = root;
-    s->leaf[0] = t->left[root];
-    s->leaf[1] = t->right[root];
-    area[0] = s->leaf[0] < t->n_internal ? atrbvh_box_area(t->box[s->leaf[0]])
-                                         : -1.0;
-    area[1] = s->leaf[1] < t->n_internal ? atrbvh_box_area(t->box[s->leaf[1]])
-                                         : -1.0;
+    atrbvh_u32 m = 2, pend = 0;
+    atrbvh_form_first_g(t, root, s->leaf, s->internal);
     while (m < n) {
-        atrbvh_u32 best = ATRBVH_U32_MAX, node, child;
-        double best_area = -0.5;
-        for (k = 0; k < m; k++) {
-            if (area[k] > best_area) {
-                best = k;
-                best_area = area[k];
-            }
-        }
-        if (best == ATRBVH_U32_MAX)
+        pend = atrbvh_form_step_g(t, m, pend, s->leaf, s->internal, s->area);
+        if (pend == ATRBVH_U32_MAX)
             break;
-        node = s->leaf[best];
-        s->internal[m - 1] = node;
-        child = t->left[node];
-        s->leaf[best] = child;
-        area[best] = child < t->n_internal ? atrbvh_box_area(t->box[child])
-                                           : -1.0;
-        child = t->right[node];
-        s->leaf[m] = child;
-        area[m] = child < t->n_internal ? atrbvh_box_area(t->box[child])
-                                        : -1.0;
         m++;
     }
     return m;
@@ -2440,48 +2383,10 @@ ATRBVH_FN atrbvh_u32 atrbvh_agg_form(const atrbvh_treelet_tree *t,
 ATRBVH_FN void atrbvh_agg_write(const atrbvh_treelet_tree *t, atrbvh_u32 n,
                                 const atrbvh_agg_scratch *s)
 {
-    ATRBVH_GLOBAL atrbvh_u32 *stack = s->stack;
-    ATRBVH_GLOBAL atrbvh_u32 *ids = s->ids;
-    ATRBVH_GLOBAL atrbvh_u32 *id_of = s->id_of;
-    atrbvh_u32 sp = 0, q = 0, k;
-    stack[sp++] = n - 2u;
-    while (sp > 0) {
-        atrbvh_u32 node = stack[--sp];
-        s->order[q++] = node;
-        if (s->right[node] >= n)
-            stack[sp++] = s->right[node] - n;
-        if (s->left[node] >= n)
-            stack[sp++] = s->left[node] - n;
-    }
-    for (k = 1; k + 1u < n; k++) {
-        atrbvh_u32 v = s->internal[k];
-        q = k - 1u;
-        while (q > 0u && ids[q - 1u] > v) {
-            ids[q] = ids[q - 1u];
-            q--;
-        }
-        ids[q] = v;
-    }
-    id_of[s->order[0]] = s->internal[0];
-    for (k = 1; k + 1u < n; k++)
-        id_of[s->order[k]] = ids[k - 1u];
-    for (k = 0; k + 1u < n; k++) {
-        atrbvh_u32 id = id_of[k];
-        atrbvh_u32 l = s->left[k], r = s->right[k];
-        atrbvh_u32 lid = l < n ? s->leaf[l] : id_of[l - n];
-        atrbvh_u32 rid = r < n ? s->leaf[r] : id_of[r - n];
-        t->left[id] = lid;
-        t->right[id] = rid;
-        t->parent[lid] = id;
-        t->parent[rid] = id;
-        t->box[id] = s->tbox[k];
-        t->count[id] = s->tcount[k];
-        t->cost[id] = s->tcost[k];
-    }
-    /* the collapse decisions (t->flat kept), the agglomeration's */
-    if (t->flat)
-        for (k = 0; k + 1u < n; k++)
-            t->flat[id_of[k]] = (unsigned char)s->flat[k];
+    atrbvh_topo_preorder_g(n, n - 2u, s->left, s->right, s->order, s->stack);
+    atrbvh_topo_write_g(t, n, s->leaf, s->internal, s->order, s->left,
+                        s->right, s->tbox, s->tcount, s->tcost, s->flat,
+                        s->ids, s->node_of);
 }
 
 /* atrbvh_treelet_process for ATRBVH with every array in the scratch. */
