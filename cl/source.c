@@ -83,8 +83,8 @@ static char *override_file(const char *name, size_t *len)
  * Other include lines name files the program holds once, in order. */
 static int included_file(const char *line, size_t len)
 {
-    const char *name = line + 10, *end;
-    size_t nl;
+    const char *name = line + 10, *end, *b;
+    size_t nl, bl;
     int k;
     end = memchr(name, '"', len - 10);
     if (!end)
@@ -92,15 +92,15 @@ static int included_file(const char *line, size_t len)
     nl = (size_t)(end - name);
     if (nl < 4 || memcmp(end - 4, ".inc", 4) != 0)
         return -1;
-    for (k = 0; k < ATRBVH_CL_FILE_COUNT; k++) {
-        const char *b = strrchr(name, '/');
-        size_t bl;
-        b = b && b < end ? b + 1 : name;
-        bl = (size_t)(end - b);
+    /* the base name: the files are embedded by theirs */
+    b = end;
+    while (b > name && b[-1] != '/')
+        b--;
+    bl = (size_t)(end - b);
+    for (k = 0; k < ATRBVH_CL_FILE_COUNT; k++)
         if (strlen(atrbvh_cl_files[k].name) == bl &&
             memcmp(atrbvh_cl_files[k].name, b, bl) == 0)
             return k;
-    }
     return -1;
 }
 
