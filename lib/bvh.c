@@ -43,12 +43,20 @@ atrbvh_bvh *atrbvh_i_bvh_alloc_in(size_t node_count, size_t prim_count,
         blocks = &none;
     if (node_count) {
         void **nb = blocks->nodes;
-        size_t nbytes = blocks->node_bytes, unused;
+        size_t nbytes = blocks->node_bytes, unused, room = node_count;
         if (!holds(nb, nbytes, node_count, sizeof *b->nodes)) {
             nb = blocks->nodes2;
             nbytes = blocks->node_bytes2;
+            /* A rebuild whose old nodes are too few for this tree: room
+             * for an eighth more, so that the next frames, whose node
+             * counts move a little either way, find the array large
+             * enough (atrbvh_reoptimise keeps room for the largest tree
+             * for the same reason).  (No overflow: node_count is below
+             * 2^32.) */
+            if (nb && *nb && !holds(nb, nbytes, node_count, sizeof *b->nodes))
+                room = node_count + node_count / 8u;
         }
-        b->nodes = take_or_alloc(nb, nbytes, node_count, sizeof *b->nodes,
+        b->nodes = take_or_alloc(nb, nbytes, room, sizeof *b->nodes,
                                  &b->node_bytes);
         b->prim_indices = take_or_alloc(blocks->indices, blocks->index_bytes,
                                         prim_count, sizeof *b->prim_indices,

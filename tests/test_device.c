@@ -688,6 +688,70 @@ START_TEST(rebuild_same_tree_fewer_bytes)
 }
 END_TEST
 
+/* Frames whose trees have more nodes or fewer (random soups of T
+ * triangles, one seed a frame, ATRBVH(9,2) on a handle): a rebuild whose
+ * old node array is too small allocates one with room for an eighth
+ * more nodes, and the rebuilds whose trees fit in it allocate no node
+ * array (fewer bytes than half of one); every tree is atrbvh_build's. */
+START_TEST(rebuild_leaves_room)
+{
+    atrbvh_build_options o;
+    atrbvh_device *d;
+    atrbvh_error e;
+    atrbvh_bvh *re = NULL;
+    size_t room = 0; /* the node array's entries, as the test expects */
+    int k, grew = 0, fit = 0;
+    char msg[256];
+    atrbvh_build_options_init(&o);
+    o.max_leaf_size = 8;
+    o.threads = 2;
+    atrbvh_set_allocator(sized_malloc, sized_free);
+    tu_alloc.outstanding = 0;
+    ck_assert_int_eq(atrbvh_device_open("cpu", &d, &e), ATRBVH_OK);
+    for (k = 0; k < 12; k++) {
+        float *v;
+        atrbvh_geometry g = soup(&v, T, 100u + (uint64_t)k);
+        atrbvh_bvh *ref;
+        size_t nodes, bytes;
+        o.device = NULL;
+        ref = tu_build(&g, &o);
+        o.device = d;
+        tu_alloc.total_bytes = 0;
+        ck_assert_int_eq(atrbvh_rebuild(&g, &o, &re, &e), ATRBVH_OK);
+        bytes = tu_alloc.total_bytes;
+        ck_assert_msg(tu_same_bvh(ref, re, msg, sizeof msg), "frame %d: %s",
+                      k, msg);
+        atrbvh_bvh_nodes(re, &nodes);
+        if (k == 0) {
+            room = nodes; /* a first build: exactly its nodes */
+        } else if (nodes <= room) {
+            ck_assert_msg(bytes < nodes * sizeof(atrbvh_node) / 2,
+                          "frame %d: %lu nodes in room for %lu, yet %lu "
+                          "bytes allocated", k, (unsigned long)nodes,
+                          (unsigned long)room, (unsigned long)bytes);
+            fit++;
+        } else {
+            ck_assert_msg(bytes >= (nodes + nodes / 8) * sizeof(atrbvh_node),
+                          "frame %d: %lu nodes, more than %lu: %lu bytes "
+                          "allocated, not room for an eighth more", k,
+                          (unsigned long)nodes, (unsigned long)room,
+                          (unsigned long)bytes);
+            room = nodes + nodes / 8;
+            grew++;
+        }
+        atrbvh_bvh_free(ref);
+        free(v);
+    }
+    /* (the soups' trees grew at least once, and fitted after) */
+    ck_assert_int_gt(grew, 0);
+    ck_assert_int_gt(fit, 0);
+    atrbvh_bvh_free(re);
+    atrbvh_device_close(d);
+    atrbvh_set_allocator(NULL, NULL);
+    ck_assert_int_eq(tu_alloc.outstanding, 0);
+}
+END_TEST
+
 /* Boxes read from the old tree's own nodes (a BVH over a BVH's nodes):
  * its arrays are not reused while the build reads them, and the tree is
  * the one built from a copy of those boxes, for an LBVH (whose node box
@@ -1185,6 +1249,7 @@ static Suite *suite(void)
     tcase_add_test(t, large_leaves_gathered_alike);
     tcase_add_loop_test(t, allocation_failure_lbvh_and_invalid, 0, 2);
     tcase_add_loop_test(t, rebuild_same_tree_fewer_bytes, 0, 4);
+    tcase_add_test(t, rebuild_leaves_room);
     tcase_add_loop_test(t, rebuild_reads_old_nodes, 0, 2);
     tcase_add_loop_test(t, rebuild_frees_old_on_failure, 0, 2);
     tcase_add_test(t, threads_own_and_shared_devices);
