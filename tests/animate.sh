@@ -74,6 +74,30 @@ assert d["summary"][1]["rebuilds"] == 0
 run 0 animate builtin:wave:2000 --frames 5 --policy auto --drift 1.0000001 --json &&
     py 'assert d["summary"][0]["rebuilds"] >= 2, d["summary"]'
 
+# --alloc: the bytes the library allocates in each update.  On the open
+# device, from the third frame on (the first refit and re-optimisation
+# take their scratch), a refit allocates nothing, a re-optimisation no
+# array (a call state of a few hundred bytes; an array of the 2000
+# triangles is 8 KB or more), and a rebuild into the last tree less
+# than the index array alone (its arrays are reused).  Without --alloc
+# no frame says.
+run 0 animate builtin:wave:2000 --frames 5 --policy refit,reoptimise:1,rebuild --alloc --json &&
+    py '
+n = d["triangles"]
+f = lambda p: [e["alloc_bytes"] for e in d["frames"] if e["policy"] == p]
+r, o, b = f("refit"), f("reoptimise:1"), f("rebuild")
+assert b[0] > 4 * n, b
+assert r[2:] == [0] * 3, r
+assert max(o[2:]) < 1024, o
+assert max(b[2:]) < 4 * n, b
+assert [s["max_alloc_bytes"] for s in d["summary"]] == [max(r[1:]), max(o[1:]), max(b[1:])], d["summary"]
+'
+run 0 animate builtin:wave:2000 --frames 2 --policy refit --json &&
+    py 'assert all("alloc_bytes" not in e for e in d["frames"]), d["frames"]'
+run 0 animate builtin:wave:2000 --frames 3 --policy refit,rebuild --alloc &&
+    grep -q 'max bytes' "$T/out" ||
+    fail "animate --alloc: no bytes in the text output: $(cat "$T/out")"
+
 # Text output: a row per frame and the summary.
 run 0 animate builtin:traffic:2000 --frames 3 --policy refit,rebuild &&
     grep -q '^    2 ' "$T/out" && grep -q '^rebuild ' "$T/out" ||

@@ -5,7 +5,7 @@
  *
  *   refit          atrbvh_refit every frame (topology of frame 0)
  *   reoptimise:N   atrbvh_reoptimise with N rounds (it refits itself)
- *   rebuild        atrbvh_build every frame
+ *   rebuild        atrbvh_rebuild every frame (into the last frame's tree)
  *   auto           atrbvh_refit; a rebuild when the drift (stats.sah /
  *                  stats.sah_built) passes --drift
  *
@@ -13,6 +13,9 @@
  * also each SAH relative to the rebuild's of the same frame.  --json
  * prints them as one object, --plot DIR draws SAH and time per frame
  * (gnuplot started without a shell; every file through outfile.h).
+ * --alloc counts the bytes the library asks its allocator for in each
+ * update (a counting allocator through atrbvh_set_allocator, installed
+ * before the device opens and removed after it closes).
  */
 #define _POSIX_C_SOURCE 200809L
 #include "config.h"
@@ -48,6 +51,7 @@ typedef struct policy {
     char name[32];
     atrbvh_bvh *bvh;
     double *sah, *ms;
+    unsigned long long *bytes; /* --alloc: allocated in the update */
     unsigned char *action; /* index into action_names */
     unsigned rebuilds;
 } policy;
@@ -58,7 +62,18 @@ typedef struct anim_args {
     const char *policies;
     double drift;
     const char *plot;
+    int alloc;
 } anim_args;
+
+/* --alloc: every allocation the library makes, counted (its blocks are
+ * plain malloc blocks, freed by free). */
+static unsigned long long alloc_bytes;
+
+static void *counting_malloc(size_t size)
+{
+    alloc_bytes += size;
+    return malloc(size);
+}
 
 static int parse_policies(const char *text, policy *p, int *n)
 {
@@ -115,7 +130,7 @@ static void animate_help(FILE *f);
 
 static const cli_opt *own_opts(anim_args *a)
 {
-    static cli_opt t[5];
+    static cli_opt t[6];
     const cli_opt opts[] = {
         {.name = "--frames", .kind = CLI_OPT_UINT, .arg = "F", .min = 1,
          .max = 100000, .dest = &a->frames,
@@ -134,8 +149,12 @@ static const cli_opt *own_opts(anim_args *a)
          .dest = &a->plot,
          .help = "write animate.dat, animate.gp and the pictures\n"
                  "sah.png/.svg, ms.png/.svg into DIR (gnuplot)"},
+        {.name = "--alloc", .kind = CLI_OPT_FLAG, .dest = &a->alloc,
+         .flag_value = 1,
+         .help = "count the host bytes the library allocates in each\n"
+                 "update (its large arrays then get no huge-page advice)"},
         {.name = NULL}};
-    CLI_OPTS_COPY(t, opts, 5);
+    CLI_OPTS_COPY(t, opts, 6);
     return t;
 }
 
@@ -266,6 +285,7 @@ static atrbvh_status step(policy *q, unsigned frame,
     atrbvh_build_options ro;
     atrbvh_stats st;
     atrbvh_status s = ATRBVH_OK;
+    const unsigned long long b0 = alloc_bytes;
     double t0 = cli_now_ms();
     if (frame == 0 || q->kind == P_REBUILD) {
         /* into the last frame's tree (a failure frees it and ends the
@@ -293,6 +313,7 @@ static atrbvh_status step(policy *q, unsigned frame,
         }
     }
     q->ms[frame] = cli_now_ms() - t0;
+    q->bytes[frame] = alloc_bytes - b0;
     if (s == ATRBVH_OK) {
         atrbvh_bvh_stats(q->bvh, &st);
         q->sah[frame] = st.sah;
@@ -329,6 +350,8 @@ static void report(const anim_args *a, const anim_scene *sc,
                 json_kv_string(&w, "action", action_names[p[k].action[fr]]);
                 json_kv_double(&w, "sah", p[k].sah[fr]);
                 json_kv_double(&w, "ms", p[k].ms[fr]);
+                if (a->alloc)
+                    json_kv_uint(&w, "alloc_bytes", p[k].bytes[fr]);
                 if (reb >= 0 && p[reb].sah[fr] > 0)
                     json_kv_double(&w, "sah_vs_rebuild",
                                    p[k].sah[fr] / p[reb].sah[fr]);
@@ -340,18 +363,23 @@ static void report(const anim_args *a, const anim_scene *sc,
                sc->s.name, sc->s.triangle_count, device, frames);
         printf("frame");
         for (k = 0; k < np; k++)
-            printf("  %14s SAH   ms", p[k].name);
+            printf("  %14s SAH   ms%s", p[k].name,
+                   a->alloc ? "      bytes" : "");
         putchar('\n');
         for (fr = 0; fr < frames; fr++) {
             printf("%5u", fr);
-            for (k = 0; k < np; k++)
-                printf("  %18.4f %7.2f%c", p[k].sah[fr], p[k].ms[fr],
-                       p[k].action[fr] == 3 && fr ? '*' : ' ');
+            for (k = 0; k < np; k++) {
+                printf("  %18.4f %7.2f", p[k].sah[fr], p[k].ms[fr]);
+                if (a->alloc)
+                    printf(" %10llu", p[k].bytes[fr]);
+                putchar(p[k].action[fr] == 3 && fr ? '*' : ' ');
+            }
             putchar('\n');
         }
         printf("(* rebuilt)\n\n");
-        printf("%-16s %10s %10s %12s %12s %8s\n", "policy", "mean ms",
-               "max ms", "mean SAH/r", "max SAH/r", "rebuilds");
+        printf("%-16s %10s %10s %12s %12s %8s%s\n", "policy", "mean ms",
+               "max ms", "mean SAH/r", "max SAH/r", "rebuilds",
+               a->alloc ? "    max bytes" : "");
     }
     /* Summary over frames 1.. (frame 0 is the same build for all). */
     if (a->b.json) {
@@ -359,6 +387,7 @@ static void report(const anim_args *a, const anim_scene *sc,
         fputc('[', stdout);
         for (k = 0; k < np; k++) {
             double sum = 0, most = 0, rsum = 0, rmost = 0;
+            unsigned long long bmost = 0;
             for (fr = 1; fr < frames; fr++) {
                 double r = reb >= 0 && p[reb].sah[fr] > 0
                                ? p[k].sah[fr] / p[reb].sah[fr]
@@ -367,6 +396,7 @@ static void report(const anim_args *a, const anim_scene *sc,
                 most = p[k].ms[fr] > most ? p[k].ms[fr] : most;
                 rsum += r;
                 rmost = r > rmost ? r : rmost;
+                bmost = p[k].bytes[fr] > bmost ? p[k].bytes[fr] : bmost;
             }
             json_begin_object(&w);
             json_kv_string(&w, "policy", p[k].name);
@@ -380,6 +410,8 @@ static void report(const anim_args *a, const anim_scene *sc,
             }
             json_kv_uint(&w, "rebuilds",
                          p[k].kind == P_REBUILD ? frames - 1 : p[k].rebuilds);
+            if (a->alloc)
+                json_kv_uint(&w, "max_alloc_bytes", bmost);
             json_end_object(&w);
         }
         fputc(']', stdout);
@@ -387,6 +419,7 @@ static void report(const anim_args *a, const anim_scene *sc,
     } else {
         for (k = 0; k < np; k++) {
             double sum = 0, most = 0, rsum = 0, rmost = 0;
+            unsigned long long bmost = 0;
             for (fr = 1; fr < frames; fr++) {
                 double r = reb >= 0 && p[reb].sah[fr] > 0
                                ? p[k].sah[fr] / p[reb].sah[fr]
@@ -395,11 +428,15 @@ static void report(const anim_args *a, const anim_scene *sc,
                 most = p[k].ms[fr] > most ? p[k].ms[fr] : most;
                 rsum += r;
                 rmost = r > rmost ? r : rmost;
+                bmost = p[k].bytes[fr] > bmost ? p[k].bytes[fr] : bmost;
             }
-            printf("%-16s %10.3f %10.3f %12.4f %12.4f %8u\n", p[k].name,
+            printf("%-16s %10.3f %10.3f %12.4f %12.4f %8u", p[k].name,
                    frames > 1 ? sum / (frames - 1) : 0.0, most,
                    frames > 1 ? rsum / (frames - 1) : 1.0, rmost,
                    p[k].kind == P_REBUILD ? frames - 1 : p[k].rebuilds);
+            if (a->alloc)
+                printf(" %12llu", bmost);
+            putchar('\n');
         }
         if (reb < 0)
             printf("(SAH/r: no rebuild policy to compare with)\n");
@@ -458,8 +495,12 @@ int cli_animate(int argc, char **argv)
                  ? a.b.options.opencl_device
                  : "");
     memset(&e, 0, sizeof e);
+    /* (no library call is running, and none has allocated yet) */
+    if (a.alloc)
+        atrbvh_set_allocator(counting_malloc, free);
     st = atrbvh_device_open(spec, &dev, &e);
     if (st != ATRBVH_OK) {
+        atrbvh_set_allocator(NULL, NULL);
         anim_scene_free(&sc);
         if (cli_bad_device(&a.b, st, e.text))
             return cli_usage("animate", "--device: %s", e.text);
@@ -470,8 +511,9 @@ int cli_animate(int argc, char **argv)
     for (k = 0; k < np; k++) {
         p[k].sah = calloc(a.frames, sizeof *p[k].sah);
         p[k].ms = calloc(a.frames, sizeof *p[k].ms);
+        p[k].bytes = calloc(a.frames, sizeof *p[k].bytes);
         p[k].action = calloc(a.frames, 1);
-        if (!p[k].sah || !p[k].ms || !p[k].action) {
+        if (!p[k].sah || !p[k].ms || !p[k].bytes || !p[k].action) {
             cli_error("out of memory for %u frames", a.frames);
             rc = CLI_FAIL;
         }
@@ -499,9 +541,12 @@ int cli_animate(int argc, char **argv)
         atrbvh_bvh_free(p[k].bvh);
         free(p[k].sah);
         free(p[k].ms);
+        free(p[k].bytes);
         free(p[k].action);
     }
     atrbvh_device_close(dev);
+    /* every block of the library is freed: the default allocator back */
+    atrbvh_set_allocator(NULL, NULL);
     anim_scene_free(&sc);
     return rc;
 }
