@@ -28,6 +28,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -66,12 +67,16 @@ typedef struct anim_args {
 } anim_args;
 
 /* --alloc: every allocation the library makes, counted (its blocks are
- * plain malloc blocks, freed by free). */
+ * plain malloc blocks, freed by free).  A build's threads may allocate
+ * at once: the count is locked. */
 static unsigned long long alloc_bytes;
+static pthread_mutex_t alloc_lock = PTHREAD_MUTEX_INITIALIZER;
 
 static void *counting_malloc(size_t size)
 {
+    pthread_mutex_lock(&alloc_lock);
     alloc_bytes += size;
+    pthread_mutex_unlock(&alloc_lock);
     return malloc(size);
 }
 
