@@ -6,6 +6,7 @@
 
 #include "internal.h"
 
+#include <stdint.h>
 #include <string.h>
 
 /* Whether *block (bytes long) holds count entries of `size` bytes. */
@@ -51,9 +52,10 @@ atrbvh_bvh *atrbvh_i_bvh_alloc_in(size_t node_count, size_t prim_count,
              * for an eighth more, so that the next frames, whose node
              * counts move a little either way, find the array large
              * enough (atrbvh_reoptimise keeps room for the largest tree
-             * for the same reason).  (No overflow: node_count is below
-             * 2^32.) */
-            if (nb && *nb && !holds(nb, nbytes, node_count, sizeof *b->nodes))
+             * for the same reason).  Without the room where the sum
+             * would overflow. */
+            if (nb && *nb && !holds(nb, nbytes, node_count, sizeof *b->nodes) &&
+                node_count / 8u <= SIZE_MAX - node_count)
                 room = node_count + node_count / 8u;
         }
         b->nodes = take_or_alloc(nb, nbytes, room, sizeof *b->nodes,

@@ -326,6 +326,36 @@ static atrbvh_status step(policy *q, unsigned frame,
     return s;
 }
 
+/* Policy k over frames 1.. (frame 0 is the same build for all): mean and
+ * largest time, SAH over the rebuild's (policy reb; -1: none, then the
+ * mean is 1 and the largest 0) and the most bytes allocated. */
+typedef struct summary {
+    double mean_ms, max_ms, mean_r, max_r;
+    unsigned long long max_bytes;
+} summary;
+
+static summary summarise(const policy *p, int k, int reb, unsigned frames)
+{
+    summary m;
+    double sum = 0, rsum = 0;
+    unsigned fr;
+    memset(&m, 0, sizeof m);
+    for (fr = 1; fr < frames; fr++) {
+        const double r = reb >= 0 && p[reb].sah[fr] > 0
+                             ? p[k].sah[fr] / p[reb].sah[fr]
+                             : 0;
+        sum += p[k].ms[fr];
+        m.max_ms = p[k].ms[fr] > m.max_ms ? p[k].ms[fr] : m.max_ms;
+        rsum += r;
+        m.max_r = r > m.max_r ? r : m.max_r;
+        m.max_bytes = p[k].bytes[fr] > m.max_bytes ? p[k].bytes[fr]
+                                                   : m.max_bytes;
+    }
+    m.mean_ms = frames > 1 ? sum / (frames - 1) : 0.0;
+    m.mean_r = frames > 1 ? rsum / (frames - 1) : 1.0;
+    return m;
+}
+
 static void report(const anim_args *a, const anim_scene *sc,
                    const char *device, const policy *p, int np)
 {
@@ -391,56 +421,31 @@ static void report(const anim_args *a, const anim_scene *sc,
         json_key(&w, "summary");
         fputc('[', stdout);
         for (k = 0; k < np; k++) {
-            double sum = 0, most = 0, rsum = 0, rmost = 0;
-            unsigned long long bmost = 0;
-            for (fr = 1; fr < frames; fr++) {
-                double r = reb >= 0 && p[reb].sah[fr] > 0
-                               ? p[k].sah[fr] / p[reb].sah[fr]
-                               : 0;
-                sum += p[k].ms[fr];
-                most = p[k].ms[fr] > most ? p[k].ms[fr] : most;
-                rsum += r;
-                rmost = r > rmost ? r : rmost;
-                bmost = p[k].bytes[fr] > bmost ? p[k].bytes[fr] : bmost;
-            }
+            const summary m = summarise(p, k, reb, frames);
             json_begin_object(&w);
             json_kv_string(&w, "policy", p[k].name);
-            json_kv_double(&w, "mean_ms",
-                           frames > 1 ? sum / (frames - 1) : 0);
-            json_kv_double(&w, "max_ms", most);
+            json_kv_double(&w, "mean_ms", m.mean_ms);
+            json_kv_double(&w, "max_ms", m.max_ms);
             if (reb >= 0) {
-                json_kv_double(&w, "mean_sah_vs_rebuild",
-                               frames > 1 ? rsum / (frames - 1) : 1);
-                json_kv_double(&w, "max_sah_vs_rebuild", rmost);
+                json_kv_double(&w, "mean_sah_vs_rebuild", m.mean_r);
+                json_kv_double(&w, "max_sah_vs_rebuild", m.max_r);
             }
             json_kv_uint(&w, "rebuilds",
                          p[k].kind == P_REBUILD ? frames - 1 : p[k].rebuilds);
             if (a->alloc)
-                json_kv_uint(&w, "max_alloc_bytes", bmost);
+                json_kv_uint(&w, "max_alloc_bytes", m.max_bytes);
             json_end_object(&w);
         }
         fputc(']', stdout);
         json_end_object(&w);
     } else {
         for (k = 0; k < np; k++) {
-            double sum = 0, most = 0, rsum = 0, rmost = 0;
-            unsigned long long bmost = 0;
-            for (fr = 1; fr < frames; fr++) {
-                double r = reb >= 0 && p[reb].sah[fr] > 0
-                               ? p[k].sah[fr] / p[reb].sah[fr]
-                               : 0;
-                sum += p[k].ms[fr];
-                most = p[k].ms[fr] > most ? p[k].ms[fr] : most;
-                rsum += r;
-                rmost = r > rmost ? r : rmost;
-                bmost = p[k].bytes[fr] > bmost ? p[k].bytes[fr] : bmost;
-            }
+            const summary m = summarise(p, k, reb, frames);
             printf("%-16s %10.3f %10.3f %12.4f %12.4f %8u", p[k].name,
-                   frames > 1 ? sum / (frames - 1) : 0.0, most,
-                   frames > 1 ? rsum / (frames - 1) : 1.0, rmost,
+                   m.mean_ms, m.max_ms, m.mean_r, m.max_r,
                    p[k].kind == P_REBUILD ? frames - 1 : p[k].rebuilds);
             if (a->alloc)
-                printf(" %12llu", bmost);
+                printf(" %12llu", m.max_bytes);
             putchar('\n');
         }
         if (reb < 0)

@@ -232,9 +232,8 @@ ATRBVH_FN atrbvh_u32 atrbvh_treelet_form(const atrbvh_treelet_tree *t,
                                          atrbvh_treelet *tl)
 {
     double area[ATRBVH_TREELET_MAX];
-    atrbvh_treelet_form_first(t, root, tl);
-    while (tl->n < n && atrbvh_treelet_form_next(t, tl, area))
-        ;
+    tl->n = atrbvh_form_p(t, root, n, tl->leaf, tl->internal, area);
+    tl->pend = 0; /* (no step follows a whole formation) */
     return tl->n;
 }
 
@@ -2367,15 +2366,7 @@ ATRBVH_FN atrbvh_u32 atrbvh_agg_form(const atrbvh_treelet_tree *t,
                                      atrbvh_u32 root, atrbvh_u32 n,
                                      const atrbvh_agg_scratch *s)
 {
-    atrbvh_u32 m = 2, pend = 0;
-    atrbvh_form_first_g(t, root, s->leaf, s->internal);
-    while (m < n) {
-        pend = atrbvh_form_step_g(t, m, pend, s->leaf, s->internal, s->area);
-        if (pend == ATRBVH_U32_MAX)
-            break;
-        m++;
-    }
-    return m;
+    return atrbvh_form_g(t, root, n, s->leaf, s->internal, s->area);
 }
 
 /* atrbvh_treelet_preorder and atrbvh_treelet_write over the scratch
