@@ -7,7 +7,7 @@
 # run's build and optimise-stage median and minimum, then the best
 # minimum of each side: on a shared host whose speed drifts within
 # minutes, the figure to compare (the 5 December section "The Intel host
-# again" in docs/benchmarks.md).  To make LIB_A and LIB_B: copy
+# again" in docs/bench/log.md).  To make LIB_A and LIB_B: copy
 # _build/lib/.libs/libatrbvh.so* into a directory before and after the
 # change (and a rebuild).  Compare trees first (atrbvh build prints the
 # SAH and node count; the test suite the hashes).

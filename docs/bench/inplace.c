@@ -1,7 +1,7 @@
 /*
  * inplace.c - OpenCL builds (or ray batches) in place against copying, in
  * one process: the program behind "The caller's memory in place" in
- * docs/opencl.md and the 5 December section of docs/benchmarks.md.  It
+ * docs/opencl.md and the 5 December section of docs/bench/log.md.  It
  * opens a CPU handle, an OpenCL handle and a second OpenCL handle with
  * ATRBVH_CL_COPY=1 (on a device that shares the host's memory, such as
  * PoCL's, the first works in place and the second copies), then takes

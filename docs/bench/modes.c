@@ -1,7 +1,7 @@
 /*
  * modes.c - repeated LBVH builds of one scene on one device handle, with
  * each stage's mean time and, at the end, every thread's CPU time: the
- * program behind "what the slow mode is" in docs/benchmarks.md (3 December).
+ * program behind "what the slow mode is" in docs/bench/log.md (3 December).
  * Not built by the project; from the source tree, after sh setup.sh:
  *
  *   cc -O2 -std=c99 -I lib -I _build -I _build/lib -I tools \

@@ -2,7 +2,7 @@
  * stagetimes.c - repeated CPU builds of one scene in one configuration,
  * with the builds' median and minimum and each stage's mean, median and
  * minimum: the program behind the A/B comparisons of "The Intel host
- * again" in docs/benchmarks.md (5 December), which docs/bench/ab.sh runs
+ * again" in docs/bench/log.md (5 December), which docs/bench/ab.sh runs
  * against two builds of the library in turns.  Not built by the project;
  * from the source tree, after sh setup.sh:
  *

@@ -2,7 +2,7 @@
  * wake.c - what a 2-thread OpenMP region costs on this machine, and
  * where the guest puts its threads after the process slept: the program
  * behind "The master's spin at a region's end, and where the two
- * threads run" in docs/benchmarks.md (4 December).  Not built by the
+ * threads run" in docs/bench/log.md (4 December).  Not built by the
  * project (Linux: sched_getcpu):
  *
  *   cc -O2 -fopenmp -o /tmp/wake docs/bench/wake.c

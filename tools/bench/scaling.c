@@ -185,7 +185,7 @@ static void print_fit(const bench_args *a, scaling_series *sr)
  * size alike, as the speed section's turns do for the configurations.
  * Measured one size after another, the fitted exponent moved with the
  * host (the LBVH on the sphere, 10^5 to 10^7: N^0.98 to N^1.11 in five
- * runs within an hour, 6 December, docs/benchmarks.md).  A size whose
+ * runs within an hour, 6 December, docs/bench/log.md).  A size whose
  * warm-up took over SCALING_SINGLE_MS is timed in the first turn only.
  * All sizes are held at once: about the largest size's memory again. */
 static int time_sizes(const bench_args *a, const char *spec,
