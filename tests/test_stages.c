@@ -1060,6 +1060,215 @@ START_TEST(lbvh_leaf_boxes_in_place)
 }
 END_TEST
 
+/* A copy of a built tree's arrays, `extra` nodes longer (zeroed), that a
+ * test may corrupt. */
+static atrbvh_bvh *tree_copy(const atrbvh_bvh *b, size_t extra)
+{
+    atrbvh_bvh *c = atrbvh_i_bvh_alloc(b->node_count + extra, b->prim_count);
+    ck_assert_ptr_nonnull(c);
+    memset(c->nodes, 0, (b->node_count + extra) * sizeof *c->nodes);
+    memcpy(c->nodes, b->nodes, b->node_count * sizeof *b->nodes);
+    memcpy(c->prim_indices, b->prim_indices,
+           b->prim_count * sizeof *b->prim_indices);
+    c->prim_count = b->prim_count;
+    c->stats = b->stats;
+    c->split_prims = b->split_prims;
+    return c;
+}
+
+/* atrbvh_i_bvh_check on t must refuse it as ATRBVH_ERR_FORMAT at `index`
+ * with a text that holds `text`; t is freed. */
+static void expect_fault(atrbvh_bvh *t, int check_boxes, uint64_t index,
+                         const char *text)
+{
+    atrbvh_error e;
+    memset(&e, 0, sizeof e);
+    ck_assert_msg(atrbvh_i_bvh_check(t, check_boxes, &e) ==
+                          ATRBVH_ERR_FORMAT &&
+                      e.status == ATRBVH_ERR_FORMAT,
+                  "expected a format error with \"%s\", got %d \"%s\"", text,
+                  (int)e.status, e.text);
+    ck_assert_msg(e.index == index && strstr(e.text, text),
+                  "expected \"%s\" at %llu, got \"%s\" at %llu", text,
+                  (unsigned long long)index, e.text,
+                  (unsigned long long)e.index);
+    atrbvh_bvh_free(t);
+}
+
+/* The leaf of t that holds primitive slot `slot`. */
+static size_t leaf_of_slot(const atrbvh_bvh *t, size_t slot)
+{
+    size_t i;
+    for (i = 0; i < t->node_count; i++)
+        if (t->nodes[i].count && slot >= t->nodes[i].index &&
+            slot - t->nodes[i].index < t->nodes[i].count)
+            return i;
+    ck_abort_msg("no leaf holds slot %lu", (unsigned long)slot);
+    return 0;
+}
+
+/* The tree check that --enable-debug-checks runs after every build
+ * (lib/check.c) passes a built tree and refuses each fault it looks for,
+ * at the right node, with the message naming it; boxes are compared with
+ * the parent's only when asked.  CI's builds have no debug checks, so
+ * this is where its refusals are tested. */
+START_TEST(debug_check_refuses_each_fault)
+{
+    const size_t T = 3000;
+    float *v = tu_random_triangles(T, 91, 1.0f, 0.0f);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * T, NULL, T);
+    atrbvh_build_options o;
+    atrbvh_bvh *b, *t;
+    atrbvh_error e;
+    size_t n, leaf = 0, wide = 0, a = 0, c = 0, input;
+    uint32_t r;
+    atrbvh_build_options_init(&o);
+    o.max_leaf_size = 4;
+    b = tu_build(&g, &o);
+    ck_assert_int_eq(atrbvh_i_bvh_settle_stats(b), ATRBVH_OK);
+    n = b->node_count;
+    input = b->stats.primitives + b->stats.invalid_skipped;
+    ck_assert_uint_eq(input, T);
+    ck_assert_uint_eq(b->split_prims, 0);
+    ck_assert_uint_gt(n, 64);
+    ck_assert_uint_eq(b->nodes[0].count, 0);
+    r = b->nodes[0].index; /* the root's right child */
+    ck_assert_uint_gt(r, 2);
+    ck_assert_uint_lt(r + 1, n);
+    while (!b->nodes[leaf].count)
+        leaf++;
+    while (b->nodes[wide].count < 2)
+        wide++;
+    /* two leaves with the same count */
+    for (a = 0; a < n; a++) {
+        if (!b->nodes[a].count)
+            continue;
+        for (c = a + 1; c < n; c++)
+            if (b->nodes[c].count == b->nodes[a].count)
+                break;
+        if (c < n)
+            break;
+    }
+    ck_assert_uint_lt(c, n);
+
+    memset(&e, 0, sizeof e);
+    ck_assert_int_eq(atrbvh_i_bvh_check(b, 1, &e), ATRBVH_OK);
+    t = tree_copy(b, 0);
+    ck_assert_int_eq(atrbvh_i_bvh_check(t, 1, &e), ATRBVH_OK);
+    atrbvh_bvh_free(t);
+
+    t = tree_copy(b, 0); /* a NaN bound */
+    t->nodes[leaf].min[1] = NAN;
+    expect_fault(t, 0, leaf, "has an invalid box on axis 1");
+    t = tree_copy(b, 0); /* an inverted box */
+    t->nodes[r].min[2] = t->nodes[r].max[2] + 1.0f;
+    expect_fault(t, 0, r, "has an invalid box on axis 2");
+    t = tree_copy(b, 0); /* a child outside its parent: seen when asked */
+    t->nodes[r].max[0] = b->nodes[0].max[0] + 1.0f;
+    ck_assert_int_eq(atrbvh_i_bvh_check(t, 0, &e), ATRBVH_OK);
+    {
+        char want[64];
+        snprintf(want, sizeof want, "node %lu sticks out of its parent 0 "
+                 "on axis 0", (unsigned long)r);
+        expect_fault(t, 1, r, want);
+    }
+    t = tree_copy(b, 0); /* a right child past the end, or at the left's */
+    t->nodes[0].index = (uint32_t)n;
+    expect_fault(t, 1, 0, "internal node 0 has right child");
+    t = tree_copy(b, 0);
+    t->nodes[0].index = 1;
+    expect_fault(t, 1, 0, "out of range");
+    t = tree_copy(b, 0); /* the right subtree one node late */
+    t->nodes[0].index = r + 1;
+    expect_fault(t, 0, r + 1, "is reached where node");
+    t = tree_copy(b, 0); /* a leaf past the index array, ending there */
+    t->nodes[leaf].index = (uint32_t)b->prim_count;
+    expect_fault(t, 1, leaf, "references primitives");
+    t = tree_copy(b, 0); /* or starting past it (no unsigned wrap) */
+    t->nodes[leaf].index = (uint32_t)b->prim_count + 1;
+    expect_fault(t, 1, leaf, "references primitives");
+    t = tree_copy(b, 1); /* a node after the tree, never reached */
+    t->nodes[n] = b->nodes[leaf];
+    expect_fault(t, 1, n, "are reachable from the root");
+    t = tree_copy(b, 0); /* a slot no leaf holds */
+    t->nodes[wide].count--;
+    expect_fault(t, 1, (uint64_t)-1, "primitive slots, the index array has");
+    t = tree_copy(b, 0); /* two leaves' ranges swapped */
+    t->nodes[a].index = b->nodes[c].index;
+    t->nodes[c].index = b->nodes[a].index;
+    expect_fault(t, 1, a, "starts at primitive slot");
+    t = tree_copy(b, 0); /* a primitive beyond the input */
+    t->prim_indices[5] = (uint32_t)input;
+    expect_fault(t, 1, leaf_of_slot(b, 5), "lists primitive");
+    t = tree_copy(b, 0); /* a primitive listed twice */
+    t->prim_indices[7] = b->prim_indices[2];
+    expect_fault(t, 1, leaf_of_slot(b, 7), "listed already by leaf");
+    atrbvh_bvh_free(b);
+    free(v);
+}
+END_TEST
+
+/* The same check on a split tree: a primitive in two leaves is its split,
+ * but not twice in one leaf, and the distinct ones must be those kept. */
+START_TEST(debug_check_split_tree)
+{
+    const size_t T = 600, S = 30;
+    float *v = malloc((T + S) * 9 * sizeof *v);
+    float *small = tu_random_triangles(T, 12, 0.02f, 0.0f);
+    atrbvh_geometry g;
+    atrbvh_build_options o;
+    atrbvh_bvh *b, *t;
+    atrbvh_error e;
+    tu_rng rng;
+    size_t i, k, twice = 0, dup_leaf = 0;
+    uint32_t *seen;
+    ck_assert_ptr_nonnull(v);
+    ck_assert_ptr_nonnull(small);
+    tu_rng_seed(&rng, 13);
+    for (i = 0; i < T; i++) { /* small ones spread over the cube */
+        const float d[3] = {tu_rng_float(&rng), tu_rng_float(&rng),
+                            tu_rng_float(&rng)};
+        for (k = 0; k < 9; k++)
+            v[9 * i + k] = small[9 * i + k] + d[k % 3];
+    }
+    for (i = T; i < T + S; i++) /* long slivers across it */
+        for (k = 0; k < 3; k++) {
+            const float lo = tu_rng_float(&rng) * 0.1f;
+            v[9 * i + k] = lo;
+            v[9 * i + 3 + k] = 0.9f + lo;
+            v[9 * i + 6 + k] = 0.9f + lo + (k ? 0.0f : 0.01f);
+        }
+    free(small);
+    g = atrbvh_geometry_triangles(v, 3 * (T + S), NULL, T + S);
+    atrbvh_build_options_init(&o);
+    o.split_budget = 0.5;
+    o.max_leaf_size = 4;
+    b = tu_build(&g, &o);
+    ck_assert_int_eq(atrbvh_i_bvh_settle_stats(b), ATRBVH_OK);
+    ck_assert_uint_eq(b->split_prims, T + S);
+    seen = calloc(T + S, sizeof *seen);
+    ck_assert_ptr_nonnull(seen);
+    for (i = 0; i < b->prim_count; i++)
+        if (seen[b->prim_indices[i]]++)
+            twice++;
+    free(seen);
+    ck_assert_uint_gt(twice, 0); /* a split tree, as meant */
+    memset(&e, 0, sizeof e);
+    ck_assert_int_eq(atrbvh_i_bvh_check(b, 1, &e), ATRBVH_OK);
+    t = tree_copy(b, 0); /* one fewer kept than listed */
+    t->split_prims = b->split_prims + 1;
+    expect_fault(t, 1, (uint64_t)-1, "the split tree lists");
+    while (b->nodes[dup_leaf].count < 2)
+        dup_leaf++;
+    t = tree_copy(b, 0); /* twice in one leaf */
+    t->prim_indices[b->nodes[dup_leaf].index + 1] =
+        b->prim_indices[b->nodes[dup_leaf].index];
+    expect_fault(t, 1, dup_leaf, "listed already by leaf");
+    atrbvh_bvh_free(b);
+    free(v);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("stages");
@@ -1077,6 +1286,8 @@ int main(void)
     tcase_add_test(tc, sah_sums_vector_is_scalar);
     tcase_add_test(tc, large_arrays_advise_huge_pages);
     tcase_add_test(tc, lbvh_leaf_boxes_in_place);
+    tcase_add_test(tc, debug_check_refuses_each_fault);
+    tcase_add_test(tc, debug_check_split_tree);
     suite_add_tcase(s, tc);
     return tu_run(s);
 }
