@@ -1,6 +1,8 @@
 #!/bin/sh
-# Every optional part switched off: out-of-tree builds in _build/configs/,
-# one per switch, each checked to have really dropped the part.
+# Every optional part switched off, and the developer switches on:
+# out-of-tree builds in _build/configs/, one per switch, each checked to
+# have really dropped the part (or, for a switch that turns something on,
+# to have it).
 #   all-off   --disable-openmp --disable-opencl --without-embree --without-png
 #             full `make check` (every Check suite, cli.sh, symbols, man
 #             pages, consumer): the serial, OpenCL-less, tool-without-extras
@@ -12,7 +14,11 @@
 #             the same + cli.sh (the tool's tests);
 #             the full suites for these already ran in 10-check (everything
 #             on) and in all-off (everything off), and on the CI's two cores
-#             a full check per configuration would cost minutes each.
+#             a full check per configuration would cost minutes each;
+#   debug-checks  --enable-debug-checks (the tree check of lib/check.c after
+#             every build, in the library alone): the suites that build
+#             trees on both backends, so that every tree they build is
+#             checked, and the tests whose memory bounds it moves.
 # Set ATRBVH_CONFIGS_FULL=1 to run the full check in every configuration.
 # Contract: print '=== stage ok' as the last line on success.
 cd "$(dirname "$0")/../.." || exit 1
@@ -27,7 +33,7 @@ passed=0
 failed=0
 
 # name, what must hold afterwards (a shell test run in the build dir),
-# full|lib|tool (which tests), configure flags
+# full|lib|tool|"tests=LIST" (which tests), configure flags
 config() {
     name=$1 verify=$2 full=$3
     shift 3
@@ -44,11 +50,15 @@ config() {
         tail -n 30 "$log"; echo "configs: FAILED: $name: make"; failed=$((failed + 1)); cd "$top"; return
     fi
     if ! sh -c "$verify" >>"$log" 2>&1; then
-        echo "configs: FAILED: $name: the part is still built in ($verify)"; failed=$((failed + 1)); cd "$top"; return
+        echo "configs: FAILED: $name: the build is not what the switch asks for ($verify)"; failed=$((failed + 1)); cd "$top"; return
     fi
     if [ "$full" = full ] || [ "${ATRBVH_CONFIGS_FULL:-0}" = 1 ]; then
         what="full make check"
         make -j"$jobs" check >>"$log" 2>&1
+    elif [ "${full#tests=}" != "$full" ]; then
+        what="${full#tests=}"
+        make -j"$jobs" check TESTS="$what" >>"$log" 2>&1
+        what=$(echo $what | sed 's,tests/,,g')
     else
         [ "$full" = tool ] && quick=$quick_tool || quick=$quick_lib
         what="build + $(echo $quick | sed 's,tests/,,g')"
@@ -79,6 +89,9 @@ config no-openmp "$no_gomp" lib --disable-openmp
 config no-opencl "$no_cl" lib --disable-opencl
 config no-embree "$no_embree" tool --without-embree
 config no-png "$no_png" tool --without-png
+config debug-checks 'grep -q "define ATRBVH_DEBUG_CHECKS 1" config.h' \
+    "tests=tests/test_build tests/test_device tests/test_split tests/test_stages tests/test_hashes tests/test_optimise tests/test_threads tests/test_errors tests/test_animate tests/test_opencl tests/animate.sh" \
+    --enable-debug-checks
 config kernel-source-override 'grep -q "define ATRBVH_KERNEL_SOURCE_OVERRIDE" config.h && make check TESTS=tests/test_opencl check_PROGRAMS=tests/test_opencl' lib --enable-kernel-source-override
 
 # The configure summary of the all-off build, for the log.
