@@ -147,6 +147,14 @@ atrbvh_status atrbvh_i_build_run(const atrbvh_geometry *geometry,
                                  const atrbvh_build_options *options,
                                  atrbvh_bvh **out, atrbvh_i_capture *capture,
                                  atrbvh_error *error);
+/* atrbvh_validate_backends' comparison (lib/validate.c): 1 when two
+ * builds' captures and trees differ, with the first difference in stage
+ * order in *e (its text names the stage, the item and both values, "cpu"
+ * for a and "opencl" for b; its index is the item's; its status stays
+ * ATRBVH_OK), else 0. */
+int atrbvh_i_captures_differ(atrbvh_error *e, const atrbvh_i_capture *a,
+                             const atrbvh_bvh *ba, const atrbvh_i_capture *b,
+                             const atrbvh_bvh *bb);
 /* Records a kernel time under `name` (added to an existing entry). */
 void atrbvh_i_bvh_add_kernel_time(atrbvh_bvh *bvh, const char *name,
                                   double ms);

@@ -10,7 +10,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#ifdef ATRBVH_HAVE_OPENCL
 static void box_text(char *buf, size_t size, const atrbvh_box *b)
 {
     snprintf(buf, size, "[%.9g %.9g %.9g]-[%.9g %.9g %.9g]", b->min[0],
@@ -71,9 +70,9 @@ static int tree_differs(atrbvh_error *e, const char *stage,
     return 0;
 }
 
-static int captures_differ(atrbvh_error *e, const atrbvh_i_capture *a,
-                           const atrbvh_bvh *ba, const atrbvh_i_capture *b,
-                           const atrbvh_bvh *bb)
+int atrbvh_i_captures_differ(atrbvh_error *e, const atrbvh_i_capture *a,
+                             const atrbvh_bvh *ba, const atrbvh_i_capture *b,
+                             const atrbvh_bvh *bb)
 {
     size_t n = a->n, i;
     U32_DIFF("bounds", "scene", "primitive count", 0, a->n, b->n);
@@ -141,8 +140,6 @@ static int captures_differ(atrbvh_error *e, const atrbvh_i_capture *a,
     return 0;
 }
 
-#endif
-
 atrbvh_status atrbvh_validate_backends(const atrbvh_geometry *geometry,
                                        const atrbvh_build_options *options,
                                        int *identical, atrbvh_error *error)
@@ -193,7 +190,7 @@ atrbvh_status atrbvh_validate_backends(const atrbvh_geometry *geometry,
     }
     if (st == ATRBVH_OK) {
         atrbvh_i_clear_error(error);
-        *identical = !captures_differ(error, &ca, ba, &cb, bb);
+        *identical = !atrbvh_i_captures_differ(error, &ca, ba, &cb, bb);
     }
     atrbvh_bvh_free(ba);
     atrbvh_bvh_free(bb);

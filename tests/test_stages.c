@@ -1269,6 +1269,160 @@ START_TEST(debug_check_split_tree)
 }
 END_TEST
 
+/* atrbvh_i_captures_differ on a copy of b: it must report a difference
+ * at `index` with `text` in the message, stage order first. */
+static void expect_diff(const atrbvh_i_capture *ca, const atrbvh_bvh *ba,
+                        const atrbvh_i_capture *cb, const atrbvh_bvh *bb,
+                        uint64_t index, const char *text)
+{
+    atrbvh_error e;
+    memset(&e, 0, sizeof e);
+    ck_assert_msg(atrbvh_i_captures_differ(&e, ca, ba, cb, bb) == 1,
+                  "no difference found, expected \"%s\"", text);
+    ck_assert_msg(e.index == index && strstr(e.text, text) &&
+                      e.status == ATRBVH_OK,
+                  "expected \"%s\" at %llu, got \"%s\" at %llu (status %d)",
+                  text, (unsigned long long)index, e.text,
+                  (unsigned long long)e.index, (int)e.status);
+}
+
+/* What atrbvh validate compares (lib/validate.c): two CPU builds of one
+ * scene capture the same bits at every stage, and a one-item change in
+ * any stage's output of the second is named - stage, item, index - and
+ * an earlier stage's change is named before a later one's.  (With no
+ * GPU in CI the CPU and OpenCL captures never differ there, so this is
+ * where the comparison's reports are tested.) */
+START_TEST(validate_names_the_first_difference)
+{
+    const size_t T = 700;
+    float *v = tu_random_triangles(T, 31, 1.0f, 0.0f);
+    atrbvh_geometry g = atrbvh_geometry_triangles(v, 3 * T, NULL, T);
+    atrbvh_build_options o;
+    atrbvh_i_capture ca, cb;
+    atrbvh_bvh *ba = NULL, *bb = NULL;
+    atrbvh_error e;
+    const size_t i = 123, m = 2 * T - 1;
+    size_t leaf = 0, node;
+    atrbvh_build_options_init(&o);
+    o.method = ATRBVH_METHOD_ATRBVH;
+    o.max_leaf_size = 4;
+    o.threads = 2;
+    memset(&ca, 0, sizeof ca);
+    memset(&cb, 0, sizeof cb);
+    ck_assert_int_eq(atrbvh_i_build_run(&g, &o, &ba, &ca, &e), ATRBVH_OK);
+    o.threads = 1;
+    ck_assert_int_eq(atrbvh_i_build_run(&g, &o, &bb, &cb, &e), ATRBVH_OK);
+    ck_assert_uint_eq(ca.n, T);
+    ck_assert_ptr_nonnull(cb.optimise.box);
+    ck_assert_ptr_nonnull(cb.collapse_size);
+    memset(&e, 0, sizeof e);
+    ck_assert_int_eq(atrbvh_i_captures_differ(&e, &ca, ba, &cb, bb), 0);
+    ck_assert_uint_gt(bb->node_count, i);
+    while (!bb->nodes[leaf].count)
+        leaf++;
+    node = m - 5; /* a leaf of the binary trees */
+
+/* changes lvalue, expects the report, puts lvalue back */
+#define FLIP(lvalue, change, index, text)                                   \
+    do {                                                                    \
+        ck_assert(sizeof(lvalue) <= sizeof saved);                          \
+        memcpy(&saved, &(lvalue), sizeof(lvalue));                          \
+        change;                                                             \
+        expect_diff(&ca, ba, &cb, bb, (index), (text));                     \
+        memcpy(&(lvalue), &saved, sizeof(lvalue));                          \
+    } while (0)
+    {
+        union {
+            atrbvh_box box;
+            atrbvh_node node;
+            uint64_t key;
+            double cost;
+            size_t count;
+        } saved;
+        FLIP(cb.prim_boxes[i], cb.prim_boxes[i].max[1] =
+                                   nextafterf(cb.prim_boxes[i].max[1], 9.0f),
+             i, "stage bounds, primitive 123: box differs");
+        FLIP(cb.scene, cb.scene.min[0] -= 1.0f, 0,
+             "stage bounds, scene box 0: box differs");
+        FLIP(cb.centroids, cb.centroids.max[2] += 1.0f, 0,
+             "stage bounds, centroid box 0: box differs");
+        FLIP(cb.keys[i], cb.keys[i] ^= 1u, i,
+             "stage morton, primitive 123: key differs");
+        { /* both values, the first build's as "cpu" */
+            char want[128];
+            snprintf(want, sizeof want,
+                     "stage morton, primitive 0: key differs (cpu %016llx, "
+                     "opencl %016llx)",
+                     (unsigned long long)ca.keys[0],
+                     (unsigned long long)(ca.keys[0] ^ 8u));
+            FLIP(cb.keys[0], cb.keys[0] ^= 8u, 0, want);
+            snprintf(want, sizeof want, "box differs (cpu [%.9g ",
+                     (double)ca.prim_boxes[T - 1].min[0]);
+            FLIP(cb.prim_boxes[T - 1], cb.prim_boxes[T - 1].min[0] -= 1.0f,
+                 T - 1, want);
+        }
+        FLIP(cb.sorted_keys[i], cb.sorted_keys[i] ^= 4u, i,
+             "stage sort, position 123: key differs");
+        FLIP(cb.order[i], cb.order[i] ^= 1u, i,
+             "stage sort, position 123: primitive differs");
+        FLIP(cb.hierarchy.left[i], cb.hierarchy.left[i]++, i,
+             "stage hierarchy, node 123: left child differs");
+        FLIP(cb.hierarchy.parent[node], cb.hierarchy.parent[node]++, node,
+             "stage hierarchy, node");
+        FLIP(cb.hierarchy.leaf_prim[i], cb.hierarchy.leaf_prim[i]++, i,
+             "stage hierarchy, leaf 123: primitive differs");
+        FLIP(cb.refit.box[node], cb.refit.box[node].min[0] -= 1.0f, node,
+             "stage refit, node");
+        FLIP(cb.refit.cost[node], cb.refit.cost[node] *= 2.0, node,
+             "cost differs");
+        FLIP(cb.refit.count[i], cb.refit.count[i]++, i,
+             "stage refit, node 123: count differs");
+        FLIP(cb.optimise.right[i], cb.optimise.right[i]++, i,
+             "stage optimise, node 123: right child differs");
+        FLIP(cb.optimise.cost[i], cb.optimise.cost[i] += 1.0, i,
+             "stage optimise, node 123: cost differs");
+        FLIP(cb.optimise.leaf_prim[i], cb.optimise.leaf_prim[i]++, i,
+             "stage optimise, leaf 123: primitive differs");
+        FLIP(cb.collapse_size[i], cb.collapse_size[i]++, i,
+             "stage collapse, node 123: output size differs");
+        FLIP(cb.collapse_size[i], cb.collapse_size[i] ^= 0x80000000u, i,
+             "stage collapse, node 123: leaf decision differs");
+        FLIP(bb->nodes[i], bb->nodes[i].max[2] += 1.0f, i,
+             "stage layout, output node 123: box differs");
+        FLIP(bb->nodes[leaf], bb->nodes[leaf].count++, leaf,
+             "count differs");
+        FLIP(bb->prim_indices[i], bb->prim_indices[i]++, i,
+             "stage layout, index array entry 123: primitive differs");
+        FLIP(bb->prim_indices[0], bb->prim_indices[0]++, 0,
+             "stage layout, index array entry 0: primitive differs");
+        FLIP(bb->prim_indices[bb->prim_count - 1],
+             bb->prim_indices[bb->prim_count - 1]++, bb->prim_count - 1,
+             "stage layout, index array entry");
+        FLIP(bb->nodes[bb->node_count - 1],
+             bb->nodes[bb->node_count - 1].min[1] -= 1.0f,
+             bb->node_count - 1, "stage layout, output node");
+        FLIP(bb->node_count, bb->node_count--, 0,
+             "stage layout, array 0: node count differs");
+        /* two changes: the earlier stage is named */
+        {
+            const atrbvh_node root = bb->nodes[0];
+            bb->nodes[0].max[0] += 1.0f;
+            FLIP(cb.keys[i + 1], cb.keys[i + 1] ^= 2u, i + 1,
+                 "stage morton, primitive 124: key differs");
+            bb->nodes[0] = root;
+        }
+    }
+#undef FLIP
+    memset(&e, 0, sizeof e);
+    ck_assert_int_eq(atrbvh_i_captures_differ(&e, &ca, ba, &cb, bb), 0);
+    atrbvh_bvh_free(ba);
+    atrbvh_bvh_free(bb);
+    atrbvh_i_capture_free(&ca);
+    atrbvh_i_capture_free(&cb);
+    free(v);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("stages");
@@ -1288,6 +1442,7 @@ int main(void)
     tcase_add_test(tc, lbvh_leaf_boxes_in_place);
     tcase_add_test(tc, debug_check_refuses_each_fault);
     tcase_add_test(tc, debug_check_split_tree);
+    tcase_add_test(tc, validate_names_the_first_difference);
     suite_add_tcase(s, tc);
     return tu_run(s);
 }
