@@ -972,6 +972,80 @@ START_TEST(save_devices_never_removed)
 }
 END_TEST
 
+/* Paths that cannot be written (lib/atomicfile.c's resolve): an empty
+ * path, a loop of symbolic links, a link to itself, a path through a
+ * regular file, a link whose target lies through one, a link into a
+ * folder that does not exist.  Each is refused with ATRBVH_ERR_IO, a
+ * text naming the path and the system's reason, and leaves the folder
+ * as it was: the same names, the links pointing where they did, the
+ * file's bytes, and no temporary file. */
+START_TEST(save_unwritable_paths)
+{
+    static const struct {
+        const char *name; /* under the folder; "" the empty path */
+        int err;
+    } cases[] = {{"", ENOENT},          {"loop-a", ELOOP},
+                 {"self", ELOOP},       {"file/x", ENOTDIR},
+                 {"through-file", ENOTDIR}, {"into-nothing", ENOENT}};
+    static const char *const links[][2] = {
+        {"loop-a", "loop-b"}, {"loop-b", "loop-a"}, {"self", "self"},
+        {"through-file", "file/x"}, {"into-nothing", "none/x"}};
+    static const unsigned char bytes[] = "not a BVH, keep me\n";
+    float *v;
+    unsigned char *small;
+    size_t small_n, k;
+    atrbvh_bvh *big = big_and_small(&v, &small, &small_n);
+    char *dir = make_temp_dir(), path[700], before[1024], after[1024];
+    atrbvh_error e;
+    snprintf(path, sizeof path, "%s/file", dir);
+    write_bytes(path, bytes, sizeof bytes);
+    for (k = 0; k < sizeof links / sizeof links[0]; k++) {
+        snprintf(path, sizeof path, "%s/%s", dir, links[k][0]);
+        ck_assert_int_eq(symlink(links[k][1], path), 0);
+    }
+    list_dir(dir, before, sizeof before);
+    for (k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        size_t j;
+        if (*cases[k].name)
+            snprintf(path, sizeof path, "%s/%s", dir, cases[k].name);
+        else
+            path[0] = '\0';
+        memset(&e, 0, sizeof e);
+        ck_assert_int_eq(atrbvh_save(big, path, &e), ATRBVH_ERR_IO);
+        ck_assert_msg(e.status == ATRBVH_ERR_IO &&
+                          strstr(e.text, strerror(cases[k].err)) &&
+                          (!*path || strstr(e.text, path)),
+                      "%s: \"%s\" (expected the path and \"%s\")",
+                      cases[k].name, e.text, strerror(cases[k].err));
+        list_dir(dir, after, sizeof after);
+        ck_assert_msg(!strcmp(before, after), "%s: the folder held \"%s\", "
+                      "now \"%s\"", cases[k].name, before, after);
+        for (j = 0; j < sizeof links / sizeof links[0]; j++) {
+            char got[64];
+            ssize_t n;
+            snprintf(path, sizeof path, "%s/%s", dir, links[j][0]);
+            n = readlink(path, got, sizeof got - 1);
+            ck_assert_int_ge(n, 0);
+            got[n] = '\0';
+            ck_assert_str_eq(got, links[j][1]);
+        }
+        snprintf(path, sizeof path, "%s/file", dir);
+        ck_assert(holds(path, bytes, sizeof bytes));
+    }
+    for (k = 0; k < sizeof links / sizeof links[0]; k++) {
+        snprintf(path, sizeof path, "%s/%s", dir, links[k][0]);
+        ck_assert_int_eq(remove(path), 0);
+    }
+    snprintf(path, sizeof path, "%s/file", dir);
+    ck_assert_int_eq(remove(path), 0);
+    ck_assert_int_eq(rmdir(dir), 0);
+    atrbvh_bvh_free(big);
+    free(small);
+    free(dir);
+    free(v);
+}
+END_TEST
+
 /* Allocation k fails: whatever the outcome, the target holds either its
  * old bytes or the new ones, and no temporary file is left. */
 static long fail_at, alloc_count;
@@ -1046,6 +1120,7 @@ static Suite *suite(void)
     t = tcase_create("nothing lost");
     tcase_add_test(t, save_full_disk_keeps_target);
     tcase_add_test(t, save_devices_never_removed);
+    tcase_add_test(t, save_unwritable_paths);
     tcase_add_test(t, save_allocation_failures);
     tcase_set_timeout(t, 120);
     suite_add_tcase(s, t);
