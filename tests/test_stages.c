@@ -1110,8 +1110,9 @@ static size_t leaf_of_slot(const atrbvh_bvh *t, size_t slot)
 /* The tree check that --enable-debug-checks runs after every build
  * (lib/check.c) passes a built tree and refuses each fault it looks for,
  * at the right node, with the message naming it; boxes are compared with
- * the parent's only when asked.  CI's builds have no debug checks, so
- * this is where its refusals are tested. */
+ * the parent's only when asked.  CI's debug-checks build (45-configs)
+ * only ever hands it valid trees, so this is where its refusals are
+ * tested. */
 START_TEST(debug_check_refuses_each_fault)
 {
     const size_t T = 3000;
