@@ -40,4 +40,20 @@ if [ -n "$deb" ] && [ -f "$deb" ]; then
     fi
     echo "symbols: the Debian symbols file agrees"
 fi
-echo "symbols: 2 passed, 0 failed"
+# tests/test_clfault fails each OpenCL call the library makes, through the
+# linker's --wrap of each function Makefile.am names: a function the
+# library calls that is not wrapped would never fail there.
+used=$(nm -D --undefined-only "$lib" | awk '{print $2}' | sed 's/@.*//' |
+    grep '^cl[A-Z]' | sort -u)
+wrapped=$(grep -o -- '--wrap=cl[A-Za-z]*' "$ATRBVH_SRCDIR/Makefile.am" |
+    sed 's/--wrap=//' | sort -u)
+missing=$(printf '%s\n' "$used" | grep -v '^$' | grep -vxF "$wrapped")
+if [ -n "$missing" ]; then
+    echo "symbols: OpenCL functions the library calls that tests/test_clfault"
+    echo "does not wrap (Makefile.am, tests_test_clfault_LDFLAGS):"
+    printf '  %s\n' $missing
+    echo "symbols: 2 passed, 1 failed"
+    exit 1
+fi
+echo "symbols: the library's $(printf '%s\n' "$used" | grep -c '^cl') OpenCL functions are all wrapped for test_clfault"
+echo "symbols: 3 passed, 0 failed"
