@@ -123,19 +123,43 @@ atrbvh_status atrbvh_save_memory(const atrbvh_bvh *bvh, void **data,
  * (the allocation-failure tests count them). */
 static const atrbvh_i_atomicfile_alloc save_alloc = {atrbvh_i_malloc, atrbvh_i_free};
 
+/* What failed, for the message: the file could not be started (resolving
+ * the path, the temporary file), written, flushed, closed or renamed
+ * into place. */
+enum io_step { IO_BEGIN, IO_WRITE, IO_FSYNC, IO_CLOSE, IO_RENAME };
+
 static atrbvh_status io_fail(atrbvh_error *error, const char *path,
-                             size_t written, size_t total, int e)
+                             enum io_step step, size_t written, size_t total,
+                             int e)
 {
     if (e == ENOMEM) /* ours (the allocator) or the OS's */
         return atrbvh_i_fail(error, ATRBVH_ERR_NOMEM, (uint64_t)-1,
                              "%s: out of memory writing it", path);
-    if (written == 0 && total == 0)
+    switch (step) {
+    case IO_BEGIN:
         return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)-1,
                              "%s: cannot write: %s", path, strerror(e));
-    return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)written,
-                         "%s: write failed after %lu of %lu bytes: %s", path,
-                         (unsigned long)written, (unsigned long)total,
-                         strerror(e));
+    case IO_WRITE:
+        return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)written,
+                             "%s: write failed after %lu of %lu bytes: %s",
+                             path, (unsigned long)written,
+                             (unsigned long)total, strerror(e));
+    case IO_FSYNC:
+        return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)written,
+                             "%s: all %lu bytes written, but flushing them "
+                             "to disk (fsync) failed: %s", path,
+                             (unsigned long)total, strerror(e));
+    case IO_CLOSE:
+        return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)written,
+                             "%s: all %lu bytes written, but closing the "
+                             "file failed: %s", path, (unsigned long)total,
+                             strerror(e));
+    default:
+        return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)written,
+                             "%s: all %lu bytes written, but renaming the "
+                             "temporary file over it failed: %s", path,
+                             (unsigned long)total, strerror(e));
+    }
 }
 
 static atrbvh_status write_file(const char *path, const unsigned char *buf,
@@ -143,30 +167,39 @@ static atrbvh_status write_file(const char *path, const unsigned char *buf,
 {
     atomicfile af;
     size_t done = 0;
+    enum io_step step = IO_WRITE;
     int e = atrbvh_i_atomicfile_begin(&af, path, buf, &save_alloc);
     if (e != 0)
-        return io_fail(error, path, 0, 0, e);
+        return io_fail(error, path, IO_BEGIN, 0, 0, e);
     if (!af.tmp) { /* in place: not a regular file of ours to replace */
         int fd = atrbvh_i_atomicfile_open_in_place(path);
         atrbvh_i_atomicfile_abort(&af, &save_alloc); /* nothing to remove */
         if (fd < 0)
-            return io_fail(error, path, 0, 0, errno);
+            return io_fail(error, path, IO_BEGIN, 0, 0, errno);
         e = atrbvh_i_atomicfile_write_all(fd, buf, n, &done);
-        if (close(fd) != 0 && e == 0)
+        if (close(fd) != 0 && e == 0) {
             e = errno;
-        return e != 0 ? io_fail(error, path, done, n, e) : ATRBVH_OK;
+            step = IO_CLOSE;
+        }
+        return e != 0 ? io_fail(error, path, step, done, n, e) : ATRBVH_OK;
     }
     e = atrbvh_i_atomicfile_write_all(af.fd, buf, n, &done);
-    if (e == 0 && fsync(af.fd) != 0)
+    if (e == 0 && fsync(af.fd) != 0) {
         e = errno;
-    if (close(af.fd) != 0 && e == 0)
+        step = IO_FSYNC;
+    }
+    if (close(af.fd) != 0 && e == 0) {
         e = errno;
+        step = IO_CLOSE;
+    }
     af.fd = -1;
-    if (e == 0)
+    if (e == 0) {
         e = atrbvh_i_atomicfile_commit(&af, &save_alloc);
-    else
+        step = IO_RENAME;
+    } else {
         atrbvh_i_atomicfile_abort(&af, &save_alloc);
-    return e != 0 ? io_fail(error, path, done, n, e) : ATRBVH_OK;
+    }
+    return e != 0 ? io_fail(error, path, step, done, n, e) : ATRBVH_OK;
 }
 
 atrbvh_status atrbvh_save(const atrbvh_bvh *bvh, const char *path,

@@ -714,55 +714,7 @@ END_TEST
 /* ------------------------------------------------------- nothing lost */
 static char *make_temp_dir(void)
 {
-    const char *base = getenv("ATRBVH_BUILDDIR");
-    char *d = malloc(600);
-    ck_assert_ptr_nonnull(d);
-    snprintf(d, 600, "%s/test_io_safe_XXXXXX", base && *base ? base : ".");
-    ck_assert_msg(mkdtemp(d) != NULL, "mkdtemp %s: %s", d, strerror(errno));
-    return d;
-}
-
-/* Every name in `dir` other than . and .., as one string "a b c ". */
-static void list_dir(const char *dir, char *out, size_t len)
-{
-    DIR *dp = opendir(dir);
-    struct dirent *de;
-    size_t used = 0;
-    out[0] = '\0';
-    ck_assert_ptr_nonnull(dp);
-    while ((de = readdir(dp)) != NULL) {
-        if (!strcmp(de->d_name, ".") || !strcmp(de->d_name, ".."))
-            continue;
-        used += (size_t)snprintf(out + used, used < len ? len - used : 0,
-                                 "%s ", de->d_name);
-    }
-    closedir(dp);
-}
-
-static void write_bytes(const char *path, const unsigned char *d, size_t n)
-{
-    FILE *f = fopen(path, "wb");
-    ck_assert_ptr_nonnull(f);
-    ck_assert_uint_eq(fwrite(d, 1, n, f), n);
-    ck_assert_int_eq(fclose(f), 0);
-}
-
-/* 1 when `path` holds exactly n bytes d. */
-static int holds(const char *path, const unsigned char *d, size_t n)
-{
-    FILE *f = fopen(path, "rb");
-    unsigned char *buf;
-    size_t got;
-    int same;
-    if (!f)
-        return 0;
-    buf = malloc(n + 1);
-    ck_assert_ptr_nonnull(buf);
-    got = fread(buf, 1, n + 1, f);
-    fclose(f);
-    same = got == n && memcmp(buf, d, n) == 0;
-    free(buf);
-    return same;
+    return tu_make_temp_dir("test_io_safe_");
 }
 
 /* A big BVH (over 64 KiB as a file) and a small one's file image. */
@@ -795,14 +747,14 @@ START_TEST(save_full_disk_keeps_target)
     mounted = mount("tmpfs", dir, "tmpfs", 0, "size=64k") == 0;
 #endif
     snprintf(path, sizeof path, "%s/scene.bvh", dir);
-    write_bytes(path, small, small_n);
+    tu_write_bytes(path, small, small_n);
     if (mounted) {
         /* a real full file system; unmounted before asserting, so that a
          * failure leaves no mount behind */
         atrbvh_status st = atrbvh_save(big, path, &e);
         int named = strstr(e.text, path) != NULL;
-        int kept = holds(path, small, small_n);
-        list_dir(dir, names, sizeof names);
+        int kept = tu_holds(path, small, small_n);
+        tu_list_dir(dir, names, sizeof names);
         remove(path);
 #ifdef __linux__
         ck_assert_int_eq(umount(dir), 0);
@@ -811,7 +763,7 @@ START_TEST(save_full_disk_keeps_target)
         ck_assert_msg(named, "%s", e.text);
         ck_assert_msg(kept, "the existing file was lost or changed");
         ck_assert_str_eq(names, "scene.bvh ");
-        write_bytes(path, small, small_n);
+        tu_write_bytes(path, small, small_n);
     }
     {
         /* a file size limit (any user): writes past 32 KiB fail (EFBIG) */
@@ -825,23 +777,23 @@ START_TEST(save_full_disk_keeps_target)
         ck_assert_int_eq(setrlimit(RLIMIT_FSIZE, &old), 0);
         signal(SIGXFSZ, prev);
         ck_assert_msg(strstr(e.text, path) != NULL, "%s", e.text);
-        ck_assert_msg(holds(path, small, small_n),
+        ck_assert_msg(tu_holds(path, small, small_n),
                       "the existing file was lost or changed");
-        list_dir(dir, names, sizeof names);
+        tu_list_dir(dir, names, sizeof names);
         ck_assert_str_eq(names, "scene.bvh ");
     }
     remove(path);
     /* with room, the same save replaces the file whole */
-    write_bytes(path, small, small_n);
+    tu_write_bytes(path, small, small_n);
     ck_assert_int_eq(chmod(path, 0640), 0);
     ck_assert_int_eq(atrbvh_save(big, path, &e), ATRBVH_OK);
-    ck_assert(holds(path, bigimg, big_n));
+    ck_assert(tu_holds(path, bigimg, big_n));
     {
         struct stat st;
         ck_assert_int_eq(stat(path, &st), 0);
         ck_assert_uint_eq(st.st_mode & 07777, 0640); /* mode kept */
     }
-    list_dir(dir, names, sizeof names);
+    tu_list_dir(dir, names, sizeof names);
     ck_assert_str_eq(names, "scene.bvh ");
     remove(path);
     ck_assert_int_eq(rmdir(dir), 0);
@@ -927,7 +879,7 @@ START_TEST(save_devices_never_removed)
         img = realloc(img, n + 4);
         memmove(img + 4, img, n);
         memcpy(img, "head", 4);
-        ck_assert_msg(holds(path, img, n + 4),
+        ck_assert_msg(tu_holds(path, img, n + 4),
                       "not written in place after the existing bytes");
         free(img);
         remove(path);
@@ -962,7 +914,7 @@ START_TEST(save_devices_never_removed)
     ck_assert_int_eq(mkdir(path, 0700), 0);
     ck_assert_int_eq(atrbvh_save(big, path, &e), ATRBVH_ERR_IO);
     ck_assert_int_eq(rmdir(path), 0);
-    list_dir(dir, names, sizeof names);
+    tu_list_dir(dir, names, sizeof names);
     ck_assert_str_eq(names, "");
     ck_assert_int_eq(rmdir(dir), 0);
     atrbvh_bvh_free(big);
@@ -998,12 +950,12 @@ START_TEST(save_unwritable_paths)
     char *dir = make_temp_dir(), path[700], before[1024], after[1024];
     atrbvh_error e;
     snprintf(path, sizeof path, "%s/file", dir);
-    write_bytes(path, bytes, sizeof bytes);
+    tu_write_bytes(path, bytes, sizeof bytes);
     for (k = 0; k < sizeof links / sizeof links[0]; k++) {
         snprintf(path, sizeof path, "%s/%s", dir, links[k][0]);
         ck_assert_int_eq(symlink(links[k][1], path), 0);
     }
-    list_dir(dir, before, sizeof before);
+    tu_list_dir(dir, before, sizeof before);
     for (k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         size_t j;
         if (*cases[k].name)
@@ -1017,7 +969,7 @@ START_TEST(save_unwritable_paths)
                           (!*path || strstr(e.text, path)),
                       "%s: \"%s\" (expected the path and \"%s\")",
                       cases[k].name, e.text, strerror(cases[k].err));
-        list_dir(dir, after, sizeof after);
+        tu_list_dir(dir, after, sizeof after);
         ck_assert_msg(!strcmp(before, after), "%s: the folder held \"%s\", "
                       "now \"%s\"", cases[k].name, before, after);
         for (j = 0; j < sizeof links / sizeof links[0]; j++) {
@@ -1030,7 +982,7 @@ START_TEST(save_unwritable_paths)
             ck_assert_str_eq(got, links[j][1]);
         }
         snprintf(path, sizeof path, "%s/file", dir);
-        ck_assert(holds(path, bytes, sizeof bytes));
+        ck_assert(tu_holds(path, bytes, sizeof bytes));
     }
     for (k = 0; k < sizeof links / sizeof links[0]; k++) {
         snprintf(path, sizeof path, "%s/%s", dir, links[k][0]);
@@ -1070,7 +1022,7 @@ START_TEST(save_allocation_failures)
     snprintf(link, sizeof link, "%s/link.bvh", dir);
     ck_assert_int_eq(symlink("t.bvh", link), 0);
     for (fail_at = 0;; fail_at++) {
-        write_bytes(path, small, small_n);
+        tu_write_bytes(path, small, small_n);
         alloc_count = 0;
         atrbvh_set_allocator(failing_malloc, free);
         s = atrbvh_save(big, link, &e);
@@ -1078,9 +1030,9 @@ START_TEST(save_allocation_failures)
         ck_assert_msg(s == ATRBVH_OK || s == ATRBVH_ERR_NOMEM,
                       "allocation %ld failing: %d %s", fail_at, (int)s,
                       e.text);
-        ck_assert(holds(path, s == ATRBVH_OK ? bigimg : small,
+        ck_assert(tu_holds(path, s == ATRBVH_OK ? bigimg : small,
                         s == ATRBVH_OK ? big_n : small_n));
-        list_dir(dir, names, sizeof names);
+        tu_list_dir(dir, names, sizeof names);
         ck_assert_msg(!strcmp(names, "t.bvh link.bvh ") ||
                           !strcmp(names, "link.bvh t.bvh "),
                       "after allocation %ld failed: %s", fail_at, names);

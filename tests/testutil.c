@@ -3,10 +3,12 @@
  * independently of the library: it walks the node array itself, recomputes
  * primitive boxes from the geometry and recomputes the SAH in long double.
  */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
 #include "testutil.h"
 
 #include <check.h>
 #include <dirent.h>
+#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -692,4 +694,56 @@ int tu_run(Suite *s)
     failed = srunner_ntests_failed(sr);
     srunner_free(sr);
     return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+}
+
+/* ---------------------------------------------------------------- files */
+char *tu_make_temp_dir(const char *prefix)
+{
+    const char *base = getenv("ATRBVH_BUILDDIR");
+    char *d = malloc(600);
+    ck_assert_ptr_nonnull(d);
+    snprintf(d, 600, "%s/%sXXXXXX", base && *base ? base : ".", prefix);
+    ck_assert_msg(mkdtemp(d) != NULL, "mkdtemp %s: %s", d, strerror(errno));
+    return d;
+}
+
+void tu_list_dir(const char *dir, char *out, size_t len)
+{
+    DIR *dp = opendir(dir);
+    struct dirent *de;
+    size_t used = 0;
+    out[0] = '\0';
+    ck_assert_ptr_nonnull(dp);
+    while ((de = readdir(dp)) != NULL) {
+        if (!strcmp(de->d_name, ".") || !strcmp(de->d_name, ".."))
+            continue;
+        used += (size_t)snprintf(out + used, used < len ? len - used : 0,
+                                 "%s ", de->d_name);
+    }
+    closedir(dp);
+}
+
+void tu_write_bytes(const char *path, const unsigned char *d, size_t n)
+{
+    FILE *f = fopen(path, "wb");
+    ck_assert_ptr_nonnull(f);
+    ck_assert_uint_eq(fwrite(d, 1, n, f), n);
+    ck_assert_int_eq(fclose(f), 0);
+}
+
+int tu_holds(const char *path, const unsigned char *d, size_t n)
+{
+    FILE *f = fopen(path, "rb");
+    unsigned char *buf;
+    size_t got;
+    int same;
+    if (!f)
+        return 0;
+    buf = malloc(n + 1);
+    ck_assert_ptr_nonnull(buf);
+    got = fread(buf, 1, n + 1, f);
+    fclose(f);
+    same = got == n && memcmp(buf, d, n) == 0;
+    free(buf);
+    return same;
 }

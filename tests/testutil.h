@@ -110,6 +110,16 @@ void tu_fix_crc(unsigned char *d, size_t n);
 unsigned char *tu_chain_bvh_bytes(const float *v, size_t leaves,
                                   size_t *size);
 
+/* Files.  A new folder "$ATRBVH_BUILDDIR/<prefix>XXXXXX" (or under ".")
+ * made by mkdtemp (malloc'd name); every name in `dir` other than . and
+ * .., as one string "a b c "; a file of n bytes d (written with stdio);
+ * whether `path` holds exactly n bytes d (0 when it cannot be read).
+ * Each fails the current test when a call it makes fails. */
+char *tu_make_temp_dir(const char *prefix);
+void tu_list_dir(const char *dir, char *out, size_t len);
+void tu_write_bytes(const char *path, const unsigned char *d, size_t n);
+int tu_holds(const char *path, const unsigned char *d, size_t n);
+
 /* Whether a test that needs the OpenCL backend may skip, saying so, after
  * `st`, the failed status of its first call on it: only for
  * ATRBVH_ERR_UNSUPPORTED (a library without OpenCL, or a system without

@@ -1,0 +1,466 @@
+/*
+ * test_savefault.c - atrbvh_save when the system calls under it fail.
+ *
+ * The library's core is linked with ld --wrap for the file calls of
+ * lib/atomicfile.c and lib/save.c (Makefile.am), so the k-th of them can
+ * fail: EIO (odd k) or ENOSPC (even k), the call not made (close is made,
+ * then reported failed, as Linux does).  For every k up to the calls a
+ * save makes - of a new file, over an existing file (mode 0640), and
+ * through a symbolic link to one:
+ *
+ *   - the save fails with ATRBVH_ERR_IO, its message naming the path, the
+ *     step (write, fsync, close, rename) and the error, and the folder is
+ *     as it was: the old file byte for byte with its mode, the link a
+ *     link to it, no temporary file; or, for the calls it can do without
+ *     (the /proc check, the owner, the folder's fsync), it succeeds with
+ *     the new bytes;
+ *   - no file descriptor is left open.
+ *
+ * And short writes (at most 1000 bytes a call) and writes interrupted
+ * every other call (EINTR) still give the whole file.  Skips when the
+ * library's calls are not the wrapped names on this system.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <check.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <unistd.h>
+
+#include "atrbvh.h"
+#include "testutil.h"
+
+/* ------------------------------------------------------------ the wrappers */
+static int armed;             /* counting (around atrbvh_save only)   */
+static unsigned long calls;   /* wrapped calls since arm()            */
+static unsigned long fail_at; /* the call that fails (0: none)        */
+static const char *failed;    /* its name, once it has failed         */
+static int fail_errno;
+static size_t write_limit;   /* nonzero: no write passes more        */
+static int interrupt_writes; /* every other write: EINTR, nothing written */
+static unsigned long writes; /* write calls while armed               */
+
+static void arm(unsigned long k)
+{
+    calls = 0;
+    writes = 0;
+    fail_at = k;
+    failed = NULL;
+    fail_errno = k % 2 ? EIO : ENOSPC;
+    armed = 1;
+}
+
+/* Whether this call is the one that fails (errno then set). */
+static int fails(const char *name)
+{
+    if (!armed || ++calls != fail_at)
+        return 0;
+    failed = name;
+    errno = fail_errno;
+    return 1;
+}
+
+#define FAIL_OR(name) \
+    if (fails(#name)) \
+    return -1
+
+int __real_open(const char *path, int flags, ...);
+int __wrap_open(const char *path, int flags, ...);
+int __wrap_open(const char *path, int flags, ...)
+{
+    mode_t mode = 0;
+    if (flags & O_CREAT) {
+        va_list ap;
+        va_start(ap, flags);
+        mode = (mode_t)va_arg(ap, int);
+        va_end(ap);
+    }
+    FAIL_OR(open);
+    return __real_open(path, flags, mode);
+}
+
+#ifdef __GLIBC__
+/* glibc's _FORTIFY_SOURCE turns an open() whose flags are not a constant
+ * into __open_2 (a distribution's build flags do). */
+int __real___open_2(const char *path, int flags);
+int __wrap___open_2(const char *path, int flags);
+int __wrap___open_2(const char *path, int flags)
+{
+    FAIL_OR(open);
+    return __real___open_2(path, flags);
+}
+#endif
+
+ssize_t __real_write(int fd, const void *b, size_t n);
+ssize_t __wrap_write(int fd, const void *b, size_t n);
+ssize_t __wrap_write(int fd, const void *b, size_t n)
+{
+    FAIL_OR(write);
+    if (armed) {
+        writes++;
+        if (interrupt_writes && writes % 2) {
+            errno = EINTR;
+            return -1;
+        }
+        if (write_limit && n > write_limit)
+            n = write_limit;
+    }
+    return __real_write(fd, b, n);
+}
+
+int __real_fsync(int fd);
+int __wrap_fsync(int fd);
+int __wrap_fsync(int fd)
+{
+    FAIL_OR(fsync);
+    return __real_fsync(fd);
+}
+
+int __real_close(int fd);
+int __wrap_close(int fd);
+int __wrap_close(int fd)
+{
+    if (fails("close")) { /* closed all the same, as on Linux */
+        (void)__real_close(fd);
+        errno = fail_errno;
+        return -1;
+    }
+    return __real_close(fd);
+}
+
+int __real_rename(const char *from, const char *to);
+int __wrap_rename(const char *from, const char *to);
+int __wrap_rename(const char *from, const char *to)
+{
+    FAIL_OR(rename);
+    return __real_rename(from, to);
+}
+
+int __real_fchmod(int fd, mode_t mode);
+int __wrap_fchmod(int fd, mode_t mode);
+int __wrap_fchmod(int fd, mode_t mode)
+{
+    FAIL_OR(fchmod);
+    return __real_fchmod(fd, mode);
+}
+
+int __real_fchown(int fd, uid_t uid, gid_t gid);
+int __wrap_fchown(int fd, uid_t uid, gid_t gid);
+int __wrap_fchown(int fd, uid_t uid, gid_t gid)
+{
+    FAIL_OR(fchown);
+    return __real_fchown(fd, uid, gid);
+}
+
+int __real_stat(const char *path, struct stat *st);
+int __wrap_stat(const char *path, struct stat *st);
+int __wrap_stat(const char *path, struct stat *st)
+{
+    FAIL_OR(stat);
+    return __real_stat(path, st);
+}
+
+int __real_lstat(const char *path, struct stat *st);
+int __wrap_lstat(const char *path, struct stat *st);
+int __wrap_lstat(const char *path, struct stat *st)
+{
+    FAIL_OR(lstat);
+    return __real_lstat(path, st);
+}
+
+int __real_access(const char *path, int how);
+int __wrap_access(const char *path, int how);
+int __wrap_access(const char *path, int how)
+{
+    FAIL_OR(access);
+    return __real_access(path, how);
+}
+
+ssize_t __real_readlink(const char *path, char *buf, size_t size);
+ssize_t __wrap_readlink(const char *path, char *buf, size_t size);
+ssize_t __wrap_readlink(const char *path, char *buf, size_t size)
+{
+    FAIL_OR(readlink);
+    return __real_readlink(path, buf, size);
+}
+
+/* ---------------------------------------------------------------- checks */
+/* The lowest free descriptor (a leaked one takes it). */
+static int lowest_free_fd(void)
+{
+    int fd = dup(0);
+    ck_assert_int_ge(fd, 0);
+    ck_assert_int_eq(close(fd), 0);
+    return fd;
+}
+
+static mode_t mode_of(const char *path)
+{
+    struct stat st;
+    ck_assert_int_eq(stat(path, &st), 0);
+    return st.st_mode & 07777;
+}
+
+/* The words a failure of `call` must put in the message. */
+static const char *step_words(const char *call)
+{
+    if (!strcmp(call, "write"))
+        return "write failed after";
+    if (!strcmp(call, "fsync"))
+        return "(fsync) failed";
+    if (!strcmp(call, "close"))
+        return "closing the file failed";
+    if (!strcmp(call, "rename"))
+        return "renaming the temporary file over it failed";
+    return "cannot write";
+}
+
+/* The calls that failed the save, and those it did without, for the log
+ * and the checks: " name name ... ", each name once. */
+static char refused[256], done_without[256];
+
+static void note(char *list, size_t size, const char *name)
+{
+    char word[32];
+    size_t used = strlen(list);
+    snprintf(word, sizeof word, " %s ", name);
+    if (!strstr(list, word) && used + strlen(word) < size)
+        snprintf(list + used, size - used, "%s ", name);
+}
+
+static atrbvh_bvh *bvh;
+static unsigned char *image, *old_image;
+static size_t image_n, old_n;
+static float *tris;
+
+static void make_bvhs(void)
+{
+    atrbvh_build_options o;
+    atrbvh_geometry g;
+    atrbvh_bvh *old;
+    atrbvh_error e;
+    void *d;
+    if (bvh)
+        return;
+    tris = tu_random_triangles(3000, 3, 1.0f, 0.0f);
+    g = atrbvh_geometry_triangles(tris, 9000, NULL, 3000);
+    atrbvh_build_options_init(&o);
+    bvh = tu_build(&g, &o);
+    ck_assert_int_eq(atrbvh_save_memory(bvh, &d, &image_n, &e), ATRBVH_OK);
+    image = d;
+    g = atrbvh_geometry_triangles(tris, 300, NULL, 100);
+    old = tu_build(&g, &o);
+    ck_assert_int_eq(atrbvh_save_memory(old, &d, &old_n, &e), ATRBVH_OK);
+    old_image = d;
+    atrbvh_bvh_free(old);
+}
+
+enum save_case { NEW_FILE, REPLACE, THROUGH_LINK, IN_PLACE };
+static const char *const scene_name[] = {"a new file", "over a file",
+                                         "through a link", "to /dev/null"};
+
+/* Sets the folder up for `sc`: `file` absent, or holding the old
+ * bytes with mode 0640 (and `link` naming it). */
+static void set_up(enum save_case sc, const char *file, const char *link)
+{
+    remove(file);
+    if (sc == NEW_FILE || sc == IN_PLACE)
+        return;
+    tu_write_bytes(file, old_image, old_n);
+    ck_assert_int_eq(chmod(file, 0640), 0);
+    if (sc == THROUGH_LINK) {
+        remove(link);
+        ck_assert_int_eq(symlink("scene.bvh", link), 0);
+    }
+}
+
+/* Every call of a save in `sc` failed in turn. */
+static void save_fails_cleanly(enum save_case sc)
+{
+    char *dir = tu_make_temp_dir("test_savefault_");
+    char file[700], link[700], target[700], before[512], after[512];
+    const char *what = scene_name[sc];
+    unsigned long n, k;
+    atrbvh_error e;
+    make_bvhs();
+    snprintf(file, sizeof file, "%s/scene.bvh", dir);
+    snprintf(link, sizeof link, "%s/link.bvh", dir);
+    snprintf(target, sizeof target, "%s",
+             sc == THROUGH_LINK ? link : sc == IN_PLACE ? "/dev/null" : file);
+    /* a clean save: its calls */
+    set_up(sc, file, link);
+    arm(0);
+    ck_assert_int_eq(atrbvh_save(bvh, target, &e), ATRBVH_OK);
+    armed = 0;
+    n = calls;
+    if (n == 0) {
+        fprintf(stderr, "SKIP %s: the library's file calls are not the "
+                "wrapped names here\n", what);
+        goto done;
+    }
+    ck_assert(sc == IN_PLACE || tu_holds(file, image, image_n));
+    strcpy(refused, " ");
+    strcpy(done_without, " ");
+    for (k = 1; k <= n; k++) {
+        int fd0;
+        atrbvh_status st;
+        set_up(sc, file, link);
+        tu_list_dir(dir, before, sizeof before);
+        fd0 = lowest_free_fd();
+        memset(&e, 0, sizeof e);
+        arm(k);
+        st = atrbvh_save(bvh, target, &e);
+        armed = 0;
+        ck_assert_msg(failed != NULL, "%s: call %lu of %lu never made", what,
+                      k, n);
+        ck_assert_msg(lowest_free_fd() == fd0,
+                      "%s, %s (call %lu) failed: a descriptor left open",
+                      what, failed, k);
+        if (st == ATRBVH_OK) {
+            note(done_without, sizeof done_without, failed);
+            if (sc == IN_PLACE)
+                continue;
+            ck_assert_msg(tu_holds(file, image, image_n),
+                          "%s survived %s (call %lu) without the new bytes",
+                          what, failed, k);
+            if (sc != NEW_FILE)
+                ck_assert_uint_eq(mode_of(file), 0640);
+            continue;
+        }
+        note(refused, sizeof refused, failed);
+        ck_assert_msg(st == ATRBVH_ERR_IO && e.status == ATRBVH_ERR_IO,
+                      "%s, %s (call %lu) failed: status %d (%s)", what,
+                      failed, k, (int)st, e.text);
+        ck_assert_msg(strstr(e.text, target) &&
+                          strstr(e.text, strerror(fail_errno)) &&
+                          strstr(e.text, step_words(failed)),
+                      "%s, %s (call %lu) failed with %s: \"%s\" does not "
+                      "name the path, the step (\"%s\") and the error",
+                      what, failed, k, strerror(fail_errno), e.text,
+                      step_words(failed));
+        tu_list_dir(dir, after, sizeof after);
+        ck_assert_msg(!strcmp(before, after), "%s, %s (call %lu) failed: "
+                      "the folder held \"%s\", now \"%s\"", what, failed, k,
+                      before, after);
+        if (sc == NEW_FILE || sc == IN_PLACE)
+            continue;
+        ck_assert_msg(tu_holds(file, old_image, old_n),
+                      "%s, %s (call %lu) failed: the old file changed", what,
+                      failed, k);
+        ck_assert_uint_eq(mode_of(file), 0640);
+        if (sc == THROUGH_LINK) {
+            char got[64];
+            ssize_t r = readlink(link, got, sizeof got - 1);
+            ck_assert_int_gt(r, 0);
+            got[r] = '\0';
+            ck_assert_str_eq(got, "scene.bvh");
+        }
+    }
+    fprintf(stderr, "save %s: %lu calls, each failed in turn; refused: "
+            "%s; done without:%s\n", what, n, refused + 1, done_without);
+    /* the steps that must have been tried (in place: no temporary file,
+     * so no fsync or rename) */
+    ck_assert_msg(strstr(refused, " open ") && strstr(refused, " write ") &&
+                      strstr(refused, " close ") &&
+                      (sc == IN_PLACE || (strstr(refused, " fsync ") &&
+                                          strstr(refused, " rename "))),
+                  "%s: refused only %s", what, refused);
+    if (sc == REPLACE || sc == THROUGH_LINK)
+        ck_assert_msg(strstr(refused, " fchmod "), "%s: refused only %s",
+                      what, refused);
+    if (sc == THROUGH_LINK)
+        ck_assert_msg(strstr(refused, " readlink "), "%s: refused only %s",
+                      what, refused);
+done:
+    remove(link);
+    remove(file);
+    ck_assert_int_eq(rmdir(dir), 0);
+    free(dir);
+}
+
+START_TEST(new_file_save_fails_cleanly_at_each_call)
+{
+    save_fails_cleanly(NEW_FILE);
+}
+END_TEST
+
+START_TEST(replacing_save_fails_cleanly_at_each_call)
+{
+    save_fails_cleanly(REPLACE);
+}
+END_TEST
+
+START_TEST(linked_save_fails_cleanly_at_each_call)
+{
+    save_fails_cleanly(THROUGH_LINK);
+}
+END_TEST
+
+START_TEST(in_place_save_fails_cleanly_at_each_call)
+{
+    save_fails_cleanly(IN_PLACE);
+}
+END_TEST
+
+/* Writes that take part of what they are given, or are interrupted
+ * before writing anything, still give the whole file. */
+START_TEST(short_and_interrupted_writes_complete)
+{
+    char *dir = tu_make_temp_dir("test_savefault_");
+    char file[700];
+    atrbvh_error e;
+    int how;
+    make_bvhs();
+    snprintf(file, sizeof file, "%s/scene.bvh", dir);
+    for (how = 0; how < 2; how++) {
+        write_limit = how == 0 ? 1000 : 0;
+        interrupt_writes = how == 1;
+        arm(0);
+        ck_assert_msg(atrbvh_save(bvh, file, &e) == ATRBVH_OK, "%s: %s",
+                      how ? "interrupted writes" : "short writes", e.text);
+        armed = 0;
+        write_limit = 0;
+        interrupt_writes = 0;
+        if (calls == 0) {
+            fprintf(stderr, "SKIP short_and_interrupted_writes_complete: "
+                    "the library's file calls are not the wrapped names "
+                    "here\n");
+            break;
+        }
+        ck_assert_msg(tu_holds(file, image, image_n), "%s: other bytes",
+                      how ? "interrupted writes" : "short writes");
+        /* (one write would have done: the cut did happen) */
+        ck_assert_uint_ge(writes, how == 0 ? (image_n + 999) / 1000 : 2);
+        fprintf(stderr, "%s: %lu bytes in %lu write calls\n",
+                how ? "interrupted writes" : "short writes",
+                (unsigned long)image_n, writes);
+        ck_assert_int_eq(remove(file), 0);
+    }
+    ck_assert_int_eq(rmdir(dir), 0);
+    free(dir);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("savefault");
+    TCase *tc = tcase_create("faults");
+    int rc;
+    tcase_add_test(tc, new_file_save_fails_cleanly_at_each_call);
+    tcase_add_test(tc, replacing_save_fails_cleanly_at_each_call);
+    tcase_add_test(tc, linked_save_fails_cleanly_at_each_call);
+    tcase_add_test(tc, in_place_save_fails_cleanly_at_each_call);
+    tcase_add_test(tc, short_and_interrupted_writes_complete);
+    suite_add_tcase(s, tc);
+    rc = tu_run(s);
+    atrbvh_bvh_free(bvh);
+    atrbvh_free(image);
+    atrbvh_free(old_image);
+    free(tris);
+    return rc;
+}
