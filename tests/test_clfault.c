@@ -8,7 +8,7 @@
  * k), without reaching the implementation.  For every k up to the number
  * of calls a device open, a build by each method (in place on a device
  * that shares the host's memory, and through copies; the first on a
- * handle and a later one) and a ray batch make:
+ * handle and a later one), a ray batch and a re-optimisation make:
  *
  *   - the call fails with ATRBVH_ERR_NOMEM (host memory) or
  *     ATRBVH_ERR_BACKEND, its message naming the failed call and the code
@@ -17,7 +17,7 @@
  *     it succeeds with the CPU's tree or hits;
  *   - the same handle then builds (or traces) again and gives the CPU's
  *     result bit for bit: a failure leaves nothing behind that trips a
- *     later call;
+ *     later call; a refused re-optimisation leaves the tree as it was;
  *   - the failing call's geometry, rays and hits are arrays of its own,
  *     freed as soon as it returns: under ASan, a queued copy still
  *     touching them is a use-after-free; and no buffer made over them
@@ -788,6 +788,97 @@ START_TEST(ray_batch_fails_cleanly_at_each_call)
 }
 END_TEST
 
+/* Each call of a re-optimisation on the device failed in turn, the
+ * geometry moved: a refused call leaves the tree as it was
+ * (atrbvh_refit(3)), and the same call again gives the CPU's result.  (A
+ * refit runs on the host for every device: it must make no OpenCL call.) */
+START_TEST(animation_fails_cleanly_at_each_call)
+{
+    atrbvh_device *dev = open_dev(__func__, 0);
+    atrbvh_build_options o;
+    atrbvh_geometry moved;
+    float *v;
+    size_t i;
+    int which;
+    if (!dev)
+        return;
+    make_scene();
+    atrbvh_build_options_init(&o);
+    o.max_leaf_size = 8;
+    v = malloc(sizeof(float) * 9 * N_TRIS);
+    ck_assert(v != NULL);
+    for (i = 0; i < 9 * (size_t)N_TRIS; i++) /* stretched, shifted in x */
+        v[i] = tris[i] * 1.25f + (i % 3 == 0 ? 0.5f : 0.0f);
+    moved = atrbvh_geometry_triangles(v, 3 * N_TRIS, NULL, N_TRIS);
+    for (which = 0; which < 2; which++) {
+        atrbvh_status (*op)(atrbvh_bvh *, const atrbvh_geometry *,
+                            const atrbvh_build_options *, atrbvh_error *) =
+            which ? atrbvh_reoptimise : atrbvh_refit;
+        const char *what = which ? "a re-optimisation" : "a refit";
+        atrbvh_bvh *want = cpu_tree(&o), *as_built = cpu_tree(&o);
+        atrbvh_bvh *b = cpu_tree(&o);
+        atrbvh_error e;
+        unsigned long k, survived = 0;
+        char msg[256];
+        ck_assert_int_eq(op(want, &moved, &o, &e), ATRBVH_OK);
+        done_without[0] = '\0';
+        if (!which) { /* the refit */
+            atrbvh_build_options d = o;
+            d.device = dev;
+            arm(0);
+            ck_assert_int_eq(op(b, &moved, &d, &e), ATRBVH_OK);
+            ck_assert_msg(calls == 0, "a refit made %lu OpenCL calls",
+                          calls);
+            ck_assert_msg(tu_same_bvh(want, b, msg, sizeof msg),
+                          "a refit on the device: %s", msg);
+            atrbvh_bvh_free(b);
+            atrbvh_bvh_free(as_built);
+            atrbvh_bvh_free(want);
+            continue;
+        }
+        for (k = 1;; k++) {
+            atrbvh_build_options d = o;
+            atrbvh_status st;
+            int hit;
+            d.device = dev;
+            arm(k);
+            st = op(b, &moved, &d, &e);
+            hit = failed != NULL;
+            assert_caller_arrays_free(what, k);
+            if (st != ATRBVH_OK) {
+                ck_assert_msg(hit, "%s: %s", what, e.text);
+                assert_named_failure(st, &e, k, what);
+                ck_assert_msg(tu_same_bvh(as_built, b, msg, sizeof msg),
+                              "%s, call %lu (%s) failed: the tree changed: "
+                              "%s", what, k, failed, msg);
+                arm(0);
+                ck_assert_msg(op(b, &moved, &d, &e) == ATRBVH_OK,
+                              "%s, after call %lu: %s", what, k, e.text);
+            } else if (hit) {
+                survived++;
+                note_done_without(failed);
+            }
+            ck_assert_msg(tu_same_bvh(want, b, msg, sizeof msg),
+                          "%s, call %lu (%s) failed: not the CPU's tree: %s",
+                          what, k, hit ? failed : "none", msg);
+            if (!hit)
+                break;
+            atrbvh_bvh_free(b);
+            b = cpu_tree(&o);
+        }
+        ck_assert_msg(k > 5, "%s: only %lu OpenCL calls", what, k - 1);
+        fprintf(stderr, "%s: %lu calls, each failed in turn; %lu done "
+                "without (%s)\n", what, k - 1, survived, done_without);
+        atrbvh_bvh_free(b);
+        atrbvh_bvh_free(as_built);
+        atrbvh_bvh_free(want);
+    }
+    atrbvh_device_close(dev);
+    assert_none_live("animation");
+    free(v);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("clfault");
@@ -799,6 +890,7 @@ int main(void)
     tcase_add_test(tc, trbvh_build_fails_cleanly_at_each_call);
     tcase_add_test(tc, copied_build_fails_cleanly_at_each_call);
     tcase_add_test(tc, ray_batch_fails_cleanly_at_each_call);
+    tcase_add_test(tc, animation_fails_cleanly_at_each_call);
     tcase_set_timeout(tc, 600);
     suite_add_tcase(s, tc);
     rc = tu_run(s);
