@@ -535,12 +535,15 @@ atrbvh_status atrbvh_load(const char *path, atrbvh_bvh **out,
                              e ? strerror(e) : "not a regular file");
     }
     /* Check the header against the real size before allocating anything. */
+    errno = 0;
     got = fread(header, 1, sizeof header, f);
     if (got < sizeof header && ferror(f)) {
+        int e = errno;
         fclose(f);
         return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)got,
-                             "%s: read error at byte %lu", path,
-                             (unsigned long)got);
+                             "%s: read error at byte %lu: %s", path,
+                             (unsigned long)got,
+                             e ? strerror(e) : "unknown error");
     }
     st = parse_header(header,
                       got < sizeof header ? (uint64_t)got : (uint64_t)fsize,
@@ -558,16 +561,22 @@ atrbvh_status atrbvh_load(const char *path, atrbvh_bvh **out,
                              (unsigned long long)fh.total);
     }
     memcpy(buf, header, sizeof header);
+    errno = 0;
     got = fread(buf + sizeof header, 1, (size_t)fh.total - sizeof header, f);
     if (got != (size_t)fh.total - sizeof header) {
-        int bad = ferror(f);
+        int e = errno, bad = ferror(f);
         fclose(f);
         atrbvh_i_free(buf);
-        return atrbvh_i_fail(error, bad ? ATRBVH_ERR_IO : ATRBVH_ERR_FORMAT,
+        if (!bad)
+            return atrbvh_i_fail(error, ATRBVH_ERR_FORMAT,
+                                 (uint64_t)(sizeof header + got),
+                                 "%s: truncated at byte %lu", path,
+                                 (unsigned long)(sizeof header + got));
+        return atrbvh_i_fail(error, ATRBVH_ERR_IO,
                              (uint64_t)(sizeof header + got),
-                             "%s: %s at byte %lu", path,
-                             bad ? "read error" : "truncated",
-                             (unsigned long)(sizeof header + got));
+                             "%s: read error at byte %lu: %s", path,
+                             (unsigned long)(sizeof header + got),
+                             e ? strerror(e) : "unknown error");
     }
     fclose(f);
     st = atrbvh_load_memory(buf, (size_t)fh.total, out, error);

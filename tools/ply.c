@@ -860,14 +860,26 @@ done:
 }
 
 /* -------------------------------------------------------------- reading */
-static int read_more(FILE *f, unsigned char **buf, size_t *cap, size_t *len,
-                     size_t want, size_t *got)
+/* Up to `want` more bytes of p's file onto *buf: 0, or -1 with p's
+ * message set (out of memory, or a read error with the system's reason:
+ * checked here, at once, so that a failed read is never taken for the end
+ * of the file by the parser). */
+static int read_more(FILE *f, const ply *p, unsigned char **buf,
+                     size_t *cap, size_t *len, size_t want, size_t *got)
 {
     if (!scene_reserve((void **)buf, cap, *len + want, 1))
-        return 0;
+        return scene_fail(p->err, p->err_len, "%s: out of memory reading "
+                          "%zu bytes", p->path, *len + want);
+    errno = 0;
     *got = fread(*buf + *len, 1, want, f);
     *len += *got;
-    return 1;
+    if (*got < want && ferror(f)) {
+        int e = errno;
+        return scene_fail(p->err, p->err_len, "%s: read error after %zu "
+                          "bytes: %s", p->path, *len,
+                          e ? strerror(e) : "unknown error");
+    }
+    return 0;
 }
 
 int scene_read_ply(const char *path, unsigned char **data, size_t *size,
@@ -901,10 +913,8 @@ int scene_read_ply(const char *path, unsigned char **data, size_t *size,
         if (want > 4096)
             want = 4096;
         if (!eof && want > 0) {
-            if (!read_more(f, &buf, &cap, &len, want, &got)) {
-                scene_fail(err, err_len, "%s: out of memory", path);
+            if (read_more(f, &p, &buf, &cap, &len, want, &got) != 0)
                 goto fail;
-            }
             eof = got < want;
         }
         p.data = buf;
@@ -922,10 +932,6 @@ int scene_read_ply(const char *path, unsigned char **data, size_t *size,
                        path, PLY_HEADER_MAX);
             goto fail;
         }
-    }
-    if (ferror(f)) {
-        scene_fail(err, err_len, "%s: read error: %s", path, strerror(errno));
-        goto fail;
     }
     header_end = p.pos;
     body_bounds(&p, &min, &max);
@@ -973,11 +979,8 @@ int scene_read_ply(const char *path, unsigned char **data, size_t *size,
         }
         if (limit != UINT64_MAX && (uint64_t)want > limit + 1 - body)
             want = (size_t)(limit + 1 - body);
-        if (!read_more(f, &buf, &cap, &len, want, &got)) {
-            scene_fail(err, err_len, "%s: out of memory reading %zu bytes",
-                       path, len);
+        if (read_more(f, &p, &buf, &cap, &len, want, &got) != 0)
             goto fail;
-        }
         eof = got < want;
         if (regular)
             scene_progress(0, len, (uint64_t)st.st_size);
@@ -987,11 +990,6 @@ int scene_read_ply(const char *path, unsigned char **data, size_t *size,
                    "more than the elements it declares can take (at most "
                    "%llu)", path, (unsigned long long)limit,
                    (unsigned long long)max);
-        goto fail;
-    }
-    if (ferror(f)) {
-        scene_fail(err, err_len, "%s: read error after %zu bytes: %s", path,
-                   len, strerror(errno));
         goto fail;
     }
     fclose(f);

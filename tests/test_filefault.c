@@ -1,12 +1,15 @@
 /*
- * test_savefault.c - atrbvh_save when the system calls under it fail.
+ * test_filefault.c - saving and loading when the system calls under them
+ * fail.
  *
- * The library's core is linked with ld --wrap for the file calls of
- * lib/atomicfile.c and lib/save.c (Makefile.am), so the k-th of them can
- * fail: EIO (odd k) or ENOSPC (even k), the call not made (close is made,
- * then reported failed, as Linux does).  For every k up to the calls a
- * save makes - of a new file, over an existing file (mode 0640), and
- * through a symbolic link to one:
+ * The library's core and the scene loaders (tools/libscene) are linked
+ * with ld --wrap for their file calls (Makefile.am), so the k-th of them
+ * can fail: EIO (odd k) or ENOSPC (even k), the call not made (close and
+ * fclose are made, then reported failed, as Linux does).
+ *
+ * atrbvh_save, for every k up to the calls a save makes - of a new file,
+ * over an existing file (mode 0640), through a symbolic link to one, and
+ * in place to /dev/null:
  *
  *   - the save fails with ATRBVH_ERR_IO, its message naming the path, the
  *     step (write, fsync, close, rename) and the error, and the folder is
@@ -17,8 +20,16 @@
  *   - no file descriptor is left open.
  *
  * And short writes (at most 1000 bytes a call) and writes interrupted
- * every other call (EINTR) still give the whole file.  Skips when the
- * library's calls are not the wrapped names on this system.
+ * every other call (EINTR) still give the whole file.
+ *
+ * atrbvh_load of a BVH file, and scene_load of a PLY and an OBJ file
+ * (the tool's loaders), for every k up to the calls a load makes: the
+ * load fails, naming the path and the error, with nothing returned; or
+ * it does without the call (closing a file it has read) and returns what
+ * a clean load does.  Every stream opened is closed either way.
+ *
+ * Skips when the library's calls are not the wrapped names on this
+ * system.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <check.h>
@@ -33,10 +44,11 @@
 #include <unistd.h>
 
 #include "atrbvh.h"
+#include "scene.h"
 #include "testutil.h"
 
 /* ------------------------------------------------------------ the wrappers */
-static int armed;             /* counting (around atrbvh_save only)   */
+static int armed;             /* counting (around the call tested)    */
 static unsigned long calls;   /* wrapped calls since arm()            */
 static unsigned long fail_at; /* the call that fails (0: none)        */
 static const char *failed;    /* its name, once it has failed         */
@@ -189,6 +201,113 @@ ssize_t __wrap_readlink(const char *path, char *buf, size_t size)
     return __real_readlink(path, buf, size);
 }
 
+/* Streams: how many are open, and those whose read was made to fail
+ * (ferror then says so, as for a real read error). */
+static long open_streams;
+static FILE *bad_stream[4];
+
+static void mark_bad(FILE *f)
+{
+    int i;
+    for (i = 0; i < 4; i++)
+        if (!bad_stream[i]) {
+            bad_stream[i] = f;
+            return;
+        }
+}
+
+FILE *__real_fopen(const char *path, const char *mode);
+FILE *__wrap_fopen(const char *path, const char *mode);
+FILE *__wrap_fopen(const char *path, const char *mode)
+{
+    FILE *f;
+    if (fails("fopen"))
+        return NULL;
+    f = __real_fopen(path, mode);
+    open_streams += armed && f;
+    return f;
+}
+
+int __real_fclose(FILE *f);
+int __wrap_fclose(FILE *f);
+int __wrap_fclose(FILE *f)
+{
+    int i, r;
+    for (i = 0; i < 4; i++)
+        if (bad_stream[i] == f)
+            bad_stream[i] = NULL;
+    open_streams -= armed;
+    r = __real_fclose(f);
+    if (fails("fclose")) { /* closed all the same */
+        errno = fail_errno;
+        return EOF;
+    }
+    return r;
+}
+
+size_t __real_fread(void *p, size_t size, size_t n, FILE *f);
+size_t __wrap_fread(void *p, size_t size, size_t n, FILE *f);
+size_t __wrap_fread(void *p, size_t size, size_t n, FILE *f)
+{
+    if (fails("fread")) {
+        mark_bad(f);
+        return 0;
+    }
+    return __real_fread(p, size, n, f);
+}
+
+#ifdef __GLIBC__
+/* glibc's _FORTIFY_SOURCE reads into an array of known size with it */
+size_t __real___fread_chk(void *p, size_t room, size_t size, size_t n,
+                          FILE *f);
+size_t __wrap___fread_chk(void *p, size_t room, size_t size, size_t n,
+                          FILE *f);
+size_t __wrap___fread_chk(void *p, size_t room, size_t size, size_t n,
+                          FILE *f)
+{
+    if (fails("fread")) {
+        mark_bad(f);
+        return 0;
+    }
+    return __real___fread_chk(p, room, size, n, f);
+}
+#endif
+
+int __real_ferror(FILE *f);
+int __wrap_ferror(FILE *f);
+int __wrap_ferror(FILE *f)
+{
+    int i;
+    for (i = 0; i < 4; i++)
+        if (f && bad_stream[i] == f)
+            return 1;
+    return __real_ferror(f);
+}
+
+int __real_fseek(FILE *f, long off, int whence);
+int __wrap_fseek(FILE *f, long off, int whence);
+int __wrap_fseek(FILE *f, long off, int whence)
+{
+    FAIL_OR(fseek);
+    return __real_fseek(f, off, whence);
+}
+
+long __real_ftell(FILE *f);
+long __wrap_ftell(FILE *f);
+long __wrap_ftell(FILE *f)
+{
+    FAIL_OR(ftell);
+    return __real_ftell(f);
+}
+
+int __real_fstat(int fd, struct stat *st);
+int __wrap_fstat(int fd, struct stat *st);
+int __wrap_fstat(int fd, struct stat *st)
+{
+    FAIL_OR(fstat);
+    return __real_fstat(fd, st);
+}
+
 /* ---------------------------------------------------------------- checks */
 /* The lowest free descriptor (a leaked one takes it). */
 static int lowest_free_fd(void)
@@ -282,7 +401,7 @@ static void set_up(enum save_case sc, const char *file, const char *link)
 /* Every call of a save in `sc` failed in turn. */
 static void save_fails_cleanly(enum save_case sc)
 {
-    char *dir = tu_make_temp_dir("test_savefault_");
+    char *dir = tu_make_temp_dir("test_filefault_");
     char file[700], link[700], target[700], before[512], after[512];
     const char *what = scene_name[sc];
     unsigned long n, k;
@@ -411,7 +530,7 @@ END_TEST
  * before writing anything, still give the whole file. */
 START_TEST(short_and_interrupted_writes_complete)
 {
-    char *dir = tu_make_temp_dir("test_savefault_");
+    char *dir = tu_make_temp_dir("test_filefault_");
     char file[700];
     atrbvh_error e;
     int how;
@@ -446,9 +565,157 @@ START_TEST(short_and_interrupted_writes_complete)
 }
 END_TEST
 
+/* ---------------------------------------------------------------- loads */
+enum load_case { LOAD_BVH, LOAD_PLY, LOAD_OBJ };
+static const char *const load_name[] = {"atrbvh_load", "a PLY scene",
+                                        "an OBJ scene"};
+
+/* One load of `path`: 0 and a description of what was loaded (its node
+ * count and SAH, or its triangle count and first and last vertex), or -1
+ * with the error in msg. */
+static int load_once(enum load_case lc, const char *path, char *what,
+                     size_t what_len, char *msg, size_t msg_len)
+{
+    if (lc == LOAD_BVH) {
+        atrbvh_bvh *b = (atrbvh_bvh *)&lc; /* must be set to NULL */
+        atrbvh_error e;
+        atrbvh_status st = atrbvh_load(path, &b, &e);
+        atrbvh_stats stats;
+        if (st != ATRBVH_OK) {
+            ck_assert_msg(b == NULL, "a failed load left *out set");
+            ck_assert_msg(st == ATRBVH_ERR_IO, "load status %d: %s", (int)st,
+                          e.text);
+            snprintf(msg, msg_len, "%s", e.text);
+            return -1;
+        }
+        atrbvh_bvh_stats(b, &stats);
+        snprintf(what, what_len, "%lu nodes, SAH %.17g",
+                 (unsigned long)stats.nodes, stats.sah);
+        atrbvh_bvh_free(b);
+    } else {
+        scene sc;
+        atrbvh_geometry g;
+        if (scene_load(path, &sc, msg, msg_len) != 0)
+            return -1;
+        g = scene_geometry(&sc);
+        snprintf(what, what_len, "%lu triangles, %g %g %g .. %g",
+                 (unsigned long)g.primitive_count, g.vertices[0],
+                 g.vertices[1], g.vertices[2],
+                 g.vertices[3 * g.vertex_count - 1]);
+        scene_free(&sc);
+    }
+    return 0;
+}
+
+/* Writes the file `lc` loads: a BVH file, or a strip of triangles as
+ * ASCII PLY (over 4 KB, so that the body is read after the header) or
+ * OBJ. */
+static void write_load_file(enum load_case lc, const char *path)
+{
+    enum { V = 600 };
+    FILE *f;
+    int i;
+    if (lc == LOAD_BVH) {
+        make_bvhs();
+        tu_write_bytes(path, image, image_n);
+        return;
+    }
+    f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    if (lc == LOAD_PLY)
+        fprintf(f, "ply\nformat ascii 1.0\nelement vertex %d\n"
+                "property float x\nproperty float y\nproperty float z\n"
+                "element face %d\nproperty list uchar int vertex_indices\n"
+                "end_header\n", V, V - 2);
+    for (i = 0; i < V; i++)
+        fprintf(f, "%s%d %d %d.5\n", lc == LOAD_OBJ ? "v " : "", i / 2,
+                i % 2, i % 7);
+    for (i = 0; i + 2 < V; i++) {
+        if (lc == LOAD_PLY)
+            fprintf(f, "3 %d %d %d\n", i, i + 1, i + 2);
+        else
+            fprintf(f, "f %d %d %d\n", i + 1, i + 2, i + 3);
+    }
+    ck_assert_int_eq(fclose(f), 0);
+}
+
+static void load_fails_cleanly(enum load_case lc)
+{
+    static const char *const ext[] = {"bvh", "ply", "obj"};
+    char *dir = tu_make_temp_dir("test_filefault_");
+    char path[700], want[128], got[128], msg[ATRBVH_ERROR_TEXT_LENGTH + 256];
+    const char *what = load_name[lc];
+    unsigned long n, k;
+    snprintf(path, sizeof path, "%s/scene.%s", dir, ext[lc]);
+    write_load_file(lc, path);
+    arm(0);
+    open_streams = 0;
+    ck_assert_msg(load_once(lc, path, want, sizeof want, msg, sizeof msg) ==
+                      0,
+                  "%s: %s", what, msg);
+    armed = 0;
+    n = calls;
+    if (n == 0) {
+        fprintf(stderr, "SKIP %s: the loader's file calls are not the "
+                "wrapped names here\n", what);
+        goto done;
+    }
+    strcpy(refused, " ");
+    strcpy(done_without, " ");
+    for (k = 1; k <= n; k++) {
+        int rc;
+        open_streams = 0;
+        arm(k);
+        rc = load_once(lc, path, got, sizeof got, msg, sizeof msg);
+        armed = 0;
+        ck_assert_msg(failed != NULL, "%s: call %lu of %lu never made", what,
+                      k, n);
+        ck_assert_msg(open_streams == 0, "%s, %s (call %lu) failed: %ld "
+                      "stream%s left open", what, failed, k, open_streams,
+                      open_streams == 1 ? "" : "s");
+        if (rc == 0) {
+            note(done_without, sizeof done_without, failed);
+            ck_assert_msg(!strcmp(want, got), "%s survived %s (call %lu) "
+                          "with %s, not %s", what, failed, k, got, want);
+            continue;
+        }
+        note(refused, sizeof refused, failed);
+        ck_assert_msg(strstr(msg, path) && strstr(msg, strerror(fail_errno)),
+                      "%s, %s (call %lu) failed with %s: \"%s\" does not "
+                      "name the path and the error", what, failed, k,
+                      strerror(fail_errno), msg);
+    }
+    fprintf(stderr, "%s: %lu calls, each failed in turn; refused: %s; "
+            "done without:%s\n", what, n, refused + 1, done_without);
+    ck_assert_msg(strstr(refused, " fopen ") && strstr(refused, " fread "),
+                  "%s: refused only %s", what, refused);
+done:
+    ck_assert_int_eq(remove(path), 0);
+    ck_assert_int_eq(rmdir(dir), 0);
+    free(dir);
+}
+
+START_TEST(bvh_load_fails_cleanly_at_each_call)
+{
+    load_fails_cleanly(LOAD_BVH);
+}
+END_TEST
+
+START_TEST(ply_load_fails_cleanly_at_each_call)
+{
+    load_fails_cleanly(LOAD_PLY);
+}
+END_TEST
+
+START_TEST(obj_load_fails_cleanly_at_each_call)
+{
+    load_fails_cleanly(LOAD_OBJ);
+}
+END_TEST
+
 int main(void)
 {
-    Suite *s = suite_create("savefault");
+    Suite *s = suite_create("filefault");
     TCase *tc = tcase_create("faults");
     int rc;
     tcase_add_test(tc, new_file_save_fails_cleanly_at_each_call);
@@ -456,6 +723,9 @@ int main(void)
     tcase_add_test(tc, linked_save_fails_cleanly_at_each_call);
     tcase_add_test(tc, in_place_save_fails_cleanly_at_each_call);
     tcase_add_test(tc, short_and_interrupted_writes_complete);
+    tcase_add_test(tc, bvh_load_fails_cleanly_at_each_call);
+    tcase_add_test(tc, ply_load_fails_cleanly_at_each_call);
+    tcase_add_test(tc, obj_load_fails_cleanly_at_each_call);
     suite_add_tcase(s, tc);
     rc = tu_run(s);
     atrbvh_bvh_free(bvh);
