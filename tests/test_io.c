@@ -25,7 +25,6 @@
  */
 #define _GNU_SOURCE /* mkdtemp, mknod, mount, setrlimit */
 #include <check.h>
-#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
