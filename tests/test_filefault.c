@@ -22,6 +22,13 @@
  * And short writes (at most 1000 bytes a call) and writes interrupted
  * every other call (EINTR) still give the whole file.
  *
+ * The tool's output files (tools/outfile.c: cli_out_usable, then
+ * cli_out_open, fwrite and cli_out_commit, as `atrbvh build --output`
+ * does), in the same four cases and with the same checks; its message is
+ * exactly one error line, and every stream it opened is closed.  (Its
+ * FILE's own writes are made inside the C library, out of the wrapper's
+ * reach: fflush and fclose stand for them.)
+ *
  * atrbvh_load of a BVH file, and scene_load of a PLY and an OBJ file
  * (the tool's loaders), for every k up to the calls a load makes: the
  * load fails, naming the path and the error, with nothing returned; or
@@ -44,6 +51,8 @@
 #include <unistd.h>
 
 #include "atrbvh.h"
+#include "cli.h"
+#include "outfile.h"
 #include "scene.h"
 #include "testutil.h"
 
@@ -201,42 +210,88 @@ ssize_t __wrap_readlink(const char *path, char *buf, size_t size)
     return __real_readlink(path, buf, size);
 }
 
-/* Streams: how many are open, and those whose read was made to fail
+/* Streams: how many are open, those the code tested opened (only their
+ * flushes are counted: Check's own, made inside the armed region by a
+ * passing ck_assert, are not), and those whose read was made to fail
  * (ferror then says so, as for a real read error). */
 static long open_streams;
-static FILE *bad_stream[4];
+static FILE *our_stream[4], *bad_stream[4];
 
-static void mark_bad(FILE *f)
+static void stream_add(FILE **set, FILE *f)
 {
     int i;
     for (i = 0; i < 4; i++)
-        if (!bad_stream[i]) {
-            bad_stream[i] = f;
+        if (!set[i]) {
+            set[i] = f;
             return;
         }
+}
+
+static int stream_drop(FILE **set, FILE *f)
+{
+    int i;
+    for (i = 0; i < 4; i++)
+        if (f && set[i] == f) {
+            set[i] = NULL;
+            return 1;
+        }
+    return 0;
+}
+
+static int stream_in(FILE *const *set, FILE *f)
+{
+    int i;
+    for (i = 0; i < 4; i++)
+        if (f && set[i] == f)
+            return 1;
+    return 0;
+}
+
+/* f, counted when opened by the code tested */
+static FILE *ours(FILE *f)
+{
+    if (armed && f) {
+        open_streams++;
+        stream_add(our_stream, f);
+    }
+    return f;
 }
 
 FILE *__real_fopen(const char *path, const char *mode);
 FILE *__wrap_fopen(const char *path, const char *mode);
 FILE *__wrap_fopen(const char *path, const char *mode)
 {
-    FILE *f;
     if (fails("fopen"))
         return NULL;
-    f = __real_fopen(path, mode);
-    open_streams += armed && f;
-    return f;
+    return ours(__real_fopen(path, mode));
+}
+
+FILE *__real_fdopen(int fd, const char *mode);
+FILE *__wrap_fdopen(int fd, const char *mode);
+FILE *__wrap_fdopen(int fd, const char *mode)
+{
+    if (fails("fdopen"))
+        return NULL;
+    return ours(__real_fdopen(fd, mode));
+}
+
+/* fails with the buffer kept (the fclose after it writes it) */
+int __real_fflush(FILE *f);
+int __wrap_fflush(FILE *f);
+int __wrap_fflush(FILE *f)
+{
+    if (stream_in(our_stream, f) && fails("fflush"))
+        return EOF;
+    return __real_fflush(f);
 }
 
 int __real_fclose(FILE *f);
 int __wrap_fclose(FILE *f);
 int __wrap_fclose(FILE *f)
 {
-    int i, r;
-    for (i = 0; i < 4; i++)
-        if (bad_stream[i] == f)
-            bad_stream[i] = NULL;
-    open_streams -= armed;
+    int r;
+    (void)stream_drop(bad_stream, f);
+    open_streams -= stream_drop(our_stream, f);
     r = __real_fclose(f);
     if (fails("fclose")) { /* closed all the same */
         errno = fail_errno;
@@ -250,7 +305,7 @@ size_t __wrap_fread(void *p, size_t size, size_t n, FILE *f);
 size_t __wrap_fread(void *p, size_t size, size_t n, FILE *f)
 {
     if (fails("fread")) {
-        mark_bad(f);
+        stream_add(bad_stream, f);
         return 0;
     }
     return __real_fread(p, size, n, f);
@@ -266,7 +321,7 @@ size_t __wrap___fread_chk(void *p, size_t room, size_t size, size_t n,
                           FILE *f)
 {
     if (fails("fread")) {
-        mark_bad(f);
+        stream_add(bad_stream, f);
         return 0;
     }
     return __real___fread_chk(p, room, size, n, f);
@@ -277,11 +332,7 @@ int __real_ferror(FILE *f);
 int __wrap_ferror(FILE *f);
 int __wrap_ferror(FILE *f)
 {
-    int i;
-    for (i = 0; i < 4; i++)
-        if (f && bad_stream[i] == f)
-            return 1;
-    return __real_ferror(f);
+    return stream_in(bad_stream, f) || __real_ferror(f);
 }
 
 int __real_fseek(FILE *f, long off, int whence);
@@ -332,7 +383,9 @@ static const char *step_words(const char *call)
         return "write failed after";
     if (!strcmp(call, "fsync"))
         return "(fsync) failed";
-    if (!strcmp(call, "close"))
+    if (!strcmp(call, "fflush"))
+        return "write failed:";
+    if (!strcmp(call, "close") || !strcmp(call, "fclose"))
         return "closing the file failed";
     if (!strcmp(call, "rename"))
         return "renaming the temporary file over it failed";
@@ -398,14 +451,55 @@ static void set_up(enum save_case sc, const char *file, const char *link)
     }
 }
 
-/* Every call of a save in `sc` failed in turn. */
-static void save_fails_cleanly(enum save_case sc)
+/* The tool's error lines (tools/outfile.c prints with cli_error): how
+ * many since tool_save began, and the last. */
+static int tool_lines;
+static char tool_msg[1024];
+
+void cli_error(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(tool_msg, sizeof tool_msg, fmt, ap);
+    va_end(ap);
+    tool_lines++;
+}
+
+/* What `atrbvh build --output target` does with the saved image: the
+ * check before the build, then the writing.  0 or -1. */
+static int tool_save(const char *target)
+{
+    cli_out out;
+    FILE *f;
+    tool_lines = 0;
+    tool_msg[0] = '\0';
+    if (cli_out_usable(target, NULL) != 0)
+        return -1;
+    f = cli_out_open(target, &out);
+    if (!f)
+        return -1;
+    if (fwrite(image, 1, image_n, f) != image_n) {
+        cli_out_abort(&out);
+        cli_error("%s: fwrite failed", target);
+        return -1;
+    }
+    return cli_out_commit(&out);
+}
+
+enum saver { LIBRARY, TOOL };
+
+/* Every call of a save in `sc` by `who` failed in turn. */
+static void save_fails_cleanly(enum save_case sc, enum saver who)
 {
     char *dir = tu_make_temp_dir("test_filefault_");
     char file[700], link[700], target[700], before[512], after[512];
     const char *what = scene_name[sc];
+    /* the calls that stand for the writes and the closing */
+    const char *write_call = who == TOOL ? " fflush " : " write ";
+    const char *close_call = who == TOOL ? " fclose " : " close ";
     unsigned long n, k;
     atrbvh_error e;
+    int rc;
     make_bvhs();
     snprintf(file, sizeof file, "%s/scene.bvh", dir);
     snprintf(link, sizeof link, "%s/link.bvh", dir);
@@ -414,12 +508,14 @@ static void save_fails_cleanly(enum save_case sc)
     /* a clean save: its calls */
     set_up(sc, file, link);
     arm(0);
-    ck_assert_int_eq(atrbvh_save(bvh, target, &e), ATRBVH_OK);
+    rc = who == TOOL ? tool_save(target)
+                     : atrbvh_save(bvh, target, &e) == ATRBVH_OK ? 0 : -1;
     armed = 0;
+    ck_assert_msg(rc == 0, "%s: %s", what, who == TOOL ? tool_msg : e.text);
     n = calls;
     if (n == 0) {
-        fprintf(stderr, "SKIP %s: the library's file calls are not the "
-                "wrapped names here\n", what);
+        fprintf(stderr, "SKIP %s: the %s's file calls are not the wrapped "
+                "names here\n", what, who == TOOL ? "tool" : "library");
         goto done;
     }
     ck_assert(sc == IN_PLACE || tu_holds(file, image, image_n));
@@ -427,20 +523,31 @@ static void save_fails_cleanly(enum save_case sc)
     strcpy(done_without, " ");
     for (k = 1; k <= n; k++) {
         int fd0;
-        atrbvh_status st;
+        atrbvh_status st = ATRBVH_OK;
+        const char *msg = who == TOOL ? tool_msg : e.text;
         set_up(sc, file, link);
         tu_list_dir(dir, before, sizeof before);
         fd0 = lowest_free_fd();
         memset(&e, 0, sizeof e);
+        open_streams = 0;
         arm(k);
-        st = atrbvh_save(bvh, target, &e);
+        if (who == TOOL)
+            rc = tool_save(target);
+        else
+            rc = (st = atrbvh_save(bvh, target, &e)) == ATRBVH_OK ? 0 : -1;
         armed = 0;
         ck_assert_msg(failed != NULL, "%s: call %lu of %lu never made", what,
                       k, n);
         ck_assert_msg(lowest_free_fd() == fd0,
                       "%s, %s (call %lu) failed: a descriptor left open",
                       what, failed, k);
-        if (st == ATRBVH_OK) {
+        ck_assert_msg(open_streams == 0, "%s, %s (call %lu) failed: %ld "
+                      "stream(s) left open", what, failed, k, open_streams);
+        if (who == TOOL)
+            ck_assert_msg(tool_lines == (rc != 0), "%s, %s (call %lu) "
+                          "failed: %d error lines for a %s", what, failed, k,
+                          tool_lines, rc ? "failure" : "success");
+        if (rc == 0) {
             note(done_without, sizeof done_without, failed);
             if (sc == IN_PLACE)
                 continue;
@@ -452,15 +559,16 @@ static void save_fails_cleanly(enum save_case sc)
             continue;
         }
         note(refused, sizeof refused, failed);
-        ck_assert_msg(st == ATRBVH_ERR_IO && e.status == ATRBVH_ERR_IO,
+        ck_assert_msg(who == TOOL || (st == ATRBVH_ERR_IO &&
+                                      e.status == ATRBVH_ERR_IO),
                       "%s, %s (call %lu) failed: status %d (%s)", what,
                       failed, k, (int)st, e.text);
-        ck_assert_msg(strstr(e.text, target) &&
-                          strstr(e.text, strerror(fail_errno)) &&
-                          strstr(e.text, step_words(failed)),
+        ck_assert_msg(strstr(msg, target) &&
+                          strstr(msg, strerror(fail_errno)) &&
+                          strstr(msg, step_words(failed)),
                       "%s, %s (call %lu) failed with %s: \"%s\" does not "
                       "name the path, the step (\"%s\") and the error",
-                      what, failed, k, strerror(fail_errno), e.text,
+                      what, failed, k, strerror(fail_errno), msg,
                       step_words(failed));
         tu_list_dir(dir, after, sizeof after);
         ck_assert_msg(!strcmp(before, after), "%s, %s (call %lu) failed: "
@@ -480,12 +588,15 @@ static void save_fails_cleanly(enum save_case sc)
             ck_assert_str_eq(got, "scene.bvh");
         }
     }
-    fprintf(stderr, "save %s: %lu calls, each failed in turn; refused: "
-            "%s; done without:%s\n", what, n, refused + 1, done_without);
+    fprintf(stderr, "%s save %s: %lu calls, each failed in turn; "
+            "refused: %s; done without:%s\n",
+            who == TOOL ? "the tool's" : "atrbvh_save's", what, n,
+            refused + 1, done_without);
     /* the steps that must have been tried (in place: no temporary file,
      * so no fsync or rename) */
-    ck_assert_msg(strstr(refused, " open ") && strstr(refused, " write ") &&
-                      strstr(refused, " close ") &&
+    ck_assert_msg(strstr(refused, " open ") && strstr(refused, write_call) &&
+                      strstr(refused, close_call) &&
+                      (who == LIBRARY || strstr(refused, " fdopen ")) &&
                       (sc == IN_PLACE || (strstr(refused, " fsync ") &&
                                           strstr(refused, " rename "))),
                   "%s: refused only %s", what, refused);
@@ -502,27 +613,16 @@ done:
     free(dir);
 }
 
-START_TEST(new_file_save_fails_cleanly_at_each_call)
+/* _i: the save case (enum save_case); LIBRARY, then TOOL */
+START_TEST(library_save_fails_cleanly_at_each_call)
 {
-    save_fails_cleanly(NEW_FILE);
+    save_fails_cleanly((enum save_case)_i, LIBRARY);
 }
 END_TEST
 
-START_TEST(replacing_save_fails_cleanly_at_each_call)
+START_TEST(tool_output_fails_cleanly_at_each_call)
 {
-    save_fails_cleanly(REPLACE);
-}
-END_TEST
-
-START_TEST(linked_save_fails_cleanly_at_each_call)
-{
-    save_fails_cleanly(THROUGH_LINK);
-}
-END_TEST
-
-START_TEST(in_place_save_fails_cleanly_at_each_call)
-{
-    save_fails_cleanly(IN_PLACE);
+    save_fails_cleanly((enum save_case)_i, TOOL);
 }
 END_TEST
 
@@ -718,10 +818,10 @@ int main(void)
     Suite *s = suite_create("filefault");
     TCase *tc = tcase_create("faults");
     int rc;
-    tcase_add_test(tc, new_file_save_fails_cleanly_at_each_call);
-    tcase_add_test(tc, replacing_save_fails_cleanly_at_each_call);
-    tcase_add_test(tc, linked_save_fails_cleanly_at_each_call);
-    tcase_add_test(tc, in_place_save_fails_cleanly_at_each_call);
+    tcase_add_loop_test(tc, library_save_fails_cleanly_at_each_call,
+                        NEW_FILE, IN_PLACE + 1);
+    tcase_add_loop_test(tc, tool_output_fails_cleanly_at_each_call,
+                        NEW_FILE, IN_PLACE + 1);
     tcase_add_test(tc, short_and_interrupted_writes_complete);
     tcase_add_test(tc, bvh_load_fails_cleanly_at_each_call);
     tcase_add_test(tc, ply_load_fails_cleanly_at_each_call);

@@ -185,9 +185,16 @@ void cli_out_abort(cli_out *h)
     h->af.fd = -1;
 }
 
+/* The step of cli_out_commit that failed, for its message (as the
+ * library's atrbvh_save names it). */
+static const char *const commit_step[] = {
+    "write failed", "written, but flushing it to disk (fsync) failed",
+    "written, but closing the file failed",
+    "written, but renaming the temporary file over it failed"};
+
 int cli_out_commit(cli_out *h)
 {
-    int e = 0;
+    int e = 0, step = 0;
     FILE *f;
     if (!h || !h->f) {
         cli_error("%s: not open for writing", h && h->name ? h->name : "?");
@@ -197,20 +204,27 @@ int cli_out_commit(cli_out *h)
     }
     f = h->f;
     h->f = NULL;
+    errno = 0; /* ferror alone (an earlier write failed) sets none */
     if (fflush(f) != 0 || ferror(f))
         e = errno ? errno : EIO;
-    if (e == 0 && h->af.tmp && fsync(fileno(f)) != 0)
+    if (e == 0 && h->af.tmp && fsync(fileno(f)) != 0) {
         e = errno;
-    if (fclose(f) != 0 && e == 0)
+        step = 1;
+    }
+    errno = 0;
+    if (fclose(f) != 0 && e == 0) {
         e = errno ? errno : EIO;
+        step = 2;
+    }
     if (e == 0) {
         /* From here the temporary name is the target's: no longer ours to
          * remove on a signal. */
         untrack(h->af.tmp);
         e = atrbvh_i_atomicfile_commit(&h->af, &out_alloc);
+        step = 3;
     }
     if (e != 0) {
-        cli_error("%s: write failed: %s", h->name, strerror(e));
+        cli_error("%s: %s: %s", h->name, commit_step[step], strerror(e));
         cli_out_abort(h);
         return -1;
     }

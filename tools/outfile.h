@@ -67,7 +67,9 @@ FILE *cli_out_open(const char *path, cli_out *h);
 
 /* Finishes: flushes, fsyncs and renames the temporary file over the
  * target (in place: flushes and closes).  0, or -1 after one error line
- * naming the path (the temporary file removed, the target untouched). */
+ * naming the path, the step that failed (the write, the fsync, the close
+ * or the rename) and the system's reason; the temporary file removed, the
+ * target untouched. */
 int cli_out_commit(cli_out *h);
 
 /* Gives up: closes and removes the temporary file; the target is
