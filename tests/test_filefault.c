@@ -626,6 +626,133 @@ START_TEST(tool_output_fails_cleanly_at_each_call)
 }
 END_TEST
 
+/* The tool's files written as one (cli_out_commit_all, as `atrbvh stages
+ * --dump` puts its arrays and manifest in place): a.npy over an old one,
+ * b.npy new, manifest.json over an old one, last.  For every k, the run
+ * succeeds with every new file, or fails with one error line naming a
+ * file, its step and the reason, and then: a failure before the renames
+ * leaves the folder exactly as it was; a failed rename leaves the files
+ * before the one it names replaced, and it and those after it as they
+ * were, with no temporary file either way. */
+START_TEST(tool_files_committed_as_one)
+{
+    static const char *const names[3] = {"a.npy", "b.npy", "manifest.json"};
+    char *dir = tu_make_temp_dir("test_filefault_");
+    char path[3][700], before[512], after[512];
+    /* old and new contents: slices of the two images */
+    const unsigned char *old_of[3], *new_of[3];
+    size_t old_len[3], new_len[3];
+    unsigned long n = 0, k;
+    int i;
+    make_bvhs();
+    for (i = 0; i < 3; i++) {
+        snprintf(path[i], sizeof path[i], "%s/%s", dir, names[i]);
+        old_of[i] = i == 1 ? NULL : old_image + (size_t)i * 100;
+        old_len[i] = 200;
+        new_of[i] = image + (size_t)i * 1000;
+        new_len[i] = image_n / 2;
+    }
+    strcpy(refused, " ");
+    strcpy(done_without, " ");
+    for (k = 0; k == 0 || k <= n; k++) {
+        cli_out out[3];
+        int fd0, rc = 0, opened = 0, placed;
+        for (i = 0; i < 3; i++) {
+            remove(path[i]);
+            if (old_of[i])
+                tu_write_bytes(path[i], old_of[i], old_len[i]);
+        }
+        tu_list_dir(dir, before, sizeof before);
+        fd0 = lowest_free_fd();
+        open_streams = 0;
+        tool_lines = 0;
+        arm(k);
+        for (i = 0; i < 3 && rc == 0; i++) {
+            FILE *f = cli_out_open(path[i], &out[i]);
+            if (!f)
+                rc = -1;
+            else if (opened++,
+                     fwrite(new_of[i], 1, new_len[i], f) != new_len[i])
+                ck_abort_msg("fwrite");
+        }
+        if (rc == 0)
+            rc = cli_out_commit_all(out, 3);
+        else
+            cli_out_abort_all(out, (size_t)opened);
+        armed = 0;
+        if (k == 0) {
+            ck_assert_msg(rc == 0, "a clean run failed: %s", tool_msg);
+            n = calls;
+            if (n == 0) {
+                fprintf(stderr, "SKIP tool_files_committed_as_one: the "
+                        "tool's file calls are not the wrapped names here\n");
+                break;
+            }
+        } else {
+            ck_assert_msg(failed != NULL, "call %lu of %lu never made", k,
+                          n);
+        }
+        ck_assert_msg(lowest_free_fd() == fd0 && open_streams == 0,
+                      "%s (call %lu) failed: a descriptor or stream left "
+                      "open", failed, k);
+        ck_assert_msg(tool_lines == (rc != 0), "%s (call %lu) failed: %d "
+                      "error lines", failed, k, tool_lines);
+        if (rc == 0) {
+            if (k)
+                note(done_without, sizeof done_without, failed);
+            for (i = 0; i < 3; i++)
+                ck_assert_msg(tu_holds(path[i], new_of[i], new_len[i]),
+                              "%s survived %s (call %lu) without its new "
+                              "bytes", names[i], failed, k);
+            continue;
+        }
+        note(refused, sizeof refused, failed);
+        ck_assert_msg(strstr(tool_msg, strerror(fail_errno)) &&
+                          strstr(tool_msg, step_words(failed)),
+                      "%s (call %lu) failed with %s: \"%s\" does not name "
+                      "the step (\"%s\") and the error", failed, k,
+                      strerror(fail_errno), tool_msg, step_words(failed));
+        /* the files before the one the message names are replaced only
+         * when it was a rename that failed */
+        for (placed = 0; placed < 3 && !strstr(tool_msg, path[placed]);
+             placed++)
+            ;
+        ck_assert_msg(placed < 3, "\"%s\" names none of the files",
+                      tool_msg);
+        if (strcmp(failed, "rename"))
+            placed = 0;
+        for (i = 0; i < 3; i++) {
+            const int is_new = i < placed;
+            ck_assert_msg(is_new ? tu_holds(path[i], new_of[i], new_len[i])
+                          : old_of[i] ? tu_holds(path[i], old_of[i],
+                                                 old_len[i])
+                                      : access(path[i], F_OK) != 0,
+                          "%s (call %lu) failed: %s is not %s", failed, k,
+                          names[i], is_new ? "new" : "as it was");
+        }
+        tu_list_dir(dir, after, sizeof after);
+        ck_assert_msg(placed > 1 || !strcmp(before, after), "%s (call %lu) "
+                      "failed: the folder held \"%s\", now \"%s\"", failed,
+                      k, before, after);
+        ck_assert_msg(!strstr(after, ".tmp"), "%s (call %lu) failed: a "
+                      "temporary file is left: %s", failed, k, after);
+    }
+    if (n)
+        fprintf(stderr, "the tool's three files as one: %lu calls, each "
+                "failed in turn; refused: %s; done without:%s\n", n,
+                refused + 1, done_without);
+    ck_assert_msg(!n || (strstr(refused, " fflush ") &&
+                         strstr(refused, " fsync ") &&
+                         strstr(refused, " fclose ") &&
+                         strstr(refused, " rename ")),
+                  "refused only %s", refused);
+    for (i = 0; i < 3; i++)
+        remove(path[i]);
+    ck_assert_int_eq(rmdir(dir), 0);
+    free(dir);
+}
+END_TEST
+
 /* Writes that take part of what they are given, or are interrupted
  * before writing anything, still give the whole file. */
 START_TEST(short_and_interrupted_writes_complete)
@@ -822,6 +949,7 @@ int main(void)
                         NEW_FILE, IN_PLACE + 1);
     tcase_add_loop_test(tc, tool_output_fails_cleanly_at_each_call,
                         NEW_FILE, IN_PLACE + 1);
+    tcase_add_test(tc, tool_files_committed_as_one);
     tcase_add_test(tc, short_and_interrupted_writes_complete);
     tcase_add_test(tc, bvh_load_fails_cleanly_at_each_call);
     tcase_add_test(tc, ply_load_fails_cleanly_at_each_call);

@@ -4,9 +4,9 @@
  * STAGE-ARRAY.npy, and manifest.json naming them with the options and the
  * host-computed constants (docs/stages.md, atrbvh-stages(7)).  Every file
  * goes through tools/outfile (a temporary file beside it); the temporary
- * files are renamed into place only after the build succeeded, the
- * manifest last, so a failed run leaves DIR as it was; the other files of
- * DIR are left alone.
+ * files are flushed to disk only after the build succeeded, and renamed
+ * into place only when all of them are, the manifest last, so a failed
+ * run leaves DIR as it was; the other files of DIR are left alone.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "config.h"
@@ -45,9 +45,10 @@ typedef struct dump_state {
     double morton[6]; /* lo, scale */
     int failed;       /* a file could not be written (message printed) */
     /* The written files, each still a temporary file: all of them are
-     * renamed into place only once the build has succeeded, the manifest
-     * last, so a failed run leaves DIR as it was. */
-    cli_out out[MAX_FILES];
+     * renamed into place only once the build has succeeded and every one
+     * is on disk, the manifest last (cli_out_commit_all), so a failed run
+     * leaves DIR as it was.  One more for the manifest. */
+    cli_out out[MAX_FILES + 1];
     size_t files;
 } dump_state;
 
@@ -96,27 +97,19 @@ static int write_array(dump_state *s, const char *stage,
     return 0;
 }
 
-/* Renames every written file into place (0), or, after one that fails,
- * removes the rest (-1). */
+/* Puts every written file in place, the manifest last (0), or none of
+ * them (-1, after the error line; see cli_out_commit_all for a failed
+ * rename). */
 static int commit_all(dump_state *s)
 {
-    size_t i;
-    int rc = 0;
-    for (i = 0; i < s->files; i++) {
-        if (rc == 0 && cli_out_commit(&s->out[i]) != 0)
-            rc = -1;
-        else if (rc != 0)
-            cli_out_abort(&s->out[i]);
-    }
+    int rc = cli_out_commit_all(s->out, s->files);
     s->files = 0;
     return rc;
 }
 
 static void abort_all(dump_state *s)
 {
-    size_t i;
-    for (i = 0; i < s->files; i++)
-        cli_out_abort(&s->out[i]);
+    cli_out_abort_all(s->out, s->files);
     s->files = 0;
 }
 
@@ -168,7 +161,9 @@ static void json_doubles(json_writer *w, const char *key, const double *v,
     json_end_array(w);
 }
 
-static int write_manifest(const dump_state *s, const cli_build_args *a,
+/* Writes manifest.json into the last of s->out (put in place with the
+ * rest by commit_all): 0, or -1 after the error line. */
+static int write_manifest(dump_state *s, const cli_build_args *a,
                           const scene *sc, const atrbvh_stats *st)
 {
     const atrbvh_build_options *o = &a->options;
@@ -182,15 +177,14 @@ static int write_manifest(const dump_state *s, const cli_build_args *a,
                                : st->treelet_size;
     char *path = join(s->dir, "manifest.json");
     json_writer w;
-    cli_out out;
+    cli_out *out = &s->out[s->files]; /* (room for one more) */
     FILE *f;
     size_t i, k;
-    int rc;
     if (!path) {
         cli_error("%s: out of memory", s->dir);
         return -1;
     }
-    f = cli_out_open(path, &out);
+    f = cli_out_open(path, out);
     if (!f) {
         free(path);
         return -1;
@@ -264,14 +258,14 @@ static int write_manifest(const dump_state *s, const cli_build_args *a,
     json_end_array(&w);
     json_end_object(&w);
     if (ferror(f)) {
-        cli_out_abort(&out);
+        cli_out_abort(out);
         cli_error("%s: write failed", path);
         free(path);
         return -1;
     }
-    rc = cli_out_commit(&out);
     free(path);
-    return rc;
+    s->files++;
+    return 0;
 }
 
 /* DIR, created when missing (its parent must exist). */
@@ -407,7 +401,7 @@ int cli_stages(int argc, char **argv)
         goto done;
     }
     atrbvh_bvh_stats(bvh, &st);
-    if (commit_all(s) != 0 || write_manifest(s, &a, &sc, &st) != 0) {
+    if (write_manifest(s, &a, &sc, &st) != 0 || commit_all(s) != 0) {
         rc = CLI_FAIL;
         goto done;
     }

@@ -185,53 +185,89 @@ void cli_out_abort(cli_out *h)
     h->af.fd = -1;
 }
 
-/* The step of cli_out_commit that failed, for its message (as the
- * library's atrbvh_save names it). */
-static const char *const commit_step[] = {
+/* The step of a commit that failed, for its message (as the library's
+ * atrbvh_save names it). */
+enum commit_step { STEP_WRITE, STEP_FSYNC, STEP_CLOSE, STEP_RENAME };
+static const char *const step_words[] = {
     "write failed", "written, but flushing it to disk (fsync) failed",
     "written, but closing the file failed",
     "written, but renaming the temporary file over it failed"};
 
-int cli_out_commit(cli_out *h)
+/* Flushes, fsyncs (a temporary file) and closes h's FILE *: 0, or the
+ * errno with *step.  The temporary file, if any, stays to be renamed. */
+static int finish(cli_out *h, enum commit_step *step)
 {
-    int e = 0, step = 0;
-    FILE *f;
-    if (!h || !h->f) {
-        cli_error("%s: not open for writing", h && h->name ? h->name : "?");
-        if (h)
-            cli_out_abort(h);
-        return -1;
-    }
-    f = h->f;
+    FILE *f = h->f;
+    int e = 0;
     h->f = NULL;
+    *step = STEP_WRITE;
     errno = 0; /* ferror alone (an earlier write failed) sets none */
     if (fflush(f) != 0 || ferror(f))
         e = errno ? errno : EIO;
     if (e == 0 && h->af.tmp && fsync(fileno(f)) != 0) {
         e = errno;
-        step = 1;
+        *step = STEP_FSYNC;
     }
     errno = 0;
     if (fclose(f) != 0 && e == 0) {
         e = errno ? errno : EIO;
-        step = 2;
+        *step = STEP_CLOSE;
     }
-    if (e == 0) {
-        /* From here the temporary name is the target's: no longer ours to
-         * remove on a signal. */
-        untrack(h->af.tmp);
-        e = atrbvh_i_atomicfile_commit(&h->af, &out_alloc);
-        step = 3;
+    return e;
+}
+
+int cli_out_commit_all(cli_out *h, size_t n)
+{
+    enum commit_step step = STEP_WRITE;
+    size_t i, bad = n;
+    int e = 0;
+    for (i = 0; i < n; i++)
+        if (!h[i].f) {
+            cli_error("%s: not open for writing",
+                      h[i].name ? h[i].name : "?");
+            cli_out_abort_all(h, n);
+            return -1;
+        }
+    /* Everything that can fail for want of room or an I/O error, for
+     * every file, before any target is replaced. */
+    for (i = 0; i < n && bad == n; i++)
+        if ((e = finish(&h[i], &step)) != 0)
+            bad = i;
+    for (i = 0; i < n && bad == n; i++) {
+        /* From here the temporary name is the target's: no longer ours
+         * to remove on a signal. */
+        untrack(h[i].af.tmp);
+        if ((e = atrbvh_i_atomicfile_commit(&h[i].af, &out_alloc)) != 0) {
+            step = STEP_RENAME;
+            bad = i;
+            break;
+        }
+        free(h[i].name);
+        memset(&h[i], 0, sizeof h[i]);
+        h[i].af.fd = -1;
     }
-    if (e != 0) {
-        cli_error("%s: %s: %s", h->name, commit_step[step], strerror(e));
-        cli_out_abort(h);
+    if (bad < n) {
+        cli_error("%s: %s: %s", h[bad].name, step_words[step], strerror(e));
+        cli_out_abort_all(h, n);
         return -1;
     }
-    free(h->name);
-    memset(h, 0, sizeof *h);
-    h->af.fd = -1;
     return 0;
+}
+
+int cli_out_commit(cli_out *h)
+{
+    if (!h) {
+        cli_error("?: not open for writing");
+        return -1;
+    }
+    return cli_out_commit_all(h, 1);
+}
+
+void cli_out_abort_all(cli_out *h, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        cli_out_abort(&h[i]);
 }
 
 int cli_out_same_file(const char *a, const char *b)

@@ -72,10 +72,24 @@ FILE *cli_out_open(const char *path, cli_out *h);
  * target untouched. */
 int cli_out_commit(cli_out *h);
 
+/* Finishes the n files h[0..n-1] as one: flushes, fsyncs and closes
+ * every one of them (the steps that fail for want of room or an I/O
+ * error), and only when all of that succeeded renames them over their
+ * targets, in order.  0, or -1 after one error line naming the file, the
+ * step and the reason; every handle is ended either way.  A failure
+ * before the renames leaves every target as it was; a failed rename (rare:
+ * each temporary file is in its target's directory) leaves the targets
+ * before it replaced and the others as they were: write the file that
+ * names the others (a manifest) last. */
+int cli_out_commit_all(cli_out *h, size_t n);
+
 /* Gives up: closes and removes the temporary file; the target is
  * untouched (in place: only closes).  Prints nothing.  Safe on a handle
  * whose open failed or that was already ended. */
 void cli_out_abort(cli_out *h);
+
+/* cli_out_abort on each of h[0..n-1]. */
+void cli_out_abort_all(cli_out *h, size_t n);
 
 /* 1 when both paths exist and name the same file (same device and inode,
  * symbolic links followed), else 0.  For refusing an output that would
