@@ -119,7 +119,7 @@ if run 0 animate builtin:wave:1000 --frames 4 --plot "$T/plot"; then
             [ -s "$T/plot/$f" ] || fail "--plot wrote no $f"
         done
     fi
-    ls "$T/plot" | grep -q '\.part$' && fail "--plot left .part files"
+    ls -A "$T/plot" | grep -q '^\.atrbvh-gnuplot-' && fail "--plot left gnuplot's folder"
 fi
 run 1 animate builtin:wave:1000 --frames 2 --plot "$T/missing"
 

@@ -12,6 +12,10 @@
 #  - an unwritable output (missing directory, a directory) is reported
 #    before the scene is even read;
 #  - render leaves no truncated PNG;
+#  - --plot: gnuplot writes into a folder of its own, its pictures put in
+#    place only when it succeeded; the folder's other files (a user's
+#    NAME.part included) are left alone, and nothing of gnuplot's is left
+#    behind (a fake gnuplot first in PATH, succeeding and failing);
 #  - --threads above ATRBVH_MAX_THREADS is a usage error.
 # Run by `make check` with ATRBVH_BUILDDIR and ATRBVH_SRCDIR set.
 
@@ -230,6 +234,52 @@ if [ -c /dev/full ] && [ -e /dev/stdout ]; then
 else
     echo "outputs.sh: no /dev/stdout: its checks skipped"
 fi
+
+# --------------------------------- --plot: gnuplot in a folder of its own
+# The fake gnuplot: `gnuplot -e "outdir = 'SUB/'" SCRIPT`, run in the plot
+# folder; writes the word of fake_gnuplot WORD STATUS into each of animate
+# --plot's pictures in SUB, says so on stderr and exits with STATUS.
+mkdir "$T/fake"
+cat >"$T/fake/gnuplot" <<'EOF'
+#!/bin/sh
+here=$(dirname "$0")
+sub=$(printf '%s' "$2" | sed "s/^outdir = '\(.*\)'\$/\1/")
+for p in sah.png sah.svg ms.png ms.svg; do cat "$here/word" >"$sub$p"; done
+echo "fake gnuplot: $(cat "$here/word")" >&2
+exit "$(cat "$here/status")"
+EOF
+chmod +x "$T/fake/gnuplot"
+fake_gnuplot() {
+    printf '%s\n' "$1" >"$T/fake/word"
+    printf '%s\n' "$2" >"$T/fake/status"
+}
+D=$T/plot
+mkdir "$D"
+echo mine >"$D/sah.png.part"
+echo mine >"$D/keep.txt"
+echo "old picture" >"$D/sah.png"
+OLDPATH=$PATH
+PATH=$T/fake:$PATH
+fake_gnuplot broken 1
+if run 1 animate builtin:wave:500 --frames 2 --plot "$D"; then
+    err_has "gnuplot failed (see $D/gnuplot.log)"
+    [ "$(cat "$D/sah.png")" = "old picture" ] ||
+        fail "a failed gnuplot replaced sah.png"
+    grep -q "fake gnuplot: broken" "$D/gnuplot.log" ||
+        fail "gnuplot.log: $(cat "$D/gnuplot.log")"
+fi
+only animate.dat animate.gp gnuplot.log keep.txt sah.png sah.png.part
+fake_gnuplot drawn 0
+if run 0 animate builtin:wave:500 --frames 2 --plot "$D"; then
+    for p in sah.png sah.svg ms.png ms.svg; do
+        [ "$(cat "$D/$p")" = drawn ] || fail "--plot: $p is not gnuplot's"
+    done
+fi
+only animate.dat animate.gp gnuplot.log keep.txt sah.png sah.png.part \
+    sah.svg ms.png ms.svg
+PATH=$OLDPATH
+[ "$(cat "$D/sah.png.part")$(cat "$D/keep.txt")" = minemine ] ||
+    fail "--plot changed the folder's other files"
 
 # ------------------------------------------------------------- --threads
 run 2 build $SMALL --threads 100000 && err_has "--threads"

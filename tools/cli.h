@@ -52,6 +52,9 @@ void cli_common_help(FILE *f, const char *exit_status);
 /* Wall clock in milliseconds, monotonic. */
 double cli_now_ms(void);
 
+/* "dir/name" in a new malloc'ed string, or NULL when out of memory. */
+char *cli_join(const char *dir, const char *name);
+
 const char *cli_method_name(atrbvh_method m);
 
 /* ------------------------------- build options (build, trace, render,

@@ -197,25 +197,11 @@ static FILE *open_in(const char *dir, const char *name, cli_out *h)
 static const char *const pictures[4] = {"sah.png", "sah.svg", "ms.png",
                                         "ms.svg"};
 
-/* gnuplot writes NAME.part; renamed over NAME only when it succeeded. */
-static int pictures_finish(const char *dir, int ok)
-{
-    int k, rc = 0;
-    for (k = 0; k < 4; k++) {
-        char final[4200];
-        snprintf(final, sizeof final, "%s/%s", dir, pictures[k]);
-        if (cli_gnuplot_picture(final, ok) != 0)
-            rc = -1;
-    }
-    return rc;
-}
-
-/* gnuplot, then the pictures renamed into place (or dropped). */
+/* gnuplot, then the pictures put in place (or dropped). */
 static int run_gnuplot(const char *dir)
 {
-    return pictures_finish(dir, cli_gnuplot(dir, "animate.gp") == 0);
+    return cli_gnuplot(dir, "animate.gp", pictures, 4);
 }
-
 
 static void gp_plot(FILE *g, const char *stem, const char *ylabel, int col,
                     const policy *p, int np, const char *title)
@@ -225,7 +211,7 @@ static void gp_plot(FILE *g, const char *stem, const char *ylabel, int col,
         {"svg size 900,600 dynamic font 'sans,10'", "svg"}};
     int t, k;
     for (t = 0; t < 2; t++) {
-        fprintf(g, "set terminal %s\nset output '%s.%s'.outsuffix\n",
+        fprintf(g, "set terminal %s\nset output outdir.'%s.%s'\n",
                 term[t][0], stem, term[t][1]);
         fprintf(g, "set title ");
         cli_gnuplot_string(g, title);
@@ -268,7 +254,7 @@ static int write_plot(const char *dir, const char *scene_name, size_t tris,
     if (!f)
         return -1;
     fprintf(f, "# regenerate: gnuplot animate.gp (in this folder)\n"
-               "if (!exists('outsuffix')) outsuffix = ''\n");
+               "if (!exists('outdir')) outdir = ''\n");
     snprintf(title, sizeof title, "%s, %zu triangles: SAH per frame",
              scene_name, tris);
     gp_plot(f, "sah", "SAH", 0, p, np, title);

@@ -492,15 +492,6 @@ static int trouble(const char *fmt, ...)
     return -1;
 }
 
-static char *join(const char *dir, const char *name)
-{
-    size_t n = strlen(dir) + strlen(name) + 2;
-    char *p = malloc(n);
-    if (p)
-        snprintf(p, n, "%s/%s", dir, name);
-    return p;
-}
-
 static char *read_text(const char *path)
 {
     FILE *f = fopen(path, "rb");
@@ -673,7 +664,7 @@ static int read_file_entry(const char *dir, const char *mp, stg *s,
     if (ndim == 2 && dims[1] != cols)
         return trouble("%s: %s: shape (%zu, %zu), but %s has %zu columns",
                        mp, vf->str, dims[0], dims[1], va->str, cols);
-    path = join(dir, vf->str);
+    path = cli_join(dir, vf->str);
     if (!path)
         return trouble("out of memory");
     if (npy_read(path, &a, err, sizeof err) != 0) {
@@ -707,7 +698,7 @@ static int read_file_entry(const char *dir, const char *mp, stg *s,
 /* DIR/manifest.json and every file it lists: 0, or -1 after one line. */
 static int load_dump(const char *dir, dump *d, manifest *m)
 {
-    char *mp = join(dir, "manifest.json"), *text;
+    char *mp = cli_join(dir, "manifest.json"), *text;
     jparser j;
     jval root;
     const jval *v, *stages;

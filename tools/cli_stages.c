@@ -52,15 +52,6 @@ typedef struct dump_state {
     size_t files;
 } dump_state;
 
-static char *join(const char *dir, const char *name)
-{
-    size_t n = strlen(dir) + strlen(name) + 2;
-    char *p = malloc(n);
-    if (p)
-        snprintf(p, n, "%s/%s", dir, name);
-    return p;
-}
-
 static int write_array(dump_state *s, const char *stage,
                        const atrbvh_array *a, int ndim)
 {
@@ -73,7 +64,7 @@ static int write_array(dump_state *s, const char *stage,
         return -1;
     }
     snprintf(name, sizeof name, "%s-%s.npy", stage, a->name);
-    path = join(s->dir, name);
+    path = cli_join(s->dir, name);
     if (!path) {
         cli_error("%s: out of memory", s->dir);
         return -1;
@@ -175,7 +166,7 @@ static int write_manifest(dump_state *s, const cli_build_args *a,
                            : st->treelet_size == ATRBVH_TREELET_AUTO
                                ? 9u
                                : st->treelet_size;
-    char *path = join(s->dir, "manifest.json");
+    char *path = cli_join(s->dir, "manifest.json");
     json_writer w;
     cli_out *out = &s->out[s->files]; /* (room for one more) */
     FILE *f;
@@ -344,7 +335,7 @@ int cli_stages(int argc, char **argv)
         return cli_usage("stages", "--dump DIR is required");
     if (make_dir(dump_dir) != 0)
         return CLI_FAIL;
-    probe = join(dump_dir, "manifest.json");
+    probe = cli_join(dump_dir, "manifest.json");
     if (!probe || cli_out_check(probe, &why) != 0) {
         cli_error("%s: %s", probe ? probe : dump_dir,
                   why ? why : "out of memory");

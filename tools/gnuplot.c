@@ -1,6 +1,7 @@
 /*
  * gnuplot.c - gnuplot started with fork/execvp (no shell: a folder name
- * can hold any character) and waited for.
+ * can hold any character) and waited for, writing into a folder of its
+ * own (see gnuplot.h).
  */
 #define _POSIX_C_SOURCE 200809L
 #include "config.h"
@@ -17,10 +18,19 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-int cli_gnuplot(const char *dir, const char *script)
+/* The private folder's name in the plot folder (mkdtemp's template). */
+#define SUB_TEMPLATE ".atrbvh-gnuplot-XXXXXX"
+#define LOG_NAME "gnuplot.log"
+
+/* gnuplot run in `dir` with outdir = 'sub/' and its stderr in
+ * sub/gnuplot.log.  0 when it exited 0, else -1 after the error line. */
+static int run(const char *dir, const char *script, const char *sub)
 {
+    char outdir[64], log[64];
     pid_t pid;
     int st;
+    snprintf(outdir, sizeof outdir, "outdir = '%s/'", sub);
+    snprintf(log, sizeof log, "%s/" LOG_NAME, sub);
     fflush(NULL);
     pid = fork();
     if (pid < 0) {
@@ -33,7 +43,8 @@ int cli_gnuplot(const char *dir, const char *script)
         int fd;
         if (chdir(dir) != 0)
             _exit(126);
-        fd = open("gnuplot.log", O_WRONLY | O_CREAT | O_TRUNC, 0666);
+        /* (sub is new and ours: O_EXCL) */
+        fd = open(log, O_WRONLY | O_CREAT | O_EXCL, 0666);
         if (fd >= 0) {
             dup2(fd, STDERR_FILENO);
             close(fd);
@@ -45,7 +56,7 @@ int cli_gnuplot(const char *dir, const char *script)
         }
         argv[0] = (char *)"gnuplot";
         argv[1] = (char *)"-e";
-        argv[2] = (char *)"outsuffix = '.part'";
+        argv[2] = outdir;
         argv[3] = (char *)script;
         argv[4] = NULL;
         execvp(argv[0], argv);
@@ -63,11 +74,88 @@ int cli_gnuplot(const char *dir, const char *script)
         return -1;
     }
     if (!WIFEXITED(st) || WEXITSTATUS(st) != 0) {
-        cli_error("%s/%s: gnuplot failed (see %s/gnuplot.log)", dir, script,
-                  dir);
+        cli_error("%s/%s: gnuplot failed (see %s/" LOG_NAME ")", dir,
+                  script, dir);
         return -1;
     }
     return 0;
+}
+
+/* Moves `from` (in the private folder) over `to`: synced first, and
+ * only a regular file, or nothing, replaced.  0, or the errno (EISDIR for
+ * a target that is not a regular file). */
+static int put(const char *from, const char *to)
+{
+    struct stat st;
+    int fd, e = 0;
+    if (lstat(to, &st) == 0 && !S_ISREG(st.st_mode))
+        return EISDIR;
+    fd = open(from, O_RDONLY);
+    if (fd < 0)
+        return errno;
+    if (fsync(fd) != 0)
+        e = errno;
+    if (close(fd) != 0 && e == 0)
+        e = errno;
+    if (e == 0 && rename(from, to) != 0)
+        e = errno;
+    return e;
+}
+
+int cli_gnuplot(const char *dir, const char *script,
+                const char *const *names, size_t n)
+{
+    char *sub_path = cli_join(dir, SUB_TEMPLATE), *from = NULL, *to = NULL;
+    const char *sub;
+    size_t k;
+    int rc, e;
+    if (!sub_path) {
+        cli_error("%s: out of memory", dir);
+        return -1;
+    }
+    if (!mkdtemp(sub_path)) {
+        cli_error("%s: cannot make a folder for gnuplot's output: %s", dir,
+                  strerror(errno));
+        free(sub_path);
+        return -1;
+    }
+    sub = sub_path + strlen(dir) + 1;
+    rc = run(dir, script, sub);
+    /* the pictures (dropped after a failure, and after the first that
+     * cannot be put in place), then the log, whatever happened */
+    for (k = 0; k <= n; k++) {
+        const char *name = k < n ? names[k] : LOG_NAME;
+        free(from);
+        free(to);
+        from = cli_join(sub_path, name);
+        to = cli_join(dir, name);
+        if (!from || !to) {
+            if (rc == 0)
+                cli_error("%s: out of memory", dir);
+            rc = -1;
+            continue;
+        }
+        if (rc == 0 || k == n) {
+            e = put(from, to);
+            if (e != 0 && rc == 0) {
+                cli_error("%s: %s", to,
+                          e == EISDIR ? "not a regular file, not replaced"
+                                      : strerror(e));
+                rc = -1;
+            }
+        }
+        unlink(from); /* (ENOENT after a rename: nothing to do) */
+    }
+    free(from);
+    free(to);
+    if (rmdir(sub_path) != 0 && rc == 0) {
+        /* something else was written there: left for the user */
+        cli_error("%s: cannot remove gnuplot's folder: %s", sub_path,
+                  strerror(errno));
+        rc = -1;
+    }
+    free(sub_path);
+    return rc;
 }
 
 void cli_gnuplot_string(FILE *g, const char *s)
@@ -79,31 +167,4 @@ void cli_gnuplot_string(FILE *g, const char *s)
         fputc(*s == '\n' || *s == '\r' ? ' ' : *s, g);
     }
     fputc('\'', g);
-}
-
-int cli_gnuplot_picture(const char *final, int ok)
-{
-    size_t n = strlen(final);
-    char *part = malloc(n + 6);
-    struct stat st;
-    int rc = 0;
-    if (!part) {
-        cli_error("%s: out of memory", final);
-        return -1;
-    }
-    memcpy(part, final, n);
-    memcpy(part + n, ".part", 6);
-    if (!ok) {
-        remove(part);
-    } else if (lstat(final, &st) == 0 && !S_ISREG(st.st_mode)) {
-        cli_error("%s: not a regular file, not replaced (the picture is in "
-                  "%s)", final, part);
-        rc = -1;
-    } else if (rename(part, final) != 0) {
-        cli_error("%s: %s", final, strerror(errno));
-        remove(part);
-        rc = -1;
-    }
-    free(part);
-    return rc;
 }

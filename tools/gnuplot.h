@@ -1,22 +1,27 @@
 /*
  * gnuplot.h - gnuplot for the tool's plots (bench --plot, animate --plot):
- * started without a shell, its script's pictures written as NAME.part and
- * renamed by the caller only when it succeeded.
+ * started without a shell, its pictures and messages written into a
+ * folder of its own inside the plot folder, and put in place only when it
+ * succeeded.
  */
 #ifndef ATRBVH_TOOLS_GNUPLOT_H
 #define ATRBVH_TOOLS_GNUPLOT_H
 
+#include <stddef.h>
 #include <stdio.h>
 
-/* Runs `gnuplot -e "outsuffix = '.part'" SCRIPT` in `dir` (stdin from
- * /dev/null, stderr to dir/gnuplot.log).  0 when it exited 0; else -1
- * after one error line naming dir/script (not found, failed, ...). */
-int cli_gnuplot(const char *dir, const char *script);
-
-/* The picture `final` gnuplot wrote as final.part: renamed over `final`
- * when ok (only a regular file, or nothing, is replaced), else removed.
- * 0, or -1 after an error line. */
-int cli_gnuplot_picture(const char *final, int ok);
+/* Runs `gnuplot -e "outdir = 'SUB/'" SCRIPT` in `dir`, SUB a folder the
+ * call makes in `dir` (.atrbvh-gnuplot-XXXXXX, mkdtemp) and removes
+ * before it returns; stdin is /dev/null.  A script writes each picture to
+ * outdir.NAME, with outdir '' when a user runs it by hand.  When gnuplot
+ * exits 0, each of the n pictures names[k] (relative to dir) is synced
+ * and renamed from SUB over dir/names[k] (only a regular file, or
+ * nothing, is replaced); gnuplot's messages become dir/gnuplot.log either
+ * way.  Nothing in `dir` but those names is written, truncated or
+ * removed.  0, or -1 after one error line naming dir/script (gnuplot not
+ * found, failed, a picture not put in place). */
+int cli_gnuplot(const char *dir, const char *script,
+                const char *const *names, size_t n);
 
 /* Writes `s` as a gnuplot single-quoted string ('' for a quote; line
  * breaks become spaces). */

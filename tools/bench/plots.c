@@ -46,63 +46,49 @@ static FILE *open_in(const char *dir, const char *name, cli_out *h)
     return cli_out_open(path, h);
 }
 
-/* The pictures a script makes: gnuplot writes STEM.EXT.part (the script
- * appends the variable outsuffix, which the tool sets and a user running
- * the script does not), and they are renamed over STEM.EXT only once
- * gnuplot has succeeded. */
+/* The pictures a script makes, STEM.png and STEM.svg for each stem:
+ * gnuplot writes them into its own folder (the script prefixes the
+ * variable outdir, which the tool sets and a user running the script does
+ * not), and cli_gnuplot puts them in place only once it has succeeded. */
 typedef struct pictures {
-    char (*stem)[160];
+    char (*name)[168];
     int n, cap, oom;
 } pictures;
 
 static void pictures_add(pictures *p, const char *stem)
 {
-    if (p->n == p->cap) {
+    static const char *const ext[2] = {"png", "svg"};
+    int e;
+    if (p->n + 2 > p->cap) {
         int cap = p->cap ? 2 * p->cap : 8;
-        char(*m)[160] = realloc(p->stem, (size_t)cap * sizeof *m);
+        char(*m)[168] = realloc(p->name, (size_t)cap * sizeof *m);
         if (!m) {
             p->oom = 1;
             return;
         }
-        p->stem = m;
+        p->name = m;
         p->cap = cap;
     }
-    snprintf(p->stem[p->n++], sizeof p->stem[0], "%s", stem);
+    for (e = 0; e < 2; e++)
+        snprintf(p->name[p->n++], sizeof p->name[0], "%s.%s", stem, ext[e]);
 }
 
-static const char *const picture_ext[2] = {"png", "svg"};
-
-/* Renames the finished pictures into place (ok) or removes the partial
- * ones.  0, or -1 after an error line. */
-static int pictures_finish(const char *dir, pictures *p, int ok)
-{
-    int k, e, rc = 0;
-    for (k = 0; k < p->n; k++)
-        for (e = 0; e < 2; e++) {
-            char final[4400];
-            int w = snprintf(final, sizeof final, "%s/%s.%s", dir,
-                             p->stem[k], picture_ext[e]);
-            if (w < 0 || (size_t)w >= sizeof final) {
-                cli_error("%s: folder name too long", dir);
-                rc = -1;
-                continue;
-            }
-            if (cli_gnuplot_picture(final, ok) != 0)
-                rc = -1;
-        }
-    free(p->stem);
-    memset(p, 0, sizeof *p);
-    return rc;
-}
-
-/* gnuplot SCRIPT in DIR, its messages in DIR/gnuplot.log; no shell (a
- * folder name is never interpreted). */
-/* gnuplot, then the pictures renamed into place (or dropped). */
+/* gnuplot SCRIPT in DIR, then the pictures put in place (or dropped). */
 static int run_gnuplot(const char *dir, const char *script, pictures *pics)
 {
-    return pictures_finish(dir, pics, cli_gnuplot(dir, script) == 0);
+    const char **names = malloc((size_t)(pics->n ? pics->n : 1) *
+                                sizeof *names);
+    int k, rc;
+    if (!names) {
+        cli_error("out of memory");
+        return -1;
+    }
+    for (k = 0; k < pics->n; k++)
+        names[k] = pics->name[k];
+    rc = cli_gnuplot(dir, script, names, (size_t)pics->n);
+    free(names);
+    return rc;
 }
-
 
 /* Both terminals for the plot commands written by `body`. */
 static void gp_both(FILE *g, pictures *pics, const char *stem,
@@ -110,11 +96,11 @@ static void gp_both(FILE *g, pictures *pics, const char *stem,
 {
     pictures_add(pics, stem);
     fprintf(g, "set terminal pngcairo size 900,600 font 'sans,10'\n"
-               "set output '%s.png'.outsuffix\n",
+               "set output outdir.'%s.png'\n",
             stem);
     body(g, ctx);
     fprintf(g, "set terminal svg size 900,600 dynamic font 'sans,10'\n"
-               "set output '%s.svg'.outsuffix\nreplot\nunset output\nreset\n",
+               "set output outdir.'%s.svg'\nreplot\nunset output\nreset\n",
             stem);
 }
 
@@ -122,7 +108,7 @@ static void gp_both(FILE *g, pictures *pics, const char *stem,
 static void gp_preamble(FILE *g, const char *name)
 {
     fprintf(g, "# regenerate: gnuplot %s (in this folder)\n"
-               "if (!exists('outsuffix')) outsuffix = ''\n",
+               "if (!exists('outdir')) outdir = ''\n",
             name);
 }
 
@@ -398,12 +384,12 @@ static void gp_wide(FILE *g, pictures *pics, const char *stem,
 {
     pictures_add(pics, stem);
     fprintf(g, "set terminal pngcairo size 1800,600 font 'sans,10'\n"
-               "set output '%s.png'.outsuffix\n",
+               "set output outdir.'%s.png'\n",
             stem);
     body_trade(g, two);
     fprintf(g, "unset output\nreset\n"
                "set terminal svg size 1800,600 dynamic font 'sans,10'\n"
-               "set output '%s.svg'.outsuffix\n",
+               "set output outdir.'%s.svg'\n",
             stem);
     body_trade(g, two);
     fputs("unset output\nreset\n", g);
@@ -524,7 +510,7 @@ done:
         cli_out_abort(&fo);
     if (g)
         cli_out_abort(&go);
-    free(pics.stem);
+    free(pics.name);
     free(labels);
     free(pts);
     free(pts2);
@@ -662,7 +648,7 @@ done:
         cli_out_abort(&fo);
     if (g)
         cli_out_abort(&go);
-    free(pics.stem);
+    free(pics.name);
     free(titles);
     return rc;
 }
