@@ -158,7 +158,8 @@ static atrbvh_status select_device(const char *spec, cl_device_id *out,
 }
 
 /* ------------------------------------------------------------ program */
-/* The compiler log, on one line, as much as fits the error text. */
+/* The code and the compiler log, on one line, as much as fits the error
+ * text; ATRBVH_ERR_NOMEM when the compiler ran out of memory. */
 static atrbvh_status build_failed(atrbvh_cl_device *c, cl_int err,
                                   atrbvh_error *error)
 {
@@ -172,9 +173,9 @@ static atrbvh_status build_failed(atrbvh_cl_device *c, cl_int err,
     for (k = 0; log[k]; k++)
         if (log[k] == '\n' || log[k] == '\r' || log[k] == '\t')
             log[k] = ' ';
-    return atrbvh_i_fail(error, ATRBVH_ERR_BACKEND, ATRBVH_CL_NO_INDEX,
-                         "OpenCL kernel build failed (%s): %s",
-                         atrbvh_i_cl_code_name(err), log);
+    return atrbvh_i_fail(error, atrbvh_i_cl_status(err), ATRBVH_CL_NO_INDEX,
+                         "OpenCL kernel build failed: %s (%d): %s",
+                         atrbvh_i_cl_code_name(err), (int)err, log);
 }
 
 static atrbvh_status build_program(atrbvh_cl_device *c, atrbvh_error *error)

@@ -79,13 +79,19 @@ const char *atrbvh_i_cl_code_name(cl_int err)
     }
 }
 
+atrbvh_status atrbvh_i_cl_status(cl_int err)
+{
+    return err == CL_OUT_OF_HOST_MEMORY ||
+                   err == CL_MEM_OBJECT_ALLOCATION_FAILURE
+               ? ATRBVH_ERR_NOMEM
+               : ATRBVH_ERR_BACKEND;
+}
+
 atrbvh_status atrbvh_i_cl_error(atrbvh_error *error, cl_int err,
                                const char *call, const char *what)
 {
-    atrbvh_status st = ATRBVH_ERR_BACKEND;
-    if (err == CL_OUT_OF_HOST_MEMORY || err == CL_MEM_OBJECT_ALLOCATION_FAILURE)
-        st = ATRBVH_ERR_NOMEM;
-    return atrbvh_i_fail(error, st, ATRBVH_CL_NO_INDEX, "OpenCL: %s failed%s%s: %s (%d)",
+    return atrbvh_i_fail(error, atrbvh_i_cl_status(err), ATRBVH_CL_NO_INDEX,
+                         "OpenCL: %s failed%s%s: %s (%d)",
                          call, what ? " for " : "", what ? what : "",
                          atrbvh_i_cl_code_name(err), (int)err);
 }

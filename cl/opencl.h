@@ -202,8 +202,11 @@ typedef struct atrbvh_cl_device {
 
 /* error.c */
 const char *atrbvh_i_cl_code_name(cl_int err);
-/* "OpenCL: CALL failed [for WHAT]: NAME (code)"; ATRBVH_ERR_NOMEM for the
- * out-of-memory codes, else ATRBVH_ERR_BACKEND. */
+/* ATRBVH_ERR_NOMEM for the out-of-memory codes (host, or a buffer the
+ * device could not allocate), else ATRBVH_ERR_BACKEND. */
+atrbvh_status atrbvh_i_cl_status(cl_int err);
+/* "OpenCL: CALL failed [for WHAT]: NAME (code)", with
+ * atrbvh_i_cl_status(err). */
 atrbvh_status atrbvh_i_cl_error(atrbvh_error *error, cl_int err,
                                 const char *call, const char *what);
 

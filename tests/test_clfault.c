@@ -4,15 +4,17 @@
  * The library's core is linked with ld --wrap for every OpenCL function
  * it calls (Makefile.am; tests/symbols.sh checks the list), so its calls
  * reach the wrappers below, which forward to libOpenCL or make the k-th
- * call fail: CL_OUT_OF_HOST_MEMORY (odd k) or CL_OUT_OF_RESOURCES (even
- * k), without reaching the implementation.  For every k up to the number
+ * call fail without reaching the implementation, with the (k mod 8)-th
+ * code of `codes` below: the two an implementation short of memory
+ * returns, the one short of device memory, four others and one no
+ * version of OpenCL defines.  For every k up to the number
  * of calls a device open, a build by each method (in place on a device
  * that shares the host's memory, and through copies; the first on a
  * handle and a later one), a ray batch and a re-optimisation make:
  *
- *   - the call fails with ATRBVH_ERR_NOMEM (host memory) or
- *     ATRBVH_ERR_BACKEND, its message naming the failed call and the code
- *     (cl/error.c), and no BVH; or, where the backend does without the
+ *   - the call fails with ATRBVH_ERR_NOMEM (host or device memory) or
+ *     ATRBVH_ERR_BACKEND, its message naming the failed call and the
+ *     code by name and number (cl/error.c), and no BVH; or, where the backend does without the
  *     answer (a name, a kernel's largest work group, a profiling time),
  *     it succeeds with the CPU's tree or hits;
  *   - the same handle then builds (or traces) again and gives the CPU's
@@ -48,6 +50,25 @@ static unsigned long calls;   /* calls that can fail, since arm()      */
 static unsigned long fail_at; /* the call that fails (0: none)         */
 static const char *failed;    /* its name, once it has failed          */
 static cl_int fail_code;
+static const char *fail_code_name; /* as the message must give it */
+static int fail_code_nomem;        /* ATRBVH_ERR_NOMEM, else BACKEND */
+static unsigned code_shift;        /* call k fails with code k + shift */
+
+/* The codes a failing call returns, in turn.  (Not CL_DEVICE_NOT_FOUND
+ * or CL_PLATFORM_NOT_FOUND_KHR: the open takes those for "no device".) */
+static const struct {
+    cl_int code;
+    const char *name;
+    int nomem;
+} codes[8] = {
+    {CL_OUT_OF_RESOURCES, "CL_OUT_OF_RESOURCES", 0},
+    {CL_OUT_OF_HOST_MEMORY, "CL_OUT_OF_HOST_MEMORY", 1},
+    {CL_MEM_OBJECT_ALLOCATION_FAILURE, "CL_MEM_OBJECT_ALLOCATION_FAILURE", 1},
+    {CL_INVALID_VALUE, "CL_INVALID_VALUE", 0},
+    {CL_DEVICE_NOT_AVAILABLE, "CL_DEVICE_NOT_AVAILABLE", 0},
+    {CL_INVALID_COMMAND_QUEUE, "CL_INVALID_COMMAND_QUEUE", 0},
+    {CL_INVALID_OPERATION, "CL_INVALID_OPERATION", 0},
+    {-9999, "unknown OpenCL error", 0}};
 
 /* OpenCL objects made by the backend and not yet released. */
 enum { L_CONTEXT, L_QUEUE, L_PROGRAM, L_KERNEL, L_MEM, L_EVENT, L_KINDS };
@@ -66,7 +87,9 @@ static void arm(unsigned long k)
     calls = 0;
     fail_at = k;
     failed = NULL;
-    fail_code = k % 2 ? CL_OUT_OF_HOST_MEMORY : CL_OUT_OF_RESOURCES;
+    fail_code = codes[(k + code_shift) % 8].code;
+    fail_code_name = codes[(k + code_shift) % 8].name;
+    fail_code_nomem = codes[(k + code_shift) % 8].nomem;
 }
 
 /* Whether this call is the one that fails. */
@@ -411,14 +434,12 @@ static void assert_caller_arrays_free(const char *what, unsigned long k)
 static void assert_named_failure(atrbvh_status st, const atrbvh_error *e,
                                  unsigned long k, const char *what)
 {
-    const char *code = fail_code == CL_OUT_OF_HOST_MEMORY
-                           ? "CL_OUT_OF_HOST_MEMORY"
-                           : "CL_OUT_OF_RESOURCES";
+    char code[96];
     /* (a failed program build reports the build, with its log) */
     int build = strcmp(failed, "clBuildProgram") == 0;
-    atrbvh_status want = fail_code == CL_OUT_OF_HOST_MEMORY && !build
-                             ? ATRBVH_ERR_NOMEM
-                             : ATRBVH_ERR_BACKEND;
+    atrbvh_status want = fail_code_nomem ? ATRBVH_ERR_NOMEM
+                                         : ATRBVH_ERR_BACKEND;
+    snprintf(code, sizeof code, "%s (%d)", fail_code_name, (int)fail_code);
     ck_assert_msg(st == want, "%s, call %lu (%s) failed with %s: status %d, "
                   "want %d (%s)", what, k, failed, code, (int)st, (int)want,
                   e->text);
@@ -499,12 +520,15 @@ static void note_done_without(const char *name)
 
 /* ---------------------------------------------------------------- tests */
 /* Each call of a device open failed in turn. */
+/* _i: the code shift; every call of an open fails with each code once
+ * (an open is short, and its calls are the likeliest to fail). */
 START_TEST(open_fails_cleanly_at_each_call)
 {
     atrbvh_device *dev = open_or_skip(__func__);
     atrbvh_build_options o;
     atrbvh_bvh *want;
     unsigned long n, k, survived = 0;
+    code_shift = (unsigned)_i;
     if (!dev)
         return;
     n = calls; /* a whole open */
@@ -884,7 +908,7 @@ int main(void)
     Suite *s = suite_create("clfault");
     TCase *tc = tcase_create("faults");
     int rc;
-    tcase_add_test(tc, open_fails_cleanly_at_each_call);
+    tcase_add_loop_test(tc, open_fails_cleanly_at_each_call, 0, 8);
     tcase_add_test(tc, lbvh_build_fails_cleanly_at_each_call);
     tcase_add_test(tc, atrbvh_build_fails_cleanly_at_each_call);
     tcase_add_test(tc, trbvh_build_fails_cleanly_at_each_call);
