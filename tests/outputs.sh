@@ -238,7 +238,8 @@ fi
 # --------------------------------- --plot: gnuplot in a folder of its own
 # The fake gnuplot: `gnuplot -e "outdir = 'SUB/'" SCRIPT`, run in the plot
 # folder; writes the word of fake_gnuplot WORD STATUS into each of animate
-# --plot's pictures in SUB, says so on stderr and exits with STATUS.
+# --plot's pictures in SUB, says so on stderr and exits with STATUS (for
+# the word "hang", first says it is ready and sleeps).
 mkdir "$T/fake"
 cat >"$T/fake/gnuplot" <<'EOF'
 #!/bin/sh
@@ -246,6 +247,10 @@ here=$(dirname "$0")
 sub=$(printf '%s' "$2" | sed "s/^outdir = '\(.*\)'\$/\1/")
 for p in sah.png sah.svg ms.png ms.svg; do cat "$here/word" >"$sub$p"; done
 echo "fake gnuplot: $(cat "$here/word")" >&2
+if [ "$(cat "$here/word")" = hang ]; then
+    echo $$ >"$here/pid"
+    exec sleep 60
+fi
 exit "$(cat "$here/status")"
 EOF
 chmod +x "$T/fake/gnuplot"
@@ -277,6 +282,24 @@ if run 0 animate builtin:wave:500 --frames 2 --plot "$D"; then
 fi
 only animate.dat animate.gp gnuplot.log keep.txt sah.png sah.png.part \
     sah.svg ms.png ms.svg
+# Killed while gnuplot runs: its folder and what it wrote there go too.
+fake_gnuplot hang 0
+"$TOOL" animate builtin:wave:500 --frames 2 --plot "$D" >/dev/null 2>&1 &
+tool=$!
+i=0
+while [ ! -s "$T/fake/pid" ] && [ $i -lt 300 ]; do
+    sleep 0.1
+    i=$((i + 1))
+done
+kill -TERM $tool
+wait $tool
+killed=$?
+[ -s "$T/fake/pid" ] && kill "$(cat "$T/fake/pid")" 2>/dev/null
+[ $killed -eq 143 ] || fail "animate --plot killed by SIGTERM exited $killed"
+only animate.dat animate.gp gnuplot.log keep.txt sah.png sah.png.part \
+    sah.svg ms.png ms.svg
+[ "$(cat "$D/sah.png")" = drawn ] || fail "a killed gnuplot replaced sah.png"
+checks=$((checks + 1))
 PATH=$OLDPATH
 [ "$(cat "$D/sah.png.part")$(cat "$D/keep.txt")" = minemine ] ||
     fail "--plot changed the folder's other files"

@@ -8,6 +8,7 @@
 
 #include "cli.h"
 #include "gnuplot.h"
+#include "outfile.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -102,41 +103,62 @@ static int put(const char *from, const char *to)
     return e;
 }
 
+/* Frees the n + 1 paths in the private folder, no longer tracked. */
+static void free_paths(char **from, size_t n)
+{
+    size_t k;
+    for (k = 0; from && k <= n; k++) {
+        cli_out_untrack(from[k]);
+        free(from[k]);
+    }
+    free(from);
+}
+
 int cli_gnuplot(const char *dir, const char *script,
                 const char *const *names, size_t n)
 {
-    char *sub_path = cli_join(dir, SUB_TEMPLATE), *from = NULL, *to = NULL;
+    char *sub_path = cli_join(dir, SUB_TEMPLATE), *to = NULL;
+    /* the pictures' paths in the private folder, then the log's */
+    char **from = n < (size_t)-1 / sizeof *from - 1
+                      ? calloc(n + 1, sizeof *from)
+                      : NULL;
     const char *sub;
     size_t k;
     int rc, e;
-    if (!sub_path) {
+    if (!sub_path || !from) {
         cli_error("%s: out of memory", dir);
+        free(sub_path);
+        free(from);
         return -1;
     }
     if (!mkdtemp(sub_path)) {
         cli_error("%s: cannot make a folder for gnuplot's output: %s", dir,
                   strerror(errno));
         free(sub_path);
+        free(from);
         return -1;
     }
+    /* A fatal signal removes what gnuplot wrote there, then the folder. */
+    for (k = 0; k <= n; k++)
+        if ((from[k] = cli_join(sub_path, k < n ? names[k] : LOG_NAME)))
+            cli_out_track(from[k]);
+    cli_out_track(sub_path);
     sub = sub_path + strlen(dir) + 1;
     rc = run(dir, script, sub);
     /* the pictures (dropped after a failure, and after the first that
      * cannot be put in place), then the log, whatever happened */
     for (k = 0; k <= n; k++) {
         const char *name = k < n ? names[k] : LOG_NAME;
-        free(from);
         free(to);
-        from = cli_join(sub_path, name);
         to = cli_join(dir, name);
-        if (!from || !to) {
+        if (!from[k] || !to) {
             if (rc == 0)
                 cli_error("%s: out of memory", dir);
             rc = -1;
             continue;
         }
         if (rc == 0 || k == n) {
-            e = put(from, to);
+            e = put(from[k], to);
             if (e != 0 && rc == 0) {
                 cli_error("%s: %s", to,
                           e == EISDIR ? "not a regular file, not replaced"
@@ -144,10 +166,11 @@ int cli_gnuplot(const char *dir, const char *script,
                 rc = -1;
             }
         }
-        unlink(from); /* (ENOENT after a rename: nothing to do) */
+        unlink(from[k]); /* (ENOENT after a rename: nothing to do) */
     }
-    free(from);
     free(to);
+    free_paths(from, n);
+    cli_out_untrack(sub_path);
     if (rmdir(sub_path) != 0 && rc == 0) {
         /* something else was written there: left for the user */
         cli_error("%s: cannot remove gnuplot's folder: %s", sub_path,

@@ -22,9 +22,11 @@
 /* The temporary files being written, so that a signal that ends the
  * process (Ctrl-C, kill, SIGXFSZ past a file size limit, a lost terminal)
  * removes them rather than leaving a partial file behind: the handler
- * unlinks each (async-signal-safe), restores the default action and
- * raises the signal again. */
-#define MAX_ACTIVE 16
+ * unlinks each, then removes each that is a folder (the folders made for
+ * gnuplot, cli_out_track; both calls async-signal-safe), restores the
+ * default action and raises the signal again.  Room for every file of
+ * the largest stage dump (tools/cli_stages.c) and a plot folder. */
+#define MAX_ACTIVE 1024
 static char *volatile active[MAX_ACTIVE];
 static int handlers_installed;
 static const int fatal_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT,
@@ -37,6 +39,11 @@ static void on_fatal_signal(int sig)
         char *t = active[i];
         if (t)
             unlink(t);
+    }
+    for (i = 0; i < MAX_ACTIVE; i++) {
+        char *t = active[i];
+        if (t)
+            rmdir(t); /* (fails on what was a file: gone already) */
     }
     signal(sig, SIG_DFL);
     raise(sig);
@@ -81,6 +88,16 @@ static void untrack(const char *tmp)
     for (i = 0; tmp && i < MAX_ACTIVE; i++)
         if (active[i] == tmp)
             active[i] = NULL;
+}
+
+void cli_out_track(char *path)
+{
+    track(path);
+}
+
+void cli_out_untrack(const char *path)
+{
+    untrack(path);
 }
 
 /* The tool's memory is plain malloc's. */

@@ -91,6 +91,14 @@ void cli_out_abort(cli_out *h);
 /* cli_out_abort on each of h[0..n-1]. */
 void cli_out_abort_all(cli_out *h, size_t n);
 
+/* Adds `path` (kept, not copied) to what a fatal signal removes: a file
+ * the tool is making (unlinked), or a folder it made (removed once the
+ * files in it are, when they are all tracked too); until
+ * cli_out_untrack(path).  For the files gnuplot writes (tools/gnuplot.c);
+ * cli_out_open tracks its own. */
+void cli_out_track(char *path);
+void cli_out_untrack(const char *path);
+
 /* 1 when both paths exist and name the same file (same device and inode,
  * symbolic links followed), else 0.  For refusing an output that would
  * replace the input. */
