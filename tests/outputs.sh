@@ -2,8 +2,9 @@
 # outputs.sh - nothing the atrbvh tool writes is ever lost or half written:
 #  - a failing write (full file system: a 64 KiB tmpfs when root, a file
 #    size limit for any user) leaves the existing output byte for byte and
-#    no temporary file, with one error line naming the file; SIGXFSZ ending
-#    the process mid-write leaves no temporary file either;
+#    no temporary file, with one error line naming the file (bench's --csv
+#    and --builds both, though only one failed); SIGXFSZ ending the
+#    process mid-write leaves no temporary file either;
 #  - devices (a private mknod copy of /dev/full when root, /dev/full through
 #    a symbolic link) and symbolic links to /dev/stdout are written in place
 #    and never removed;
@@ -133,6 +134,25 @@ else
     err_has "$D/t.bvh"
     cmp -s "$D/t.bvh" "$D/small.bvh" || fail "a failed write lost the existing output"
     only small.bvh big.bvh t.bvh l.bvh
+    # bench --csv and --builds: both or neither (the builds log, some
+    # 15 KB, past the limit; the CSV, under 2 KB, within it)
+    echo old >"$D/a.csv"
+    echo old >"$D/b.csv"
+    checks=$((checks + 1))
+    (
+        trap '' XFSZ
+        ulimit -f 8
+        exec "$TOOL" bench $SMALL --no-rays --repeat 60 --configs lbvh \
+            --csv "$D/a.csv" --builds "$D/b.csv"
+    ) >"$T/out" 2>"$T/err"
+    rc=$?
+    [ "$rc" -eq 1 ] || fail "bench past a file size limit exited $rc: $(cat "$T/err")"
+    [ "$(wc -l <"$T/err")" -eq 1 ] || fail "bench: not one error line: $(cat "$T/err")"
+    err_has "$D/b.csv"
+    [ "$(cat "$D/a.csv")$(cat "$D/b.csv")" = oldold ] ||
+        fail "bench: --csv or --builds replaced though the other failed"
+    only small.bvh big.bvh t.bvh l.bvh a.csv b.csv
+    rm -f "$D/a.csv" "$D/b.csv"
     if [ "$HAVE_PNG" = yes ]; then
         echo "not a png" >"$D/old.png"
         checks=$((checks + 1))

@@ -568,18 +568,20 @@ int cli_bench(int argc, char **argv)
     memtrack_install();
     rc = ap->scaling ? bench_scaling(ap, csv) : bench_sweep(ap, csv);
     memtrack_uninstall();
-    if (csv) {
-        if (rc != CLI_OK)
-            cli_out_abort(&csv_out); /* nothing half written */
-        else if (cli_out_commit(&csv_out) != 0)
-            rc = CLI_FAIL;
-    }
-    if (builds_log.f) {
-        if (rc != CLI_OK)
-            cli_out_abort(&log_out);
-        else if (cli_out_commit(&log_out) != 0)
-            rc = CLI_FAIL;
+    {
+        /* nothing half written, and both files or neither (each on disk
+         * before either is renamed, cli_out_commit_all) */
+        cli_out out[2];
+        size_t n = 0;
+        if (csv)
+            out[n++] = csv_out;
+        if (builds_log.f)
+            out[n++] = log_out;
         builds_log.f = NULL;
+        if (rc != CLI_OK)
+            cli_out_abort_all(out, n);
+        else if (n > 0 && cli_out_commit_all(out, n) != 0)
+            rc = CLI_FAIL;
     }
     return rc;
 }
