@@ -27,7 +27,9 @@
  * does), in the same four cases and with the same checks; its message is
  * exactly one error line, and every stream it opened is closed.  (Its
  * FILE's own writes are made inside the C library, out of the wrapper's
- * reach: fflush and fclose stand for them.)
+ * reach: fflush and fclose stand for them.)  And three of its files put
+ * in place as one (cli_out_commit_all, as `atrbvh stages --dump` does):
+ * a failure before the renames leaves every file as it was.
  *
  * atrbvh_load of a BVH file, and scene_load of a PLY and an OBJ file
  * (the tool's loaders), for every k up to the calls a load makes: the
