@@ -14,9 +14,9 @@
  *
  *   - the call fails with ATRBVH_ERR_NOMEM (host or device memory) or
  *     ATRBVH_ERR_BACKEND, its message naming the failed call and the
- *     code by name and number (cl/error.c), and no BVH; or, where the backend does without the
- *     answer (a name, a kernel's largest work group, a profiling time),
- *     it succeeds with the CPU's tree or hits;
+ *     code by name and number (cl/error.c), and no BVH; or, where the
+ *     backend does without the answer (a name, a kernel's largest work
+ *     group, a profiling time), it succeeds with the CPU's tree or hits;
  *   - the same handle then builds (or traces) again and gives the CPU's
  *     result bit for bit: a failure leaves nothing behind that trips a
  *     later call; a refused re-optimisation leaves the tree as it was;
@@ -49,18 +49,17 @@
 static unsigned long calls;   /* calls that can fail, since arm()      */
 static unsigned long fail_at; /* the call that fails (0: none)         */
 static const char *failed;    /* its name, once it has failed          */
-static cl_int fail_code;
-static const char *fail_code_name; /* as the message must give it */
-static int fail_code_nomem;        /* ATRBVH_ERR_NOMEM, else BACKEND */
-static unsigned code_shift;        /* call k fails with code k + shift */
+static unsigned code_shift;   /* call k fails with code k + shift      */
 
 /* The codes a failing call returns, in turn.  (Not CL_DEVICE_NOT_FOUND
  * or CL_PLATFORM_NOT_FOUND_KHR: the open takes those for "no device".) */
-static const struct {
+typedef struct fail_code {
     cl_int code;
-    const char *name;
-    int nomem;
-} codes[8] = {
+    const char *name; /* as the message must give it */
+    int nomem;        /* ATRBVH_ERR_NOMEM, else ATRBVH_ERR_BACKEND */
+} fail_code;
+static const fail_code *fail_with; /* the failing call's */
+static const fail_code codes[8] = {
     {CL_OUT_OF_RESOURCES, "CL_OUT_OF_RESOURCES", 0},
     {CL_OUT_OF_HOST_MEMORY, "CL_OUT_OF_HOST_MEMORY", 1},
     {CL_MEM_OBJECT_ALLOCATION_FAILURE, "CL_MEM_OBJECT_ALLOCATION_FAILURE", 1},
@@ -87,9 +86,7 @@ static void arm(unsigned long k)
     calls = 0;
     fail_at = k;
     failed = NULL;
-    fail_code = codes[(k + code_shift) % 8].code;
-    fail_code_name = codes[(k + code_shift) % 8].name;
-    fail_code_nomem = codes[(k + code_shift) % 8].nomem;
+    fail_with = &codes[(k + code_shift) % 8];
 }
 
 /* Whether this call is the one that fails. */
@@ -103,13 +100,13 @@ static int fails(const char *name)
 
 #define FAIL_OR(name) \
     if (fails(#name)) \
-    return fail_code
+    return fail_with->code
 
 /* A creation that fails sets *err and makes nothing. */
 #define FAIL_CREATE_OR(name, err)         \
     if (fails(#name)) {                   \
         if (err)                          \
-            *(err) = fail_code;           \
+            *(err) = fail_with->code;     \
         return NULL;                      \
     }
 
@@ -437,9 +434,10 @@ static void assert_named_failure(atrbvh_status st, const atrbvh_error *e,
     char code[96];
     /* (a failed program build reports the build, with its log) */
     int build = strcmp(failed, "clBuildProgram") == 0;
-    atrbvh_status want = fail_code_nomem ? ATRBVH_ERR_NOMEM
-                                         : ATRBVH_ERR_BACKEND;
-    snprintf(code, sizeof code, "%s (%d)", fail_code_name, (int)fail_code);
+    atrbvh_status want = fail_with->nomem ? ATRBVH_ERR_NOMEM
+                                          : ATRBVH_ERR_BACKEND;
+    snprintf(code, sizeof code, "%s (%d)", fail_with->name,
+             (int)fail_with->code);
     ck_assert_msg(st == want, "%s, call %lu (%s) failed with %s: status %d, "
                   "want %d (%s)", what, k, failed, code, (int)st, (int)want,
                   e->text);

@@ -219,34 +219,36 @@ ssize_t __wrap_readlink(const char *path, char *buf, size_t size)
 static long open_streams;
 static FILE *our_stream[4], *bad_stream[4];
 
-static void stream_add(FILE **set, FILE *f)
+/* The slot of `set` holding f (NULL: a free slot), or -1. */
+static int stream_slot(FILE *const *set, const FILE *f)
 {
     int i;
     for (i = 0; i < 4; i++)
-        if (!set[i]) {
-            set[i] = f;
-            return;
-        }
+        if (set[i] == f)
+            return i;
+    return -1;
 }
 
-static int stream_drop(FILE **set, FILE *f)
+static void stream_add(FILE **set, FILE *f)
 {
-    int i;
-    for (i = 0; i < 4; i++)
-        if (f && set[i] == f) {
-            set[i] = NULL;
-            return 1;
-        }
-    return 0;
+    int i = stream_slot(set, NULL);
+    if (i >= 0)
+        set[i] = f;
 }
 
 static int stream_in(FILE *const *set, FILE *f)
 {
-    int i;
-    for (i = 0; i < 4; i++)
-        if (f && set[i] == f)
-            return 1;
-    return 0;
+    return f && stream_slot(set, f) >= 0;
+}
+
+/* 1 when f was in the set (now taken out), else 0. */
+static int stream_drop(FILE **set, FILE *f)
+{
+    int i = f ? stream_slot(set, f) : -1;
+    if (i < 0)
+        return 0;
+    set[i] = NULL;
+    return 1;
 }
 
 /* f, counted when opened by the code tested */

@@ -69,7 +69,7 @@ static void install_handlers(void)
     }
 }
 
-static void track(char *tmp)
+void cli_out_track(char *tmp)
 {
     int i;
     install_handlers();
@@ -82,22 +82,12 @@ static void track(char *tmp)
      * a signal */
 }
 
-static void untrack(const char *tmp)
+void cli_out_untrack(const char *tmp)
 {
     int i;
     for (i = 0; tmp && i < MAX_ACTIVE; i++)
         if (active[i] == tmp)
             active[i] = NULL;
-}
-
-void cli_out_track(char *path)
-{
-    track(path);
-}
-
-void cli_out_untrack(const char *path)
-{
-    untrack(path);
 }
 
 /* The tool's memory is plain malloc's. */
@@ -178,7 +168,7 @@ FILE *cli_out_open(const char *path, cli_out *h)
         }
         return h->f;
     }
-    track(h->af.tmp);
+    cli_out_track(h->af.tmp);
     if (!(h->f = fdopen(h->af.fd, "wb"))) {
         e = errno;
         cli_error("%s: cannot write: %s", path, strerror(e));
@@ -195,7 +185,7 @@ void cli_out_abort(cli_out *h)
         return;
     if (h->f)
         fclose(h->f);
-    untrack(h->af.tmp);
+    cli_out_untrack(h->af.tmp);
     atrbvh_i_atomicfile_abort(&h->af, &out_alloc); /* removes only our temporary */
     free(h->name);
     memset(h, 0, sizeof *h);
@@ -253,7 +243,7 @@ int cli_out_commit_all(cli_out *h, size_t n)
     for (i = 0; i < n && bad == n; i++) {
         /* From here the temporary name is the target's: no longer ours
          * to remove on a signal. */
-        untrack(h[i].af.tmp);
+        cli_out_untrack(h[i].af.tmp);
         if ((e = atrbvh_i_atomicfile_commit(&h[i].af, &out_alloc)) != 0) {
             step = STEP_RENAME;
             bad = i;
