@@ -1,7 +1,7 @@
 # regenerate: gnuplot bench-conference.gp (in this folder)
-if (!exists('outsuffix')) outsuffix = ''
+if (!exists('outdir')) outdir = ''
 set terminal pngcairo size 900,600 font 'sans,10'
-set output 'pareto-conference.png'.outsuffix
+set output outdir.'pareto-conference.png'
 set title 'conference.ply: build time against SAH cost, each configuration once (lower left is better)' noenhanced
 set xlabel 'build time, ms (median of the timed runs; log scale)'
 set ylabel 'SAH cost of the tree (collapsed, leaf limit as run)'
@@ -11,28 +11,28 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [9.92035034:269.837256]
-set xtics (10, 20, 50, 100, 200)
+set xrange [9.44699303:184.9895]
+set xtics (10, 20, 50, 100)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 11.1471156,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 30.2151161,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 30.6743568,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 36.4395378,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 26.0168894,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 53.8804492,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 61.5429335,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 30.2217262,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 25.3355308,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 139.640403,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 91.0660587,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 14.6707182,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 41.6702006,36.836494 left font ',8' noenhanced front
+set label 'LBVH' at 10.4928031,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 28.2809497,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 29.1833066,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 34.8907646,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 25.934529,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 52.1054526,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 60.3752145,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 30.9750292,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 24.8086747,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 102.215922,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 68.9378799,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 13.7469359,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 37.0889086,36.836494 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
 set terminal svg size 900,600 dynamic font 'sans,10'
-set output 'pareto-conference.svg'.outsuffix
+set output outdir.'pareto-conference.svg'
 replot
 unset output
 reset
