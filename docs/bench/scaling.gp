@@ -1,7 +1,7 @@
 # regenerate: gnuplot scaling.gp (in this folder)
-if (!exists('outsuffix')) outsuffix = ''
+if (!exists('outdir')) outdir = ''
 set terminal pngcairo size 900,600 font 'sans,10'
-set output 'scaling.png'.outsuffix
+set output outdir.'scaling.png'
 set xlabel 'triangles'
 set grid
 set logscale x
@@ -10,17 +10,17 @@ set title 'Build time against triangle count (log-log; each line a base scene an
 set ylabel 'build time, ms (median)'
 set logscale y
 set key top left
-plot 'scaling.dat' index 0 using 1:2 with linespoints lw 2 title 'builtin:sphere LBVH: ~N^1.04 from 1e5' noenhanced, \
-  'scaling.dat' index 1 using 1:2 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): ~N^1.01 from 1e5' noenhanced, \
-  'scaling.dat' index 2 using 1:2 with linespoints lw 2 title 'bunny.ply LBVH: ~N^0.92 from 1e5' noenhanced, \
-  'scaling.dat' index 3 using 1:2 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): ~N^1.08 from 1e5' noenhanced
+plot 'scaling.dat' index 0 using 1:2 with linespoints lw 2 title 'builtin:sphere LBVH: ~N^0.99 from 1e5' noenhanced, \
+  'scaling.dat' index 1 using 1:2 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): ~N^0.96 from 1e5' noenhanced, \
+  'scaling.dat' index 2 using 1:2 with linespoints lw 2 title 'bunny.ply LBVH: ~N^0.94 from 1e5' noenhanced, \
+  'scaling.dat' index 3 using 1:2 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): ~N^0.99 from 1e5' noenhanced
 set terminal svg size 900,600 dynamic font 'sans,10'
-set output 'scaling.svg'.outsuffix
+set output outdir.'scaling.svg'
 replot
 unset output
 reset
 set terminal pngcairo size 900,600 font 'sans,10'
-set output 'scaling-stages-builtin_sphere-LBVH.png'.outsuffix
+set output outdir.'scaling-stages-builtin_sphere-LBVH.png'
 set xlabel 'triangles'
 set grid
 set logscale x
@@ -38,12 +38,12 @@ plot 'scaling.dat' index 0 using 1:($3 > 0 ? $3 : NaN) with linespoints title 'b
   'scaling.dat' index 0 using 1:($9 > 0 ? $9 : NaN) with linespoints title 'collapse' noenhanced, \
   'scaling.dat' index 0 using 1:($10 > 0 ? $10 : NaN) with linespoints title 'layout' noenhanced
 set terminal svg size 900,600 dynamic font 'sans,10'
-set output 'scaling-stages-builtin_sphere-LBVH.svg'.outsuffix
+set output outdir.'scaling-stages-builtin_sphere-LBVH.svg'
 replot
 unset output
 reset
 set terminal pngcairo size 900,600 font 'sans,10'
-set output 'scaling-stages-builtin_sphere-ATRBVH_9_2_.png'.outsuffix
+set output outdir.'scaling-stages-builtin_sphere-ATRBVH_9_2_.png'
 set xlabel 'triangles'
 set grid
 set logscale x
@@ -61,12 +61,12 @@ plot 'scaling.dat' index 1 using 1:($3 > 0 ? $3 : NaN) with linespoints title 'b
   'scaling.dat' index 1 using 1:($9 > 0 ? $9 : NaN) with linespoints title 'collapse' noenhanced, \
   'scaling.dat' index 1 using 1:($10 > 0 ? $10 : NaN) with linespoints title 'layout' noenhanced
 set terminal svg size 900,600 dynamic font 'sans,10'
-set output 'scaling-stages-builtin_sphere-ATRBVH_9_2_.svg'.outsuffix
+set output outdir.'scaling-stages-builtin_sphere-ATRBVH_9_2_.svg'
 replot
 unset output
 reset
 set terminal pngcairo size 900,600 font 'sans,10'
-set output 'scaling-stages-bunny-LBVH.png'.outsuffix
+set output outdir.'scaling-stages-bunny-LBVH.png'
 set xlabel 'triangles'
 set grid
 set logscale x
@@ -84,12 +84,12 @@ plot 'scaling.dat' index 2 using 1:($3 > 0 ? $3 : NaN) with linespoints title 'b
   'scaling.dat' index 2 using 1:($9 > 0 ? $9 : NaN) with linespoints title 'collapse' noenhanced, \
   'scaling.dat' index 2 using 1:($10 > 0 ? $10 : NaN) with linespoints title 'layout' noenhanced
 set terminal svg size 900,600 dynamic font 'sans,10'
-set output 'scaling-stages-bunny-LBVH.svg'.outsuffix
+set output outdir.'scaling-stages-bunny-LBVH.svg'
 replot
 unset output
 reset
 set terminal pngcairo size 900,600 font 'sans,10'
-set output 'scaling-stages-bunny-ATRBVH_9_2_.png'.outsuffix
+set output outdir.'scaling-stages-bunny-ATRBVH_9_2_.png'
 set xlabel 'triangles'
 set grid
 set logscale x
@@ -107,12 +107,12 @@ plot 'scaling.dat' index 3 using 1:($3 > 0 ? $3 : NaN) with linespoints title 'b
   'scaling.dat' index 3 using 1:($9 > 0 ? $9 : NaN) with linespoints title 'collapse' noenhanced, \
   'scaling.dat' index 3 using 1:($10 > 0 ? $10 : NaN) with linespoints title 'layout' noenhanced
 set terminal svg size 900,600 dynamic font 'sans,10'
-set output 'scaling-stages-bunny-ATRBVH_9_2_.svg'.outsuffix
+set output outdir.'scaling-stages-bunny-ATRBVH_9_2_.svg'
 replot
 unset output
 reset
 set terminal pngcairo size 900,600 font 'sans,10'
-set output 'scaling-memory.png'.outsuffix
+set output outdir.'scaling-memory.png'
 set xlabel 'triangles'
 set grid
 set logscale x
@@ -121,12 +121,12 @@ set title 'Peak library memory during the build, bytes per triangle (each line a
 set ylabel 'bytes per triangle'
 set yrange [0:*]
 set key top right
-plot 'scaling.dat' index 0 using 1:11 with linespoints lw 2 title 'builtin:sphere LBVH: ~N^1.04 from 1e5' noenhanced, \
-  'scaling.dat' index 1 using 1:11 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): ~N^1.01 from 1e5' noenhanced, \
-  'scaling.dat' index 2 using 1:11 with linespoints lw 2 title 'bunny.ply LBVH: ~N^0.92 from 1e5' noenhanced, \
-  'scaling.dat' index 3 using 1:11 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): ~N^1.08 from 1e5' noenhanced
+plot 'scaling.dat' index 0 using 1:11 with linespoints lw 2 title 'builtin:sphere LBVH: ~N^0.99 from 1e5' noenhanced, \
+  'scaling.dat' index 1 using 1:11 with linespoints lw 2 title 'builtin:sphere ATRBVH(9,2): ~N^0.96 from 1e5' noenhanced, \
+  'scaling.dat' index 2 using 1:11 with linespoints lw 2 title 'bunny.ply LBVH: ~N^0.94 from 1e5' noenhanced, \
+  'scaling.dat' index 3 using 1:11 with linespoints lw 2 title 'bunny.ply ATRBVH(9,2): ~N^0.99 from 1e5' noenhanced
 set terminal svg size 900,600 dynamic font 'sans,10'
-set output 'scaling-memory.svg'.outsuffix
+set output outdir.'scaling-memory.svg'
 replot
 unset output
 reset
