@@ -152,10 +152,10 @@ atrbvh_status atrbvh_i_check_geometry(const atrbvh_geometry *g,
  * 32-bit: the caller has checked that every index and vertex
  * offset of the geometry fits (vertex offsets only once the indices are
  * known to be in range). */
-__attribute__((target("avx2"))) static inline int
-tri8_avx2(const float *vertices, int32_t vst, uint32_t vlast,
-          const uint32_t *indices, int32_t ist, int64_t j, atrbvh_box *out,
-          atrbvh_f8 *acc)
+__attribute__((always_inline, target("avx2"))) static inline int
+tri8_lanes(const float *vertices, int32_t vst, uint32_t vlast,
+           const uint32_t *indices, int32_t ist, int64_t j, atrbvh_box *out,
+           atrbvh_f8 *acc)
 {
     const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     const __m256i first = _mm256_add_epi32(_mm256_set1_epi32((int32_t)j), lane);
@@ -222,12 +222,29 @@ tri8_avx2(const float *vertices, int32_t vst, uint32_t vlast,
     return 1;
 }
 
+/* tri8_lanes, called from the sweep, which is not compiled for AVX2: the
+ * upper halves of the YMM registers are cleared on the way back to its
+ * SSE code (GCC clears them itself only at -O2 and above, and not before
+ * a tail call; tests/test_vecstate.c).  So are the accumulators'
+ * functions below. */
+__attribute__((target("avx2"))) static int
+tri8_avx2(const float *vertices, int32_t vst, uint32_t vlast,
+          const uint32_t *indices, int32_t ist, int64_t j, atrbvh_box *out,
+          atrbvh_f8 *acc)
+{
+    const int done = tri8_lanes(vertices, vst, vlast, indices, ist, j, out,
+                                acc);
+    _mm256_zeroupper();
+    return done;
+}
+
 /* The lanes' accumulators, empty; and into the thread's boxes at the end
  * (shared/lanes.h; called from the sweep, which is not compiled for AVX2,
  * so not inlined). */
 __attribute__((target("avx2"))) static void tri_acc_init(atrbvh_f8 *acc)
 {
     atrbvh_tri8_acc_init(acc);
+    _mm256_zeroupper();
 }
 
 __attribute__((target("avx2"))) static void
@@ -237,6 +254,7 @@ tri_acc_done(const atrbvh_f8 *acc, atrbvh_box *scene, atrbvh_box *centroids)
     int k;
     for (k = 0; k < ATRBVH_TRI8_ACC; k++)
         _mm256_storeu_ps(t[k], acc[k]);
+    _mm256_zeroupper();
     atrbvh_tri8_acc_unite(t, scene, centroids);
 }
 #endif

@@ -1077,18 +1077,24 @@ static int wide_any(const atrbvh_trav_scene *s, const void *w,
 }
 
 #if defined(ATRBVH_TRAV_SSE) && WIDE_AVX2
+/* (each clears the upper halves of the YMM registers on its way back to
+ * the batch loop's SSE code: GCC does only at -O2 and above, and not
+ * before a tail call; tests/test_vecstate.c) */
 __attribute__((target("avx2"))) static void
 wide_closest_avx2(const atrbvh_trav_scene *s, const void *w, const void *tris,
                   const atrbvh_ray *ray, atrbvh_hit *hit)
 {
     wide_closest_t(s, w, tris, ray, hit, 1);
+    _mm256_zeroupper();
 }
 
 __attribute__((target("avx2"))) static int
 wide_any_avx2(const atrbvh_trav_scene *s, const void *w, const void *tris,
               const atrbvh_ray *ray)
 {
-    return wide_any_t(s, w, tris, ray, 1);
+    const int any = wide_any_t(s, w, tris, ray, 1);
+    _mm256_zeroupper();
+    return any;
 }
 
 /* Whether the wide batches take the AVX2 node test: the CPU (and the

@@ -888,6 +888,7 @@ typedef long4 atrbvh_v4m;   /* a comparison's lanes: all ones or 0  */
 #define atrbvh_v4_store(p, v) vstore4((v), 0, (p))
 #define atrbvh_v4_storeu(p, v) vstore4((v), 0, (p))
 #define ATRBVH_V4_INF ((double)INFINITY)
+#define atrbvh_v4_done() ((void)0)
 typedef uint4 atrbvh_v4u; /* four counts                          */
 #define atrbvh_v4_uload(p) vload4(0, (p))
 #define atrbvh_v4_ustore(p, v) vstore4((v), 0, (p))
@@ -941,6 +942,10 @@ typedef __m256d atrbvh_v4m;
 #define atrbvh_v4_store(p, v) _mm256_store_pd((p), (v))
 #define atrbvh_v4_storeu(p, v) _mm256_storeu_pd((p), (v))
 #define ATRBVH_V4_INF __builtin_inf()
+/* The end of a four-lane function: the upper halves of the YMM registers
+ * cleared for the SSE code that runs next (GCC puts its own VZEROUPPER
+ * there only at -O2 and above; tests/test_vecstate.c). */
+#define atrbvh_v4_done() _mm256_zeroupper()
 typedef __m128i atrbvh_v4u;
 #define atrbvh_v4_uload(p) _mm_loadu_si128((const __m128i *)(const void *)(p))
 #define atrbvh_v4_ustore(p, v) _mm_storeu_si128((__m128i *)(void *)(p), (v))
@@ -1192,6 +1197,7 @@ atrbvh_trbvh_costs4(const atrbvh_cost_params *p, atrbvh_u32 n,
         found[l] = quad[4u * full + l];
         top[l] = (atrbvh_u32)split[l];
     }
+    atrbvh_v4_done();
 }
 #endif
 
@@ -1929,6 +1935,7 @@ atrbvh_agglomerate4(const atrbvh_cost_params *p, atrbvh_u32 n,
     }
     for (l = 0; l < 4u; l++)
         topo[l]->root = n - 2u;
+    atrbvh_v4_done();
 }
 #undef ATRBVH_AGG4_SEEK
 #endif
