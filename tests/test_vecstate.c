@@ -7,11 +7,11 @@
  * those upper halves are dirty pays for it on every vector instruction.
  * On the AMD EPYC of docs/benchmarks.md, Embree's rtcBuildBVH (medium
  * quality, its SSE2 builder) run right after an atrbvh LBVH build took
- * 1.35x as long as after a TRBVH build, and as long again once a
- * vzeroupper was put between the two: the Morton stage's AVX2 code left
- * the state dirty by a tail call into scalar code, and so did the SAH sum
- * (GCC puts no vzeroupper before such a jump).  The library's own scalar
- * stages after the Morton stage paid the same.
+ * 1.35x as long as after a TRBVH build, and no longer once a vzeroupper
+ * was put between the two: the Morton stage's AVX2 code left the state
+ * dirty by a tail call into scalar code, and so did the SAH sum (GCC puts
+ * no vzeroupper before such a jump).  The library's own stages after the
+ * Morton stage ran in that state too (with no cost measurable there).
  *
  * How: XGETBV with ECX = 1 reads XINUSE, which has bit 2 set while the
  * upper halves of YMM0-15 may be non-zero and bit 6 for the upper halves
