@@ -15,6 +15,11 @@
 #             the full suites for these already ran in 10-check (everything
 #             on) and in all-off (everything off), and on the CI's two cores
 #             a full check per configuration would cost minutes each;
+#   clang     CC=clang, the other compiler a distribution may build with:
+#             the exported symbols (clang's OpenMP makes globals of its
+#             own), the consumer's link, the recorded tree hashes (the
+#             same trees, bit for bit) and the vector state the library
+#             hands back (test_vecstate);
 #   debug-checks  --enable-debug-checks (the tree check of lib/check.c after
 #             every build, in the library alone): the suites that build
 #             trees on both backends, so that every tree they build is
@@ -23,7 +28,7 @@
 # Contract: print '=== stage ok' as the last line on success.
 cd "$(dirname "$0")/../.." || exit 1
 top=$(pwd)
-sh setup.sh --packages check opencl bench ||
+sh setup.sh --packages check opencl bench hardening ||
     { echo "configs: 0 passed, 1 failed (installing packages failed)"; exit 1; }
 [ -x configure ] || { echo "configs: run setup.sh first (no ./configure)"; exit 1; }
 jobs=$(nproc 2>/dev/null || echo 2)
@@ -89,6 +94,14 @@ config no-openmp "$no_gomp" lib --disable-openmp
 config no-opencl "$no_cl" lib --disable-opencl
 config no-embree "$no_embree" tool --without-embree
 config no-png "$no_png" tool --without-png
+if command -v clang >/dev/null 2>&1; then
+    config clang 'grep -q "^CC = clang" Makefile' \
+        "tests=tests/symbols.sh tests/consumer.sh tests/test_hashes tests/test_vecstate" \
+        CC=clang
+else
+    echo "configs: FAILED: clang: not installed (.ci/packages.d/60-hardening.txt)"
+    failed=$((failed + 1))
+fi
 config debug-checks 'grep -q "define ATRBVH_DEBUG_CHECKS 1" config.h' \
     "tests=tests/test_build tests/test_device tests/test_split tests/test_stages tests/test_hashes tests/test_optimise tests/test_threads tests/test_errors tests/test_animate tests/test_opencl tests/animate.sh" \
     --enable-debug-checks
