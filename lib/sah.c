@@ -129,7 +129,7 @@ sums_avx(const atrbvh_node *nodes, size_t m, atrbvh_i_sah_sums *s)
         s->leaves += l4[k];
         s->largest = m4[k] > s->largest ? m4[k] : s->largest;
     }
-    /* (no vzeroupper before a tail call from GCC: cpu/morton.c) */
+    /* (the upper YMM halves cleared before the SSE tail: cpu/morton.c) */
     _mm256_zeroupper();
     sums_scalar(nodes, i, m, s);
 }

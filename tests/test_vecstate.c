@@ -196,14 +196,12 @@ START_TEST(boxes_and_split_builds_leave_vector_state_clean)
         return;
     boxes = malloc((size_t)TRIANGLES * 6 * sizeof *boxes);
     ck_assert_ptr_nonnull(boxes);
+    /* (any valid boxes: one of side 0.1 at each triangle's first vertex) */
     for (i = 0; i < TRIANGLES; i++) {
         int k;
         for (k = 0; k < 3; k++) {
-            const float *v = verts + 9 * i + k;
-            boxes[6 * i + k] = v[0] < v[3] ? (v[0] < v[6] ? v[0] : v[6])
-                                           : (v[3] < v[6] ? v[3] : v[6]);
-            boxes[6 * i + 3 + k] = v[0] > v[3] ? (v[0] > v[6] ? v[0] : v[6])
-                                               : (v[3] > v[6] ? v[3] : v[6]);
+            boxes[6 * i + k] = verts[9 * i + k];
+            boxes[6 * i + 3 + k] = verts[9 * i + k] + 0.1f;
         }
     }
     {

@@ -129,11 +129,10 @@ keys_avx2(const atrbvh_box *boxes, uint32_t lo, uint32_t hi,
             quantise4(_mm256_extractf128_ps(cz, 1), lo2, s2));
         _mm256_storeu_si256((__m256i *)(keys + i + 4), k);
     }
-    /* GCC puts no vzeroupper before a tail call: without this one the
-     * scalar code after it, in this library or the caller's, runs with
-     * the upper halves of the AVX registers dirty (on the AMD EPYC of
-     * docs/benchmarks.md, 1.35x the time for Embree's SSE builder run
-     * next; tests/test_vecstate.c). */
+    /* The upper halves of the YMM registers cleared for the SSE code
+     * that runs next, this library's or the caller's: GCC does it only
+     * at -O2 and above, and not before a tail call such as the one below
+     * (docs/architecture.md; tests/test_vecstate.c). */
     _mm256_zeroupper();
     keys_scalar(boxes, i, hi, flo, fs, keys);
 }
