@@ -11,23 +11,23 @@ set lmargin 10
 set rmargin 4
 set tmargin 3
 set logscale x
-set xrange [9.44699303:184.9895]
-set xtics (10, 20, 50, 100)
+set xrange [10.4908817:88.2947868]
+set xtics (20, 50)
 set yrange [30.464722:80.0754387]
 unset label
-set label 'LBVH' at 10.4928031,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(7,1)' at 28.2809497,42.2585195 left font ',8' noenhanced front
-set label 'ATRBVH(9,1)' at 29.1833066,38.3879299 left font ',8' noenhanced front
-set label 'ATRBVH(6,2)' at 34.8907646,40.2171123 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)' at 25.934529,36.836494 left font ',8' noenhanced front
-set label 'ATRBVH(16,3)' at 52.1054526,35.3352164 left font ',8' noenhanced front
-set label 'TRBVH(7,3)' at 60.3752145,37.3793614 left font ',8' noenhanced front
-set label 'ATRBVH(auto,4)' at 30.9750292,35.1523488 left font ',8' noenhanced front
-set label 'embree_low' at 24.8086747,74.2159052 left font ',8' noenhanced front
-set label 'embree_medium' at 102.215922,43.2759982 left font ',8' noenhanced front
-set label 'embree_high' at 68.9378799,43.2759982 left font ',8' noenhanced front
-set label 'LBVH/cl' at 13.7469359,64.4719989 left font ',8' noenhanced front
-set label 'ATRBVH(9,2)/cl' at 37.0889086,36.836494 left font ',8' noenhanced front
+set label 'LBVH' at 12.8809178,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(7,1)' at 26.4093594,42.2585195 left font ',8' noenhanced front
+set label 'ATRBVH(9,1)' at 27.1894415,38.3879299 left font ',8' noenhanced front
+set label 'ATRBVH(6,2)' at 30.4237735,40.2171123 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)' at 25.879878,36.836494 left font ',8' noenhanced front
+set label 'ATRBVH(16,3)' at 51.8603334,35.3352164 left font ',8' noenhanced front
+set label 'TRBVH(7,3)' at 57.7353669,37.3793614 left font ',8' noenhanced front
+set label 'ATRBVH(auto,4)' at 31.7989895,35.1523488 left font ',8' noenhanced front
+set label 'embree_low' at 26.7962357,74.2159052 left font ',8' noenhanced front
+set label 'embree_medium' at 53.7873109,43.2759982 left font ',8' noenhanced front
+set label 'embree_high' at 40.4811006,43.2759982 left font ',8' noenhanced front
+set label 'LBVH/cl' at 15.7595133,64.4719989 left font ',8' noenhanced front
+set label 'ATRBVH(9,2)/cl' at 35.2673605,36.836494 left font ',8' noenhanced front
 plot 'bench-conference.dat' index 2 using 2:3 with steps lw 1 lc rgb '#999999' title 'Pareto front (no other point is both faster and lower)', \
   'bench-conference.dat' index 0 using 2:3 with points pt 7 ps 1.2 lc rgb '#1f77b4' title 'atrbvh (LBVH, TRBVH, ATRBVH)', \
   '' index 1 using 2:3 with points pt 5 ps 1.2 lc rgb '#d62728' title 'Embree (rtcBuildBVH)'
