@@ -32,10 +32,10 @@ embree_ctx *embree_open(int threads)
 void embree_close(embree_ctx *ctx) { (void)ctx; }
 int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
                  unsigned max_leaf, double ci, double ct, int measure_memory,
-                 embree_build_result *res)
+                 int keep_tree, embree_build_result *res)
 {
     (void)ctx, (void)sc, (void)q, (void)max_leaf, (void)ci, (void)ct;
-    (void)measure_memory;
+    (void)measure_memory, (void)keep_tree;
     memset(res, 0, sizeof *res);
     cli_error("not built with Embree");
     return -1;
@@ -454,7 +454,7 @@ static enum RTCBuildQuality rtc_quality(embree_quality q)
 
 int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
                  unsigned max_leaf, double ci, double ct, int measure_memory,
-                 embree_build_result *res)
+                 int keep_tree, embree_build_result *res)
 {
     size_t n = sc->triangle_count, i, cap;
     struct RTCBuildPrimitive *prims;
@@ -563,6 +563,8 @@ int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
                   (int)rtcGetDeviceError(ctx->device));
         return -1;
     }
+    if (!keep_tree)
+        return 0;
     /* The root's box: the union of every triangle's (the build reorders
      * the primitive array and, with splits, leaves parts of triangles in
      * it). */

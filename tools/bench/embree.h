@@ -52,13 +52,18 @@ typedef struct embree_build_result {
 /* As Embree's users build: the device, the BVH object and the primitive
  * array are the context's, made once and reused; each build refills the
  * primitive array (inside build_ms) and calls rtcBuildBVH.  The tree lives
- * until the context's next build (res->bvh is a converted copy).
- * measure_memory installs Embree's memory monitor for this build only (a
- * callback on every allocation: do not time such a build).  max_leaf 0
- * means 1 (Embree needs a bound).  0, or -1 after cli_error. */
+ * until the context's next build; with keep_tree, res->bvh is a copy of
+ * it as an atrbvh BVH (convert_ms; without, NULL and no references
+ * counted).  A conversion takes longer than a small build, and Embree's
+ * worker threads fall asleep in it: a build right after one ran up to
+ * 1.35x slower than back to back (bunny, low quality), so the bench
+ * converts only the trees it reads.  measure_memory installs Embree's
+ * memory monitor for this build only (a callback on every allocation: do
+ * not time such a build).  max_leaf 0 means 1 (Embree needs a bound).  0,
+ * or -1 after cli_error. */
 int embree_build(embree_ctx *ctx, const scene *sc, embree_quality q,
                  unsigned max_leaf, double ci, double ct, int measure_memory,
-                 embree_build_result *res);
+                 int keep_tree, embree_build_result *res);
 
 /* Embree's own scene (rtcCommitScene at quality q) traced with
  * rtcIntersect1 (primary, diffuse) and rtcOccluded1 (ao) on `threads`
