@@ -204,6 +204,21 @@ int __wrap_access(const char *path, int how)
     return __real_access(path, how);
 }
 
+/* no_links: a file system without hard links (EPERM for a file that
+ * exists) */
+static int no_links;
+int __real_link(const char *from, const char *to);
+int __wrap_link(const char *from, const char *to);
+int __wrap_link(const char *from, const char *to)
+{
+    FAIL_OR(link);
+    if (no_links && __real_access(from, F_OK) == 0) {
+        errno = EPERM;
+        return -1;
+    }
+    return __real_link(from, to);
+}
+
 ssize_t __real_readlink(const char *path, char *buf, size_t size);
 ssize_t __wrap_readlink(const char *path, char *buf, size_t size);
 ssize_t __wrap_readlink(const char *path, char *buf, size_t size)
@@ -633,11 +648,14 @@ END_TEST
 /* The tool's files written as one (cli_out_commit_all, as `atrbvh stages
  * --dump` puts its arrays and manifest in place): a.npy over an old one,
  * b.npy new, manifest.json over an old one, last.  For every k, the run
- * succeeds with every new file, or fails with one error line naming a
- * file, its step and the reason, and then: a failure before the renames
- * leaves the folder exactly as it was; a failed rename leaves the files
- * before the one it names replaced, and it and those after it as they
- * were, with no temporary file either way. */
+ * succeeds with every new file (a hard link that cannot be made is done
+ * without), or fails with one error line naming a file, its step and the
+ * reason, and then the folder is exactly as it was, a failed rename's
+ * files before it put back (the message says so).  Then again on a file
+ * system without hard links (_i 1): a failed rename leaves a.npy
+ * replaced when it came before (the message says it could not be put
+ * back), b.npy removed, and the rest as they were.  No temporary file is
+ * left either way. */
 START_TEST(tool_files_committed_as_one)
 {
     static const char *const names[3] = {"a.npy", "b.npy", "manifest.json"};
@@ -649,6 +667,7 @@ START_TEST(tool_files_committed_as_one)
     unsigned long n = 0, k;
     int i;
     make_bvhs();
+    no_links = _i;
     for (i = 0; i < 3; i++) {
         snprintf(path[i], sizeof path[i], "%s/%s", dir, names[i]);
         old_of[i] = i == 1 ? NULL : old_image + (size_t)i * 100;
@@ -708,6 +727,10 @@ START_TEST(tool_files_committed_as_one)
                 ck_assert_msg(tu_holds(path[i], new_of[i], new_len[i]),
                               "%s survived %s (call %lu) without its new "
                               "bytes", names[i], failed, k);
+            tu_list_dir(dir, after, sizeof after);
+            ck_assert_msg(!strstr(after, ".tmp"), "%s (call %lu) done "
+                          "without: a temporary file or link is left: %s",
+                          failed ? failed : "nothing", k, after);
             continue;
         }
         note(refused, sizeof refused, failed);
@@ -716,40 +739,57 @@ START_TEST(tool_files_committed_as_one)
                       "%s (call %lu) failed with %s: \"%s\" does not name "
                       "the step (\"%s\") and the error", failed, k,
                       strerror(fail_errno), tool_msg, step_words(failed));
-        /* the files before the one the message names are replaced only
-         * when it was a rename that failed */
+        /* the file the message names; the ones before it were renamed
+         * in place when it was a rename that failed, and put back - but
+         * for a.npy without hard links */
         for (placed = 0; placed < 3 && !strstr(tool_msg, path[placed]);
              placed++)
             ;
         ck_assert_msg(placed < 3, "\"%s\" names none of the files",
                       tool_msg);
-        if (strcmp(failed, "rename"))
+        if (strcmp(failed, "rename") || !no_links)
             placed = 0;
+        ck_assert_msg(!strcmp(failed, "rename") ||
+                          !strstr(tool_msg, "put back"),
+                      "%s (call %lu) failed before any rename: \"%s\"",
+                      failed, k, tool_msg);
         for (i = 0; i < 3; i++) {
-            const int is_new = i < placed;
+            const int is_new = i < placed && old_of[i];
             ck_assert_msg(is_new ? tu_holds(path[i], new_of[i], new_len[i])
                           : old_of[i] ? tu_holds(path[i], old_of[i],
                                                  old_len[i])
                                       : access(path[i], F_OK) != 0,
-                          "%s (call %lu) failed: %s is not %s", failed, k,
-                          names[i], is_new ? "new" : "as it was");
+                          "%s (call %lu) failed: %s is not %s (%s)", failed,
+                          k, names[i], is_new ? "new" : "as it was",
+                          tool_msg);
         }
+        ck_assert_msg(!strstr(tool_msg, "put back") ||
+                          strstr(tool_msg, placed > 0 ? "could not be put "
+                                                        "back"
+                                                      : "put back as"),
+                      "%s (call %lu) failed: \"%s\" does not say what was "
+                      "put back", failed, k, tool_msg);
         tu_list_dir(dir, after, sizeof after);
-        ck_assert_msg(placed > 1 || !strcmp(before, after), "%s (call %lu) "
+        ck_assert_msg(placed > 0 || !strcmp(before, after), "%s (call %lu) "
                       "failed: the folder held \"%s\", now \"%s\"", failed,
                       k, before, after);
         ck_assert_msg(!strstr(after, ".tmp"), "%s (call %lu) failed: a "
                       "temporary file is left: %s", failed, k, after);
     }
     if (n)
-        fprintf(stderr, "the tool's three files as one: %lu calls, each "
-                "failed in turn; refused: %s; done without:%s\n", n,
-                refused + 1, done_without);
+        fprintf(stderr, "the tool's three files as one%s: %lu calls, each "
+                "failed in turn; refused: %s; done without:%s\n",
+                _i ? " without hard links" : "", n, refused + 1,
+                done_without);
+    no_links = 0;
     ck_assert_msg(!n || (strstr(refused, " fflush ") &&
                          strstr(refused, " fsync ") &&
                          strstr(refused, " fclose ") &&
                          strstr(refused, " rename ")),
                   "refused only %s", refused);
+    ck_assert_msg(!n || strstr(done_without, " link "),
+                  "a failed hard link failed the files: done without only "
+                  "%s", done_without);
     for (i = 0; i < 3; i++)
         remove(path[i]);
     ck_assert_int_eq(rmdir(dir), 0);
@@ -953,7 +993,7 @@ int main(void)
                         NEW_FILE, IN_PLACE + 1);
     tcase_add_loop_test(tc, tool_output_fails_cleanly_at_each_call,
                         NEW_FILE, IN_PLACE + 1);
-    tcase_add_test(tc, tool_files_committed_as_one);
+    tcase_add_loop_test(tc, tool_files_committed_as_one, 0, 2);
     tcase_add_test(tc, short_and_interrupted_writes_complete);
     tcase_add_test(tc, bvh_load_fails_cleanly_at_each_call);
     tcase_add_test(tc, ply_load_fails_cleanly_at_each_call);

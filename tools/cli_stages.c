@@ -89,8 +89,8 @@ static int write_array(dump_state *s, const char *stage,
 }
 
 /* Puts every written file in place, the manifest last (0), or none of
- * them (-1, after the error line; see cli_out_commit_all for a failed
- * rename). */
+ * them (-1, after the error line; a rename that fails part way puts the
+ * files before it back: cli_out_commit_all). */
 static int commit_all(dump_state *s)
 {
     int rc = cli_out_commit_all(s->out, s->files);

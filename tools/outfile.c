@@ -25,8 +25,10 @@
  * unlinks each, then removes each that is a folder (the folders made for
  * gnuplot, cli_out_track; both calls async-signal-safe), restores the
  * default action and raises the signal again.  Room for every file of
- * the largest stage dump (tools/cli_stages.c) and a plot folder. */
-#define MAX_ACTIVE 1024
+ * the largest stage dump (tools/cli_stages.c: 961) with the hard link
+ * its commit makes to each target (cli_out_commit_all), and a plot
+ * folder. */
+#define MAX_ACTIVE 2048
 static char *volatile active[MAX_ACTIVE];
 static int handlers_installed;
 static const int fatal_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT,
@@ -223,11 +225,100 @@ static int finish(cli_out *h, enum commit_step *step)
     return e;
 }
 
+/* A group's way back (cli_out_commit_all): for each file renamed in
+ * place, what puts its target back as it was should a later rename of
+ * the group fail.  `old`: a hard link to the target made before the first
+ * rename (beside it, named after the temporary file, tracked for the
+ * signal handler), renamed back over it; NULL with `fresh` when there was
+ * no target (the renamed file is ours to remove), NULL without when the
+ * link could not be made (a file system without hard links: that target
+ * cannot be put back). */
+typedef struct undo {
+    char *target, *old;
+    int fresh, keep; /* keep: the old content is only in `old` now */
+} undo;
+
+/* The links for h[0..n-1], made before any rename; 0, or -1 when out of
+ * memory (nothing made).  A link that cannot be made is not an error:
+ * only that file's way back is lost. */
+static int undo_prepare(const cli_out *h, size_t n, undo *u)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        const atomicfile *af = &h[i].af;
+        size_t len;
+        if (!af->tmp)
+            continue; /* in place: written already, nothing to put back */
+        len = strlen(af->tmp);
+        u[i].target = dup_str(af->target);
+        u[i].old = (char *)malloc(len + sizeof ".old");
+        if (!u[i].target || !u[i].old)
+            return -1;
+        memcpy(u[i].old, af->tmp, len);
+        memcpy(u[i].old + len, ".old", sizeof ".old");
+        if (link(af->target, u[i].old) == 0) {
+            cli_out_track(u[i].old);
+            continue;
+        }
+        u[i].fresh = errno == ENOENT;
+        free(u[i].old);
+        u[i].old = NULL;
+    }
+    return 0;
+}
+
+/* Drops the links and frees u[0..n-1] (after the group, or the links
+ * after the rename that failed: their targets were not touched). */
+static void undo_release(undo *u, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if (u[i].old && !u[i].keep) {
+            cli_out_untrack(u[i].old);
+            unlink(u[i].old);
+        }
+        free(u[i].old);
+        free(u[i].target);
+        u[i].old = u[i].target = NULL;
+    }
+}
+
+/* Puts the targets of u[0..done-1] back as they were, last first.  The
+ * number that could not be: a target with no link, or whose link or new
+ * file could not be renamed or removed (the old content then stays in its
+ * link, named in *kept, and is not removed). */
+static size_t undo_apply(undo *u, size_t done, const char **kept)
+{
+    size_t i = done, lost = 0;
+    *kept = NULL;
+    while (i-- > 0) {
+        if (!u[i].target)
+            continue;
+        if (u[i].old) {
+            if (rename(u[i].old, u[i].target) == 0) {
+                cli_out_untrack(u[i].old);
+                free(u[i].old);
+                u[i].old = NULL;
+                continue;
+            }
+            cli_out_untrack(u[i].old); /* the old content: keep it */
+            u[i].keep = 1;
+            *kept = u[i].old;
+            lost++;
+        } else if (!u[i].fresh || unlink(u[i].target) != 0) {
+            lost++;
+        }
+    }
+    return lost;
+}
+
 int cli_out_commit_all(cli_out *h, size_t n)
 {
     enum commit_step step = STEP_WRITE;
-    size_t i, bad = n;
-    int e = 0;
+    size_t i, bad = n, lost = 0;
+    const char *kept = NULL;
+    undo *u = NULL;
+    int e = 0, nomem = 0;
     for (i = 0; i < n; i++)
         if (!h[i].f) {
             cli_error("%s: not open for writing",
@@ -240,6 +331,12 @@ int cli_out_commit_all(cli_out *h, size_t n)
     for (i = 0; i < n && bad == n; i++)
         if ((e = finish(&h[i], &step)) != 0)
             bad = i;
+    /* A group of several: the way back, should a rename fail part way */
+    if (bad == n && n > 1 &&
+        (!(u = (undo *)calloc(n, sizeof *u)) || undo_prepare(h, n, u))) {
+        nomem = 1;
+        bad = 0;
+    }
     for (i = 0; i < n && bad == n; i++) {
         /* From here the temporary name is the target's: no longer ours
          * to remove on a signal. */
@@ -253,8 +350,31 @@ int cli_out_commit_all(cli_out *h, size_t n)
         memset(&h[i], 0, sizeof h[i]);
         h[i].af.fd = -1;
     }
+    if (u && bad < n)
+        lost = undo_apply(u, bad, &kept);
     if (bad < n) {
-        cli_error("%s: %s: %s", h[bad].name, step_words[step], strerror(e));
+        if (nomem)
+            cli_error("%s: out of memory", h[bad].name);
+        else if (bad == 0 || !u)
+            cli_error("%s: %s: %s", h[bad].name, step_words[step],
+                      strerror(e));
+        else if (lost == 0)
+            cli_error("%s: %s: %s; the %lu file%s before it put back as "
+                      "%s", h[bad].name, step_words[step], strerror(e),
+                      (unsigned long)bad, bad == 1 ? "" : "s",
+                      bad == 1 ? "it was" : "they were");
+        else
+            cli_error("%s: %s: %s; %lu of the %lu files before it could not "
+                      "be put back%s%s", h[bad].name, step_words[step],
+                      strerror(e), (unsigned long)lost, (unsigned long)bad,
+                      kept ? ", an old one is kept as " : "",
+                      kept ? kept : "");
+    }
+    if (u) {
+        undo_release(u, n);
+        free(u);
+    }
+    if (bad < n) {
         cli_out_abort_all(h, n);
         return -1;
     }

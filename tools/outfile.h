@@ -77,10 +77,14 @@ int cli_out_commit(cli_out *h);
  * error), and only when all of that succeeded renames them over their
  * targets, in order.  0, or -1 after one error line naming the file, the
  * step and the reason; every handle is ended either way.  A failure
- * before the renames leaves every target as it was; a failed rename (rare:
- * each temporary file is in its target's directory) leaves the targets
- * before it replaced and the others as they were: write the file that
- * names the others (a manifest) last. */
+ * before the renames leaves every target as it was.  So does a failed
+ * rename (rare: each temporary file is in its target's directory): the
+ * targets before it are put back, from hard links to them made before
+ * the first rename (removed after the last) or, for a target that did
+ * not exist, by removing the new file; the error line says so.  Where a
+ * link cannot be made (a file system without hard links) that target
+ * cannot be put back, and the line says how many could not: write the
+ * file that names the others (a manifest) last. */
 int cli_out_commit_all(cli_out *h, size_t n);
 
 /* Gives up: closes and removes the temporary file; the target is
