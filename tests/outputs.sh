@@ -302,7 +302,8 @@ if run 0 animate builtin:wave:500 --frames 2 --plot "$D"; then
 fi
 only animate.dat animate.gp gnuplot.log keep.txt sah.png sah.png.part \
     sah.svg ms.png ms.svg
-# Killed while gnuplot runs: its folder and what it wrote there go too.
+# Killed while gnuplot runs: gnuplot is ended first (it could go on
+# writing after the cleanup), then its folder and what it wrote there go.
 fake_gnuplot hang 0
 "$TOOL" animate builtin:wave:500 --frames 2 --plot "$D" >/dev/null 2>&1 &
 tool=$!
@@ -314,7 +315,11 @@ done
 kill -TERM $tool
 wait $tool
 killed=$?
-[ -s "$T/fake/pid" ] && kill "$(cat "$T/fake/pid")" 2>/dev/null
+if [ -s "$T/fake/pid" ] && kill -0 "$(cat "$T/fake/pid")" 2>/dev/null; then
+    fail "gnuplot outlived the tool killed by SIGTERM"
+    kill "$(cat "$T/fake/pid")" 2>/dev/null
+fi
+[ -s "$T/fake/pid" ] || fail "the fake gnuplot never started"
 [ $killed -eq 143 ] || fail "animate --plot killed by SIGTERM exited $killed"
 only animate.dat animate.gp gnuplot.log keep.txt sah.png sah.png.part \
     sah.svg ms.png ms.svg

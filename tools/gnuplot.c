@@ -63,12 +63,15 @@ static int run(const char *dir, const char *script, const char *sub)
         execvp(argv[0], argv);
         _exit(127);
     }
+    cli_out_track_writer(pid);
     while (waitpid(pid, &st, 0) < 0)
         if (errno != EINTR) {
+            cli_out_track_writer(0);
             cli_error("%s/%s: waiting for gnuplot: %s", dir, script,
                       strerror(errno));
             return -1;
         }
+    cli_out_track_writer(0);
     if (WIFEXITED(st) && WEXITSTATUS(st) == 127) {
         cli_error("%s/%s: gnuplot not found (install gnuplot to get the "
                   "pictures; the data and script are there)", dir, script);

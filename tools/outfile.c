@@ -16,6 +16,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 /* ------------------------------------------- cleanup on a fatal signal */
@@ -30,13 +31,25 @@
  * folder. */
 #define MAX_ACTIVE 2048
 static char *volatile active[MAX_ACTIVE];
+/* A child writing into tracked paths (gnuplot), ended and reaped before
+ * they are removed: otherwise it could go on writing after the cleanup
+ * and leave its folder behind.  0: none. */
+static volatile pid_t writer;
 static int handlers_installed;
 static const int fatal_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT,
                                     SIGXFSZ};
 
 static void on_fatal_signal(int sig)
 {
+    const pid_t w = writer;
     int i;
+    if (w > 0) {
+        /* its output is dropped anyway: SIGKILL, which it cannot delay;
+         * (a waitpid of the main thread may reap it first: ECHILD) */
+        kill(w, SIGKILL);
+        while (waitpid(w, NULL, 0) < 0 && errno == EINTR)
+            ;
+    }
     for (i = 0; i < MAX_ACTIVE; i++) {
         char *t = active[i];
         if (t)
@@ -82,6 +95,12 @@ void cli_out_track(char *tmp)
         }
     /* more than MAX_ACTIVE at once: still written, just not cleaned up on
      * a signal */
+}
+
+void cli_out_track_writer(pid_t pid)
+{
+    install_handlers();
+    writer = pid;
 }
 
 void cli_out_untrack(const char *tmp)

@@ -41,6 +41,7 @@
 #define ATRBVH_TOOLS_OUTFILE_H
 
 #include <stdio.h>
+#include <sys/types.h>
 
 #include "atomicfile.h"
 
@@ -102,6 +103,11 @@ void cli_out_abort_all(cli_out *h, size_t n);
  * cli_out_open tracks its own. */
 void cli_out_track(char *path);
 void cli_out_untrack(const char *path);
+
+/* The child process writing the tracked files (gnuplot), 0 for none: a
+ * fatal signal ends it (SIGKILL) and reaps it before removing them, so
+ * that it cannot write again after the cleanup.  One at a time. */
+void cli_out_track_writer(pid_t pid);
 
 /* 1 when both paths exist and name the same file (same device and inode,
  * symbolic links followed), else 0.  For refusing an output that would
