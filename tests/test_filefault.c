@@ -679,7 +679,7 @@ START_TEST(tool_files_committed_as_one)
     strcpy(done_without, " ");
     for (k = 0; k == 0 || k <= n; k++) {
         cli_out out[3];
-        int fd0, rc = 0, opened = 0, placed;
+        int fd0, rc = 0, opened = 0, named, renamed, placed;
         for (i = 0; i < 3; i++) {
             remove(path[i]);
             if (old_of[i])
@@ -739,20 +739,25 @@ START_TEST(tool_files_committed_as_one)
                       "%s (call %lu) failed with %s: \"%s\" does not name "
                       "the step (\"%s\") and the error", failed, k,
                       strerror(fail_errno), tool_msg, step_words(failed));
-        /* the file the message names; the ones before it were renamed
-         * in place when it was a rename that failed, and put back - but
-         * for a.npy without hard links */
-        for (placed = 0; placed < 3 && !strstr(tool_msg, path[placed]);
-             placed++)
+        /* the file the message names, and the files renamed before it
+         * when it was a rename that failed: put back, but for a.npy
+         * without hard links (placed: those left new or removed) */
+        for (named = 0; named < 3 && !strstr(tool_msg, path[named]);
+             named++)
             ;
-        ck_assert_msg(placed < 3, "\"%s\" names none of the files",
+        ck_assert_msg(named < 3, "\"%s\" names none of the files",
                       tool_msg);
-        if (strcmp(failed, "rename") || !no_links)
-            placed = 0;
-        ck_assert_msg(!strcmp(failed, "rename") ||
-                          !strstr(tool_msg, "put back"),
-                      "%s (call %lu) failed before any rename: \"%s\"",
-                      failed, k, tool_msg);
+        renamed = strcmp(failed, "rename") ? 0 : named;
+        placed = no_links ? renamed : 0;
+        ck_assert_msg(renamed == 0 ? !strstr(tool_msg, "put back")
+                                   : strstr(tool_msg,
+                                            no_links ? "could not be put "
+                                                       "back"
+                                                     : "before it put back") !=
+                                         NULL,
+                      "%s (call %lu) failed: \"%s\" does not say what "
+                      "became of the %d file(s) renamed before it", failed,
+                      k, tool_msg, renamed);
         for (i = 0; i < 3; i++) {
             const int is_new = i < placed && old_of[i];
             ck_assert_msg(is_new ? tu_holds(path[i], new_of[i], new_len[i])
@@ -763,12 +768,6 @@ START_TEST(tool_files_committed_as_one)
                           k, names[i], is_new ? "new" : "as it was",
                           tool_msg);
         }
-        ck_assert_msg(!strstr(tool_msg, "put back") ||
-                          strstr(tool_msg, placed > 0 ? "could not be put "
-                                                        "back"
-                                                      : "put back as"),
-                      "%s (call %lu) failed: \"%s\" does not say what was "
-                      "put back", failed, k, tool_msg);
         tu_list_dir(dir, after, sizeof after);
         ck_assert_msg(placed > 0 || !strcmp(before, after), "%s (call %lu) "
                       "failed: the folder held \"%s\", now \"%s\"", failed,

@@ -372,22 +372,25 @@ int cli_out_commit_all(cli_out *h, size_t n)
     if (u && bad < n)
         lost = undo_apply(u, bad, &kept);
     if (bad < n) {
+        /* what became of the files renamed before the failed one */
+        char back[112] = "";
+        if (u && bad > 0 && lost == 0)
+            snprintf(back, sizeof back, "; the %s before it put back",
+                     bad == 1 ? "file" : "files");
+        else if (u && bad > 0 && lost == bad)
+            snprintf(back, sizeof back, "; the %s before it could not be "
+                     "put back", bad == 1 ? "file" : "files");
+        else if (u && bad > 0)
+            snprintf(back, sizeof back, "; %lu of the %lu files before it "
+                     "could not be put back", (unsigned long)lost,
+                     (unsigned long)bad);
         if (nomem)
             cli_error("%s: out of memory", h[bad].name);
-        else if (bad == 0 || !u)
-            cli_error("%s: %s: %s", h[bad].name, step_words[step],
-                      strerror(e));
-        else if (lost == 0)
-            cli_error("%s: %s: %s; the %lu file%s before it put back as "
-                      "%s", h[bad].name, step_words[step], strerror(e),
-                      (unsigned long)bad, bad == 1 ? "" : "s",
-                      bad == 1 ? "it was" : "they were");
         else
-            cli_error("%s: %s: %s; %lu of the %lu files before it could not "
-                      "be put back%s%s", h[bad].name, step_words[step],
-                      strerror(e), (unsigned long)lost, (unsigned long)bad,
-                      kept ? ", an old one is kept as " : "",
-                      kept ? kept : "");
+            cli_error("%s: %s: %s%s%s%s%s", h[bad].name, step_words[step],
+                      strerror(e), back,
+                      kept ? " (an old one is kept as " : "",
+                      kept ? kept : "", kept ? ")" : "");
     }
     if (u) {
         undo_release(u, n);

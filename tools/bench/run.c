@@ -258,12 +258,12 @@ static int cfg_build(bench_cfg *b, int k)
     }
     {
         size_t peak, before;
+        double cpu, wall, w0, c0;
         if (b->a->fresh) {
             atrbvh_bvh_free(b->bvh);
             b->bvh = NULL;
         }
         before = memtrack_current();
-        double cpu, wall, w0, c0;
         memtrack_reset_peak();
         w0 = clock_ms(CLOCK_MONOTONIC);
         c0 = clock_ms(CLOCK_PROCESS_CPUTIME_ID);
