@@ -28,8 +28,8 @@
 static int run(const char *dir, const char *script, const char *sub)
 {
     char outdir[64], log[64];
-    pid_t pid;
-    int st;
+    pid_t pid, got;
+    int st, e;
     snprintf(outdir, sizeof outdir, "outdir = '%s/'", sub);
     snprintf(log, sizeof log, "%s/" LOG_NAME, sub);
     fflush(NULL);
@@ -64,14 +64,15 @@ static int run(const char *dir, const char *script, const char *sub)
         _exit(127);
     }
     cli_out_track_writer(pid);
-    while (waitpid(pid, &st, 0) < 0)
-        if (errno != EINTR) {
-            cli_out_track_writer(0);
-            cli_error("%s/%s: waiting for gnuplot: %s", dir, script,
-                      strerror(errno));
-            return -1;
-        }
+    while ((got = waitpid(pid, &st, 0)) < 0 && errno == EINTR)
+        ;
+    e = errno;
     cli_out_track_writer(0);
+    if (got < 0) {
+        cli_error("%s/%s: waiting for gnuplot: %s", dir, script,
+                  strerror(e));
+        return -1;
+    }
     if (WIFEXITED(st) && WEXITSTATUS(st) == 127) {
         cli_error("%s/%s: gnuplot not found (install gnuplot to get the "
                   "pictures; the data and script are there)", dir, script);

@@ -254,7 +254,7 @@ static int finish(cli_out *h, enum commit_step *step)
  * cannot be put back). */
 typedef struct undo {
     char *target, *old;
-    int fresh, keep; /* keep: the old content is only in `old` now */
+    int fresh;
 } undo;
 
 /* The links for h[0..n-1], made before any rename; 0, or -1 when out of
@@ -286,13 +286,16 @@ static int undo_prepare(const cli_out *h, size_t n, undo *u)
     return 0;
 }
 
-/* Drops the links and frees u[0..n-1] (after the group, or the links
- * after the rename that failed: their targets were not touched). */
-static void undo_release(undo *u, size_t n)
+/* Frees u[0..n-1] and removes their links, but for those of the first
+ * `kept` entries: after undo_apply(u, kept), a link still there is one
+ * that could not be renamed back, and holds the old content.  (The links
+ * from `kept` on are those of the failed rename and after: their targets
+ * were not touched.) */
+static void undo_release(undo *u, size_t n, size_t kept)
 {
     size_t i;
     for (i = 0; i < n; i++) {
-        if (u[i].old && !u[i].keep) {
+        if (u[i].old && i >= kept) {
             cli_out_untrack(u[i].old);
             unlink(u[i].old);
         }
@@ -321,7 +324,6 @@ static size_t undo_apply(undo *u, size_t done, const char **kept)
                 continue;
             }
             cli_out_untrack(u[i].old); /* the old content: keep it */
-            u[i].keep = 1;
             *kept = u[i].old;
             lost++;
         } else if (!u[i].fresh || unlink(u[i].target) != 0) {
@@ -393,7 +395,7 @@ int cli_out_commit_all(cli_out *h, size_t n)
                       kept ? kept : "", kept ? ")" : "");
     }
     if (u) {
-        undo_release(u, n);
+        undo_release(u, n, bad < n ? bad : 0);
         free(u);
     }
     if (bad < n) {
