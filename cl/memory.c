@@ -323,11 +323,35 @@ atrbvh_status atrbvh_i_cl_finish(atrbvh_cl_device *c, atrbvh_error *error)
     c->pending = 0;
     err = clFinish(c->queue);
     if (err != CL_SUCCESS) {
+        /* The failed wait may have returned with commands still running
+         * (a kernel writing the caller's hits, a copy reading their
+         * geometry), and the caller may free those arrays as soon as this
+         * call returns: wait once more.  When that wait fails too, the
+         * queue's state is unknown: the handle is lost. */
+        const cl_int again = clFinish(c->queue);
+        if (again != CL_SUCCESS) {
+            c->lost = err;
+            c->lost_again = again;
+        }
         atrbvh_i_cl_drop_events(c);
         return atrbvh_i_cl_error(error, err, "clFinish", NULL);
     }
     add_times(c);
     return ATRBVH_OK;
+}
+
+atrbvh_status atrbvh_i_cl_usable(const atrbvh_cl_device *c,
+                                 atrbvh_error *error)
+{
+    if (!c->lost)
+        return ATRBVH_OK;
+    return atrbvh_i_fail(
+        error, ATRBVH_ERR_BACKEND, ATRBVH_CL_NO_INDEX,
+        "OpenCL: device lost: an earlier wait for its queue failed with "
+        "%s (%d) and the wait after it with %s (%d), so commands may "
+        "still be running; close the device and open it again",
+        atrbvh_i_cl_code_name(c->lost), (int)c->lost,
+        atrbvh_i_cl_code_name(c->lost_again), (int)c->lost_again);
 }
 
 atrbvh_status atrbvh_i_cl_collect(atrbvh_cl_device *c, atrbvh_error *error)

@@ -166,6 +166,12 @@ typedef struct atrbvh_cl_device {
     int event_count;
     int pending; /* commands queued since the last wait (finish or a
                     blocking transfer) */
+    /* 0, or the codes of a wait for the queue that failed and of the
+     * second wait after it, which failed too (atrbvh_i_cl_finish): the
+     * queue's commands are in an unknown state and may still run, so
+     * every later build and ray batch on the handle is refused
+     * (atrbvh_i_cl_usable); only its close is left. */
+    cl_int lost, lost_again;
     atrbvh_cl_times *times; /* where finished launches are added */
     atrbvh_cl_times build_times; /* the last build's */
     cl_uint has_ids;        /* this build: B_IDS maps leaves   */
@@ -316,6 +322,10 @@ atrbvh_status atrbvh_i_cl_finish(atrbvh_cl_device *c, atrbvh_error *error);
  * something is still queued (atrbvh_i_cl_finish); after a blocking read
  * every launch before it is done on the in-order queue. */
 atrbvh_status atrbvh_i_cl_collect(atrbvh_cl_device *c, atrbvh_error *error);
+/* ATRBVH_OK, or ATRBVH_ERR_BACKEND when the handle is lost (lost above),
+ * with a message saying so and what to do. */
+atrbvh_status atrbvh_i_cl_usable(const atrbvh_cl_device *c,
+                                 atrbvh_error *error);
 /* Releases pending events without reading them. */
 void atrbvh_i_cl_drop_events(atrbvh_cl_device *c);
 

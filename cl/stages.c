@@ -81,6 +81,7 @@ static atrbvh_status cl_begin(atrbvh_device *dev, atrbvh_i_run *run,
 {
     atrbvh_cl_device *c = cl_of(dev);
     size_t n = run->in.g->primitive_count;
+    CL_CHECK(atrbvh_i_cl_usable(c, error));
     /* 2n - 1 tree nodes must fit the kernels' u32 ids. */
     if (n == 0 || n > 0x7fffffffu)
         return atrbvh_i_fail(error, ATRBVH_ERR_TOO_LARGE, ATRBVH_CL_NO_INDEX,

@@ -176,6 +176,7 @@ atrbvh_status atrbvh_i_cl_rays(atrbvh_device *dev, const atrbvh_node *nodes,
     (void)threads;
     if (kernel_ms)
         *kernel_ms = 0.0;
+    CL_CHECK(atrbvh_i_cl_usable(c, error));
     memset(&times, 0, sizeof times);
     c->times = &times; /* the pipeline holds the handle's lock */
     st = trace_batch(c, nodes, node_count, prim_indices, prim_count, in, rays,

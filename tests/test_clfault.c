@@ -27,6 +27,10 @@
  *   - every OpenCL object the backend made (context, queue, program,
  *     kernels, buffers, events) is released when the handle is closed, or
  *     at once when the open fails.
+ * And with every wait for the queue (clFinish) failing as well: a call
+ * that waited fails, waits once more, and the handle is lost (every later
+ * call refused, its close still clean); one that never waited loses
+ * nothing.
  *
  * docs/opencl.md, "When an OpenCL call fails", has the counts.  Skips
  * without an OpenCL device.
@@ -400,10 +404,22 @@ cl_int __wrap_clEnqueueFillBuffer(cl_command_queue q, cl_mem m,
     return err;
 }
 
+/* clFinish calls since finish_count was last zeroed; from the
+ * finish_fails_from-th on (0: none) every one fails with
+ * CL_OUT_OF_RESOURCES, as a queue that stays broken, after the real wait:
+ * the commands of a queue that never answers again may write memory
+ * the library and the test then free (the library can only refuse the
+ * handle from then on; docs/opencl.md). */
+static unsigned long finish_count, finish_fails_from;
+
 REAL(cl_int, clFinish, (cl_command_queue q));
 cl_int __wrap_clFinish(cl_command_queue q)
 {
     FAIL_OR(clFinish);
+    if (++finish_count >= finish_fails_from && finish_fails_from) {
+        (void)__real_clFinish(q);
+        return CL_OUT_OF_RESOURCES;
+    }
     return __real_clFinish(q);
 }
 
@@ -901,6 +917,126 @@ START_TEST(animation_fails_cleanly_at_each_call)
 }
 END_TEST
 
+/* Waits for the queue (clFinish) failing for good, every one from the
+ * start, while each call of a build in place, one through copies and a
+ * ray batch fails in turn (and then past the last call, nothing else
+ * failing).  A call that waited for the queue (the failed wait is waited
+ * once more, and that fails too) fails, and the handle is lost: every
+ * later build and ray batch on it is refused with a message that says so
+ * (even once waits would succeed again), and its close still releases
+ * everything.  A call that never waited loses nothing: the handle builds
+ * the CPU's tree after it.  (One failed wait alone loses nothing either:
+ * the second wait completes the queue; the tests above build again on
+ * the handle.) */
+static atrbvh_status lost_call(atrbvh_device *dev, int which,
+                               const atrbvh_bvh *bvh, atrbvh_error *e)
+{
+    atrbvh_build_options o;
+    atrbvh_ray ray;
+    atrbvh_hit hit;
+    atrbvh_bvh *got = NULL;
+    atrbvh_status st;
+    if (which == 2) {
+        memset(&ray, 0, sizeof ray);
+        ray.origin[0] = ray.origin[1] = ray.origin[2] = 3.0f;
+        ray.dir[0] = 1.0f;
+        ray.tmax = 100.0f;
+        return atrbvh_intersect_batch_device(dev, bvh, &g_scene, &ray, 1,
+                                             &hit, NULL, e);
+    }
+    atrbvh_build_options_init(&o);
+    o.device = dev;
+    st = atrbvh_build(&g_scene, &o, &got, e);
+    atrbvh_bvh_free(got);
+    return st;
+}
+
+START_TEST(failing_waits_lose_the_handle)
+{
+    static const char *const name[3] = {"an ATRBVH build",
+                                         "an ATRBVH build (copies)",
+                                         "a ray batch"};
+    atrbvh_build_options o;
+    atrbvh_bvh *bvh;
+    int which;
+    make_scene();
+    atrbvh_build_options_init(&o);
+    bvh = cpu_tree(&o);
+    for (which = 0; which < 3; which++) {
+        atrbvh_device *dev = NULL;
+        unsigned long k, lost = 0;
+        for (k = 1;; k++) {
+            atrbvh_error e;
+            atrbvh_status st;
+            int hit, waited, again;
+            const char *call; /* the failed call's name, or "none" */
+            if (!dev && !(dev = open_dev(__func__, which == 1)))
+                break;
+            finish_count = 0;
+            finish_fails_from = 1;
+            arm(k);
+            st = lost_call(dev, which, bvh, &e);
+            finish_fails_from = 0;
+            hit = failed != NULL;
+            /* (a failed call k that was a clFinish is not counted) */
+            waited = finish_count > 0 ||
+                     (hit && strcmp(failed, "clFinish") == 0);
+            call = hit ? failed : "none";
+            assert_caller_arrays_free(name[which], k);
+            arm(0);
+            if (!waited && !hit) { /* past the last call */
+                ck_assert_msg(st == ATRBVH_OK, "%s: %s", name[which],
+                              e.text);
+                break;
+            }
+            if (!waited) {
+                ck_assert_msg(lost_call(dev, which, bvh, &e) == ATRBVH_OK,
+                              "%s, call %lu (%s) failed, no wait: the "
+                              "handle fails after it: %s",
+                              name[which], k, call, e.text);
+                continue;
+            }
+            ck_assert_msg(st != ATRBVH_OK, "%s, call %lu (%s) failed, "
+                          "waits failing: the call succeeded", name[which],
+                          k, call);
+            ck_assert_msg(finish_count > 0, "%s, call %lu: a failed wait "
+                          "not waited for again", name[which], k);
+            if (!hit)
+                ck_assert_msg(strstr(e.text, "clFinish") &&
+                                  strstr(e.text, "CL_OUT_OF_RESOURCES (-5)"),
+                              "%s, every wait failing: %s", name[which],
+                              e.text);
+            for (again = 0; again < 3; again += 2) { /* build, rays */
+                st = lost_call(dev, again, bvh, &e);
+                ck_assert_msg(st == ATRBVH_ERR_BACKEND &&
+                                  strstr(e.text, "device lost") &&
+                                  strstr(e.text, "CL_OUT_OF_RESOURCES") &&
+                                  strstr(e.text, "close the device"),
+                              "%s after %s lost the handle (call %lu, %s): "
+                              "status %d: %s", name[again], name[which], k,
+                              call, (int)st, e.text);
+            }
+            lost++;
+            atrbvh_device_close(dev);
+            assert_none_live(name[which]);
+            dev = NULL;
+            if (!hit)
+                break;
+        }
+        if (!dev && k == 1)
+            break; /* (skipped) */
+        ck_assert_msg(lost > 0, "%s: no call lost the handle", name[which]);
+        fprintf(stderr, "%s: %lu calls failed in turn with every wait "
+                "failing; %lu lost the handle\n", name[which], k - 1, lost);
+        if (dev) {
+            atrbvh_device_close(dev);
+            assert_none_live(name[which]);
+        }
+    }
+    atrbvh_bvh_free(bvh);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("clfault");
@@ -913,6 +1049,7 @@ int main(void)
     tcase_add_test(tc, copied_build_fails_cleanly_at_each_call);
     tcase_add_test(tc, ray_batch_fails_cleanly_at_each_call);
     tcase_add_test(tc, animation_fails_cleanly_at_each_call);
+    tcase_add_test(tc, failing_waits_lose_the_handle);
     tcase_set_timeout(tc, 600);
     suite_add_tcase(s, tc);
     rc = tu_run(s);
