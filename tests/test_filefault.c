@@ -68,6 +68,10 @@ static size_t write_limit;   /* nonzero: no write passes more        */
 static int interrupt_writes; /* every other write: EINTR, nothing written */
 static unsigned long writes; /* write calls while armed               */
 
+/* double_fault: the rename after a failed one fails as well (with the
+ * same errno): a group's rename back (cli_out_commit_all) */
+static int double_fault, rename_fails_next;
+
 static void arm(unsigned long k)
 {
     calls = 0;
@@ -75,6 +79,7 @@ static void arm(unsigned long k)
     fail_at = k;
     failed = NULL;
     fail_errno = k % 2 ? EIO : ENOSPC;
+    rename_fails_next = 0;
     armed = 1;
 }
 
@@ -160,7 +165,15 @@ int __real_rename(const char *from, const char *to);
 int __wrap_rename(const char *from, const char *to);
 int __wrap_rename(const char *from, const char *to)
 {
-    FAIL_OR(rename);
+    if (armed && rename_fails_next) {
+        rename_fails_next = 0;
+        errno = fail_errno;
+        return -1;
+    }
+    if (fails("rename")) {
+        rename_fails_next = double_fault;
+        return -1;
+    }
     return __real_rename(from, to);
 }
 
@@ -654,8 +667,11 @@ END_TEST
  * files before it put back (the message says so).  Then again on a file
  * system without hard links (_i 1): a failed rename leaves a.npy
  * replaced when it came before (the message says it could not be put
- * back), b.npy removed, and the rest as they were.  No temporary file is
- * left either way. */
+ * back), b.npy removed, and the rest as they were.  Then (_i 2) with hard
+ * links again but the rename after a failed one failing too, which is
+ * a.npy's rename back: a.npy is left new, its old content kept in the
+ * link the message names, b.npy removed, the rest as they were.  No
+ * other temporary file is left either way. */
 START_TEST(tool_files_committed_as_one)
 {
     static const char *const names[3] = {"a.npy", "b.npy", "manifest.json"};
@@ -664,10 +680,11 @@ START_TEST(tool_files_committed_as_one)
     /* old and new contents: slices of the two images */
     const unsigned char *old_of[3], *new_of[3];
     size_t old_len[3], new_len[3];
-    unsigned long n = 0, k;
+    unsigned long n = 0, k, kept_seen = 0;
     int i;
     make_bvhs();
-    no_links = _i;
+    no_links = _i == 1;
+    double_fault = _i == 2;
     for (i = 0; i < 3; i++) {
         snprintf(path[i], sizeof path[i], "%s/%s", dir, names[i]);
         old_of[i] = i == 1 ? NULL : old_image + (size_t)i * 100;
@@ -748,12 +765,12 @@ START_TEST(tool_files_committed_as_one)
         ck_assert_msg(named < 3, "\"%s\" names none of the files",
                       tool_msg);
         renamed = strcmp(failed, "rename") ? 0 : named;
-        placed = no_links ? renamed : 0;
+        placed = no_links || double_fault ? renamed : 0;
         ck_assert_msg(renamed == 0 ? !strstr(tool_msg, "put back")
                                    : strstr(tool_msg,
-                                            no_links ? "could not be put "
-                                                       "back"
-                                                     : "before it put back") !=
+                                            placed ? "could not be put "
+                                                     "back"
+                                                   : "before it put back") !=
                                          NULL,
                       "%s (call %lu) failed: \"%s\" does not say what "
                       "became of the %d file(s) renamed before it", failed,
@@ -768,6 +785,27 @@ START_TEST(tool_files_committed_as_one)
                           k, names[i], is_new ? "new" : "as it was",
                           tool_msg);
         }
+        if (double_fault && placed) {
+            /* a.npy's old content, in the link the message names */
+            const char *kept = strstr(tool_msg, "an old one is kept as ");
+            char keep[700];
+            size_t len;
+            ck_assert_msg(kept != NULL, "%s (call %lu) and the rename back "
+                          "failed: \"%s\" names no file kept", failed, k,
+                          tool_msg);
+            kept += strlen("an old one is kept as ");
+            len = strcspn(kept, ")");
+            ck_assert(len < sizeof keep);
+            memcpy(keep, kept, len);
+            keep[len] = '\0';
+            ck_assert_msg(strncmp(keep, path[0], strlen(dir) + 1) == 0 &&
+                              tu_holds(keep, old_of[0], old_len[0]),
+                          "%s (call %lu) and the rename back failed: %s "
+                          "does not hold a.npy's old bytes beside it (%s)",
+                          failed, k, keep, tool_msg);
+            ck_assert_int_eq(remove(keep), 0);
+            kept_seen++;
+        }
         tu_list_dir(dir, after, sizeof after);
         ck_assert_msg(placed > 0 || !strcmp(before, after), "%s (call %lu) "
                       "failed: the folder held \"%s\", now \"%s\"", failed,
@@ -778,9 +816,15 @@ START_TEST(tool_files_committed_as_one)
     if (n)
         fprintf(stderr, "the tool's three files as one%s: %lu calls, each "
                 "failed in turn; refused: %s; done without:%s\n",
-                _i ? " without hard links" : "", n, refused + 1,
-                done_without);
-    no_links = 0;
+                _i == 1   ? " without hard links"
+                : _i == 2 ? ", the rename back failing too"
+                          : "",
+                n, refused + 1, done_without);
+    /* (the renames of b.npy and of manifest.json failed, each with a.npy
+     * renamed before it) */
+    ck_assert_msg(!n || !double_fault || kept_seen == 2,
+                  "the rename back failed %lu times, not twice", kept_seen);
+    no_links = double_fault = 0;
     ck_assert_msg(!n || (strstr(refused, " fflush ") &&
                          strstr(refused, " fsync ") &&
                          strstr(refused, " fclose ") &&
@@ -992,7 +1036,7 @@ int main(void)
                         NEW_FILE, IN_PLACE + 1);
     tcase_add_loop_test(tc, tool_output_fails_cleanly_at_each_call,
                         NEW_FILE, IN_PLACE + 1);
-    tcase_add_loop_test(tc, tool_files_committed_as_one, 0, 2);
+    tcase_add_loop_test(tc, tool_files_committed_as_one, 0, 3);
     tcase_add_test(tc, short_and_interrupted_writes_complete);
     tcase_add_test(tc, bvh_load_fails_cleanly_at_each_call);
     tcase_add_test(tc, ply_load_fails_cleanly_at_each_call);
