@@ -50,6 +50,8 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <sys/wait.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include "atrbvh.h"
@@ -161,10 +163,21 @@ int __wrap_close(int fd)
     return __real_close(fd);
 }
 
+/* signal_at_rename: SIGTERM sent to the process just before the rename
+ * of that number (1, 2, ... since renames was zeroed); rename_fails_at:
+ * that rename fails with ENOSPC (signal_waits_for_the_group) */
+static unsigned long renames, signal_at_rename, rename_fails_at;
 int __real_rename(const char *from, const char *to);
 int __wrap_rename(const char *from, const char *to);
 int __wrap_rename(const char *from, const char *to)
 {
+    renames++;
+    if (renames == signal_at_rename)
+        kill(getpid(), SIGTERM);
+    if (renames == rename_fails_at) {
+        errno = ENOSPC;
+        return -1;
+    }
     if (armed && rename_fails_next) {
         rename_fails_next = 0;
         errno = fail_errno;
@@ -840,6 +853,87 @@ START_TEST(tool_files_committed_as_one)
 }
 END_TEST
 
+/* A fatal signal (SIGTERM, which the tool's cleanup handles) arriving
+ * during the tool's group of three files (as in
+ * tool_files_committed_as_one) just before its first, second or third
+ * rename, in a child process: the child dies of the signal, but only
+ * once the renames are over: every file is new and nothing else is in
+ * the folder; or, when the third rename fails (ENOSPC), every file is as
+ * it was (the first two put back).  Before, the cleanup ran at once: the
+ * files renamed before the signal were left new, the rest old, and the
+ * hard links holding the renamed ones' old content were removed. */
+START_TEST(signal_waits_for_the_group)
+{
+    static const char *const names[3] = {"a.npy", "b.npy", "manifest.json"};
+    char *dir = tu_make_temp_dir("test_filefault_");
+    char path[3][700], before[512], after[512];
+    int r, fail3, i;
+    make_bvhs();
+    for (i = 0; i < 3; i++)
+        snprintf(path[i], sizeof path[i], "%s/%s", dir, names[i]);
+    for (fail3 = 0; fail3 <= 1; fail3++)
+        for (r = 1; r <= 3; r++) {
+            int status;
+            pid_t pid;
+            for (i = 0; i < 3; i++) {
+                remove(path[i]);
+                if (i != 1)
+                    tu_write_bytes(path[i], old_image + (size_t)i * 100, 200);
+            }
+            tu_list_dir(dir, before, sizeof before);
+            fflush(NULL);
+            pid = fork();
+            ck_assert(pid >= 0);
+            if (pid == 0) {
+                cli_out out[3];
+                int rc;
+                for (i = 0; i < 3; i++) {
+                    FILE *f = cli_out_open(path[i], &out[i]);
+                    if (!f || fwrite(image + (size_t)i * 1000, 1, image_n / 2,
+                                     f) != image_n / 2)
+                        _exit(3);
+                }
+                renames = 0;
+                signal_at_rename = (unsigned long)r;
+                rename_fails_at = fail3 ? 3 : 0;
+                rc = cli_out_commit_all(out, 3);
+                _exit(rc == 0 ? 0 : 1); /* (the signal ends it first) */
+            }
+            ck_assert(waitpid(pid, &status, 0) == pid);
+            ck_assert_msg(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM,
+                          "SIGTERM before rename %d%s: the child %s %d", r,
+                          fail3 ? " (the third failing)" : "",
+                          WIFSIGNALED(status) ? "died of signal"
+                                              : "exited with",
+                          WIFSIGNALED(status) ? WTERMSIG(status)
+                                              : WEXITSTATUS(status));
+            for (i = 0; i < 3; i++) {
+                const int want_new = !fail3;
+                ck_assert_msg(want_new ? tu_holds(path[i],
+                                                  image + (size_t)i * 1000,
+                                                  image_n / 2)
+                              : i == 1 ? access(path[i], F_OK) != 0
+                                       : tu_holds(path[i],
+                                                  old_image + (size_t)i * 100,
+                                                  200),
+                              "SIGTERM before rename %d%s: %s is not %s", r,
+                              fail3 ? " (the third failing)" : "", names[i],
+                              want_new ? "new" : "as it was");
+            }
+            tu_list_dir(dir, after, sizeof after);
+            ck_assert_msg(!strstr(after, ".tmp") &&
+                              (!fail3 || !strcmp(before, after)),
+                          "SIGTERM before rename %d%s: the folder held "
+                          "\"%s\", now \"%s\"", r,
+                          fail3 ? " (the third failing)" : "", before, after);
+        }
+    for (i = 0; i < 3; i++)
+        remove(path[i]);
+    ck_assert_int_eq(rmdir(dir), 0);
+    free(dir);
+}
+END_TEST
+
 /* Writes that take part of what they are given, or are interrupted
  * before writing anything, still give the whole file. */
 START_TEST(short_and_interrupted_writes_complete)
@@ -1037,6 +1131,7 @@ int main(void)
     tcase_add_loop_test(tc, tool_output_fails_cleanly_at_each_call,
                         NEW_FILE, IN_PLACE + 1);
     tcase_add_loop_test(tc, tool_files_committed_as_one, 0, 3);
+    tcase_add_test(tc, signal_waits_for_the_group);
     tcase_add_test(tc, short_and_interrupted_writes_complete);
     tcase_add_test(tc, bvh_load_fails_cleanly_at_each_call);
     tcase_add_test(tc, ply_load_fails_cleanly_at_each_call);

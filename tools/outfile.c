@@ -25,7 +25,8 @@
  * removes them rather than leaving a partial file behind: the handler
  * unlinks each, then removes each that is a folder (the folders made for
  * gnuplot, cli_out_track; both calls async-signal-safe), restores the
- * default action and raises the signal again.  Room for every file of
+ * default action and raises the signal again (after a group's renames,
+ * when it comes during them: committing, below).  Room for every file of
  * the largest stage dump (tools/cli_stages.c: 961) with the hard link
  * its commit makes to each target (cli_out_commit_all), and a plot
  * folder. */
@@ -39,7 +40,27 @@ static int handlers_installed;
 static const int fatal_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT,
                                     SIGXFSZ};
 
-static void on_fatal_signal(int sig)
+/* A group's renames (cli_out_commit_all) are not cut short by the
+ * cleanup: there the renamed targets are new, the others old, and the
+ * tracked links hold the old content of the renamed ones, which the
+ * cleanup would remove.  While `committing` is set a fatal signal is only
+ * noted (`deferred`); the commit, once its renames are all done or all
+ * undone, runs the cleanup itself and raises the signal again.  The
+ * handler may run on another thread (the tool's OpenMP workers), so the
+ * two sides use Dekker's flags with a full fence between the write of
+ * one's flag and the read of the other's: either the handler sees
+ * `committing`, or the commit sees `handling` (a cleanup under way that
+ * is about to end the process) and starts no rename. */
+static volatile sig_atomic_t committing, handling, deferred;
+#if defined(__GNUC__) || defined(__clang__)
+#define OUT_FENCE() __sync_synchronize()
+#else
+#define OUT_FENCE() ((void)0)
+#endif
+
+/* Removes what is tracked (after ending the writer), restores the
+ * signal's default action and raises it again. */
+static void cleanup_and_raise(int sig)
 {
     const pid_t w = writer;
     int i;
@@ -62,6 +83,37 @@ static void on_fatal_signal(int sig)
     }
     signal(sig, SIG_DFL);
     raise(sig);
+}
+
+static void on_fatal_signal(int sig)
+{
+    handling = 1;
+    OUT_FENCE();
+    if (committing) {
+        deferred = sig;
+        handling = 0;
+        return;
+    }
+    cleanup_and_raise(sig);
+}
+
+/* The start and end of a group's renames (see committing above). */
+static void renames_begin(void)
+{
+    committing = 1;
+    OUT_FENCE();
+    while (handling)
+        sleep(1); /* a handler's cleanup is ending the process */
+}
+
+static void renames_end(void)
+{
+    int sig;
+    committing = 0;
+    OUT_FENCE();
+    sig = deferred;
+    if (sig)
+        cleanup_and_raise(sig);
 }
 
 static void install_handlers(void)
@@ -358,6 +410,11 @@ int cli_out_commit_all(cli_out *h, size_t n)
         nomem = 1;
         bad = 0;
     }
+    /* From the first rename to the last link's removal a fatal signal
+     * waits (renames_begin): the group ends all new, or all as it was as
+     * far as a failed rename's way back allows, and only then does the
+     * signal end the process. */
+    renames_begin();
     for (i = 0; i < n && bad == n; i++) {
         /* From here the temporary name is the target's: no longer ours
          * to remove on a signal. */
@@ -398,6 +455,7 @@ int cli_out_commit_all(cli_out *h, size_t n)
         undo_release(u, n, bad < n ? bad : 0);
         free(u);
     }
+    renames_end();
     if (bad < n) {
         cli_out_abort_all(h, n);
         return -1;

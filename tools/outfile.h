@@ -85,7 +85,9 @@ int cli_out_commit(cli_out *h);
  * not exist, by removing the new file; the error line says so.  Where a
  * link cannot be made (a file system without hard links) that target
  * cannot be put back, and the line says how many could not: write the
- * file that names the others (a manifest) last. */
+ * file that names the others (a manifest) last.  A fatal signal that
+ * arrives during the renames (outfile.c: committing) waits until they
+ * are all done, or all undone, then ends the process as it would have. */
 int cli_out_commit_all(cli_out *h, size_t n);
 
 /* Gives up: closes and removes the temporary file; the target is
