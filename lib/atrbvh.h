@@ -152,7 +152,7 @@ typedef enum atrbvh_backend {
 /* A compute device, opened once and reused by any number of builds and ray
  * batches: opening selects the device, creates its context and compiles
  * its program (OpenCL), and the handle keeps scratch memory between builds.
- * `spec`: "cpu"; "opencl" (the first OpenCL device); "opencl:P:D" (device D
+ * `spec`: "cpu" (or NULL); "opencl" (the first OpenCL device); "opencl:P:D" (device D
  * of platform P); or "opencl:NAME", a case-insensitive substring of the
  * device or platform name.  Thread-safe.  One build or ray batch runs on a
  * handle at a time (calls on the same handle from several threads wait for
@@ -478,7 +478,7 @@ ATRBVH_API atrbvh_status atrbvh_occluded_batch(
  * the rays in chunks (the device's program and context are the handle's,
  * made once); *kernel_ms (may be NULL) receives the kernels' device time
  * from profiling events, without the transfers (0 on the CPU).  count 0
- * returns ATRBVH_OK at once.  Errors: as the CPU batch functions for the
+ * returns ATRBVH_OK once the arguments are checked.  Errors: as the CPU batch functions for the
  * arguments (a NULL device is ATRBVH_ERR_INVALID_ARGUMENT);
  * ATRBVH_ERR_BACKEND or ATRBVH_ERR_NOMEM when the device fails. */
 ATRBVH_API atrbvh_status atrbvh_intersect_batch_device(
