@@ -8,6 +8,9 @@
   npy_edit.py FILE dtype           '<u4' -> '<i4', '<f4' -> '<i4' (etc.)
   npy_edit.py FILE shape           one row fewer in header and data (a
                                    well-formed file the manifest disagrees with)
+  npy_edit.py FILE huge            2^40 rows in the header, the data as it was
+                                   (a truncated file whose shape claims 4 TiB
+                                   or more: refused without allocating that)
 """
 import re
 import sys
@@ -55,6 +58,13 @@ def main():
         row = size * (count // shape[0])
         data = bytearray(b"\x93NUMPY\x01\x00" + bytes([hlen & 255, hlen >> 8])
                          + new.encode("latin-1") + data[start:len(data) - row])
+    elif op == "huge":
+        rows = 1 << 40
+        new_shape = "(%d,)" % rows if len(shape) == 1 else "(%d, %d)" % (rows, shape[1])
+        new = re.sub(r"\([^)]*\)", new_shape, header, count=1).rstrip("\n")
+        new += " " * ((64 - (10 + len(new) + 1) % 64) % 64) + "\n"
+        data = bytearray(b"\x93NUMPY\x01\x00" + bytes([len(new) & 255, len(new) >> 8])
+                         + new.encode("latin-1") + data[start:])
     else:
         sys.exit("unknown operation " + op)
     with open(path, "wb") as f:

@@ -182,6 +182,25 @@ for op in magic truncate dtype shape; do
     $EDIT "$T/p/hierarchy-left.npy" $op
     run 2 check "$T/p"
 done
+# a shape of 2^40 rows in the header and the manifest, over the file's own
+# few bytes: truncated, found as the data comes (before, the reader
+# allocated the claimed 4 TiB first: "out of memory", or under ASan an
+# abort)
+rm -rf "$T/p"
+cp -r "$T/atrbvh" "$T/p"
+$EDIT "$T/p/hierarchy-left.npy" huge
+python3 - "$T/p/manifest.json" <<'PY'
+import json, sys
+m = json.load(open(sys.argv[1]))
+for s in m["stages"]:
+    for f in s["files"]:
+        if f["file"] == "hierarchy-left.npy":
+            f["shape"][0] = 1 << 40
+json.dump(m, open(sys.argv[1], "w"))
+PY
+run 2 check "$T/p"
+grep -q 'hierarchy-left.npy: truncated data' "$T/err" ||
+    fail "a shape of 2^40 rows: $(cat "$T/err")"
 rm -rf "$T/p"
 cp -r "$T/atrbvh" "$T/p"
 rm "$T/p/morton-keys.npy"

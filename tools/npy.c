@@ -334,12 +334,34 @@ int npy_read(const char *path, npy_array *out, char *err, size_t errlen)
         goto fail;
     }
     bytes = count * npy_dtype_size(out->dtype);
-    out->data = malloc(bytes ? bytes : 1);
+    /* the data as it comes, its buffer at most twice what has come: a
+     * shape that claims more than the file holds is a truncated file,
+     * never an allocation of the claimed size */
+    got = 0;
+    {
+        size_t cap = bytes < 65536u ? bytes : 65536u;
+        out->data = malloc(cap ? cap : 1);
+        while (out->data) {
+            got += fread((char *)out->data + got, 1, cap - got, f);
+            if (got < cap || cap == bytes)
+                break; /* the end of the file, or all of it */
+            {
+                const size_t more = cap <= bytes - cap ? 2u * cap : bytes;
+                void *grown = realloc(out->data, more);
+                if (!grown) {
+                    free(out->data);
+                    out->data = NULL;
+                    break;
+                }
+                out->data = grown;
+                cap = more;
+            }
+        }
+    }
     if (!out->data) {
         snprintf(err, errlen, "out of memory (%zu bytes)", bytes);
         goto fail;
     }
-    got = fread(out->data, 1, bytes, f);
     if (got != bytes) {
         snprintf(err, errlen, "truncated data: %zu of %zu bytes", got, bytes);
         goto fail;
