@@ -254,6 +254,22 @@ if [ -c /dev/full ] && [ -e /dev/stdout ]; then
 else
     echo "outputs.sh: no /dev/stdout: its checks skipped"
 fi
+# Standard output that cannot be written: a failure (1) for a command that
+# makes something, trouble (2) for those that compare (1 is "different");
+# one error line either way.  (A "differ" goes to standard error: nothing
+# is lost then.)
+if [ -c /dev/full ]; then
+    for c in "info $D/small.bvh:1" "compare $D/small.bvh $D/small.bvh:2" \
+             "validate $SMALL:2"; do
+        checks=$((checks + 1))
+        # shellcheck disable=SC2086 # (the words of the command)
+        "$TOOL" ${c%:*} >/dev/full 2>"$T/err"
+        got=$?
+        [ "$got" = "${c##*:}" ] && [ "$(wc -l <"$T/err")" = 1 ] &&
+            grep -q 'writing standard output' "$T/err" ||
+            fail "${c%:*} >/dev/full: exit $got, want ${c##*:}: $(cat "$T/err")"
+    done
+fi
 
 # --------------------------------- --plot: gnuplot in a folder of its own
 # The fake gnuplot: `gnuplot -e "outdir = 'SUB/'" SCRIPT`, run in the plot

@@ -171,21 +171,23 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
+    /* cmp: 0 same, 1 different, 2 trouble (as cmp(1)) */
     static const struct {
         const char *name;
         int (*run)(int, char **);
-    } commands[] = {{"build", cli_build},
-                    {"trace", cli_trace},
-                    {"info", cli_info},
-                    {"compare", cli_compare},
-                    {"validate", cli_validate},
-                    {"bench", cli_bench},
-                    {"render", cli_render},
-                    {"stages", cli_stages},
-                    {"check", cli_check},
-                    {"animate", cli_animate}};
+        int cmp;
+    } commands[] = {{"build", cli_build, 0},
+                    {"trace", cli_trace, 0},
+                    {"info", cli_info, 0},
+                    {"compare", cli_compare, 1},
+                    {"validate", cli_validate, 1},
+                    {"bench", cli_bench, 0},
+                    {"render", cli_render, 0},
+                    {"stages", cli_stages, 0},
+                    {"check", cli_check, 1},
+                    {"animate", cli_animate, 0}};
     size_t k;
-    int rc;
+    int rc, cmp = 0;
     const char *cmd;
     /* OpenMP threads wait passively (sleep) at barriers unless the user set
      * OMP_WAIT_POLICY: spinning makes builds 10x slower on a loaded machine
@@ -229,12 +231,15 @@ int main(int argc, char **argv)
             return cli_usage(NULL, "unknown command '%s'", cmd);
         }
         rc = commands[k].run(argc - 1, argv + 1);
+        cmp = commands[k].cmp;
     }
-    /* A full disk or closed pipe must not pass for success. */
-    if (rc == CLI_OK && (fflush(stdout) != 0 || ferror(stdout))) {
+    /* A full disk or closed pipe must not pass for success, nor, for the
+     * commands that compare, for an answer ("different"): trouble. */
+    if ((rc == CLI_OK || (cmp && rc == CLI_FAIL)) &&
+        (fflush(stdout) != 0 || ferror(stdout))) {
         fprintf(stderr, "atrbvh: writing standard output: %s\n",
                 strerror(errno));
-        return CLI_FAIL;
+        return cmp ? CLI_USAGE : CLI_FAIL;
     }
     return rc;
 }
