@@ -357,6 +357,12 @@ atrbvh_status atrbvh_i_resolve_options(const atrbvh_build_options *user,
                     : o.method == ATRBVH_METHOD_TRBVH
                         ? ATRBVH_TRBVH_ROUNDS_DEFAULT
                         : ATRBVH_ATRBVH_ROUNDS_DEFAULT;
+        if (c->treelet_size == ATRBVH_TREELET_AUTO && !autosize)
+            return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
+                                 (uint64_t)-1,
+                                 "treelet size ATRBVH_TREELET_AUTO (auto) is "
+                                 "for atrbvh only (trbvh takes %u to %u)",
+                                 lo, hi);
         if (!autosize && (c->treelet_size < lo || c->treelet_size > hi))
             return atrbvh_i_fail(error, ATRBVH_ERR_INVALID_ARGUMENT,
                                  (uint64_t)-1,

@@ -187,7 +187,21 @@ for cmd in build trace render validate; do
         err_has "^atrbvh: $cmd: --treelet: .*trbvh"
     run 2 $cmd "$T/nothere.ply" $out --max-leaf 4 --no-collapse &&
         err_has "^atrbvh: $cmd: --max-leaf: "
+    # auto is ATRBVH's alone, said so (not as the size it stands for)
+    run 2 $cmd "$T/nothere.ply" $out --method trbvh --treelet auto &&
+        err_has "^atrbvh: $cmd: --treelet: .*auto.* atrbvh only" &&
+        { ! grep -q '4294967295' "$T/err" || fail "$cmd: auto given as a number: $(cat "$T/err")"; }
+    # LBVH takes no treelet size or rounds, given in either order; a
+    # preset's own are not the user's, and a later preset overrides
+    run 2 $cmd "$T/nothere.ply" $out --method lbvh --treelet 9 &&
+        err_has "^atrbvh: $cmd: --treelet: lbvh takes no"
+    run 2 $cmd "$T/nothere.ply" $out --rounds 3 --method lbvh &&
+        err_has "^atrbvh: $cmd: --rounds: lbvh takes no"
+    run 2 $cmd "$T/nothere.ply" $out --quality fast --treelet 9 &&
+        err_has "^atrbvh: $cmd: --treelet: lbvh takes no"
 done
+run 0 build builtin:sphere:50 --quality balanced --method lbvh
+run 0 build builtin:sphere:50 --treelet 9 --rounds 1 --quality fast
 # --device only with --backend opencl (validate always uses OpenCL)
 for cmd in build trace render; do
     out=

@@ -182,7 +182,7 @@ START_TEST(bad_options)
     atrbvh_build_options_init(&o);
     o.method = ATRBVH_METHOD_TRBVH;
     o.treelet_size = ATRBVH_TREELET_AUTO;
-    EXPECT(&g, &o, ATRBVH_ERR_INVALID_ARGUMENT, "for trbvh");
+    EXPECT(&g, &o, ATRBVH_ERR_INVALID_ARGUMENT, "(auto) is for atrbvh only");
     atrbvh_build_options_init(&o);
     o.treelet_size = ATRBVH_TREELET_AUTO;
     o.gamma = 2;

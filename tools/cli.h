@@ -66,6 +66,8 @@ typedef struct cli_build_args {
     const char *output;
     int method, backend; /* CLI_OPT_ENUM indices, applied to options */
     int device_given;
+    int tuned;       /* --treelet or --rounds given after the last
+                        --quality (LBVH takes neither)              */
     int quiet;       /* --quiet: no progress on stderr */
     const char *cmd; /* the subcommand, for usage messages */
 } cli_build_args;

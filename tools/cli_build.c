@@ -87,10 +87,26 @@ int cli_parse_treelet(const char *s, unsigned *out)
 static int on_treelet(const char *cmd, const cli_opt *o, const char *v,
                       void *user)
 {
+    cli_build_args *a = o->dest;
     (void)user;
-    if (!cli_parse_treelet(v, (unsigned *)o->dest))
+    if (!cli_parse_treelet(v, &a->options.treelet_size))
         return cli_usage(cmd, "--treelet: '%s' is not a whole number or "
                               "auto", v);
+    a->tuned = 1;
+    return 0;
+}
+
+static int on_rounds(const char *cmd, const cli_opt *o, const char *v,
+                     void *user)
+{
+    cli_build_args *a = o->dest;
+    unsigned long r;
+    (void)user;
+    if (!cli_parse_ulong(v, UINT_MAX, &r))
+        return cli_usage(cmd, "--rounds: '%s' is not a whole number from 0 "
+                              "to %u", v, UINT_MAX);
+    a->options.rounds = (unsigned)r;
+    a->tuned = 1;
     return 0;
 }
 
@@ -110,6 +126,7 @@ static int on_quality(const char *cmd, const cli_opt *o, const char *v,
             a->method = k;
     a->options.treelet_size = t;
     a->options.rounds = r;
+    a->tuned = 0; /* (a preset's own sizes) */
     return 0;
 }
 
@@ -127,12 +144,12 @@ void cli_build_opts(cli_build_args *a, unsigned groups, cli_opt *table)
              .help = "a preset: LBVH, ATRBVH(9,2), ATRBVH(20,3)\n"
                      "(later --method/--treelet/--rounds override it)"},
             {.name = "--treelet", .kind = CLI_OPT_CALL, .arg = "N|auto",
-             .dest = &o->treelet_size, .call = on_treelet,
+             .dest = a, .call = on_treelet,
              .help = "treelet size (default: trbvh 7, atrbvh 9;\n"
                      "trbvh 3 to 10, atrbvh 3 to 128 or auto: 9, 16\n"
                      "or 32 per treelet by its subtree's size)"},
-            {.name = "--rounds", .kind = CLI_OPT_UINT, .arg = "R", .min = 0,
-             .max = UINT_MAX, .dest = &o->rounds,
+            {.name = "--rounds", .kind = CLI_OPT_CALL, .arg = "R",
+             .dest = a, .call = on_rounds,
              .help = "optimisation rounds (default: trbvh 3, atrbvh 2,\n"
                      "atrbvh with --treelet auto 4)"},
             {.name = "--threads", .kind = CLI_OPT_INT, .arg = "N", .min = 0,
@@ -270,6 +287,12 @@ int cli_build_parse(const char *cmd, int argc, char **argv,
     a->scene = pos[0];
     a->cmd = cmd;
     a->options.method = method_values[a->method];
+    if (a->tuned && a->options.method == ATRBVH_METHOD_LBVH)
+        return cli_usage(cmd, "%s: lbvh takes no treelet size or rounds "
+                              "(trbvh and atrbvh do)",
+                         a->options.rounds && !a->options.treelet_size
+                             ? "--rounds"
+                             : "--treelet");
     a->options.backend =
         a->backend == 1 ? ATRBVH_BACKEND_OPENCL : ATRBVH_BACKEND_CPU;
     if ((groups & CLI_BUILD_BACKEND) && a->device_given &&
