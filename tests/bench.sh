@@ -415,6 +415,11 @@ PY
 run 2 trace builtin:city:2000 --look-at 1,2,3
 run 2 trace builtin:city:2000 --eye 1,2
 run 2 trace builtin:city:2000 --eye 1,2,x
+# a stray comma is not skipped: each of these is no point
+for e in 0,0,5, ,0,0,5 0,,0,5 1,,2,3 1,2,3,4; do
+    run 2 trace builtin:city:2000 --eye "$e" && err_has -- "--eye: '$e' is not X,Y,Z"
+done
+run 2 trace builtin:city:2000 --look-at 1,,2,3 && err_has -- "--look-at: "
 run 2 render builtin:city:2000 -o "$T/x.png" --eye 1,2,3 --look-at 1,2,3
 run 2 bench builtin:city:2000 --fov 0
 

@@ -108,17 +108,25 @@ static int on_point(const char *cmd, const cli_opt *opt, const char *value,
                     void *user)
 {
     float *p = opt->dest;
-    char buf[256], *parts[3], *save = NULL, *tok;
-    int k = 0;
+    char buf[256], *parts[3], *comma;
+    int k;
     double d;
     (void)user;
     if (strlen(value) >= sizeof buf)
         return cli_usage(cmd, "%s: '%.40s...' is too long", opt->name, value);
     strcpy(buf, value);
-    for (tok = strtok_r(buf, ",", &save); tok && k < 4;
-         tok = strtok_r(NULL, ",", &save))
-        parts[k < 3 ? k : 2] = tok, k++;
-    if (k != 3 || strchr(value, ' '))
+    /* exactly three fields between two commas, none empty (a stray
+     * comma is not skipped: "0,,0,5" is no point) */
+    parts[0] = buf;
+    for (k = 1; k < 3; k++) {
+        comma = strchr(parts[k - 1], ',');
+        if (!comma)
+            break;
+        *comma = '\0';
+        parts[k] = comma + 1;
+    }
+    if (k != 3 || strchr(parts[2], ',') || strchr(value, ' ') ||
+        !*parts[0] || !*parts[1] || !*parts[2])
         return cli_usage(cmd, "%s: '%s' is not X,Y,Z (three numbers, "
                          "commas, no spaces)", opt->name, value);
     for (k = 0; k < 3; k++) {
