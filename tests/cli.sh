@@ -169,6 +169,21 @@ run 1 build builtin:sphere:50000001
 run 1 build "$DATA/empty.obj" --method lbvh && err_has 'empty\.obj: .*no triangles'
 printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 oops 0\n0 1 0\n' >"$T/bad.ply"
 run 1 build "$T/bad.ply" && err_has 'bad\.ply: line 9: .*oops'
+# An endless stream of zeros as an OBJ file: refused at its first NUL byte
+# (before, the reader took it all into memory).  The tool runs with a
+# bounded address space but under ASan (which reserves more), so that
+# such a reader fails instead of filling the machine.
+if [ -c /dev/zero ]; then
+    ln -s /dev/zero "$T/zero.obj"
+    checks=$((checks + 1))
+    (
+        [ -n "${ATRBVH_TEST_SANITIZER:-}" ] || ulimit -v 4000000
+        exec timeout 60 "$TOOL" build "$T/zero.obj"
+    ) >"$T/out" 2>"$T/err"
+    rc=$?
+    [ "$rc" = 1 ] && grep -q 'zero\.obj: line 1: NUL byte' "$T/err" ||
+        fail "build of /dev/zero as OBJ: exit $rc: $(cat "$T/err")"
+fi
 # Out-of-range option values are usage errors (2) naming the option, found
 # before the scene is read and never blamed on it (the scene here does not
 # even exist).

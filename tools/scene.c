@@ -77,7 +77,10 @@ void scene_set_name(scene *s, const char *path)
 }
 
 /* Reads the whole file; the size is what was read, not what stat claims,
- * so pipes and files that change under us are handled the same way. */
+ * so pipes and files that change under us are handled the same way.
+ * Reading stops after a block that holds a NUL byte, which no OBJ file
+ * holds (the parser reports it, with its line): an endless stream of
+ * zeros (/dev/zero) is refused at once instead of filling the memory. */
 static int read_file(const char *path, unsigned char **data, size_t *size,
                      char *err, size_t err_len)
 {
@@ -97,7 +100,7 @@ static int read_file(const char *path, unsigned char **data, size_t *size,
         }
         got = fread(buf + len, 1, cap - len, f);
         len += got;
-        if (got == 0)
+        if (got == 0 || memchr(buf + len - got, 0, got))
             break;
     }
     if (ferror(f)) {
