@@ -417,6 +417,24 @@ START_TEST(ply_hostile_header)
              "element face 1\nproperty int other\nend_header\n0 0 0\n1\n",
              vxyz);
     EXPECT_ERROR(write_text("nolist.ply", text), "line 7", "vertex_indices");
+    /* A second face or vertex element, or a second index list, holds
+     * geometry that would be left out: an error naming its line. */
+    snprintf(text, sizeof text, "ply\nformat ascii 1.0\n%s"
+             "element face 1\nproperty list uchar int vertex_indices\n"
+             "element face 1\nproperty list uchar int vertex_indices\n"
+             "end_header\n0 0 0\n3 0 0 0\n3 0 0 0\n", vxyz);
+    EXPECT_ERROR(write_text("twoface.ply", text), "line 9",
+                 "a second \"face\" element");
+    snprintf(text, sizeof text, "ply\nformat ascii 1.0\n%s%s"
+             "end_header\n0 0 0\n0 0 0\n", vxyz, vxyz);
+    EXPECT_ERROR(write_text("twovert.ply", text), "line 7",
+                 "a second \"vertex\" element");
+    snprintf(text, sizeof text, "ply\nformat ascii 1.0\n%s"
+             "element face 1\nproperty list uchar int vertex_indices\n"
+             "property list uchar int vertex_index\nend_header\n0 0 0\n"
+             "3 0 0 0 3 0 0 9\n", vxyz);
+    EXPECT_ERROR(write_text("twolist.ply", text), "line 7",
+                 "second vertex index list");
     {
         /* A long comment is fine; a long property line is not. */
         char big[2048];

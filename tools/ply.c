@@ -4,7 +4,9 @@
  * Reads x, y, z of the "vertex" element and the vertex_indices (or
  * vertex_index) list of the "face" element; every other element and
  * property is parsed only to be skipped, so properties may be of any type
- * and in any order.  Polygons are fan-triangulated (v0, vi, vi+1).
+ * and in any order.  Polygons are fan-triangulated (v0, vi, vi+1).  A
+ * second "vertex" or "face" element, or a second index list in the face
+ * element, is an error, not skipped: it would hold geometry left out.
  *
  * The file is hostile until proven otherwise: every count the header
  * declares is checked against the bytes left before anything is allocated
@@ -766,7 +768,14 @@ int scene_parse_ply(const char *path, const unsigned char *data, size_t size,
         const ply_element *el = &p.elements[e];
         size_t k;
         int found[5] = {0, 0, 0, 0, 0};
-        if (strcmp(el->name, "vertex") == 0 && vertex_el == (size_t)-1) {
+        if ((strcmp(el->name, "vertex") == 0 && vertex_el != (size_t)-1) ||
+            (strcmp(el->name, "face") == 0 && face_el != (size_t)-1)) {
+            fail_line(&p, el->header_line, "a second \"%s\" element (only "
+                      "one is read: its geometry would be left out)",
+                      el->name);
+            goto done;
+        }
+        if (strcmp(el->name, "vertex") == 0) {
             vertex_el = e;
             for (k = 0; k < el->nprops; k++) {
                 const char *n = el->props[k].name;
@@ -789,13 +798,19 @@ int scene_parse_ply(const char *path, const unsigned char *data, size_t size,
                           "an x, y or z property");
                 goto done;
             }
-        } else if (strcmp(el->name, "face") == 0 && face_el == (size_t)-1) {
+        } else if (strcmp(el->name, "face") == 0) {
             face_el = e;
             for (k = 0; k < el->nprops; k++) {
                 const char *n = el->props[k].name;
                 if (strcmp(n, "vertex_indices") != 0 &&
                     strcmp(n, "vertex_index") != 0)
                     continue;
+                if (found[ROLE_INDICES]) {
+                    fail_line(&p, el->header_line, "the face element has "
+                              "a second vertex index list, \"%s\" (only "
+                              "one is read)", n);
+                    goto done;
+                }
                 if (el->props[k].count_type == T_NONE ||
                     !is_integer_type(el->props[k].type)) {
                     fail_line(&p, el->header_line, "face property \"%s\" is "
@@ -804,7 +819,6 @@ int scene_parse_ply(const char *path, const unsigned char *data, size_t size,
                 }
                 frole[k] = ROLE_INDICES;
                 found[ROLE_INDICES] = 1;
-                break;
             }
             if (!found[ROLE_INDICES]) {
                 fail_line(&p, el->header_line, "the face element has no "
