@@ -545,6 +545,16 @@ atrbvh_status atrbvh_load(const char *path, atrbvh_bvh **out,
                              (unsigned long)got,
                              e ? strerror(e) : "unknown error");
     }
+    /* A file that gives more than its size (a device such as /dev/zero,
+     * whose size reads as 0) has no size to check the header against. */
+    if ((uint64_t)got > (uint64_t)fsize) {
+        fclose(f);
+        return atrbvh_i_fail(error, ATRBVH_ERR_IO, (uint64_t)-1,
+                             "%s: cannot determine the size: not a regular "
+                             "file (its size reads as %ld bytes, yet it "
+                             "gives more)",
+                             path, fsize);
+    }
     st = parse_header(header,
                       got < sizeof header ? (uint64_t)got : (uint64_t)fsize,
                       &fh, error);

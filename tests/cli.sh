@@ -183,6 +183,9 @@ if [ -c /dev/zero ]; then
     rc=$?
     [ "$rc" = 1 ] && grep -q 'zero\.obj: line 1: NUL byte' "$T/err" ||
         fail "build of /dev/zero as OBJ: exit $rc: $(cat "$T/err")"
+    # as a BVH file: no size to check the header against, said so (not
+    # "truncated: 0 bytes")
+    run 1 info /dev/zero && err_has '/dev/zero: .*not a regular file'
 fi
 # Out-of-range option values are usage errors (2) naming the option, found
 # before the scene is read and never blamed on it (the scene here does not
