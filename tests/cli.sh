@@ -355,6 +355,14 @@ if run 0 trace builtin:sphere:2000 --method lbvh --width 32 --height 24 --spp 2 
     v=$(json_value rays.ao.hits)
     [ "$v" = 0 ] || fail "sphere: $v occluded AO rays"
 fi
+# A triangle spanning 3e38 (near the end of the float range): the default
+# camera stays where floats reach and its rays hit (before, the eye was
+# so far out that no hit's distance was a float: 0 hits, no warning).
+printf 'v 0 0 0\nv 3e38 0 0\nv 0 3e38 0\nf 1 2 3\n' >"$T/huge.obj"
+if run 0 trace "$T/huge.obj" --width 32 --height 24 --spp 1 --json; then
+    hits=$(json_value rays.primary.hits)
+    [ "$hits" -gt 0 ] 2>/dev/null || fail "a 3e38 triangle: no primary hits ($hits)"
+fi
 # Rays are a function of pixel and sample only: the same hits on any
 # number of threads.
 hits1= hits2=

@@ -102,6 +102,17 @@ void camera_frame_fov(const float lo[3], const float hi[3], unsigned which,
     dist *= 1.05;
     if (dist < 1.05 * r)
         dist = 1.05 * r;
+    /* A scene near the end of the float range (a box of 3e38): the eye as
+     * far as floats reach, nearer than the whole box needs, so that the
+     * eye is a float and the hits' distances are (a hit beyond FLT_MAX
+     * is none: before, no primary ray hit such a scene) */
+    if (dist + r > 0.999 * FLT_MAX)
+        dist = 0.999 * FLT_MAX - r;
+    for (k = 0; k < 3; k++)
+        if (fabs(f[k]) > 0.0 && fabs(c[k]) + dist * fabs(f[k]) > 0.999 * FLT_MAX)
+            dist = (0.999 * FLT_MAX - fabs(c[k])) / fabs(f[k]);
+    if (!(dist > 0.0))
+        dist = 0.0;
     for (k = 0; k < 3; k++) {
         cam->eye[k] = (float)(c[k] - dist * f[k]);
         cam->forward[k] = (float)f[k];
@@ -112,6 +123,8 @@ void camera_frame_fov(const float lo[3], const float hi[3], unsigned which,
      * so far out that primary rays need it to cross the whole box. */
     cam->far_distance = (float)(dist + 2.0 * r > 4.0 * r ? dist + 2.0 * r
                                                           : 4.0 * r);
+    if (!(cam->far_distance <= FLT_MAX)) /* (rays to the end of floats) */
+        cam->far_distance = FLT_MAX;
 }
 
 /* The box with non-finite or reversed extents made a point at 0. */
