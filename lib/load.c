@@ -8,6 +8,7 @@
 
 #include "format.h"
 #include "internal.h"
+#include "shared/treelet.h"
 
 #include <errno.h>
 #include <math.h>
@@ -63,6 +64,29 @@ static atrbvh_status parse_header(const unsigned char *h, uint64_t size,
         return FAIL_AT(20, "byte 20: method %u is not 0, 1 or 2", fh->method);
     fh->treelet_size = get_u32(h + 24);
     fh->rounds = get_u32(h + 28);
+    /* what a build records (api.c resolves 0 to the method's default):
+     * LBVH 0 and 0; TRBVH 3 to 10; ATRBVH 3 to 128 or auto; 1 to 64
+     * rounds */
+    if (fh->method == (uint32_t)ATRBVH_METHOD_LBVH
+            ? fh->treelet_size != 0
+            : fh->method == (uint32_t)ATRBVH_METHOD_TRBVH
+                  ? fh->treelet_size < ATRBVH_TRBVH_MIN ||
+                        fh->treelet_size > ATRBVH_TRBVH_MAX
+                  : fh->treelet_size != ATRBVH_TREELET_AUTO &&
+                        (fh->treelet_size < ATRBVH_ATRBVH_MIN ||
+                         fh->treelet_size > ATRBVH_ATRBVH_MAX))
+        return FAIL_AT(24, "byte 24: treelet size %u is none a build of "
+                           "method %u records (LBVH 0, TRBVH %u to %u, "
+                           "ATRBVH %u to %u or 0x%08x)",
+                       fh->treelet_size, fh->method, ATRBVH_TRBVH_MIN,
+                       ATRBVH_TRBVH_MAX, ATRBVH_ATRBVH_MIN,
+                       ATRBVH_ATRBVH_MAX, ATRBVH_TREELET_AUTO);
+    if (fh->method == (uint32_t)ATRBVH_METHOD_LBVH
+            ? fh->rounds != 0
+            : fh->rounds < 1 || fh->rounds > ATRBVH_ROUNDS_MAX)
+        return FAIL_AT(28, "byte 28: %u rounds is none a build of method %u "
+                           "records (LBVH 0, else 1 to %u)",
+                       fh->rounds, fh->method, ATRBVH_ROUNDS_MAX);
     fh->node_count = get_u64(h + 32);
     fh->prim_count = get_u64(h + 40);
     fh->input_count = get_u64(h + 48);

@@ -475,6 +475,49 @@ START_TEST(structural_errors)
                       e.text, (expect_word));                                  \
     } while (0)
     ck_assert_uint_eq(nodes[0].count, 0);
+    /* a treelet size or rounds no build of the method records (the
+     * header's method at byte 20, size 24, rounds 28) */
+    {
+        static const struct {
+            uint32_t method, size, rounds;
+            const char *word;
+        } bad[] = {{2, 2147483647u, 2, "byte 24: treelet size 2147483647"},
+                   {2, 2, 2, "byte 24: treelet size 2 "},
+                   {1, 0xffffffffu, 3, "byte 24: treelet size 4294967295"},
+                   {1, 11, 3, "byte 24: treelet size 11"},
+                   {0, 9, 0, "byte 24: treelet size 9"},
+                   {0, 0, 2, "byte 28: 2 rounds"},
+                   {2, 9, 0, "byte 28: 0 rounds"},
+                   {2, 9, 0xffffffffu, "byte 28: 4294967295 rounds"},
+                   {1, 7, 65, "byte 28: 65 rounds"}};
+        static const uint32_t good[][3] = {
+            {0, 0, 0}, {1, 3, 1}, {1, 10, 64}, {2, 128, 1},
+            {2, 0xffffffffu, 4}};
+        size_t k;
+        for (k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+            memcpy(c, d, n);
+            tu_wr32(c + 20, bad[k].method);
+            tu_wr32(c + 24, bad[k].size);
+            tu_wr32(c + 28, bad[k].rounds);
+            TRY(bad[k].word);
+        }
+        for (k = 0; k < sizeof good / sizeof good[0]; k++) {
+            atrbvh_stats st;
+            memcpy(c, d, n);
+            tu_wr32(c + 20, good[k][0]);
+            tu_wr32(c + 24, good[k][1]);
+            tu_wr32(c + 28, good[k][2]);
+            tu_fix_crc(c, n);
+            ck_assert_msg(atrbvh_load_memory(c, n, &l, &e) == ATRBVH_OK,
+                          "method %u, size %u, %u rounds: %s", good[k][0],
+                          good[k][1], good[k][2], e.text);
+            ck_assert_int_eq(atrbvh_bvh_stats(l, &st), ATRBVH_OK);
+            ck_assert_uint_eq(st.treelet_size, good[k][1]);
+            ck_assert_uint_eq(st.rounds, good[k][2]);
+            atrbvh_bvh_free(l);
+            l = NULL;
+        }
+    }
     /* root's right child out of range */
     memcpy(c, d, n);
     tu_wr32(c + 96 + 24, 4000);
