@@ -75,7 +75,7 @@ static atrbvh_status parse_header(const unsigned char *h, uint64_t size,
                   : fh->treelet_size != ATRBVH_TREELET_AUTO &&
                         (fh->treelet_size < ATRBVH_ATRBVH_MIN ||
                          fh->treelet_size > ATRBVH_ATRBVH_MAX))
-        return FAIL_AT(24, "byte 24: treelet size %u is none a build of "
+        return FAIL_AT(24, "byte 24: treelet size %u is not one a build of "
                            "method %u records (LBVH 0, TRBVH %u to %u, "
                            "ATRBVH %u to %u or 0x%08x)",
                        fh->treelet_size, fh->method, ATRBVH_TRBVH_MIN,
@@ -84,7 +84,7 @@ static atrbvh_status parse_header(const unsigned char *h, uint64_t size,
     if (fh->method == (uint32_t)ATRBVH_METHOD_LBVH
             ? fh->rounds != 0
             : fh->rounds < 1 || fh->rounds > ATRBVH_ROUNDS_MAX)
-        return FAIL_AT(28, "byte 28: %u rounds is none a build of method %u "
+        return FAIL_AT(28, "byte 28: %u rounds is not what a build of method %u "
                            "records (LBVH 0, else 1 to %u)",
                        fh->rounds, fh->method, ATRBVH_ROUNDS_MAX);
     fh->node_count = get_u64(h + 32);
