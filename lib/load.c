@@ -84,8 +84,8 @@ static atrbvh_status parse_header(const unsigned char *h, uint64_t size,
     if (fh->method == (uint32_t)ATRBVH_METHOD_LBVH
             ? fh->rounds != 0
             : fh->rounds < 1 || fh->rounds > ATRBVH_ROUNDS_MAX)
-        return FAIL_AT(28, "byte 28: %u rounds is not what a build of method %u "
-                           "records (LBVH 0, else 1 to %u)",
+        return FAIL_AT(28, "byte 28: %u rounds is not what a build of "
+                           "method %u records (LBVH 0, else 1 to %u)",
                        fh->rounds, fh->method, ATRBVH_ROUNDS_MAX);
     fh->node_count = get_u64(h + 32);
     fh->prim_count = get_u64(h + 40);

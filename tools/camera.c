@@ -109,7 +109,8 @@ void camera_frame_fov(const float lo[3], const float hi[3], unsigned which,
     if (dist + r > 0.999 * FLT_MAX)
         dist = 0.999 * FLT_MAX - r;
     for (k = 0; k < 3; k++)
-        if (fabs(f[k]) > 0.0 && fabs(c[k]) + dist * fabs(f[k]) > 0.999 * FLT_MAX)
+        if (fabs(f[k]) > 0.0 &&
+            fabs(c[k]) + dist * fabs(f[k]) > 0.999 * FLT_MAX)
             dist = (0.999 * FLT_MAX - fabs(c[k])) / fabs(f[k]);
     if (!(dist > 0.0))
         dist = 0.0;
