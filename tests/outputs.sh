@@ -265,6 +265,12 @@ if [ -c /dev/full ]; then
         # shellcheck disable=SC2086 # (the words of the command)
         "$TOOL" ${c%:*} >/dev/full 2>"$T/err"
         got=$?
+        # (validate needs an OpenCL device: trouble of another kind
+        # without one, where the suite allows that)
+        if [ "${c%% *}" = validate ] && opencl_may_skip "$T/err"; then
+            echo "outputs.sh: validate >/dev/full skipped: $(cat "$T/err")"
+            continue
+        fi
         [ "$got" = "${c##*:}" ] && [ "$(wc -l <"$T/err")" = 1 ] &&
             grep -q 'writing standard output' "$T/err" ||
             fail "${c%:*} >/dev/full: exit $got, want ${c##*:}: $(cat "$T/err")"
