@@ -419,22 +419,31 @@ START_TEST(ply_hostile_header)
     EXPECT_ERROR(write_text("nolist.ply", text), "line 7", "vertex_indices");
     /* A second face or vertex element, or a second index list, holds
      * geometry that would be left out: an error naming its line. */
-    snprintf(text, sizeof text, "ply\nformat ascii 1.0\n%s"
-             "element face 1\nproperty list uchar int vertex_indices\n"
-             "element face 1\nproperty list uchar int vertex_indices\n"
-             "end_header\n0 0 0\n3 0 0 0\n3 0 0 0\n", vxyz);
-    EXPECT_ERROR(write_text("twoface.ply", text), "line 9",
-                 "a second \"face\" element");
-    snprintf(text, sizeof text, "ply\nformat ascii 1.0\n%s%s"
-             "end_header\n0 0 0\n0 0 0\n", vxyz, vxyz);
-    EXPECT_ERROR(write_text("twovert.ply", text), "line 7",
-                 "a second \"vertex\" element");
-    snprintf(text, sizeof text, "ply\nformat ascii 1.0\n%s"
-             "element face 1\nproperty list uchar int vertex_indices\n"
-             "property list uchar int vertex_index\nend_header\n0 0 0\n"
-             "3 0 0 0 3 0 0 9\n", vxyz);
-    EXPECT_ERROR(write_text("twolist.ply", text), "line 7",
-                 "second vertex index list");
+    {
+#define FACE_ "element face 1\nproperty list uchar int vertex_indices\n"
+        static const struct {
+            const char *name, *tail, *line, *word;
+        } second[] = {
+            {"twoface.ply",
+             FACE_ FACE_ "end_header\n0 0 0\n3 0 0 0\n3 0 0 0\n", "line 9",
+             "a second \"face\" element"},
+            {"twovert.ply",
+             "element vertex 1\nproperty float x\nproperty float y\n"
+             "property float z\nend_header\n0 0 0\n0 0 0\n",
+             "line 7", "a second \"vertex\" element"},
+            {"twolist.ply",
+             FACE_ "property list uchar int vertex_index\nend_header\n"
+                   "0 0 0\n3 0 0 0 3 0 0 9\n",
+             "line 7", "second vertex index list"}};
+#undef FACE_
+        size_t k;
+        for (k = 0; k < sizeof second / sizeof second[0]; k++) {
+            snprintf(text, sizeof text, "ply\nformat ascii 1.0\n%s%s", vxyz,
+                     second[k].tail);
+            EXPECT_ERROR(write_text(second[k].name, text), second[k].line,
+                         second[k].word);
+        }
+    }
     {
         /* A long comment is fine; a long property line is not. */
         char big[2048];
